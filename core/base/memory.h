@@ -1,0 +1,59 @@
+// Accounting of the pipeline's buffers, so a frame can report its peak memory.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace sheaf {
+
+class MemoryTracker {
+  public:
+    void add(int64_t bytes) {
+        const int64_t now = current_.fetch_add(bytes, std::memory_order_relaxed) + bytes;
+        int64_t p = peak_.load(std::memory_order_relaxed);
+        while (now > p && !peak_.compare_exchange_weak(p, now, std::memory_order_relaxed)) {
+        }
+    }
+    void sub(int64_t bytes) { current_.fetch_sub(bytes, std::memory_order_relaxed); }
+    int64_t current() const { return current_.load(); }
+    int64_t peak() const { return peak_.load(); }
+
+  private:
+    std::atomic<int64_t> current_{0}, peak_{0};
+};
+
+/// A std::allocator that reports to a tracker (none: untracked).
+template <class T> struct TrackedAllocator {
+    using value_type = T;
+    MemoryTracker* tracker = nullptr;
+
+    TrackedAllocator() = default;
+    explicit TrackedAllocator(MemoryTracker* t) : tracker(t) {}
+    template <class U> TrackedAllocator(const TrackedAllocator<U>& o) : tracker(o.tracker) {}
+
+    T* allocate(size_t n) {
+        T* p = std::allocator<T>().allocate(n);
+        if (tracker) tracker->add(int64_t(n * sizeof(T)));
+        return p;
+    }
+    void deallocate(T* p, size_t n) {
+        if (tracker) tracker->sub(int64_t(n * sizeof(T)));
+        std::allocator<T>().deallocate(p, n);
+    }
+    template <class U> bool operator==(const TrackedAllocator<U>& o) const {
+        return tracker == o.tracker;
+    }
+};
+
+template <class T> using TrackedVector = std::vector<T, TrackedAllocator<T>>;
+
+template <class T> TrackedVector<T> tracked_vector(MemoryTracker& m, size_t n = 0) {
+    TrackedVector<T> v{TrackedAllocator<T>(&m)};
+    v.resize(n);
+    return v;
+}
+
+} // namespace sheaf

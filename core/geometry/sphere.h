@@ -1,0 +1,47 @@
+// Bounding spheres: the unions of paper 000 (eqs. 7, 8) and their n-ary form.
+#pragma once
+
+#include "core/math/vec3.h"
+
+namespace sheaf {
+
+struct Sphere {
+    Vec3 center;
+    float radius = 0;
+};
+
+/// Relative padding that keeps float-rounded bounds conservative.
+constexpr float kBoundPad = 1e-5f;
+
+SHEAF_HD_INLINE float pad_radius(float r, Vec3 center) {
+    // Absolute part scales with the magnitude of the coordinates, so that rounding of
+    // positions far from the origin cannot escape the bound.
+    return r * (1.0f + kBoundPad) +
+           kBoundPad * (fabsf(center.x) + fabsf(center.y) + fabsf(center.z)) * 1e-2f + 1e-7f;
+}
+
+SHEAF_HD_INLINE bool sphere_contains(const Sphere& s, Vec3 p) {
+    return length(p - s.center) <= s.radius;
+}
+
+/// Union of two spheres as written in paper 000 (eqs. 7 and 8): centre halfway between the
+/// centres, radius half their distance plus the larger radius. Conservative, not minimal.
+SHEAF_HD_INLINE Sphere sphere_union_paper(const Sphere& a, const Sphere& b) {
+    Sphere s;
+    s.center = (a.center + b.center) * 0.5f;
+    s.radius = pad_radius(length(b.center - a.center) * 0.5f + fmaxf(a.radius, b.radius), s.center);
+    return s;
+}
+
+/// Union of n spheres (n >= 1): centre at the mean of the centres, radius the farthest
+/// child surface from it. Every point of every child lies inside the result.
+SHEAF_HD_INLINE Sphere sphere_union(const Sphere* s, int n) {
+    Vec3 c(0.0f);
+    for (int i = 0; i < n; ++i) c += s[i].center;
+    c = c * (1.0f / float(n));
+    float r = 0;
+    for (int i = 0; i < n; ++i) r = fmaxf(r, length(s[i].center - c) + s[i].radius);
+    return {c, pad_radius(r, c)};
+}
+
+} // namespace sheaf

@@ -1,0 +1,25 @@
+// Primary visibility by rasterisation: a visibility buffer holding, per pixel, the nearest
+// primitive packed with its depth in 64 bits (depth in the high word, so the minimum is the
+// nearest hit and equal depths fall to the lower primitive id: ties break deterministically).
+#pragma once
+
+#include "core/raster/camera.h"
+#include "core/scene/prepared_scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sheaf {
+
+constexpr uint64_t kEmptyPixel = ~uint64_t(0);
+
+SHEAF_HD_INLINE uint32_t vis_prim(uint64_t v) {
+    return uint32_t(v & 0xFFFFFFFFu);
+}
+
+/// Fills `vis` (width * height entries, top row first). Triangles are clipped against a near
+/// plane, covered at pixel centres with the top-left fill rule, and depth-tested on the
+/// perspective-correct camera-space depth. Multithreaded over screen tiles.
+void rasterize(const PreparedScene& scene, const CameraFrame& camera, std::vector<uint64_t>& vis);
+
+} // namespace sheaf

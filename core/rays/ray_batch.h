@@ -1,0 +1,54 @@
+// A batch of secondary rays of one type, as structure-of-arrays, with what each ray brings
+// back to its pixel.
+#pragma once
+
+#include "core/base/memory.h"
+#include "core/geometry/ray.h"
+
+#include <cstdint>
+
+namespace sheaf {
+
+enum class RayType : uint8_t { Shadow = 0, Reflection = 1, Refraction = 2, Ao = 3 };
+constexpr int kRayTypeCount = 4;
+
+inline const char* ray_type_name(RayType t) {
+    switch (t) {
+    case RayType::Shadow:
+        return "shadow";
+    case RayType::Reflection:
+        return "reflection";
+    case RayType::Refraction:
+        return "refraction";
+    case RayType::Ao:
+        return "ao";
+    }
+    return "?";
+}
+
+/// Shadow and ambient-occlusion rays ask whether anything is hit; the others ask what is hit first.
+inline bool any_hit_query(RayType t) {
+    return t == RayType::Shadow || t == RayType::Ao;
+}
+
+struct RayBatch {
+    explicit RayBatch(RayType t, MemoryTracker& m)
+        : type(t), rays(TrackedAllocator<Ray>(&m)), pixel(TrackedAllocator<uint32_t>(&m)),
+          weight(TrackedAllocator<Vec3>(&m)), light(TrackedAllocator<uint32_t>(&m)) {}
+
+    RayType type;
+    TrackedVector<Ray> rays;
+    TrackedVector<uint32_t> pixel; // sample the ray's result goes to
+    // Shadow and AO rays: radiance added to the pixel when nothing is hit.
+    // Reflection and refraction rays: the throughput carried to what they hit.
+    TrackedVector<Vec3> weight;
+    TrackedVector<uint32_t> light; // shadow rays: the light index (the crsh key uses it)
+
+    size_t size() const { return rays.size(); }
+    void resize(size_t n) {
+        rays.resize(n), pixel.resize(n), weight.resize(n);
+        if (type == RayType::Shadow) light.resize(n);
+    }
+};
+
+} // namespace sheaf

@@ -1,0 +1,190 @@
+#include "core/rays/ray_gen.h"
+
+#include "core/base/parallel.h"
+#include "core/render/shade.h"
+#include "core/sort/radix_sort.h"
+
+#include <cfloat>
+
+namespace sheaf {
+
+float radical_inverse(uint32_t i, uint32_t base) {
+    const float inv = 1.0f / float(base);
+    float f = inv, r = 0;
+    while (i > 0) {
+        r += f * float(i % base);
+        i /= base;
+        f *= inv;
+    }
+    return r;
+}
+
+namespace {
+
+// Calls count(i) for every hit, scans the counts, then fill(i, first_slot): the output order
+// is hit order, then the order each hit emits in, whatever the thread schedule.
+template <class Count, class Fill>
+void emit(size_t hits, RayBatch& out, const Count& count, const Fill& fill) {
+    std::vector<uint32_t> offset(hits);
+    parallel_for(
+        "raygen.count", hits, [&](size_t i) { offset[i] = count(i); }, 1024);
+    const uint32_t total = exclusive_scan_inplace(offset);
+    out.resize(total);
+    parallel_for(
+        "raygen.fill", hits, [&](size_t i) { fill(i, offset[i]); }, 1024);
+}
+
+// A frame around unit n.
+void basis(Vec3 n, Vec3& t, Vec3& b) {
+    const float s = n.z >= 0 ? 1.0f : -1.0f;
+    const float a = -1.0f / (s + n.z);
+    const float c = n.x * n.y * a;
+    t = Vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+    b = Vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+bool lit_by(const SurfaceHit& h, Vec3 light_pos) {
+    const Vec3 l = light_pos - h.position;
+    return dot(h.geo_normal, l) > 0 && dot(h.normal, l) > 0;
+}
+
+} // namespace
+
+void generate_shadow_rays(const PreparedScene& scene, const std::vector<SurfaceHit>& hits,
+                          const RayGenParams& p, RayBatch& out) {
+    const auto& lights = scene.lights;
+    emit(
+        hits.size(), out,
+        [&](size_t i) {
+            uint32_t c = 0;
+            for (const PointLight& l : lights) c += lit_by(hits[i], l.position) ? 1 : 0;
+            return c;
+        },
+        [&](size_t i, uint32_t slot) {
+            const SurfaceHit& h = hits[i];
+            const Material& m = scene.materials[h.material];
+            for (uint32_t li = 0; li < lights.size(); ++li) {
+                const PointLight& l = lights[li];
+                if (!lit_by(h, l.position)) continue;
+                // The ray starts at the light and ends just above the surface.
+                const Vec3 target = h.position + h.geo_normal * p.epsilon;
+                const Vec3 d = target - l.position;
+                const float dist = length(d);
+                Ray r;
+                r.origin = l.position;
+                r.dir = d / dist;
+                r.tmin = 0.0f;
+                r.tmax = dist;
+                const Vec3 to_light = normalize(l.position - h.position);
+                out.rays[slot] = r;
+                out.pixel[slot] = h.pixel;
+                out.weight[slot] =
+                    h.throughput * direct_light(m, h.normal, h.incoming, to_light, l.color);
+                out.light[slot] = li;
+                ++slot;
+            }
+        });
+}
+
+void generate_ao_rays(const PreparedScene& scene, const std::vector<SurfaceHit>& hits,
+                      const RayGenParams& p, RayBatch& out) {
+    const uint32_t n = uint32_t(p.ao_samples);
+    if (n == 0) {
+        out.resize(0);
+        return;
+    }
+    emit(
+        hits.size(), out, [&](size_t) { return n; },
+        [&](size_t i, uint32_t slot) {
+            const SurfaceHit& h = hits[i];
+            const Material& m = scene.materials[h.material];
+            const Vec3 w = h.throughput * ambient_light(m) * (1.0f / float(n));
+            Vec3 t, b;
+            basis(h.geo_normal, t, b);
+            for (uint32_t s = 0; s < n; ++s) {
+                // Cosine-weighted hemisphere from the Halton points (bases 2 and 3).
+                const uint32_t index = h.pixel * n + s + 1;
+                const float u1 = radical_inverse(index, 2), u2 = radical_inverse(index, 3);
+                const float r = sqrtf(u1), phi = 2.0f * kPi * u2;
+                const Vec3 d = t * (r * cosf(phi)) + b * (r * sinf(phi)) +
+                               h.geo_normal * sqrtf(fmaxf(0.0f, 1.0f - u1));
+                Ray ray;
+                ray.origin = h.position + h.geo_normal * p.epsilon;
+                ray.dir = normalize(d);
+                ray.tmin = 0.0f;
+                ray.tmax = p.ao_distance;
+                out.rays[slot + s] = ray;
+                out.pixel[slot + s] = h.pixel;
+                out.weight[slot + s] = w;
+            }
+        });
+}
+
+namespace {
+
+struct BounceSplit {
+    Vec3 reflect_weight, refract_weight;
+    Vec3 reflect_dir, refract_dir;
+};
+
+BounceSplit split(const PreparedScene& scene, const SurfaceHit& h) {
+    const Material& m = scene.materials[h.material];
+    BounceSplit s{};
+    float kr = 0.0f;
+    if (m.transmission > 0) {
+        // Entering from outside the object: n_outside / n_inside; leaving: the inverse.
+        const float eta = h.front ? 1.0f / m.ior : m.ior;
+        const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
+        kr = fresnel_dielectric(cos_i, eta);
+        if (kr < 1.0f && refract(h.incoming, h.normal, eta, s.refract_dir))
+            s.refract_weight = h.throughput * m.color * (m.transmission * (1.0f - kr));
+        else
+            kr = 1.0f;
+    }
+    s.reflect_weight = h.throughput * (m.mirror + m.transmission * kr);
+    s.reflect_dir = reflect(h.incoming, h.normal);
+    // A shading normal can send a reflection below the surface; the geometric one cannot.
+    if (dot(s.reflect_dir, h.geo_normal) <= 0) s.reflect_dir = reflect(h.incoming, h.geo_normal);
+    return s;
+}
+
+} // namespace
+
+void generate_bounce_rays(const PreparedScene& scene, const std::vector<SurfaceHit>& hits,
+                          const RayGenParams& p, RayBatch& refl, RayBatch& refr) {
+    std::vector<BounceSplit> splits(hits.size());
+    parallel_for(
+        "raygen.split", hits.size(), [&](size_t i) { splits[i] = split(scene, hits[i]); }, 1024);
+    emit(
+        hits.size(), refl,
+        [&](size_t i) { return max_component(splits[i].reflect_weight) > p.min_weight ? 1u : 0u; },
+        [&](size_t i, uint32_t slot) {
+            if (max_component(splits[i].reflect_weight) <= p.min_weight) return;
+            const SurfaceHit& h = hits[i];
+            Ray r;
+            r.origin = h.position + h.geo_normal * p.epsilon;
+            r.dir = splits[i].reflect_dir;
+            r.tmin = 0.0f;
+            r.tmax = FLT_MAX;
+            refl.rays[slot] = r;
+            refl.pixel[slot] = h.pixel;
+            refl.weight[slot] = splits[i].reflect_weight;
+        });
+    emit(
+        hits.size(), refr,
+        [&](size_t i) { return max_component(splits[i].refract_weight) > p.min_weight ? 1u : 0u; },
+        [&](size_t i, uint32_t slot) {
+            if (max_component(splits[i].refract_weight) <= p.min_weight) return;
+            const SurfaceHit& h = hits[i];
+            Ray r;
+            r.origin = h.position - h.geo_normal * p.epsilon; // below the surface
+            r.dir = splits[i].refract_dir;
+            r.tmin = 0.0f;
+            r.tmax = FLT_MAX;
+            refr.rays[slot] = r;
+            refr.pixel[slot] = h.pixel;
+            refr.weight[slot] = splits[i].refract_weight;
+        });
+}
+
+} // namespace sheaf

@@ -1,0 +1,25 @@
+// A rendered frame: the image, its passes and its statistics.
+#pragma once
+
+#include "core/math/vec3.h"
+#include "core/stats/stats.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sheaf {
+
+struct Frame {
+    int width = 0, height = 0;
+    std::vector<float> rgba;  // scene-linear combined pass, 4 floats per pixel, top row first
+    std::vector<float> depth; // camera distance of the primary hit, +inf where nothing was hit
+    std::vector<Vec3> normal; // world-space shading normal of the primary hit
+    std::vector<Vec3> albedo; // material colour of the primary hit
+    std::vector<uint32_t> object_id; // object of the primary hit, 0xFFFFFFFF for none
+    Stats stats;
+    /// Effective settings the frame was rendered with (key, canonical value).
+    std::vector<std::pair<std::string, std::string>> settings;
+};
+
+} // namespace sheaf

@@ -1,0 +1,40 @@
+#include "core/render/shade.h"
+
+namespace sheaf {
+
+SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim, float t) {
+    const TriangleVerts& tv = scene.tris[prim];
+    const Vec3 e1 = tv.b - tv.a, e2 = tv.c - tv.a;
+    Vec3 gn = normalize(cross(e1, e2));
+    SurfaceHit h;
+    h.prim = prim;
+    h.material = scene.object_material[scene.prim_object[prim]];
+    h.t = t;
+    h.incoming = ray.dir;
+    h.position = ray_at(ray, t);
+
+    // Barycentrics of the hit point in the triangle's plane, clamped to the triangle.
+    const Vec3 p = h.position - tv.a;
+    const float d00 = dot(e1, e1), d01 = dot(e1, e2), d11 = dot(e2, e2);
+    const float d20 = dot(p, e1), d21 = dot(p, e2);
+    const float den = d00 * d11 - d01 * d01;
+    float u = den != 0 ? (d11 * d20 - d01 * d21) / den : 0.0f;
+    float v = den != 0 ? (d00 * d21 - d01 * d20) / den : 0.0f;
+    u = fminf(fmaxf(u, 0.0f), 1.0f);
+    v = fminf(fmaxf(v, 0.0f), 1.0f - u);
+
+    h.front = dot(gn, ray.dir) < 0;
+    if (!h.front) gn = -gn;
+    h.geo_normal = gn;
+    const TriangleNormals& tn = scene.normals[prim];
+    Vec3 n = gn;
+    if (tn.na.x != 0 || tn.na.y != 0 || tn.na.z != 0) {
+        n = normalize(tn.na * (1.0f - u - v) + tn.nb * u + tn.nc * v);
+        if (dot(n, gn) < 0) n = -n; // an interpolated normal on the far side is turned round
+        if (length_squared(n) == 0) n = gn;
+    }
+    h.normal = n;
+    return h;
+}
+
+} // namespace sheaf

@@ -1,0 +1,23 @@
+// A shaded surface point: a primary hit from the G-buffer or a reflection/refraction hit.
+#pragma once
+
+#include "core/math/vec3.h"
+
+#include <cstdint>
+
+namespace sheaf {
+
+struct SurfaceHit {
+    uint32_t pixel = 0;
+    uint32_t prim = 0;
+    uint32_t material = 0;
+    Vec3 position;
+    Vec3 normal;       // shading normal, turned to face the incoming ray
+    Vec3 geo_normal;   // geometric normal, turned to face the incoming ray
+    Vec3 incoming;     // unit direction of the ray that found the point
+    Vec3 throughput;   // share of this point's radiance that reaches the pixel
+    float t = 0;       // distance along the incoming ray
+    bool front = true; // the ray arrived on the side the winding calls outside
+};
+
+} // namespace sheaf

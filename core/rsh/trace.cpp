@@ -1,0 +1,348 @@
+#include "core/rsh/trace.h"
+
+#include "core/base/parallel.h"
+#include "core/base/timer.h"
+#include "core/geometry/ray_triangle.h"
+#include "core/hash/ray_hash.h"
+#include "core/rsh/hierarchy.h"
+#include "core/sort/ray_order.h"
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include <atomic>
+#include <cfloat>
+#include <chrono>
+#include <string>
+
+namespace sheaf {
+namespace {
+
+struct Pair {
+    uint32_t node, prim;
+};
+
+struct Counter {
+    std::atomic<uint64_t> tests{0}, hits{0};
+    void add(uint64_t t, uint64_t h) {
+        tests.fetch_add(t, std::memory_order_relaxed);
+        hits.fetch_add(h, std::memory_order_relaxed);
+    }
+};
+
+void record_hit(TraceResult& out, bool any, uint32_t ray, float t, uint32_t prim) {
+    if (any) {
+        std::atomic_ref<uint8_t>(out.occluded[ray]).store(1, std::memory_order_relaxed);
+        return;
+    }
+    const uint64_t h = pack_hit(t, prim);
+    std::atomic_ref<uint64_t> slot(out.closest[ray]);
+    uint64_t cur = slot.load(std::memory_order_relaxed);
+    while (h < cur && !slot.compare_exchange_weak(cur, h, std::memory_order_relaxed)) {
+    }
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// ---------------------------------------------------------------------------------------------
+// brute: every ray against every primitive. Any-hit queries stop at the first hit.
+void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, Counter& final,
+                 TraceResult& out) {
+    const size_t prims = scene.prim_count();
+    parallel_for_range(
+        "brute.trace", batch.size(),
+        [&](size_t b, size_t e) {
+            uint64_t tests = 0, hits = 0;
+            for (size_t i = b; i < e; ++i) {
+                const Ray& r = batch.rays[i];
+                uint64_t best = kNoHit;
+                for (size_t p = 0; p < prims; ++p) {
+                    ++tests;
+                    const TriangleVerts& t = scene.tris[p];
+                    TriangleHit h;
+                    if (!intersect_triangle(r, t.a, t.b, t.c, h)) continue;
+                    ++hits;
+                    if (any) {
+                        out.occluded[i] = 1;
+                        break;
+                    }
+                    best = std::min(best, pack_hit(h.t, uint32_t(p)));
+                }
+                if (!any) out.closest[i] = best;
+            }
+            final.add(tests, hits);
+        },
+        16);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The hierarchy traversal with bounded candidate lists.
+class Traversal {
+  public:
+    Traversal(const PreparedScene& scene, const RayHierarchy& h, const TrackedVector<Ray>& rays,
+              const std::vector<uint32_t>& perm, bool any, size_t batch, MemoryTracker& memory,
+              TraceResult& out)
+        : levels_(size_t(h.depth) + 1), scene_(scene), h_(h), rays_(rays), perm_(perm), any_(any),
+          batch_(batch), out_(out), local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
+        for (int k = 0; k <= h.depth; ++k) buffers_.push_back(tracked_vector<Pair>(memory));
+    }
+
+    void run(bool cull) {
+        const int top = h_.depth;
+        const size_t top_nodes = h_.node_count(top);
+        const size_t prims = scene_.prim_count();
+        // At most batch_ candidate pairs come out of one group of top nodes.
+        const size_t group = std::max<size_t>(1, batch_ / std::max<size_t>(1, prims));
+        const RayNode* nodes = h_.levels[size_t(top) - 1].data();
+        for (size_t g0 = 0; g0 < top_nodes; g0 += group) {
+            const size_t g1 = std::min(top_nodes, g0 + group);
+            for (auto& l : local_) l.clear();
+            parallel_for_range(
+                "rsh.top", g1 - g0,
+                [&](size_t b, size_t e) {
+                    auto& outp = local_.local();
+                    uint64_t ot = 0, oh = 0, lt = 0, lh = 0;
+                    for (size_t i = g0 + b; i < g0 + e; ++i) {
+                        const RayNode& n = nodes[i];
+                        auto test_range = [&](uint32_t p0, uint32_t p1) {
+                            for (uint32_t p = p0; p < p1; ++p) {
+                                ++lt;
+                                if (node_hits_sphere(n, scene_.prim_sphere[p])) {
+                                    ++lh;
+                                    outp.push_back({uint32_t(i), p});
+                                }
+                            }
+                        };
+                        if (cull) {
+                            for (size_t o = 0; o < scene_.object_count(); ++o) {
+                                ++ot;
+                                if (!node_hits_sphere(n, scene_.object_sphere[o])) continue;
+                                ++oh;
+                                test_range(scene_.object_begin[o], scene_.object_begin[o + 1]);
+                            }
+                        } else {
+                            test_range(0, uint32_t(prims));
+                        }
+                    }
+                    objects_.add(ot, oh);
+                    levels_[size_t(top)].add(lt, lh);
+                },
+                1);
+            gather(buffers_[size_t(top)]);
+            descend(top);
+        }
+    }
+
+    Counter objects_, final_;
+    std::vector<Counter> levels_; // index k: level k
+    double final_ms_ = 0;
+
+  private:
+    void gather(TrackedVector<Pair>& dst) {
+        size_t n = 0;
+        for (auto& l : local_) n += l.size();
+        dst.clear();
+        dst.reserve(n);
+        for (auto& l : local_) dst.insert(dst.end(), l.begin(), l.end());
+    }
+
+    // buffers_[level] holds candidate pairs of nodes at `level`; expands them to level - 1.
+    void descend(int level) {
+        const TrackedVector<Pair>& pairs = buffers_[size_t(level)];
+        if (level == 1) {
+            finals(pairs);
+            return;
+        }
+        const RayNode* children = h_.levels[size_t(level) - 2].data();
+        const size_t chunk = std::max<size_t>(1, batch_ / size_t(h_.arity));
+        for (size_t c0 = 0; c0 < pairs.size(); c0 += chunk) {
+            const size_t c1 = std::min(pairs.size(), c0 + chunk);
+            for (auto& l : local_) l.clear();
+            parallel_for_range(
+                "rsh.level", c1 - c0,
+                [&](size_t b, size_t e) {
+                    auto& outp = local_.local();
+                    uint64_t t = 0, hcount = 0;
+                    for (size_t i = c0 + b; i < c0 + e; ++i) {
+                        const Pair pr = pairs[i];
+                        const Sphere& s = scene_.prim_sphere[pr.prim];
+                        for (size_t c = h_.first_child(pr.node),
+                                    last = h_.last_child(level, pr.node);
+                             c < last; ++c) {
+                            ++t;
+                            if (node_hits_sphere(children[c], s)) {
+                                ++hcount;
+                                outp.push_back({uint32_t(c), pr.prim});
+                            }
+                        }
+                    }
+                    levels_[size_t(level) - 1].add(t, hcount);
+                },
+                256);
+            gather(buffers_[size_t(level) - 1]);
+            descend(level - 1);
+        }
+    }
+
+    void finals(const TrackedVector<Pair>& pairs) {
+        const auto t0 = std::chrono::steady_clock::now();
+        parallel_for_range(
+            "rsh.final", pairs.size(),
+            [&](size_t b, size_t e) {
+                uint64_t t = 0, hcount = 0;
+                for (size_t i = b; i < e; ++i) {
+                    const Pair pr = pairs[i];
+                    const TriangleVerts& tri = scene_.tris[pr.prim];
+                    for (size_t j = h_.first_child(pr.node), last = h_.last_child(1, pr.node);
+                         j < last; ++j) {
+                        ++t;
+                        TriangleHit hit;
+                        if (!intersect_triangle(rays_[j], tri.a, tri.b, tri.c, hit)) continue;
+                        ++hcount;
+                        record_hit(out_, any_, perm_[j], hit.t, pr.prim);
+                    }
+                }
+                final_.add(t, hcount);
+            },
+            256);
+        final_ms_ += ms_since(t0);
+    }
+
+    const PreparedScene& scene_;
+    const RayHierarchy& h_;
+    const TrackedVector<Ray>& rays_;
+    const std::vector<uint32_t>& perm_;
+    bool any_;
+    size_t batch_;
+    TraceResult& out_;
+    tbb::enumerable_thread_specific<TrackedVector<Pair>> local_;
+    std::vector<TrackedVector<Pair>> buffers_;
+};
+
+// Keys of the batch under hash.mode (rah: none). Returns the number of 32-bit words per key.
+int hash_rays(const PreparedScene& scene, const RayBatch& batch, HashMode mode,
+              std::vector<uint32_t>& keys) {
+    const size_t n = batch.size();
+    if (mode == HashMode::None) return 0;
+    Aabb box{Vec3(FLT_MAX), Vec3(-FLT_MAX)};
+    for (const Ray& r : batch.rays)
+        box.lo = vmin(box.lo, r.origin), box.hi = vmax(box.hi, r.origin);
+    if (mode == HashMode::Hash192) {
+        keys.resize(n * 6);
+        parallel_for(
+            "hash.192", n,
+            [&](size_t i) {
+                hash192_key(box, batch.rays[i].origin, batch.rays[i].dir, &keys[i * 6]);
+            },
+            1024);
+        return 6;
+    }
+    keys.resize(n);
+    if (mode == HashMode::Hash32) {
+        parallel_for(
+            "hash.32", n,
+            [&](size_t i) { keys[i] = hash32_key(box, batch.rays[i].origin, batch.rays[i].dir); },
+            1024);
+    } else if (batch.type == RayType::Shadow) {
+        const int lb = light_bits(uint32_t(scene.lights.size()));
+        parallel_for(
+            "hash.crsh_shadow", n,
+            [&](size_t i) { keys[i] = crsh_shadow_key(batch.light[i], lb, batch.rays[i].dir); },
+            1024);
+    } else {
+        parallel_for(
+            "hash.crsh", n,
+            [&](size_t i) {
+                keys[i] = crsh_secondary_key(box, batch.rays[i].origin, batch.rays[i].dir);
+            },
+            1024);
+    }
+    return 1;
+}
+
+} // namespace
+
+void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
+                 Stats& stats, MemoryTracker& memory, TraceResult& out) {
+    const size_t n = batch.size();
+    const bool any = any_hit_query(batch.type);
+    const std::string p = std::string("tests.") + ray_type_name(batch.type) + ".";
+    stats.add(std::string("rays.") + ray_type_name(batch.type), double(n));
+    stats.add(p + "brute_force", double(n) * double(scene.prim_count()));
+    if (any)
+        out.occluded.assign(n, 0);
+    else
+        out.closest.assign(n, kNoHit);
+    if (n == 0 || scene.prim_count() == 0) return;
+
+    if (s.accel == Accel::Brute) {
+        Counter final;
+        {
+            PhaseTimer t(stats, "time_ms.final_tests");
+            trace_brute(scene, batch, any, final, out);
+        }
+        stats.add(p + "final.tests", double(final.tests));
+        stats.add(p + "final.hits", double(final.hits));
+        stats.add(p + "final.misses", double(final.tests - final.hits));
+        stats.add(p + "total", double(final.tests));
+        return;
+    }
+
+    // Hash and order (crsh); rah keeps the generation order.
+    const HashMode hash = s.accel == Accel::Crsh ? s.hash : HashMode::None;
+    std::vector<uint32_t> keys;
+    int words = 0;
+    {
+        PhaseTimer t(stats, "time_ms.hashing");
+        words = hash_rays(scene, batch, hash, keys);
+    }
+    const SortMode sort = words == 0 ? SortMode::None : s.sort;
+    OrderResult order = order_rays(keys, words, n, sort, stats);
+    memory.add(int64_t(keys.capacity() + order.perm.capacity()) * 4);
+    if (sort == SortMode::Csd)
+        stats.add(std::string("sort.") + ray_type_name(batch.type) + ".chunks",
+                  double(order.chunks));
+
+    // Rays gathered into sorted order, then the hierarchy over them.
+    TrackedVector<Ray> sorted = tracked_vector<Ray>(memory, n);
+    RayHierarchy h;
+    {
+        PhaseTimer t(stats, "time_ms.hierarchy");
+        parallel_for(
+            "rsh.gather", n, [&](size_t j) { sorted[j] = batch.rays[order.perm[j]]; }, 4096);
+        h = build_hierarchy(sorted, s.hierarchy_depth, s.hierarchy_arity, memory);
+    }
+    stats.add(std::string("hierarchy.") + ray_type_name(batch.type) + ".top_nodes",
+              double(h.node_count(s.hierarchy_depth)));
+
+    const auto t0 = std::chrono::steady_clock::now();
+    Traversal trav(scene, h, sorted, order.perm, any, size_t(s.batch_pairs), memory, out);
+    trav.run(s.cull_objects);
+    const double total_ms = ms_since(t0);
+    stats.add("time_ms.traversal", total_ms - trav.final_ms_);
+    stats.add("time_ms.final_tests", trav.final_ms_);
+    memory.sub(int64_t(keys.capacity() + order.perm.capacity()) * 4);
+
+    uint64_t total = 0;
+    if (s.cull_objects) {
+        stats.add(p + "objects.tests", double(trav.objects_.tests));
+        stats.add(p + "objects.hits", double(trav.objects_.hits));
+        stats.add(p + "objects.misses", double(trav.objects_.tests - trav.objects_.hits));
+    }
+    for (int k = s.hierarchy_depth; k >= 1; --k) {
+        const Counter& c = trav.levels_[size_t(k)];
+        const std::string lk = p + "level" + std::to_string(k) + ".";
+        stats.add(lk + "tests", double(c.tests));
+        stats.add(lk + "hits", double(c.hits));
+        stats.add(lk + "misses", double(c.tests - c.hits));
+        total += c.tests;
+    }
+    stats.add(p + "final.tests", double(trav.final_.tests));
+    stats.add(p + "final.hits", double(trav.final_.hits));
+    stats.add(p + "final.misses", double(trav.final_.tests - trav.final_.hits));
+    total += trav.final_.tests;
+    stats.add(p + "total", double(total));
+}
+
+} // namespace sheaf

@@ -1,0 +1,52 @@
+// Tracing one batch of secondary rays with the accel of the settings:
+//  brute - every ray against every primitive;
+//  rah   - the ray hierarchy over the rays in generation order (Roger et al.);
+//  crsh  - hash (hash.mode), order (sort.mode), then the ray hierarchy (paper 000).
+// The hierarchy is traversed top-down: top nodes against object spheres (cull.objects), then
+// against primitive spheres level by level, keeping compacted (node, primitive) candidate
+// pairs, then exact tests of each ray against its leaf's candidates. Candidate pairs are
+// processed in batches of at most traversal.batch per level, so memory stays bounded.
+#pragma once
+
+#include "core/base/memory.h"
+#include "core/rays/ray_batch.h"
+#include "core/scene/prepared_scene.h"
+#include "core/settings/settings.h"
+#include "core/stats/stats.h"
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace sheaf {
+
+constexpr uint64_t kNoHit = ~uint64_t(0);
+
+/// Closest hits packed as (float bits of t) << 32 | primitive: the minimum is the nearest
+/// hit, and equal distances go to the lower primitive id, whatever the order of the tests.
+SHEAF_HD_INLINE uint64_t pack_hit(float t, uint32_t prim) {
+    uint32_t u;
+    memcpy(&u, &t, sizeof u);
+    return (uint64_t(u) << 32) | prim;
+}
+SHEAF_HD_INLINE float hit_t(uint64_t h) {
+    const uint32_t u = uint32_t(h >> 32);
+    float t;
+    memcpy(&t, &u, sizeof t);
+    return t;
+}
+SHEAF_HD_INLINE uint32_t hit_prim(uint64_t h) {
+    return uint32_t(h & 0xFFFFFFFFu);
+}
+
+struct TraceResult {
+    std::vector<uint64_t> closest; // reflection and refraction rays: packed hit or kNoHit
+    std::vector<uint8_t> occluded; // shadow and AO rays: 1 when something is in the way
+};
+
+/// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
+/// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`.
+void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& settings,
+                 Stats& stats, MemoryTracker& memory, TraceResult& result);
+
+} // namespace sheaf

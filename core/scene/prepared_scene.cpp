@@ -1,0 +1,64 @@
+#include "core/scene/prepared_scene.h"
+
+#include "core/geometry/min_sphere.h"
+
+#include <tbb/parallel_for.h>
+
+namespace sheaf {
+
+PreparedScene prepare_scene(const Scene& scene) {
+    scene.validate();
+    PreparedScene p;
+    const size_t n = scene.triangle_count();
+    p.tris.resize(n);
+    p.normals.resize(n);
+    p.prim_object.resize(n);
+    p.prim_sphere.resize(n);
+    p.object_begin.reserve(scene.objects.size() + 1);
+    p.object_begin.push_back(0);
+
+    size_t base = 0;
+    std::vector<Vec3> world;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const Object& obj = scene.objects[o];
+        const Mesh& mesh = scene.meshes[obj.mesh];
+        world.resize(mesh.positions.size());
+        for (size_t i = 0; i < world.size(); ++i) world[i] = obj.transform.point(mesh.positions[i]);
+        const bool smooth = !mesh.normals.empty();
+        const size_t tc = mesh.triangle_count();
+        tbb::parallel_for(size_t(0), tc, [&](size_t t) {
+            const uint32_t* ix = &mesh.indices[3 * t];
+            TriangleVerts tv{world[ix[0]], world[ix[1]], world[ix[2]]};
+            p.tris[base + t] = tv;
+            p.prim_sphere[base + t] = triangle_sphere(tv.a, tv.b, tv.c);
+            p.prim_object[base + t] = uint32_t(o);
+            TriangleNormals tn{};
+            if (smooth) {
+                tn.na = obj.transform.normal(mesh.normals[ix[0]]);
+                tn.nb = obj.transform.normal(mesh.normals[ix[1]]);
+                tn.nc = obj.transform.normal(mesh.normals[ix[2]]);
+            }
+            p.normals[base + t] = tn;
+        });
+        base += tc;
+        p.object_begin.push_back(uint32_t(base));
+        // Only the vertices the object's triangles use count towards its sphere.
+        std::vector<char> used(world.size(), 0);
+        for (uint32_t i : mesh.indices) used[i] = 1;
+        std::vector<Vec3> pts;
+        pts.reserve(world.size());
+        for (size_t i = 0; i < world.size(); ++i)
+            if (used[i]) pts.push_back(world[i]);
+        p.object_sphere.push_back(min_sphere(pts));
+        p.object_material.push_back(obj.material);
+        p.object_name.push_back(obj.name);
+    }
+    p.materials = scene.materials;
+    p.lights = scene.lights;
+    p.camera = scene.camera;
+    p.background = scene.background;
+    p.settings = scene.settings;
+    return p;
+}
+
+} // namespace sheaf

@@ -1,0 +1,48 @@
+// The committed scene: every primitive in world space, grouped by object, with the bounding
+// spheres the ray hierarchy tests against. Built once by prepare_scene(); read by every stage.
+#pragma once
+
+#include "core/geometry/sphere.h"
+#include "core/scene/scene.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sheaf {
+
+struct TriangleVerts {
+    Vec3 a, b, c;
+};
+
+struct TriangleNormals {
+    Vec3 na, nb, nc; // unit vertex normals; all zero when the mesh has none
+};
+
+struct PreparedScene {
+    // Primitives (triangles for now), object by object: object o owns
+    // [object_begin[o], object_begin[o + 1]).
+    std::vector<TriangleVerts> tris;
+    std::vector<TriangleNormals> normals;
+    std::vector<uint32_t> prim_object;
+    std::vector<Sphere> prim_sphere;
+
+    std::vector<uint32_t> object_begin; // objects + 1 entries
+    std::vector<Sphere> object_sphere;  // minimal enclosing sphere (Welzl/Gaertner)
+    std::vector<uint32_t> object_material;
+    std::vector<std::string> object_name;
+
+    std::vector<Material> materials;
+    std::vector<PointLight> lights;
+    Camera camera;
+    Vec3 background;
+    std::map<std::string, std::string> settings;
+
+    size_t prim_count() const { return tris.size(); }
+    size_t object_count() const { return object_sphere.size(); }
+};
+
+/// Validates and flattens. Throws SceneError.
+PreparedScene prepare_scene(const Scene& scene);
+
+} // namespace sheaf

@@ -1,0 +1,98 @@
+#include "core/scene/scene.h"
+
+#include "core/base/error.h"
+
+#include <cmath>
+
+namespace sheaf {
+
+uint32_t Scene::add_mesh(Mesh mesh) {
+    meshes.push_back(std::move(mesh));
+    return uint32_t(meshes.size() - 1);
+}
+uint32_t Scene::add_material(const Material& m) {
+    materials.push_back(m);
+    return uint32_t(materials.size() - 1);
+}
+uint32_t Scene::add_object(Object o) {
+    objects.push_back(std::move(o));
+    return uint32_t(objects.size() - 1);
+}
+uint32_t Scene::add_light(const PointLight& l) {
+    lights.push_back(l);
+    return uint32_t(lights.size() - 1);
+}
+uint32_t Scene::add_mesh_object(std::string name, Mesh mesh, uint32_t material, const Affine& t) {
+    Object o;
+    o.name = std::move(name);
+    o.mesh = add_mesh(std::move(mesh));
+    o.material = material;
+    o.transform = t;
+    return add_object(std::move(o));
+}
+
+size_t Scene::triangle_count() const {
+    size_t n = 0;
+    for (const Object& o : objects) n += meshes[o.mesh].triangle_count();
+    return n;
+}
+
+namespace {
+std::string where(size_t mesh) {
+    return "mesh " + std::to_string(mesh);
+}
+} // namespace
+
+void Scene::validate() const {
+    for (size_t m = 0; m < meshes.size(); ++m) {
+        const Mesh& mesh = meshes[m];
+        if (mesh.indices.empty()) throw SceneError(where(m) + " has no faces");
+        if (mesh.indices.size() % 3 != 0)
+            throw SceneError(where(m) + ": the index count " + std::to_string(mesh.indices.size()) +
+                             " is not a multiple of 3");
+        if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
+            throw SceneError(where(m) + ": " + std::to_string(mesh.normals.size()) +
+                             " normals for " + std::to_string(mesh.positions.size()) + " vertices");
+        for (size_t i = 0; i < mesh.positions.size(); ++i)
+            if (!is_finite(mesh.positions[i]))
+                throw SceneError(where(m) + ": vertex " + std::to_string(i) +
+                                 " is not finite (NaN or infinity)");
+        for (size_t i = 0; i < mesh.normals.size(); ++i)
+            if (!is_finite(mesh.normals[i]))
+                throw SceneError(where(m) + ": normal " + std::to_string(i) + " is not finite");
+        for (size_t i = 0; i < mesh.indices.size(); ++i)
+            if (mesh.indices[i] >= mesh.positions.size())
+                throw SceneError(where(m) + ": index " + std::to_string(i) + " = " +
+                                 std::to_string(mesh.indices[i]) + " is out of range (" +
+                                 std::to_string(mesh.positions.size()) + " vertices)");
+    }
+    for (size_t o = 0; o < objects.size(); ++o) {
+        const Object& obj = objects[o];
+        const std::string name =
+            "object " + std::to_string(o) + (obj.name.empty() ? "" : " '" + obj.name + "'");
+        if (obj.mesh >= meshes.size())
+            throw SceneError(name + " names mesh " + std::to_string(obj.mesh) +
+                             ", which does not exist");
+        if (obj.material >= materials.size())
+            throw SceneError(name + " names material " + std::to_string(obj.material) +
+                             ", which does not exist");
+        for (auto& row : obj.transform.m)
+            for (float v : row)
+                if (!std::isfinite(v))
+                    throw SceneError(name + " has a transform that is not finite");
+    }
+    for (size_t l = 0; l < lights.size(); ++l)
+        if (!is_finite(lights[l].position) || !is_finite(lights[l].color))
+            throw SceneError("light " + std::to_string(l) + " is not finite");
+    const Camera& c = camera;
+    if (!is_finite(c.position) || !is_finite(c.look_at) || !is_finite(c.up))
+        throw SceneError("the camera is not finite");
+    if (length(c.look_at - c.position) <= 0)
+        throw SceneError("the camera looks at its own position");
+    if (length(cross(c.look_at - c.position, c.up)) <= 0)
+        throw SceneError("the camera's up vector is parallel to its view");
+    if (!(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
+        throw SceneError("the camera's field of view must lie in (0, 180) degrees");
+}
+
+} // namespace sheaf

@@ -1,0 +1,75 @@
+// The scene as hosts describe it: meshes, materials, lights, a camera, and objects that place
+// a mesh with a material and a transform. Objects keep their identity through the pipeline,
+// because whole objects are culled by their bounding spheres.
+#pragma once
+
+#include "core/math/affine.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sheaf {
+
+struct Mesh {
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;     // empty, or one per position (smooth shading)
+    std::vector<uint32_t> indices; // three per triangle, into positions
+    size_t triangle_count() const { return indices.size() / 3; }
+};
+
+struct Material {
+    Vec3 color{0.8f, 0.8f, 0.8f};
+    float ambient = 0.1f;
+    float diffuse = 0.7f;
+    float specular = 0.0f; // Phong highlight strength
+    float phong_exponent = 40.0f;
+    float mirror = 0.0f;       // mirror reflection weight
+    float transmission = 0.0f; // refracted share, split with reflection by Fresnel
+    float ior = 1.5f;
+};
+
+struct PointLight {
+    Vec3 position;
+    Vec3 color{1, 1, 1};
+};
+
+struct Camera {
+    Vec3 position{0, 0, 5};
+    Vec3 look_at{0, 0, 0};
+    Vec3 up{0, 1, 0};
+    float fov_y_degrees = 45.0f; // vertical field of view
+};
+
+struct Object {
+    std::string name;
+    uint32_t mesh = 0;
+    uint32_t material = 0;
+    Affine transform;
+};
+
+class Scene {
+  public:
+    uint32_t add_mesh(Mesh mesh);
+    uint32_t add_material(const Material& m);
+    uint32_t add_object(Object o);
+    uint32_t add_light(const PointLight& l);
+    /// Adds a mesh and one object that uses it (the common case of a unique mesh).
+    uint32_t add_mesh_object(std::string name, Mesh mesh, uint32_t material, const Affine& t = {});
+
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Object> objects;
+    std::vector<PointLight> lights;
+    Camera camera;
+    Vec3 background{0, 0, 0};
+    /// Settings the scene itself asks for (e.g. trace.depth); a host's explicit settings win.
+    std::map<std::string, std::string> settings;
+
+    size_t triangle_count() const;
+    /// Throws SceneError naming the offending mesh, object or value.
+    void validate() const;
+};
+
+} // namespace sheaf

@@ -1,0 +1,276 @@
+#include "core/settings/settings.h"
+
+#include "core/base/error.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace sheaf {
+
+const std::vector<SettingSpec>& setting_specs() {
+    using K = SettingKind;
+    static const std::vector<SettingSpec> specs = {
+        {"accel",
+         K::Choice,
+         "crsh",
+         0,
+         0,
+         {"brute", "rah", "crsh"},
+         "how secondary rays find geometry: every ray against every primitive (brute), the ray "
+         "hierarchy over "
+         "unsorted rays (rah, Roger et al.) or over hashed and sorted rays (crsh, paper 000)"},
+        {"hierarchy.depth", K::Int, "2", 1, 8, {}, "levels of ray-hierarchy nodes above the rays"},
+        {"hierarchy.arity", K::Int, "8", 2, 64, {}, "children per hierarchy node"},
+        {"hash.mode",
+         K::Choice,
+         "crsh",
+         0,
+         0,
+         {"none", "crsh", "hash32", "hash192"},
+         "ray hash: per ray type (crsh, paper 000) or the 32/192-bit keys of paper 003"},
+        {"sort.mode",
+         K::Choice,
+         "csd",
+         0,
+         0,
+         {"none", "full", "csd"},
+         "ray order before the hierarchy is built: unsorted, every ray sorted by key, or "
+         "compress-sort-decompress"},
+        {"cull.objects",
+         K::Bool,
+         "true",
+         0,
+         0,
+         {},
+         "test top hierarchy nodes against object bounding spheres first"},
+        {"trace.depth",
+         K::Int,
+         "5",
+         0,
+         64,
+         {},
+         "reflection/refraction bounces after the primary hit"},
+        {"backend",
+         K::Choice,
+         "auto",
+         0,
+         0,
+         {"auto", "cpu", "cuda"},
+         "where the frame is computed"},
+        {"width", K::Int, "512", 1, 16384, {}, "image width in pixels"},
+        {"height", K::Int, "512", 1, 16384, {}, "image height in pixels"},
+        {"aa.samples",
+         K::Int,
+         "1",
+         1,
+         8,
+         {},
+         "anti-aliasing: n x n samples per pixel, box filtered"},
+        {"threads", K::Int, "0", 0, 1024, {}, "worker threads, 0 for every core"},
+        {"ao.samples",
+         K::Int,
+         "0",
+         0,
+         1024,
+         {},
+         "ambient-occlusion rays per pixel at the primary hit, 0 for none"},
+        {"ao.distance",
+         K::Float,
+         "1",
+         1e-6,
+         1e30,
+         {},
+         "ambient-occlusion ray length in scene units"},
+        {"traversal.batch",
+         K::Int,
+         "4194304",
+         1024,
+         1 << 30,
+         {},
+         "candidate (node, primitive) pairs held at once per level; bounds traversal memory"},
+    };
+    return specs;
+}
+
+const SettingSpec* find_setting(std::string_view key) {
+    for (const SettingSpec& s : setting_specs())
+        if (s.key == key) return &s;
+    return nullptr;
+}
+
+namespace {
+
+std::string format_number(double v) {
+    std::ostringstream os;
+    os.precision(9);
+    os << v;
+    return os.str();
+}
+
+std::string known_keys() {
+    std::string out;
+    for (const SettingSpec& s : setting_specs()) out += (out.empty() ? "" : ", ") + s.key;
+    return out;
+}
+
+const SettingSpec& spec_or_throw(std::string_view key) {
+    const SettingSpec* s = find_setting(key);
+    if (!s)
+        throw SettingsError("unknown setting '" + std::string(key) +
+                            "'; known settings: " + known_keys());
+    return *s;
+}
+
+[[noreturn]] void bad_value(const SettingSpec& s, std::string_view value) {
+    throw SettingsError("setting '" + s.key + "': '" + std::string(value) +
+                        "' is not allowed; expected " + describe_allowed(s));
+}
+
+} // namespace
+
+std::string describe_allowed(const SettingSpec& s) {
+    switch (s.kind) {
+    case SettingKind::Int:
+        return "an integer in " + format_number(s.min) + ".." + format_number(s.max);
+    case SettingKind::Float:
+        return "a number in " + format_number(s.min) + ".." + format_number(s.max);
+    case SettingKind::Bool:
+        return "true or false (also on/off, yes/no, 1/0)";
+    case SettingKind::Choice: {
+        std::string out = "one of ";
+        for (size_t i = 0; i < s.choices.size(); ++i) out += (i ? ", " : "") + s.choices[i];
+        return out;
+    }
+    }
+    return {};
+}
+
+std::string canonical_setting(std::string_view key, std::string_view value) {
+    const SettingSpec& s = spec_or_throw(key);
+    switch (s.kind) {
+    case SettingKind::Int: {
+        long long v = 0;
+        auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+        if (ec != std::errc() || end != value.data() + value.size() || v < s.min || v > s.max)
+            bad_value(s, value);
+        return std::to_string(v);
+    }
+    case SettingKind::Float: {
+        double v = 0;
+        auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+        if (ec != std::errc() || end != value.data() + value.size() || !std::isfinite(v) ||
+            v < s.min || v > s.max)
+            bad_value(s, value);
+        return format_number(v);
+    }
+    case SettingKind::Bool:
+        if (value == "true" || value == "on" || value == "yes" || value == "1") return "true";
+        if (value == "false" || value == "off" || value == "no" || value == "0") return "false";
+        bad_value(s, value);
+    case SettingKind::Choice:
+        for (const std::string& c : s.choices)
+            if (c == value) return c;
+        bad_value(s, value);
+    }
+    bad_value(s, value);
+}
+
+void Settings::set(std::string_view key, std::string_view value) {
+    std::string v = canonical_setting(key, value);
+    values_.insert_or_assign(std::string(key), std::move(v));
+}
+
+void Settings::unset(std::string_view key) {
+    spec_or_throw(key);
+    if (auto it = values_.find(key); it != values_.end()) values_.erase(it);
+}
+
+bool Settings::has(std::string_view key) const {
+    return values_.find(key) != values_.end();
+}
+
+std::string Settings::get(std::string_view key) const {
+    if (auto it = values_.find(key); it != values_.end()) return it->second;
+    return spec_or_throw(key).default_value;
+}
+
+std::vector<std::pair<std::string, std::string>>
+RenderSettings::effective(const Settings& explicit_settings,
+                          const std::map<std::string, std::string>& scene) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const SettingSpec& s : setting_specs()) {
+        std::string v;
+        if (explicit_settings.has(s.key))
+            v = explicit_settings.get(s.key);
+        else if (auto it = scene.find(s.key); it != scene.end()) {
+            try {
+                v = canonical_setting(s.key, it->second);
+            } catch (const SettingsError& e) {
+                throw SceneError(std::string("the scene's own ") + e.what());
+            }
+        } else
+            v = s.default_value;
+        out.emplace_back(s.key, std::move(v));
+    }
+    for (const auto& [k, v] : scene)
+        if (!find_setting(k)) throw SceneError("the scene sets unknown setting '" + k + "'");
+    return out;
+}
+
+RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
+                                       const std::map<std::string, std::string>& scene) {
+    std::map<std::string, std::string> v;
+    for (auto& [k, val] : effective(explicit_settings, scene)) v[k] = val;
+    auto i = [&](const char* k) { return std::stoi(v.at(k)); };
+    auto choice = [&](const char* k) { return v.at(k); };
+    RenderSettings r;
+    const std::string accel = choice("accel");
+    r.accel = accel == "brute" ? Accel::Brute : accel == "rah" ? Accel::Rah : Accel::Crsh;
+    r.hierarchy_depth = i("hierarchy.depth");
+    r.hierarchy_arity = i("hierarchy.arity");
+    const std::string hash = choice("hash.mode");
+    r.hash = hash == "none"      ? HashMode::None
+             : hash == "hash32"  ? HashMode::Hash32
+             : hash == "hash192" ? HashMode::Hash192
+                                 : HashMode::Crsh;
+    const std::string sort = choice("sort.mode");
+    r.sort = sort == "none" ? SortMode::None : sort == "full" ? SortMode::Full : SortMode::Csd;
+    r.cull_objects = v.at("cull.objects") == "true";
+    r.trace_depth = i("trace.depth");
+    const std::string backend = choice("backend");
+    r.backend = backend == "cpu" ? Backend::Cpu : backend == "cuda" ? Backend::Cuda : Backend::Auto;
+    r.width = i("width");
+    r.height = i("height");
+    r.aa_samples = i("aa.samples");
+    r.threads = i("threads");
+    r.ao_samples = i("ao.samples");
+    r.ao_distance = std::stof(v.at("ao.distance"));
+    r.batch_pairs = std::stoll(v.at("traversal.batch"));
+    return r;
+}
+
+const char* to_string(Accel a) {
+    return a == Accel::Brute ? "brute" : a == Accel::Rah ? "rah" : "crsh";
+}
+const char* to_string(HashMode h) {
+    switch (h) {
+    case HashMode::None:
+        return "none";
+    case HashMode::Crsh:
+        return "crsh";
+    case HashMode::Hash32:
+        return "hash32";
+    case HashMode::Hash192:
+        return "hash192";
+    }
+    return "?";
+}
+const char* to_string(SortMode s) {
+    return s == SortMode::None ? "none" : s == SortMode::Full ? "full" : "csd";
+}
+const char* to_string(Backend b) {
+    return b == Backend::Auto ? "auto" : b == Backend::Cpu ? "cpu" : "cuda";
+}
+
+} // namespace sheaf

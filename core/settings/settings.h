@@ -1,0 +1,85 @@
+// Render settings: one dictionary of named keys, the same in presets, the CLI, the C ABI and
+// the Blender panel. Every key has a kind, a default and a range; a bad value is an error
+// that names the key and what is allowed.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sheaf {
+
+enum class SettingKind { Int, Float, Bool, Choice };
+
+struct SettingSpec {
+    std::string key;
+    SettingKind kind;
+    std::string default_value;
+    double min = 0, max = 0;          // Int and Float
+    std::vector<std::string> choices; // Choice
+    std::string help;
+};
+
+/// Every known setting, in a stable order.
+const std::vector<SettingSpec>& setting_specs();
+/// nullptr when the key is unknown.
+const SettingSpec* find_setting(std::string_view key);
+/// What a key accepts, in words ("an integer in 2..64", "one of none, crsh").
+std::string describe_allowed(const SettingSpec& spec);
+/// Checks `value` against the key and returns its canonical text ("on" -> "true", "08" -> "8").
+/// Throws SettingsError naming the key and the allowed values.
+std::string canonical_setting(std::string_view key, std::string_view value);
+
+/// The values a host set explicitly. Unset keys fall back to the scene's own settings, then
+/// to the defaults.
+class Settings {
+  public:
+    void set(std::string_view key, std::string_view value);
+    void unset(std::string_view key);
+    bool has(std::string_view key) const;
+    /// Explicit value, else the default.
+    std::string get(std::string_view key) const;
+    const std::map<std::string, std::string, std::less<>>& values() const { return values_; }
+
+  private:
+    std::map<std::string, std::string, std::less<>> values_;
+};
+
+enum class Accel { Brute, Rah, Crsh };
+enum class HashMode { None, Crsh, Hash32, Hash192 };
+enum class SortMode { None, Full, Csd };
+enum class Backend { Auto, Cpu, Cuda };
+
+/// The typed, resolved settings the pipeline runs with.
+struct RenderSettings {
+    Accel accel = Accel::Crsh;
+    int hierarchy_depth = 2;
+    int hierarchy_arity = 8;
+    HashMode hash = HashMode::Crsh;
+    SortMode sort = SortMode::Csd;
+    bool cull_objects = true;
+    int trace_depth = 5;
+    Backend backend = Backend::Auto;
+    int width = 512, height = 512;
+    int aa_samples = 1; // per axis: aa x aa samples per pixel
+    int threads = 0;    // 0: all cores
+    int ao_samples = 0;
+    float ao_distance = 1.0f;
+    long long batch_pairs = 1 << 22; // candidate pairs held at once per level
+
+    /// Explicit values win over the scene's, which win over the defaults.
+    static RenderSettings resolve(const Settings& explicit_settings,
+                                  const std::map<std::string, std::string>& scene_settings = {});
+    /// Every key with its effective value, canonical text, in the order of setting_specs().
+    static std::vector<std::pair<std::string, std::string>>
+    effective(const Settings& explicit_settings,
+              const std::map<std::string, std::string>& scene_settings = {});
+};
+
+const char* to_string(Accel a);
+const char* to_string(HashMode h);
+const char* to_string(SortMode s);
+const char* to_string(Backend b);
+
+} // namespace sheaf

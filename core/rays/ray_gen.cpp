@@ -52,37 +52,33 @@ bool lit_by(const SurfaceHit& h, Vec3 light_pos) {
 
 void generate_shadow_rays(const PreparedScene& scene, const std::vector<SurfaceHit>& hits,
                           const RayGenParams& p, RayBatch& out) {
+    // Light-major order: all rays of light 0 in hit order, then light 1, ... Rays that leave
+    // the same light towards neighbouring pixels sit side by side even unsorted (rah).
+    const size_t n = hits.size();
     const auto& lights = scene.lights;
     emit(
-        hits.size(), out,
-        [&](size_t i) {
-            uint32_t c = 0;
-            for (const PointLight& l : lights) c += lit_by(hits[i], l.position) ? 1 : 0;
-            return c;
-        },
-        [&](size_t i, uint32_t slot) {
-            const SurfaceHit& h = hits[i];
-            const Material& m = scene.materials[h.material];
-            for (uint32_t li = 0; li < lights.size(); ++li) {
-                const PointLight& l = lights[li];
-                if (!lit_by(h, l.position)) continue;
-                // The ray starts at the light and ends just above the surface.
-                const Vec3 target = h.position + h.geo_normal * p.epsilon;
-                const Vec3 d = target - l.position;
-                const float dist = length(d);
-                Ray r;
-                r.origin = l.position;
-                r.dir = d / dist;
-                r.tmin = 0.0f;
-                r.tmax = dist;
-                const Vec3 to_light = normalize(l.position - h.position);
-                out.rays[slot] = r;
-                out.pixel[slot] = h.pixel;
-                out.weight[slot] =
-                    h.throughput * direct_light(m, h.normal, h.incoming, to_light, l.color);
-                out.light[slot] = li;
-                ++slot;
-            }
+        n * lights.size(), out,
+        [&](size_t k) { return lit_by(hits[k % n], lights[k / n].position) ? 1u : 0u; },
+        [&](size_t k, uint32_t slot) {
+            const SurfaceHit& h = hits[k % n];
+            const uint32_t li = uint32_t(k / n);
+            const PointLight& l = lights[li];
+            if (!lit_by(h, l.position)) return;
+            // The ray starts at the light and ends just above the surface.
+            const Vec3 target = h.position + h.geo_normal * p.epsilon;
+            const Vec3 d = target - l.position;
+            const float dist = length(d);
+            Ray r;
+            r.origin = l.position;
+            r.dir = d / dist;
+            r.tmin = 0.0f;
+            r.tmax = dist;
+            const Vec3 to_light = normalize(l.position - h.position);
+            out.rays[slot] = r;
+            out.pixel[slot] = h.pixel;
+            out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h.normal,
+                                                           h.incoming, to_light, l.color);
+            out.light[slot] = li;
         });
 }
 

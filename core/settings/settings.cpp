@@ -131,8 +131,9 @@ const SettingSpec& spec_or_throw(std::string_view key) {
 
 std::string describe_allowed(const SettingSpec& s) {
     switch (s.kind) {
-    case SettingKind::Int:
-        return "an integer in " + format_number(s.min) + ".." + format_number(s.max);
+    case SettingKind::Int: // exact: format_number's 9 digits would print 2^30 as 1.07374182e+09
+        return "an integer in " + std::to_string((long long)s.min) + ".." +
+               std::to_string((long long)s.max);
     case SettingKind::Float:
         return "a number in " + format_number(s.min) + ".." + format_number(s.max);
     case SettingKind::Bool:

@@ -1,0 +1,201 @@
+// The frame pipeline: exact accel modes agree byte for byte, frames are deterministic, the
+// statistics add up, and a scene with a known answer renders to it.
+#include "core/render/renderer.h"
+
+#include "core/base/error.h"
+#include "core/scenes/builtin.h"
+#include "core/scenes/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace sheaf {
+namespace {
+
+Frame render(const PreparedScene& scene,
+             std::initializer_list<std::pair<const char*, const char*>> kv) {
+    Settings s;
+    for (auto& [k, v] : kv) s.set(k, v);
+    return render_frame(scene, RenderSettings::resolve(s, scene.settings));
+}
+
+bool same_image(const Frame& a, const Frame& b) {
+    return a.rgba.size() == b.rgba.size() &&
+           std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * 4) == 0;
+}
+
+double mean(const Frame& f) {
+    double m = 0;
+    for (size_t i = 0; i < f.rgba.size(); i += 4) m += f.rgba[i] + f.rgba[i + 1] + f.rgba[i + 2];
+    return m / double(f.rgba.size());
+}
+
+// A glass sphere and a mirror box over a floor: refraction, total internal reflection and
+// reflection in one small scene.
+PreparedScene glass_scene() {
+    Scene s;
+    Material floor;
+    floor.color = Vec3(0.8f, 0.7f, 0.5f);
+    Material glass;
+    glass.color = Vec3(0.9f, 1.0f, 0.9f);
+    glass.transmission = 0.9f, glass.ior = 1.5f, glass.specular = 0.5f, glass.diffuse = 0.1f;
+    Material mirror;
+    mirror.mirror = 0.8f;
+    const uint32_t mf = s.add_material(floor), mg = s.add_material(glass),
+                   mm = s.add_material(mirror);
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+    s.add_mesh_object("glass", make_uv_sphere(Vec3(0, 0, 0), 1.0f, 12, 24), mg);
+    s.add_mesh_object("mirror", make_box(Vec3(1.5f, -1, -2), Vec3(2.5f, 1, -1)), mm);
+    s.add_light(PointLight{Vec3(2, 5, 4), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 1.5f, 5);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.background = Vec3(0.2f, 0.3f, 0.5f);
+    return prepare_scene(s);
+}
+
+TEST(Renderer, AccelModesGiveIdenticalImagesOnTheBuiltinScenes) {
+    for (const std::string& name : builtin_scene_names()) {
+        const PreparedScene scene = prepare_scene(make_builtin_scene(name));
+        const Frame brute = render(scene, {{"width", "40"}, {"height", "32"}, {"accel", "brute"}});
+        const Frame rah = render(
+            scene,
+            {{"width", "40"}, {"height", "32"}, {"accel", "rah"}, {"cull.objects", "false"}});
+        const Frame crsh = render(scene, {{"width", "40"}, {"height", "32"}});
+        EXPECT_TRUE(same_image(brute, rah)) << name;
+        EXPECT_TRUE(same_image(brute, crsh)) << name;
+        EXPECT_GT(mean(crsh), 0.01) << name;
+        // Same rays, whichever accel traced them.
+        for (const char* k : {"rays.shadow", "rays.reflection", "rays.refraction"}) {
+            EXPECT_EQ(brute.stats.get(k), crsh.stats.get(k)) << name << " " << k;
+            EXPECT_EQ(rah.stats.get(k), crsh.stats.get(k)) << name << " " << k;
+        }
+        EXPECT_LT(crsh.stats.get("tests.total"), brute.stats.get("tests.total")) << name;
+    }
+}
+
+TEST(Renderer, HashSortDepthAndArityNeverChangeThePicture) {
+    const PreparedScene scene = glass_scene();
+    const Frame ref =
+        render(scene, {{"width", "48"}, {"height", "40"}, {"accel", "brute"}, {"ao.samples", "3"}});
+    EXPECT_GT(ref.stats.get("rays.refraction"), 0);
+    EXPECT_GT(ref.stats.get("rays.reflection"), 0);
+    EXPECT_GT(ref.stats.get("rays.ao"), 0);
+    const std::vector<std::vector<std::pair<const char*, const char*>>> variants = {
+        {{"hash.mode", "crsh"}, {"sort.mode", "csd"}},
+        {{"hash.mode", "hash32"}, {"sort.mode", "full"}},
+        {{"hash.mode", "hash192"}, {"sort.mode", "csd"}},
+        {{"hash.mode", "none"}, {"sort.mode", "none"}},
+        {{"hierarchy.depth", "1"}, {"hierarchy.arity", "2"}},
+        {{"hierarchy.depth", "4"}, {"hierarchy.arity", "5"}, {"cull.objects", "false"}},
+        {{"traversal.batch", "1024"}},
+        {{"threads", "1"}},
+    };
+    for (const auto& v : variants) {
+        Settings s;
+        s.set("width", "48"), s.set("height", "40"), s.set("ao.samples", "3");
+        for (auto& [k, val] : v) s.set(k, val);
+        const Frame f = render_frame(scene, RenderSettings::resolve(s));
+        EXPECT_TRUE(same_image(ref, f)) << v[0].first << "=" << v[0].second;
+    }
+}
+
+TEST(Renderer, FramesAreDeterministic) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("cornell"));
+    const Frame a = render(scene, {{"width", "32"}, {"height", "32"}});
+    const Frame b = render(scene, {{"width", "32"}, {"height", "32"}});
+    EXPECT_TRUE(same_image(a, b));
+    for (const auto& [k, v] : a.stats.entries())
+        if (k.rfind("time_ms.", 0) != 0 && k.rfind("memory.", 0) != 0)
+            EXPECT_EQ(v, b.stats.get(k)) << k;
+}
+
+TEST(Renderer, StatisticsAddUp) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("cornell"));
+    const Frame f = render(scene, {{"width", "32"}, {"height", "32"}});
+    const Stats& st = f.stats;
+    // The scene asks for two bounces: two reflection rays for every pixel that sees a mirror.
+    EXPECT_EQ(st.get("rays.primary"), 32.0 * 32.0);
+    EXPECT_GT(st.get("rays.reflection"), 32.0 * 32.0);
+    EXPECT_LE(st.get("rays.reflection"), 2 * 32.0 * 32.0);
+    double total = 0, brute = 0;
+    for (const char* t : {"shadow", "reflection", "refraction", "ao"}) {
+        const std::string p = std::string("tests.") + t + ".";
+        total += st.get(p + "total");
+        brute += st.get(p + "brute_force");
+        EXPECT_EQ(st.get(p + "brute_force"),
+                  st.get(std::string("rays.") + t) * st.get("scene.primitives"));
+        if (st.get(std::string("rays.") + t) == 0) continue;
+        EXPECT_EQ(st.get(p + "total"), st.get(p + "level2.tests") + st.get(p + "level1.tests") +
+                                           st.get(p + "final.tests"));
+    }
+    EXPECT_EQ(st.get("tests.total"), total);
+    EXPECT_EQ(st.get("tests.brute_force"), brute);
+    EXPECT_GT(st.get("memory.peak_bytes"), 0);
+    EXPECT_GT(st.get("time_ms.frame"), 0);
+    EXPECT_GE(st.get("time_ms.frame"), st.get("time_ms.traversal"));
+    EXPECT_NE(st.to_json().find("\"tests.shadow.level2.tests\""), std::string::npos);
+    EXPECT_NE(st.to_table().find("level 2"), std::string::npos);
+}
+
+TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
+    // A quad facing the camera, a light on the view axis: the centre pixel receives
+    // ambient + diffuse (cos = 1) and no specular.
+    Scene s;
+    Material m;
+    m.color = Vec3(0.5f, 0.25f, 1.0f), m.ambient = 0.1f, m.diffuse = 0.6f;
+    s.add_mesh_object("quad", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)), s.add_material(m));
+    s.add_light(PointLight{Vec3(0, 0, 3), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
+    const PreparedScene scene = prepare_scene(s);
+    const Frame f = render(scene, {{"width", "33"}, {"height", "33"}});
+    const size_t c = (16 * 33 + 16) * 4;
+    EXPECT_NEAR(f.rgba[c + 0], 0.5f * 0.7f, 1e-4f);
+    EXPECT_NEAR(f.rgba[c + 1], 0.25f * 0.7f, 1e-4f);
+    EXPECT_NEAR(f.rgba[c + 2], 1.0f * 0.7f, 1e-4f);
+    EXPECT_NEAR(f.depth[16 * 33 + 16], 5.0f, 1e-4f);
+    EXPECT_NEAR(f.normal[16 * 33 + 16].z, 1.0f, 1e-5f);
+    // The corner sees the background (black).
+    EXPECT_EQ(f.rgba[0], 0.0f);
+}
+
+TEST(Renderer, AntiAliasingKeepsTheImageSize) {
+    const PreparedScene scene = glass_scene();
+    const Frame f = render(scene, {{"width", "20"}, {"height", "10"}, {"aa.samples", "3"}});
+    EXPECT_EQ(f.width, 20);
+    EXPECT_EQ(f.height, 10);
+    EXPECT_EQ(f.rgba.size(), 20u * 10u * 4u);
+    EXPECT_EQ(f.stats.get("rays.primary"), 20.0 * 10.0 * 9.0);
+}
+
+TEST(Renderer, ProgressCanCancel) {
+    const PreparedScene scene = glass_scene();
+    RenderSettings s;
+    s.width = s.height = 16;
+    int calls = 0;
+    EXPECT_THROW(render_frame(scene, s, [&](float) { return ++calls < 2; }), RenderError);
+    EXPECT_EQ(calls, 2);
+    float last = 0;
+    render_frame(scene, s, [&](float done) {
+        EXPECT_GE(done, last);
+        last = done;
+        return true;
+    });
+    EXPECT_FLOAT_EQ(last, 1.0f);
+}
+
+TEST(Renderer, CudaBackendIsAClearErrorInThisBuild) {
+    const PreparedScene scene = glass_scene();
+    RenderSettings s;
+    s.width = s.height = 8;
+    s.backend = Backend::Cuda;
+    try {
+        render_frame(scene, s);
+        FAIL() << "expected an error";
+    } catch (const RenderError& e) {
+        EXPECT_NE(std::string(e.what()).find("cuda"), std::string::npos);
+    }
+}
+
+} // namespace
+} // namespace sheaf

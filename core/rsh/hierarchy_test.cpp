@@ -1,0 +1,71 @@
+// The ray hierarchy is conservative: every ray lies in its node's sphere and cone, and every
+// node in its parent's.
+#include "core/rsh/hierarchy.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace sheaf {
+namespace {
+
+TrackedVector<Ray> random_rays(MemoryTracker& m, size_t n, uint32_t seed) {
+    std::mt19937 g(seed);
+    std::normal_distribution<float> nd;
+    std::uniform_real_distribution<float> u(-5, 5);
+    TrackedVector<Ray> rays = tracked_vector<Ray>(m, n);
+    Vec3 o(u(g), u(g), u(g)), d = normalize(Vec3(nd(g), nd(g), nd(g)));
+    for (size_t i = 0; i < n; ++i) {
+        // Locally coherent runs with jumps, like sorted rays.
+        if (i % 13 == 0) o = Vec3(u(g), u(g), u(g)), d = normalize(Vec3(nd(g), nd(g), nd(g)));
+        rays[i].origin = o + Vec3(nd(g), nd(g), nd(g)) * 0.1f;
+        rays[i].dir = normalize(d + Vec3(nd(g), nd(g), nd(g)) * (i % 3 == 0 ? 1.5f : 0.05f));
+        rays[i].tmax = 1e30f;
+    }
+    return rays;
+}
+
+TEST(Hierarchy, LevelSizesFollowDepthAndArity) {
+    MemoryTracker m;
+    const auto rays = random_rays(m, 1000, 1);
+    const RayHierarchy h = build_hierarchy(rays, 3, 8, m);
+    EXPECT_EQ(h.node_count(0), 1000u);
+    EXPECT_EQ(h.node_count(1), 125u);
+    EXPECT_EQ(h.node_count(2), 16u);
+    EXPECT_EQ(h.node_count(3), 2u);
+    EXPECT_EQ(h.last_child(3, 1), 16u);
+    EXPECT_GT(m.peak(), 0);
+}
+
+TEST(Hierarchy, EveryRayLiesInsideEveryAncestor) {
+    MemoryTracker m;
+    for (int arity : {2, 3, 8, 16})
+        for (int depth : {1, 2, 4}) {
+            const auto rays = random_rays(m, 2001, uint32_t(arity * 10 + depth));
+            const RayHierarchy h = build_hierarchy(rays, depth, arity, m);
+            for (size_t r = 0; r < rays.size(); ++r) {
+                size_t idx = r;
+                for (int level = 1; level <= depth; ++level) {
+                    idx /= size_t(arity);
+                    const RayNode& n = h.levels[size_t(level) - 1][idx];
+                    ASSERT_LE(length(rays[r].origin - n.center), n.radius) << "level " << level;
+                    ASSERT_LE(angle_between(n.axis, rays[r].dir), n.angle + 1e-6f)
+                        << "level " << level;
+                }
+            }
+            // Children inside parents.
+            for (int level = 2; level <= depth; ++level)
+                for (size_t i = 0; i < h.node_count(level); ++i) {
+                    const RayNode& p = h.levels[size_t(level) - 1][i];
+                    for (size_t c = h.first_child(i); c < h.last_child(level, i); ++c) {
+                        const RayNode& ch = h.levels[size_t(level) - 2][c];
+                        ASSERT_LE(length(ch.center - p.center) + ch.radius, p.radius * (1 + 1e-6f));
+                        if (p.angle >= kPi) continue; // the parent holds every direction
+                        ASSERT_LE(angle_between(ch.axis, p.axis) + ch.angle, p.angle + 1e-5f);
+                    }
+                }
+        }
+}
+
+} // namespace
+} // namespace sheaf

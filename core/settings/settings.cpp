@@ -19,7 +19,9 @@ const std::vector<SettingSpec>& setting_specs() {
          {"brute", "rah", "crsh"},
          "how secondary rays find geometry: every ray against every primitive (brute), the ray "
          "hierarchy over "
-         "unsorted rays (rah, Roger et al.) or over hashed and sorted rays (crsh, paper 000)"},
+         "rays in generation order (rah, Roger et al.) or over rays hashed and sorted by hash.mode "
+         "and sort.mode "
+         "(crsh, paper 000)"},
         {"hierarchy.depth", K::Int, "2", 1, 8, {}, "levels of ray-hierarchy nodes above the rays"},
         {"hierarchy.arity", K::Int, "8", 2, 64, {}, "children per hierarchy node"},
         {"hash.mode",

@@ -1,0 +1,150 @@
+// The C ABI's frames: size, passes, statistics, text reports and image files.
+#include "capi_internal.h"
+#include "text_out.h"
+
+#include "core/base/error.h"
+#include "io/image/image_io.h"
+
+#include <cstring>
+
+using namespace sheaf::capi;
+
+namespace {
+
+const sheaf::Frame& frame_of(SheafFrame f) {
+    return require(f, "frame")->frame;
+}
+
+/// Throws when a pass holds fewer than `count` elements (a pipeline that did not fill it).
+template <class T> void check_pass(const std::vector<T>& pass, size_t count, const char* name) {
+    if (pass.size() < count)
+        throw InvalidArgument(std::string("the frame has no '") + name + "' pass");
+}
+
+} // namespace
+
+extern "C" {
+
+SHEAF_API SheafError sheafFrameRetain(SheafFrame frame) {
+    return barrier([&] { sheaf_retain(require(frame, "frame")); });
+}
+
+SHEAF_API SheafError sheafFrameRelease(SheafFrame frame) {
+    return barrier([&] { sheaf_release(require(frame, "frame")); });
+}
+
+SHEAF_API SheafError sheafFrameGetSize(SheafFrame frame, int* width, int* height) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        require(width, "width");
+        require(height, "height");
+        *width = f.width;
+        *height = f.height;
+    });
+}
+
+SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float* dst,
+                                       size_t float_count) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        const std::string name = require(pass, "pass");
+        const size_t pixels = size_t(f.width) * size_t(f.height);
+        size_t channels = 0;
+        if (name == "combined")
+            channels = 4;
+        else if (name == "depth" || name == "object_id")
+            channels = 1;
+        else if (name == "normal" || name == "albedo")
+            channels = 3;
+        else
+            throw InvalidArgument("unknown pass '" + name +
+                                  "'; known passes: combined, depth, normal, albedo, object_id");
+        const size_t needed = pixels * channels;
+        if (float_count < needed)
+            throw InvalidArgument("pass '" + name + "' needs " + std::to_string(needed) +
+                                  " floats; the buffer holds " + std::to_string(float_count));
+        require(dst, "dst");
+        if (name == "combined") {
+            check_pass(f.rgba, needed, "combined");
+            std::memcpy(dst, f.rgba.data(), needed * sizeof(float));
+        } else if (name == "depth") {
+            check_pass(f.depth, pixels, "depth");
+            std::memcpy(dst, f.depth.data(), pixels * sizeof(float));
+        } else if (name == "object_id") {
+            check_pass(f.object_id, pixels, "object_id");
+            for (size_t i = 0; i < pixels; ++i)
+                dst[i] = f.object_id[i] == 0xFFFFFFFFu ? -1.0f : float(f.object_id[i]);
+        } else {
+            const std::vector<sheaf::Vec3>& v = name == "normal" ? f.normal : f.albedo;
+            check_pass(v, pixels, name.c_str());
+            for (size_t i = 0; i < pixels; ++i) {
+                dst[3 * i] = v[i].x;
+                dst[3 * i + 1] = v[i].y;
+                dst[3 * i + 2] = v[i].z;
+            }
+        }
+    });
+}
+
+SHEAF_API SheafError sheafFrameGetStatCount(SheafFrame frame, size_t* count) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        *require(count, "count") = f.stats.entries().size();
+    });
+}
+
+SHEAF_API SheafError sheafFrameGetStat(SheafFrame frame, size_t index, const char** key,
+                                       double* value) {
+    return barrier([&] {
+        const auto& entries = frame_of(frame).stats.entries();
+        if (index >= entries.size())
+            throw InvalidArgument("statistic index " + std::to_string(index) +
+                                  " is out of range (" + std::to_string(entries.size()) +
+                                  " statistics)");
+        if (key) *key = entries[index].first.c_str();
+        if (value) *value = entries[index].second;
+    });
+}
+
+SHEAF_API SheafError sheafFrameGetStatByName(SheafFrame frame, const char* key, double* value) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        const char* k = require(key, "key");
+        require(value, "value");
+        if (!f.stats.has(k)) throw InvalidArgument(std::string("unknown statistic '") + k + "'");
+        *value = f.stats.get(k);
+    });
+}
+
+SHEAF_API SheafError sheafFrameGetText(SheafFrame frame, const char* what, char* buf, size_t size,
+                                       size_t* needed) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        const std::string w = require(what, "what");
+        std::string text;
+        if (w == "stats.json")
+            text = f.stats.to_json();
+        else if (w == "stats.table")
+            text = f.stats.to_table();
+        else if (w == "settings")
+            for (const auto& [key, value] : f.settings) text += key + "=" + value + "\n";
+        else
+            throw InvalidArgument("unknown text '" + w +
+                                  "'; known: stats.json, stats.table, settings");
+        copy_text(text, buf, size, needed);
+    });
+}
+
+SHEAF_API SheafError sheafFrameSaveImage(SheafFrame frame, const char* path) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        const char* p = require(path, "path");
+        try {
+            sheaf::write_image(f, p);
+        } catch (const sheaf::RenderError& e) {
+            throw IoError(e.what());
+        }
+    });
+}
+
+} // extern "C"

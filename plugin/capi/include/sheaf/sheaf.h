@@ -1,0 +1,178 @@
+/* The Sheaf C ABI: build a scene, choose settings, render a frame and read back its passes,
+ * statistics and images. C99; usable from C and C++. Every function returns a SheafError unless
+ * documented otherwise; sheafGetLastError() explains the last failure on the calling thread.
+ * See docs/capi.md. */
+#ifndef SHEAF_SHEAF_H
+#define SHEAF_SHEAF_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "sheaf/sheaf_version.h" /* SHEAF_VERSION_MAJOR, _MINOR, _PATCH, _STRING */
+
+#if defined(_WIN32)
+#if defined(SHEAF_BUILDING_LIBRARY)
+#define SHEAF_API __declspec(dllexport)
+#else
+#define SHEAF_API __declspec(dllimport)
+#endif
+#else
+#define SHEAF_API __attribute__((visibility("default")))
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Handles: reference counted (atomically); New returns one reference. ---- */
+
+typedef struct SheafSceneT* SheafScene;
+typedef struct SheafRendererT* SheafRenderer;
+typedef struct SheafFrameT* SheafFrame;
+
+/* ---- Errors ---- */
+
+typedef enum SheafError {
+    SHEAF_OK = 0,
+    SHEAF_ERROR_INVALID_ARGUMENT = 1, /* a NULL handle or pointer, an index out of range */
+    SHEAF_ERROR_INVALID_SETTING = 2,  /* an unknown setting key or a value out of range */
+    SHEAF_ERROR_SCENE = 3,            /* a scene that cannot be loaded or rendered */
+    SHEAF_ERROR_RENDER = 4,           /* a failure while rendering */
+    SHEAF_ERROR_IO = 5,               /* an image that cannot be written */
+    SHEAF_ERROR_OUT_OF_MEMORY = 6,
+    SHEAF_ERROR_CANCELLED = 7, /* the progress callback returned 0 */
+    SHEAF_ERROR_UNKNOWN = 99
+} SheafError;
+
+/* The outcome of the calling thread's most recent call that returns a SheafError (SHEAF_OK and ""
+ * after a success). *message (when message is not NULL) stays valid until the thread's next sheaf
+ * call. Needs no handle. */
+SHEAF_API SheafError sheafGetLastError(const char** message);
+
+/* Called on every error, from the thread that made the failing call. Global; NULL removes it. */
+typedef void (*SheafErrorCallback)(void* user, SheafError code, const char* message);
+SHEAF_API void sheafSetErrorCallback(SheafErrorCallback callback, void* user);
+
+/* ---- Version ---- */
+
+/* Any of the pointers may be NULL. */
+SHEAF_API void sheafGetVersion(int* major, int* minor, int* patch);
+/* "MAJOR.MINOR.PATCH"; static storage. */
+SHEAF_API const char* sheafGetVersionString(void);
+
+/* ---- Built-in scenes (strings have static storage) ---- */
+
+/* The scene `render` draws when given none, e.g. "cornell". */
+SHEAF_API const char* sheafGetDefaultSceneName(void);
+SHEAF_API SheafError sheafGetBuiltinSceneCount(size_t* count);
+SHEAF_API SheafError sheafGetBuiltinSceneName(size_t index, const char** name);
+
+/* ---- Scenes ---- */
+
+typedef struct SheafMaterialDesc {
+    float color[3]; /* linear RGB */
+    float ambient, diffuse, specular, phong_exponent;
+    float mirror;       /* mirror reflection weight */
+    float transmission; /* refracted share, split with reflection by Fresnel */
+    float ior;
+} SheafMaterialDesc;
+
+/* Fills *desc with the engine's default material. */
+SHEAF_API void sheafMaterialDescInit(SheafMaterialDesc* desc);
+
+/* An empty scene (no geometry, the default camera, a black background). */
+SHEAF_API SheafError sheafSceneNew(SheafScene* out);
+SHEAF_API SheafError sheafSceneRetain(SheafScene scene);
+SHEAF_API SheafError sheafSceneRelease(SheafScene scene);
+
+/* Replaces the content with a built-in scene ("cornell", ...). */
+SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name);
+/* Replaces the content with a scene file, or a built-in scene for "builtin:NAME". */
+SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);
+
+/* Ids count from 0 in the order of addition; out ids may be NULL. */
+SHEAF_API SheafError sheafSceneAddMaterial(SheafScene scene, const SheafMaterialDesc* desc,
+                                           uint32_t* out_material_id);
+/* positions: 3 floats per vertex; indices: 3 per triangle; normals: 3 floats per vertex, or NULL
+ * for flat shading. The data is copied. */
+SHEAF_API SheafError sheafSceneAddMesh(SheafScene scene, const float* positions,
+                                       uint32_t vertex_count, const uint32_t* indices,
+                                       uint32_t triangle_count, const float* normals,
+                                       uint32_t* out_mesh_id);
+/* Places a mesh with a material; many objects may share one mesh (instancing).
+ * transform_3x4: row-major [R | t], NULL for the identity. name may be NULL. */
+SHEAF_API SheafError sheafSceneAddObject(SheafScene scene, uint32_t mesh_id, uint32_t material_id,
+                                         const float* transform_3x4, const char* name,
+                                         uint32_t* out_object_id);
+SHEAF_API SheafError sheafSceneAddPointLight(SheafScene scene, const float position[3],
+                                             const float color[3]);
+SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[3],
+                                         const float look_at[3], const float up[3],
+                                         float fov_y_degrees);
+SHEAF_API SheafError sheafSceneSetBackground(SheafScene scene, const float rgb[3]);
+/* Validates the scene and prepares it for rendering. sheafRender commits a scene that was never
+ * committed or was changed since. */
+SHEAF_API SheafError sheafSceneCommit(SheafScene scene);
+
+/* ---- Renderers and settings (keys and values as in docs/settings.md) ---- */
+
+SHEAF_API SheafError sheafRendererNew(SheafRenderer* out);
+SHEAF_API SheafError sheafRendererRetain(SheafRenderer renderer);
+SHEAF_API SheafError sheafRendererRelease(SheafRenderer renderer);
+
+SHEAF_API SheafError sheafRendererSetString(SheafRenderer renderer, const char* key,
+                                            const char* value);
+SHEAF_API SheafError sheafRendererSetInt(SheafRenderer renderer, const char* key, long long value);
+SHEAF_API SheafError sheafRendererSetFloat(SheafRenderer renderer, const char* key, double value);
+SHEAF_API SheafError sheafRendererSetBool(SheafRenderer renderer, const char* key, int value);
+/* Back to the scene's value or the default. */
+SHEAF_API SheafError sheafRendererUnset(SheafRenderer renderer, const char* key);
+/* The explicit value, else the default, in canonical text. snprintf-style: writes at most `size`
+ * bytes including the NUL; *needed (when not NULL) = length + 1; buf may be NULL when size is 0. */
+SHEAF_API SheafError sheafRendererGetString(SheafRenderer renderer, const char* key, char* buf,
+                                            size_t size, size_t* needed);
+/* Applies every value of a preset: a name (NAME.xml in $SHEAF_PRESET_PATH, ':'-separated, then
+ * <libdir>/../share/sheaf/presets) or a path (containing '/' or ending in .xml). */
+SHEAF_API SheafError sheafRendererLoadPreset(SheafRenderer renderer, const char* name_or_path);
+/* Called between stages with the share done (0..1); return 0 to cancel the render, which then
+ * fails with SHEAF_ERROR_CANCELLED. NULL removes it. */
+typedef int (*SheafProgressCallback)(void* user, float done);
+SHEAF_API SheafError sheafRendererSetProgressCallback(SheafRenderer renderer,
+                                                      SheafProgressCallback callback, void* user);
+
+/* Every known setting. The strings have static storage; any out pointer may be NULL. */
+SHEAF_API SheafError sheafGetSettingCount(size_t* count);
+SHEAF_API SheafError sheafGetSettingInfo(size_t index, const char** key, const char** default_value,
+                                         const char** allowed, const char** help);
+
+/* ---- Rendering and frames ---- */
+
+/* Renders one frame with the renderer's settings over the scene's own. *out receives a new
+ * reference. */
+SHEAF_API SheafError sheafRender(SheafRenderer renderer, SheafScene scene, SheafFrame* out);
+SHEAF_API SheafError sheafFrameRetain(SheafFrame frame);
+SHEAF_API SheafError sheafFrameRelease(SheafFrame frame);
+
+SHEAF_API SheafError sheafFrameGetSize(SheafFrame frame, int* width, int* height);
+/* Copies a pass, top row first: "combined" (4 floats per pixel, scene-linear RGBA), "depth" (1,
+ * +inf where nothing was hit), "normal" (3), "albedo" (3), "object_id" (1, -1 where nothing was
+ * hit). float_count is the capacity of dst in floats. */
+SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float* dst,
+                                       size_t float_count);
+/* Statistics (docs/statistics.md). *key stays valid as long as the frame. */
+SHEAF_API SheafError sheafFrameGetStatCount(SheafFrame frame, size_t* count);
+SHEAF_API SheafError sheafFrameGetStat(SheafFrame frame, size_t index, const char** key,
+                                       double* value);
+SHEAF_API SheafError sheafFrameGetStatByName(SheafFrame frame, const char* key, double* value);
+/* what: "stats.json", "stats.table" or "settings" (one "key=value" line per effective setting).
+ * snprintf-style, as sheafRendererGetString. */
+SHEAF_API SheafError sheafFrameGetText(SheafFrame frame, const char* what, char* buf, size_t size,
+                                       size_t* needed);
+/* Writes the combined pass; the format follows the extension (.png .jpg .tif .exr .hdr). */
+SHEAF_API SheafError sheafFrameSaveImage(SheafFrame frame, const char* path);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SHEAF_SHEAF_H */

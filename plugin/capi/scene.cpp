@@ -1,0 +1,200 @@
+// The C ABI's scenes: creation, built-in scenes and files, meshes, materials, objects, lights,
+// the camera, and the commit that validates and prepares them.
+#include "capi_internal.h"
+
+#include "core/base/error.h"
+#include "core/scenes/builtin.h"
+
+#include <filesystem>
+#include <fstream>
+#include <string_view>
+
+using namespace sheaf::capi;
+
+namespace {
+
+sheaf::Vec3 vec3(const float* v, const char* name) {
+    require(v, name);
+    return {v[0], v[1], v[2]};
+}
+
+/// Runs `edit` on the scene under its lock and marks it changed since the last commit.
+template <class Edit> void modify(SheafScene handle, Edit&& edit) {
+    SheafSceneT& s = *require(handle, "scene");
+    std::lock_guard<std::mutex> lock(s.mutex);
+    edit(s.scene);
+    s.prepared.reset();
+}
+
+sheaf::Scene load_scene_file(const std::string& path) {
+    constexpr std::string_view kBuiltin = "builtin:";
+    if (path.compare(0, kBuiltin.size(), kBuiltin) == 0)
+        return sheaf::make_builtin_scene(std::string_view(path).substr(kBuiltin.size()));
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw sheaf::SceneError(path + ": is a directory, not a scene file");
+    if (!std::ifstream(path)) throw sheaf::SceneError(path + ": cannot open file");
+    const std::string ext = std::filesystem::path(path).extension().string();
+    // The POV-Ray and XML scene readers are still to come.
+    throw sheaf::SceneError(path + ": no reader for '" + ext + "' files yet");
+}
+
+} // namespace
+
+extern "C" {
+
+SHEAF_API void sheafMaterialDescInit(SheafMaterialDesc* desc) {
+    if (!desc) return;
+    const sheaf::Material m;
+    desc->color[0] = m.color.x, desc->color[1] = m.color.y, desc->color[2] = m.color.z;
+    desc->ambient = m.ambient;
+    desc->diffuse = m.diffuse;
+    desc->specular = m.specular;
+    desc->phong_exponent = m.phong_exponent;
+    desc->mirror = m.mirror;
+    desc->transmission = m.transmission;
+    desc->ior = m.ior;
+}
+
+SHEAF_API SheafError sheafSceneNew(SheafScene* out) {
+    return barrier([&] {
+        require(out, "out");
+        *out = nullptr;
+        *out = new SheafSceneT;
+    });
+}
+
+SHEAF_API SheafError sheafSceneRetain(SheafScene scene) {
+    return barrier([&] { sheaf_retain(require(scene, "scene")); });
+}
+
+SHEAF_API SheafError sheafSceneRelease(SheafScene scene) {
+    return barrier([&] { sheaf_release(require(scene, "scene")); });
+}
+
+SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name) {
+    return barrier([&] {
+        require(scene, "scene");
+        sheaf::Scene loaded = sheaf::make_builtin_scene(require(name, "name"));
+        modify(scene, [&](sheaf::Scene& s) { s = std::move(loaded); });
+    });
+}
+
+SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path) {
+    return barrier([&] {
+        require(scene, "scene");
+        sheaf::Scene loaded = load_scene_file(require(path, "path"));
+        modify(scene, [&](sheaf::Scene& s) { s = std::move(loaded); });
+    });
+}
+
+SHEAF_API SheafError sheafSceneAddMaterial(SheafScene scene, const SheafMaterialDesc* desc,
+                                           uint32_t* out_material_id) {
+    return barrier([&] {
+        require(scene, "scene");
+        require(desc, "desc");
+        sheaf::Material m;
+        m.color = {desc->color[0], desc->color[1], desc->color[2]};
+        m.ambient = desc->ambient;
+        m.diffuse = desc->diffuse;
+        m.specular = desc->specular;
+        m.phong_exponent = desc->phong_exponent;
+        m.mirror = desc->mirror;
+        m.transmission = desc->transmission;
+        m.ior = desc->ior;
+        uint32_t id = 0;
+        modify(scene, [&](sheaf::Scene& s) { id = s.add_material(m); });
+        if (out_material_id) *out_material_id = id;
+    });
+}
+
+SHEAF_API SheafError sheafSceneAddMesh(SheafScene scene, const float* positions,
+                                       uint32_t vertex_count, const uint32_t* indices,
+                                       uint32_t triangle_count, const float* normals,
+                                       uint32_t* out_mesh_id) {
+    return barrier([&] {
+        require(scene, "scene");
+        if (vertex_count > 0) require(positions, "positions");
+        if (triangle_count > 0) require(indices, "indices");
+        sheaf::Mesh mesh;
+        mesh.positions.resize(vertex_count);
+        for (size_t i = 0; i < vertex_count; ++i)
+            mesh.positions[i] = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+        if (normals) {
+            mesh.normals.resize(vertex_count);
+            for (size_t i = 0; i < vertex_count; ++i)
+                mesh.normals[i] = {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
+        }
+        mesh.indices.assign(indices, indices + size_t(triangle_count) * 3);
+        uint32_t id = 0;
+        modify(scene, [&](sheaf::Scene& s) { id = s.add_mesh(std::move(mesh)); });
+        if (out_mesh_id) *out_mesh_id = id;
+    });
+}
+
+SHEAF_API SheafError sheafSceneAddObject(SheafScene scene, uint32_t mesh_id, uint32_t material_id,
+                                         const float* transform_3x4, const char* name,
+                                         uint32_t* out_object_id) {
+    return barrier([&] {
+        require(scene, "scene");
+        sheaf::Object o;
+        o.mesh = mesh_id;
+        o.material = material_id;
+        if (name) o.name = name;
+        if (transform_3x4)
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 4; ++c) o.transform.m[r][c] = transform_3x4[r * 4 + c];
+        uint32_t id = 0;
+        modify(scene, [&](sheaf::Scene& s) {
+            if (mesh_id >= s.meshes.size())
+                throw sheaf::SceneError("mesh id " + std::to_string(mesh_id) +
+                                        " does not exist (the scene has " +
+                                        std::to_string(s.meshes.size()) + " meshes)");
+            if (material_id >= s.materials.size())
+                throw sheaf::SceneError("material id " + std::to_string(material_id) +
+                                        " does not exist (the scene has " +
+                                        std::to_string(s.materials.size()) + " materials)");
+            id = s.add_object(std::move(o));
+        });
+        if (out_object_id) *out_object_id = id;
+    });
+}
+
+SHEAF_API SheafError sheafSceneAddPointLight(SheafScene scene, const float position[3],
+                                             const float color[3]) {
+    return barrier([&] {
+        require(scene, "scene");
+        sheaf::PointLight light;
+        light.position = vec3(position, "position");
+        light.color = vec3(color, "color");
+        modify(scene, [&](sheaf::Scene& s) { s.add_light(light); });
+    });
+}
+
+SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[3],
+                                         const float look_at[3], const float up[3],
+                                         float fov_y_degrees) {
+    return barrier([&] {
+        require(scene, "scene");
+        sheaf::Camera camera;
+        camera.position = vec3(position, "position");
+        camera.look_at = vec3(look_at, "look_at");
+        camera.up = vec3(up, "up");
+        camera.fov_y_degrees = fov_y_degrees;
+        modify(scene, [&](sheaf::Scene& s) { s.camera = camera; });
+    });
+}
+
+SHEAF_API SheafError sheafSceneSetBackground(SheafScene scene, const float rgb[3]) {
+    return barrier([&] {
+        require(scene, "scene");
+        const sheaf::Vec3 background = vec3(rgb, "rgb");
+        modify(scene, [&](sheaf::Scene& s) { s.background = background; });
+    });
+}
+
+SHEAF_API SheafError sheafSceneCommit(SheafScene scene) {
+    return barrier([&] { require(scene, "scene")->commit(); });
+}
+
+} // extern "C"

@@ -1,0 +1,483 @@
+/* The C ABI from plain C99: version, errors and the error callback, a scene built through the
+ * ABI, rendering, passes, statistics, text, presets, and crsh against brute on a built-in scene.
+ * Prints every failed check and exits non-zero when there is any. */
+#include <sheaf/sheaf.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int g_failures = 0;
+static int g_checks = 0;
+
+#define CHECK(cond, ...)                                                                           \
+    do {                                                                                           \
+        ++g_checks;                                                                                \
+        if (!(cond)) {                                                                             \
+            ++g_failures;                                                                          \
+            fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                      \
+            fprintf(stderr, __VA_ARGS__);                                                          \
+            fprintf(stderr, "\n");                                                                 \
+        }                                                                                          \
+    } while (0)
+
+/* Calls that must succeed; on failure prints the ABI's message. */
+#define OK(call)                                                                                   \
+    do {                                                                                           \
+        SheafError ok_err_ = (call);                                                               \
+        const char* ok_msg_ = NULL;                                                                \
+        if (ok_err_ != SHEAF_OK) sheafGetLastError(&ok_msg_);                                      \
+        CHECK(ok_err_ == SHEAF_OK, "%s returned %d: %s", #call, (int)ok_err_,                      \
+              ok_msg_ ? ok_msg_ : "");                                                             \
+    } while (0)
+
+/* ---- Error callback ---- */
+
+static int g_callback_calls = 0;
+static SheafError g_callback_last = SHEAF_OK;
+
+static void on_error(void* user, SheafError code, const char* message) {
+    int* calls = (int*)user;
+    ++*calls;
+    g_callback_last = code;
+    (void)message;
+}
+
+static int g_expected_errors = 0;
+
+/* Checks that `got` is `want`, that the last error agrees and its message contains each of the
+ * NULL-terminated parts. */
+static void expect_error(SheafError got, SheafError want, const char* what, const char* part1,
+                         const char* part2) {
+    const char* message = NULL;
+    SheafError last = sheafGetLastError(&message);
+    ++g_expected_errors;
+    CHECK(got == want, "%s: returned %d, expected %d (%s)", what, (int)got, (int)want,
+          message ? message : "(null)");
+    CHECK(last == got, "%s: sheafGetLastError says %d, the call returned %d", what, (int)last,
+          (int)got);
+    CHECK(message != NULL && message[0] != '\0', "%s: empty error message", what);
+    CHECK(g_callback_last == want, "%s: the callback saw code %d", what, (int)g_callback_last);
+    if (message && part1)
+        CHECK(strstr(message, part1) != NULL, "%s: '%s' lacks '%s'", what, message, part1);
+    if (message && part2)
+        CHECK(strstr(message, part2) != NULL, "%s: '%s' lacks '%s'", what, message, part2);
+}
+
+/* ---- Scene helpers ---- */
+
+static const float kQuad[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+static const uint32_t kQuadIndices[] = {0, 2, 1, 0, 3, 2};
+
+static void scale_translate(float m[12], float s, float tx, float ty, float tz) {
+    memset(m, 0, 12 * sizeof(float));
+    m[0] = m[5] = m[10] = s;
+    m[3] = tx, m[7] = ty, m[11] = tz;
+}
+
+static const float kCamPos[3] = {0, 4, 4}, kCamLook[3] = {0, 0, 0}, kCamUp[3] = {0, 1, 0};
+static const float kFov = 60.0f;
+
+/* Pixel of a world point for the camera above (vertical fov, top row first). */
+static void project(const float p[3], int w, int h, int* px, int* py) {
+    float f[3], r[3], u[3], d[3], len;
+    int i;
+    for (i = 0; i < 3; ++i) f[i] = kCamLook[i] - kCamPos[i];
+    len = sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (i = 0; i < 3; ++i) f[i] /= len;
+    r[0] = f[1] * kCamUp[2] - f[2] * kCamUp[1];
+    r[1] = f[2] * kCamUp[0] - f[0] * kCamUp[2];
+    r[2] = f[0] * kCamUp[1] - f[1] * kCamUp[0];
+    len = sqrtf(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (i = 0; i < 3; ++i) r[i] /= len;
+    u[0] = r[1] * f[2] - r[2] * f[1];
+    u[1] = r[2] * f[0] - r[0] * f[2];
+    u[2] = r[0] * f[1] - r[1] * f[0];
+    for (i = 0; i < 3; ++i) d[i] = p[i] - kCamPos[i];
+    {
+        const float z = d[0] * f[0] + d[1] * f[1] + d[2] * f[2];
+        const float t = tanf(kFov * 0.5f * 3.14159265f / 180.0f);
+        const float x = (d[0] * r[0] + d[1] * r[1] + d[2] * r[2]) / (z * t * (float)w / (float)h);
+        const float y = (d[0] * u[0] + d[1] * u[1] + d[2] * u[2]) / (z * t);
+        *px = (int)((x + 1) * 0.5f * (float)w);
+        *py = (int)((1 - y) * 0.5f * (float)h);
+    }
+}
+
+static float luminance(const float* rgba, int w, int x, int y) {
+    const float* p = rgba + 4 * ((size_t)y * (size_t)w + (size_t)x);
+    return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
+
+/* A ground quad, a smaller quad floating above it (the same mesh twice: instancing), a light
+ * straight above and a camera looking down at the shadow. */
+static SheafScene build_scene(void) {
+    SheafScene scene = NULL;
+    SheafMaterialDesc ground, mirror;
+    uint32_t quad = 99, m_ground = 99, m_mirror = 99, obj = 99;
+    float t[12];
+    const float light_pos[3] = {0, 4, 0}, light_color[3] = {1, 1, 1}, bg[3] = {0.05f, 0.05f, 0.1f};
+
+    OK(sheafSceneNew(&scene));
+    sheafMaterialDescInit(&ground);
+    CHECK(ground.ior > 1.0f && ground.diffuse > 0.0f, "sheafMaterialDescInit: ior %g diffuse %g",
+          ground.ior, ground.diffuse);
+    ground.color[0] = 0.9f, ground.color[1] = 0.8f, ground.color[2] = 0.7f;
+    mirror = ground;
+    mirror.mirror = 0.4f;
+    OK(sheafSceneAddMaterial(scene, &ground, &m_ground));
+    OK(sheafSceneAddMaterial(scene, &mirror, &m_mirror));
+    CHECK(m_ground == 0 && m_mirror == 1, "material ids %u %u", m_ground, m_mirror);
+    OK(sheafSceneAddMesh(scene, kQuad, 4, kQuadIndices, 2, NULL, &quad));
+    CHECK(quad == 0, "mesh id %u", quad);
+    scale_translate(t, 6.0f, 0, 0, 0);
+    OK(sheafSceneAddObject(scene, quad, m_ground, t, "ground", &obj));
+    CHECK(obj == 0, "object id %u", obj);
+    scale_translate(t, 0.75f, 0, 1.5f, 0);
+    OK(sheafSceneAddObject(scene, quad, m_mirror, t, NULL, &obj));
+    CHECK(obj == 1, "object id %u", obj);
+    OK(sheafSceneAddPointLight(scene, light_pos, light_color));
+    OK(sheafSceneSetCamera(scene, kCamPos, kCamLook, kCamUp, kFov));
+    OK(sheafSceneSetBackground(scene, bg));
+    return scene;
+}
+
+/* ---- Progress ---- */
+
+static int g_progress_calls = 0;
+static int cancel_progress(void* user, float done) {
+    (void)user;
+    (void)done;
+    ++g_progress_calls;
+    return 0;
+}
+
+/* ---- Tests ---- */
+
+static void test_version(void) {
+    int major = -1, minor = -1, patch = -1;
+    char expect[64];
+    sheafGetVersion(&major, &minor, &patch);
+    CHECK(major == SHEAF_VERSION_MAJOR && minor == SHEAF_VERSION_MINOR &&
+              patch == SHEAF_VERSION_PATCH,
+          "version %d.%d.%d", major, minor, patch);
+    sprintf(expect, "%d.%d.%d", major, minor, patch);
+    CHECK(strcmp(sheafGetVersionString(), expect) == 0, "version string %s",
+          sheafGetVersionString());
+    CHECK(strcmp(sheafGetVersionString(), SHEAF_VERSION_STRING) == 0, "SHEAF_VERSION_STRING %s",
+          SHEAF_VERSION_STRING);
+}
+
+static void test_settings(void) {
+    SheafRenderer r = NULL;
+    char buf[64];
+    size_t needed = 0, count = 0;
+    const char *key = NULL, *def = NULL, *allowed = NULL, *help = NULL;
+
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererGetString(r, "accel", buf, sizeof buf, &needed));
+    CHECK(strcmp(buf, "crsh") == 0 && needed == 5, "default accel '%s' needed %u", buf,
+          (unsigned)needed);
+    OK(sheafRendererSetFloat(r, "ao.distance", 2.5));
+    OK(sheafRendererGetString(r, "ao.distance", buf, sizeof buf, NULL));
+    CHECK(strcmp(buf, "2.5") == 0, "ao.distance '%s'", buf);
+    OK(sheafRendererSetBool(r, "cull.objects", 0));
+    OK(sheafRendererGetString(r, "cull.objects", buf, sizeof buf, NULL));
+    CHECK(strcmp(buf, "false") == 0, "cull.objects '%s'", buf);
+    OK(sheafRendererSetInt(r, "hierarchy.depth", 3));
+    OK(sheafRendererUnset(r, "hierarchy.depth"));
+    OK(sheafRendererGetString(r, "hierarchy.depth", buf, sizeof buf, NULL));
+    CHECK(strcmp(buf, "2") == 0, "hierarchy.depth after unset '%s'", buf);
+
+    expect_error(sheafRendererSetInt(r, "hierarchy.arity", 1), SHEAF_ERROR_INVALID_SETTING,
+                 "hierarchy.arity = 1", "hierarchy.arity", "2..64");
+    expect_error(sheafRendererSetString(r, "nokey", "1"), SHEAF_ERROR_INVALID_SETTING,
+                 "unknown key", "nokey", NULL);
+    expect_error(sheafRendererSetString(r, "hash.mode", "bogus"), SHEAF_ERROR_INVALID_SETTING,
+                 "hash.mode = bogus", "hash.mode", "none, crsh, hash32, hash192");
+    expect_error(sheafRendererGetString(r, "nokey", buf, sizeof buf, NULL),
+                 SHEAF_ERROR_INVALID_SETTING, "get unknown key", "nokey", NULL);
+
+    /* Presets: by name from the build tree's presets directory. */
+    OK(sheafRendererLoadPreset(r, "rah"));
+    OK(sheafRendererGetString(r, "accel", buf, sizeof buf, NULL));
+    CHECK(strcmp(buf, "rah") == 0, "accel after preset rah '%s'", buf);
+    OK(sheafRendererGetString(r, "sort.mode", buf, sizeof buf, NULL));
+    CHECK(strcmp(buf, "none") == 0, "sort.mode after preset rah '%s'", buf);
+    expect_error(sheafRendererLoadPreset(r, "nosuch"), SHEAF_ERROR_INVALID_SETTING, "preset nosuch",
+                 "nosuch", "crsh");
+
+    OK(sheafGetSettingCount(&count));
+    CHECK(count >= 10, "%u settings", (unsigned)count);
+    OK(sheafGetSettingInfo(0, &key, &def, &allowed, &help));
+    CHECK(key && def && allowed && help && strlen(key) > 0 && strlen(help) > 0, "setting info 0");
+    expect_error(sheafGetSettingInfo(count, &key, NULL, NULL, NULL), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "setting index out of range", NULL, NULL);
+    OK(sheafRendererRelease(r));
+}
+
+static void test_null_arguments(void) {
+    SheafRenderer r = NULL;
+    expect_error(sheafSceneNew(NULL), SHEAF_ERROR_INVALID_ARGUMENT, "sheafSceneNew(NULL)", "out",
+                 NULL);
+    expect_error(sheafRendererSetString(NULL, "accel", "brute"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "SetString(NULL renderer)", "renderer", NULL);
+    OK(sheafRendererNew(&r));
+    expect_error(sheafRendererSetString(r, NULL, "brute"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "SetString(NULL key)", "key", NULL);
+    expect_error(sheafRender(r, NULL, NULL), SHEAF_ERROR_INVALID_ARGUMENT, "sheafRender(NULL)",
+                 NULL, NULL);
+    expect_error(sheafSceneCommit(NULL), SHEAF_ERROR_INVALID_ARGUMENT, "commit(NULL)", "scene",
+                 NULL);
+    expect_error(sheafFrameGetSize(NULL, NULL, NULL), SHEAF_ERROR_INVALID_ARGUMENT, "GetSize(NULL)",
+                 "frame", NULL);
+    expect_error(sheafFrameRelease(NULL), SHEAF_ERROR_INVALID_ARGUMENT, "FrameRelease(NULL)", NULL,
+                 NULL);
+    OK(sheafRendererRelease(r));
+    {
+        const char* message = NULL;
+        SheafError e = sheafGetLastError(&message);
+        CHECK(e == SHEAF_OK && message && message[0] == '\0', "last error after success: %d '%s'",
+              (int)e, message ? message : "(null)");
+    }
+}
+
+static void test_scene_errors(void) {
+    static const float nan_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    static const uint32_t bad_indices[] = {0, 1, 7};
+    float positions[9];
+    uint32_t mesh = 0, mat = 0;
+    SheafMaterialDesc m;
+    SheafScene s = NULL;
+
+    memcpy(positions, nan_positions, sizeof positions);
+    positions[4] = (float)NAN;
+    sheafMaterialDescInit(&m);
+
+    OK(sheafSceneNew(&s));
+    OK(sheafSceneAddMaterial(s, &m, &mat));
+    OK(sheafSceneAddMesh(s, positions, 3, kQuadIndices, 1, NULL, &mesh));
+    OK(sheafSceneAddObject(s, mesh, mat, NULL, "nan", NULL));
+    expect_error(sheafSceneCommit(s), SHEAF_ERROR_SCENE, "NaN vertex", "not finite", NULL);
+    OK(sheafSceneRelease(s));
+
+    OK(sheafSceneNew(&s));
+    OK(sheafSceneAddMaterial(s, &m, &mat));
+    OK(sheafSceneAddMesh(s, nan_positions, 3, bad_indices, 1, NULL, &mesh));
+    OK(sheafSceneAddObject(s, mesh, mat, NULL, NULL, NULL));
+    expect_error(sheafSceneCommit(s), SHEAF_ERROR_SCENE, "index out of range", "out of range",
+                 NULL);
+    expect_error(sheafSceneAddObject(s, 5, mat, NULL, NULL, NULL), SHEAF_ERROR_SCENE,
+                 "unknown mesh id", "mesh", NULL);
+    expect_error(sheafSceneAddObject(s, mesh, 9, NULL, NULL, NULL), SHEAF_ERROR_SCENE,
+                 "unknown material id", "material", NULL);
+    expect_error(sheafSceneLoadFile(s, "/nonexistent/scene.pov"), SHEAF_ERROR_SCENE, "missing file",
+                 "/nonexistent/scene.pov", "cannot open");
+    expect_error(sheafSceneLoadFile(s, "builtin:nosuch"), SHEAF_ERROR_SCENE, "builtin:nosuch",
+                 "nosuch", NULL);
+    expect_error(sheafSceneLoadBuiltin(s, "nosuch"), SHEAF_ERROR_SCENE, "LoadBuiltin nosuch",
+                 "nosuch", NULL);
+    OK(sheafSceneRelease(s));
+}
+
+static void test_render_scene(void) {
+    const int W = 64, H = 48;
+    SheafScene scene = build_scene();
+    SheafRenderer r = NULL;
+    SheafFrame frame = NULL;
+    int w = 0, h = 0, px, py, lx, ly;
+    float *rgba, *ids, small[4];
+    double sum = 0, shadow_rays = -1, total = -1, brute = -1, value = 0;
+    size_t i, differing = 0, count = 0, needed = 0, needed2 = 0;
+    const char* key = NULL;
+    char* json;
+    char tiny[5];
+    static const float shadow_point[3] = {0, 0, 0}, lit_point[3] = {2.5f, 0, 0};
+
+    OK(sheafSceneCommit(scene));
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererSetInt(r, "width", W));
+    OK(sheafRendererSetInt(r, "height", H));
+    OK(sheafRendererSetString(r, "accel", "crsh"));
+    OK(sheafRender(r, scene, &frame));
+    if (!frame) {
+        CHECK(frame != NULL, "no frame");
+        sheafRendererRelease(r);
+        sheafSceneRelease(scene);
+        return;
+    }
+    OK(sheafFrameGetSize(frame, &w, &h));
+    CHECK(w == W && h == H, "size %dx%d", w, h);
+
+    rgba = (float*)malloc(sizeof(float) * 4 * W * H);
+    ids = (float*)malloc(sizeof(float) * W * H);
+    OK(sheafFrameGetPass(frame, "combined", rgba, (size_t)4 * W * H));
+    OK(sheafFrameGetPass(frame, "object_id", ids, (size_t)W * H));
+    for (i = 0; i < (size_t)4 * W * H; ++i) {
+        if (i % 4 != 3) sum += rgba[i];
+        if (i >= 4 && i % 4 != 3 && rgba[i] != rgba[i % 4]) ++differing;
+    }
+    CHECK(sum / (3.0 * W * H) > 0, "mean of the image %g", sum / (3.0 * W * H));
+    CHECK(differing > 0, "the combined pass is constant");
+
+    project(shadow_point, W, H, &px, &py);
+    project(lit_point, W, H, &lx, &ly);
+    CHECK(px >= 0 && px < W && py >= 0 && py < H && lx >= 0 && lx < W && ly >= 0 && ly < H,
+          "projected pixels (%d,%d) (%d,%d)", px, py, lx, ly);
+    if (px >= 0 && px < W && py >= 0 && py < H && lx >= 0 && lx < W && ly >= 0 && ly < H) {
+        const float shadow = luminance(rgba, W, px, py), lit = luminance(rgba, W, lx, ly);
+        CHECK(ids[py * W + px] == 0.0f && ids[ly * W + lx] == 0.0f,
+              "both sample pixels show the ground: ids %g %g", ids[py * W + px], ids[ly * W + lx]);
+        CHECK(lit > shadow * 1.5f + 1e-4f, "lit ground %g is not brighter than the shadow %g", lit,
+              shadow);
+    }
+
+    /* Other passes and buffer checks. */
+    {
+        float* buf3 = (float*)malloc(sizeof(float) * 3 * W * H);
+        OK(sheafFrameGetPass(frame, "normal", buf3, (size_t)3 * W * H));
+        OK(sheafFrameGetPass(frame, "albedo", buf3, (size_t)3 * W * H));
+        OK(sheafFrameGetPass(frame, "depth", buf3, (size_t)W * H));
+        free(buf3);
+    }
+    expect_error(sheafFrameGetPass(frame, "bogus", small, 4), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "unknown pass", "bogus", NULL);
+    expect_error(sheafFrameGetPass(frame, "combined", small, 4), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "too small buffer", "12288", NULL);
+
+    /* Statistics. */
+    OK(sheafFrameGetStatCount(frame, &count));
+    CHECK(count > 0, "no statistics");
+    OK(sheafFrameGetStat(frame, 0, &key, &value));
+    CHECK(key != NULL && key[0] != '\0', "stat 0 has no key");
+    OK(sheafFrameGetStatByName(frame, "rays.shadow", &shadow_rays));
+    OK(sheafFrameGetStatByName(frame, "tests.total", &total));
+    OK(sheafFrameGetStatByName(frame, "tests.brute_force", &brute));
+    CHECK(shadow_rays > 0, "rays.shadow = %g", shadow_rays);
+    CHECK(total > 0, "tests.total = %g", total);
+    CHECK(brute >= total, "tests.brute_force %g < tests.total %g", brute, total);
+    expect_error(sheafFrameGetStatByName(frame, "no.such.stat", &value),
+                 SHEAF_ERROR_INVALID_ARGUMENT, "unknown statistic", "no.such.stat", NULL);
+
+    /* Text, with the two-call size protocol. */
+    OK(sheafFrameGetText(frame, "stats.json", NULL, 0, &needed));
+    CHECK(needed > 2, "stats.json needs %u bytes", (unsigned)needed);
+    json = (char*)malloc(needed);
+    OK(sheafFrameGetText(frame, "stats.json", json, needed, &needed2));
+    CHECK(needed2 == needed && strlen(json) + 1 == needed, "json length %u, needed %u",
+          (unsigned)strlen(json), (unsigned)needed);
+    CHECK(json[0] == '{' && strstr(json, "\"rays.shadow\"") != NULL, "json: %.80s", json);
+    OK(sheafFrameGetText(frame, "stats.json", tiny, sizeof tiny, &needed2));
+    CHECK(strlen(tiny) == 4 && strncmp(tiny, json, 4) == 0 && needed2 == needed,
+          "truncated text '%s'", tiny);
+    free(json);
+    OK(sheafFrameGetText(frame, "settings", NULL, 0, &needed));
+    {
+        char* settings = (char*)malloc(needed);
+        OK(sheafFrameGetText(frame, "settings", settings, needed, NULL));
+        CHECK(strstr(settings, "accel=crsh") != NULL && strstr(settings, "width=64") != NULL,
+              "settings text: %s", settings);
+        free(settings);
+    }
+    OK(sheafFrameGetText(frame, "stats.table", NULL, 0, &needed));
+    CHECK(needed > 1, "empty stats.table");
+    expect_error(sheafFrameGetText(frame, "bogus", NULL, 0, &needed), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "unknown text", "bogus", NULL);
+
+    /* Images: an unknown extension is an IO error. */
+    expect_error(sheafFrameSaveImage(frame, "capi_test_out.bogusext"), SHEAF_ERROR_IO,
+                 "unknown image extension", "capi_test_out.bogusext", NULL);
+
+    /* Reference counting. */
+    OK(sheafFrameRetain(frame));
+    OK(sheafFrameRelease(frame));
+    OK(sheafFrameGetSize(frame, &w, &h));
+    OK(sheafFrameRelease(frame));
+
+    /* Cancelling from the progress callback. */
+    OK(sheafRendererSetProgressCallback(r, cancel_progress, NULL));
+    frame = NULL;
+    {
+        SheafError e = sheafRender(r, scene, &frame);
+        if (g_progress_calls > 0) {
+            expect_error(e, SHEAF_ERROR_CANCELLED, "cancelled render", "cancelled", NULL);
+            CHECK(frame == NULL, "a cancelled render returned a frame");
+        } else {
+            CHECK(e == SHEAF_OK, "render without progress calls returned %d", (int)e);
+            printf("note: the pipeline never called the progress callback\n");
+        }
+        if (frame) sheafFrameRelease(frame);
+    }
+    free(rgba);
+    free(ids);
+    OK(sheafRendererRelease(r));
+    OK(sheafSceneRelease(scene));
+}
+
+/* crsh and brute must find the same hits: identical images. */
+static void test_crsh_matches_brute(void) {
+    const int N = 32;
+    SheafScene scene = NULL;
+    SheafRenderer r = NULL;
+    SheafFrame fc = NULL, fb = NULL;
+    size_t n_scenes = 0, i;
+    const char* name = NULL;
+    int found = 0;
+
+    OK(sheafGetBuiltinSceneCount(&n_scenes));
+    for (i = 0; i < n_scenes; ++i) {
+        OK(sheafGetBuiltinSceneName(i, &name));
+        if (name && strcmp(name, "cornell") == 0) found = 1;
+    }
+    CHECK(found, "no built-in scene 'cornell'");
+    CHECK(strlen(sheafGetDefaultSceneName()) > 0, "no default scene");
+
+    OK(sheafSceneNew(&scene));
+    OK(sheafSceneLoadBuiltin(scene, "cornell"));
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererSetInt(r, "width", N));
+    OK(sheafRendererSetInt(r, "height", N));
+    OK(sheafRendererSetString(r, "accel", "crsh"));
+    OK(sheafRender(r, scene, &fc)); /* commits implicitly */
+    OK(sheafRendererSetString(r, "accel", "brute"));
+    OK(sheafRender(r, scene, &fb));
+    if (fc && fb) {
+        float* a = (float*)malloc(sizeof(float) * 4 * N * N);
+        float* b = (float*)malloc(sizeof(float) * 4 * N * N);
+        double brute_tests = 0, crsh_tests = 0;
+        OK(sheafFrameGetPass(fc, "combined", a, (size_t)4 * N * N));
+        OK(sheafFrameGetPass(fb, "combined", b, (size_t)4 * N * N));
+        CHECK(memcmp(a, b, sizeof(float) * 4 * N * N) == 0,
+              "crsh and brute images of cornell differ");
+        OK(sheafFrameGetStatByName(fc, "tests.total", &crsh_tests));
+        OK(sheafFrameGetStatByName(fb, "tests.total", &brute_tests));
+        printf("cornell %dx%d: tests.total crsh %.0f, brute %.0f\n", N, N, crsh_tests, brute_tests);
+        free(a);
+        free(b);
+    }
+    if (fc) sheafFrameRelease(fc);
+    if (fb) sheafFrameRelease(fb);
+    OK(sheafRendererRelease(r));
+    OK(sheafSceneRelease(scene));
+}
+
+int main(void) {
+    sheafSetErrorCallback(on_error, &g_callback_calls);
+    test_version();
+    test_settings();
+    test_null_arguments();
+    test_scene_errors();
+    test_render_scene();
+    test_crsh_matches_brute();
+    CHECK(g_callback_calls == g_expected_errors, "error callback called %d times for %d errors",
+          g_callback_calls, g_expected_errors);
+    sheafSetErrorCallback(NULL, NULL);
+
+    if (g_failures) {
+        fprintf(stderr, "capi_test: %d of %d checks failed\n", g_failures, g_checks);
+        return 1;
+    }
+    printf("capi_test: all %d checks passed\n", g_checks);
+    return 0;
+}

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# End-to-end tests of the render command line tool: outputs, statistics, presets and exit codes.
+# Usage: cli_test.sh PATH/TO/render OUTPUT_DIR
+set -u
+
+RENDER=${1:?usage: cli_test.sh RENDER OUTDIR}
+OUT=${2:?usage: cli_test.sh RENDER OUTDIR}
+rm -rf "$OUT"
+mkdir -p "$OUT"
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); echo "ok: $1"; }
+fail() { failed=$((failed + 1)); echo "FAILED: $1"; }
+
+# run NAME ARGS...: runs render, keeping the exit code in $rc, stdout and stderr in files.
+run() {
+    local name=$1
+    shift
+    "$RENDER" "$@" >"$OUT/$name.out" 2>"$OUT/$name.err"
+    rc=$?
+}
+
+# expect_rc NAME WANT ARGS...: runs render and checks its exit code.
+expect_rc() {
+    local name=$1 want=$2
+    shift 2
+    run "$name" "$@"
+    if [ "$rc" -eq "$want" ]; then
+        pass "$name exits $want"
+    else
+        fail "$name exits $rc, expected $want; stderr: $(cat "$OUT/$name.err")"
+    fi
+}
+
+# expect_in FILE TEXT WHAT: checks that FILE contains TEXT.
+expect_in() {
+    if grep -qF -- "$2" "$1"; then
+        pass "$3"
+    else
+        fail "$3: '$2' not in $1: $(head -c 600 "$1")"
+    fi
+}
+
+S=(-W 32 -H 32)
+
+# PNG output and the one line on success.
+expect_rc png 0 builtin:cornell "${S[@]}" -o "$OUT/cornell.png"
+if [ -s "$OUT/cornell.png" ] && head -c 8 "$OUT/cornell.png" | grep -q PNG; then
+    pass "png written"
+else
+    fail "png not written"
+fi
+expect_in "$OUT/png.out" "wrote $OUT/cornell.png (32x32, " "success line"
+
+# EXR output (magic number 76 2f 31 01).
+expect_rc exr 0 builtin:cornell "${S[@]}" -o "$OUT/cornell.exr"
+if [ "$(head -c 4 "$OUT/cornell.exr" 2>/dev/null | od -An -tx1 | tr -d ' \n')" = "762f3101" ]; then
+    pass "exr written"
+else
+    fail "exr not written"
+fi
+
+# Statistics as a table and as JSON.
+expect_rc stats 0 builtin:cornell "${S[@]}" -o "$OUT/stats.png" --stats
+expect_in "$OUT/stats.out" "tests" "--stats prints a table with tests"
+expect_rc stats_json 0 builtin:cornell "${S[@]}" -o "$OUT/json.png" --stats-json "$OUT/stats.json"
+if [ -s "$OUT/stats.json" ]; then
+    for key in rays.shadow tests.total tests.brute_force memory.peak_bytes time_ms.frame; do
+        expect_in "$OUT/stats.json" "\"$key\"" "stats.json has $key"
+    done
+    if command -v python3 >/dev/null; then
+        if python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$OUT/stats.json"; then
+            pass "stats.json parses as JSON"
+        else
+            fail "stats.json does not parse as JSON"
+        fi
+    fi
+else
+    fail "stats.json not written"
+fi
+
+# Presets, and the default scene.
+expect_rc preset_rah 0 builtin:cornell "${S[@]}" -o "$OUT/rah.png" --preset rah
+expect_rc preset_crsh 0 builtin:cornell "${S[@]}" -o "$OUT/crsh.png" --preset crsh --set accel=brute
+expect_rc default_scene 0 "${S[@]}" -o "$OUT/default.png"
+expect_rc version 0 --version
+expect_in "$OUT/version.out" "render (Sheaf) " "--version prints the version"
+expect_rc list_settings 0 --list-settings
+expect_in "$OUT/list_settings.out" "hierarchy.arity" "--list-settings lists hierarchy.arity"
+expect_rc help 0 --help
+expect_in "$OUT/help.out" "Examples" "--help has examples"
+
+# Usage errors: exit 1, the message on stderr.
+expect_rc bad_option 1 builtin:cornell "${S[@]}" --no-such-option
+expect_in "$OUT/bad_option.err" "render: error: " "bad option: prefixed message"
+expect_rc arity 1 builtin:cornell "${S[@]}" -o "$OUT/x.png" --set hierarchy.arity=1
+expect_in "$OUT/arity.err" "hierarchy.arity" "arity: stderr names hierarchy.arity"
+expect_in "$OUT/arity.err" "2..64" "arity: stderr names the range"
+expect_rc hash_mode 1 builtin:cornell "${S[@]}" -o "$OUT/x.png" --set hash.mode=bogus
+expect_in "$OUT/hash_mode.err" "none, crsh, hash32, hash192" "hash.mode: stderr lists the choices"
+expect_rc nokey 1 builtin:cornell "${S[@]}" -o "$OUT/x.png" --set nokey=1
+expect_in "$OUT/nokey.err" "nokey" "nokey: stderr names the key"
+expect_rc noequals 1 builtin:cornell "${S[@]}" -o "$OUT/x.png" --set noequals
+expect_in "$OUT/noequals.err" "noequals" "noequals: stderr names the argument"
+expect_rc no_preset 1 builtin:cornell "${S[@]}" -o "$OUT/x.png" --preset nosuch
+expect_in "$OUT/no_preset.err" "nosuch" "no preset: stderr names it"
+expect_rc zero_width 1 builtin:cornell -W 0 -H 32 -o "$OUT/x.png"
+if [ -e "$OUT/x.png" ]; then
+    fail "a failed run wrote an image"
+else
+    pass "failed runs write no image"
+fi
+
+# Scene errors: exit 2.
+expect_rc missing_scene 2 "$OUT/no/such/scene.pov" "${S[@]}" -o "$OUT/y.png"
+expect_in "$OUT/missing_scene.err" "render: error: " "missing scene: prefixed message"
+expect_rc builtin_nosuch 2 builtin:nosuch "${S[@]}" -o "$OUT/y.png"
+expect_in "$OUT/builtin_nosuch.err" "nosuch" "builtin:nosuch: stderr names it"
+
+# Render and image errors: exit 3.
+expect_rc bad_ext 3 builtin:cornell "${S[@]}" -o "$OUT/out.bogusext"
+expect_in "$OUT/bad_ext.err" "out.bogusext" "bad extension: stderr names the file"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -17,6 +17,7 @@ struct Frame {
     std::vector<Vec3> normal; // world-space shading normal of the primary hit
     std::vector<Vec3> albedo; // material colour of the primary hit
     std::vector<uint32_t> object_id; // object of the primary hit, 0xFFFFFFFF for none
+    std::vector<uint32_t> tests;     // exact ray-primitive tests of the pixel's secondary rays
     Stats stats;
     /// Effective settings the frame was rendered with (key, canonical value).
     std::vector<std::pair<std::string, std::string>> settings;

@@ -50,6 +50,7 @@ class FramePipeline {
         const int aa = s_.aa_samples;
         W_ = s_.width * aa, H_ = s_.height * aa;
         radiance_.assign(size_t(W_) * H_, Vec3(0.0f));
+        tests_.assign(size_t(W_) * H_, 0);
         memory_.add(int64_t(radiance_.size() * sizeof(Vec3)));
         params_.epsilon = 1e-5f * scene_extent(scene_);
         params_.ao_samples = s_.ao_samples;
@@ -128,6 +129,10 @@ class FramePipeline {
             if (!r.occluded[i]) radiance_[batch.pixel[i]] += batch.weight[i];
     }
 
+    void count_tests(const RayBatch& batch, const TraceResult& r) {
+        for (size_t i = 0; i < batch.size(); ++i) tests_[batch.pixel[i]] += r.tests[i];
+    }
+
     // Shades one wave of hits; returns the hits of its reflection and refraction rays.
     std::vector<SurfaceHit> shade_wave(const std::vector<SurfaceHit>& hits, int bounce) {
         RayBatch shadow(RayType::Shadow, memory_), ao(RayType::Ao, memory_);
@@ -147,11 +152,13 @@ class FramePipeline {
         {
             PhaseTimer t(st_, "time_ms.shading");
             accumulate(shadow, r);
+            count_tests(shadow, r);
         }
         if (trace_ao) {
             trace_batch(scene_, ao, s_, st_, memory_, r);
             PhaseTimer t(st_, "time_ms.shading");
             accumulate(ao, r);
+            count_tests(ao, r);
         }
         if (bounce >= s_.trace_depth) return {};
 
@@ -164,6 +171,7 @@ class FramePipeline {
         for (RayBatch* b : {&refl, &refr}) {
             trace_batch(scene_, *b, s_, st_, memory_, r);
             PhaseTimer t(st_, "time_ms.shading");
+            count_tests(*b, r);
             std::vector<uint32_t> slot(b->size());
             uint32_t count = 0;
             for (size_t i = 0; i < b->size(); ++i) {
@@ -200,15 +208,20 @@ class FramePipeline {
         f_.normal.resize(size_t(w) * h);
         f_.albedo.resize(size_t(w) * h);
         f_.object_id.resize(size_t(w) * h);
+        f_.tests.resize(size_t(w) * h);
         const float inv = 1.0f / float(aa * aa);
         parallel_for(
             "resolve", size_t(w) * h,
             [&](size_t p) {
                 const int x = int(p % w), y = int(p / w);
                 Vec3 sum(0.0f);
+                uint64_t tests = 0;
                 for (int sy = 0; sy < aa; ++sy)
-                    for (int sx = 0; sx < aa; ++sx)
+                    for (int sx = 0; sx < aa; ++sx) {
                         sum += radiance_[size_t(y * aa + sy) * W_ + (x * aa + sx)];
+                        tests += tests_[size_t(y * aa + sy) * W_ + (x * aa + sx)];
+                    }
+                f_.tests[p] = uint32_t(std::min<uint64_t>(tests, 0xFFFFFFFFu));
                 sum = sum * inv;
                 f_.rgba[4 * p + 0] = sum.x, f_.rgba[4 * p + 1] = sum.y, f_.rgba[4 * p + 2] = sum.z,
                                 f_.rgba[4 * p + 3] = 1;
@@ -259,6 +272,7 @@ class FramePipeline {
     std::vector<float> depth_;
     std::vector<Vec3> normal_, albedo_;
     std::vector<uint32_t> object_;
+    std::vector<uint32_t> tests_;
 };
 
 } // namespace

@@ -130,6 +130,13 @@ TEST(Renderer, StatisticsAddUp) {
                                            st.get(p + "final.tests"));
     }
     EXPECT_EQ(st.get("tests.total"), total);
+    // The per-pixel pass holds every exact test once.
+    double pass = 0, finals = 0;
+    for (uint32_t v : f.tests) pass += v;
+    for (const char* t : {"shadow", "reflection", "refraction", "ao"})
+        finals += st.get(std::string("tests.") + t + ".final.tests");
+    EXPECT_EQ(pass, finals);
+    EXPECT_GT(pass, 0);
     EXPECT_EQ(st.get("tests.brute_force"), brute);
     EXPECT_GT(st.get("memory.peak_bytes"), 0);
     EXPECT_GT(st.get("time_ms.frame"), 0);

@@ -56,6 +56,7 @@ void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, Co
             uint64_t tests = 0, hits = 0;
             for (size_t i = b; i < e; ++i) {
                 const Ray& r = batch.rays[i];
+                const uint64_t before = tests;
                 uint64_t best = kNoHit;
                 for (size_t p = 0; p < prims; ++p) {
                     ++tests;
@@ -70,6 +71,7 @@ void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, Co
                     best = std::min(best, pack_hit(h.t, uint32_t(p)));
                 }
                 if (!any) out.closest[i] = best;
+                out.tests[i] = uint32_t(std::min<uint64_t>(tests - before, 0xFFFFFFFFu));
             }
             final.add(tests, hits);
         },
@@ -86,6 +88,7 @@ class Traversal {
         : levels_(size_t(h.depth) + 1), scene_(scene), h_(h), rays_(rays), perm_(perm), any_(any),
           batch_(batch), out_(out), local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
         for (int k = 0; k <= h.depth; ++k) buffers_.push_back(tracked_vector<Pair>(memory));
+        leaf_pairs_.assign(h.node_count(1), 0);
     }
 
     void run(bool cull) {
@@ -137,6 +140,8 @@ class Traversal {
     Counter objects_, final_;
     std::vector<Counter> levels_; // index k: level k
     double final_ms_ = 0;
+    // Candidate primitives of each level-1 node: every ray of the node is tested against each.
+    std::vector<uint32_t> leaf_pairs_;
 
   private:
     void gather(TrackedVector<Pair>& dst) {
@@ -193,6 +198,8 @@ class Traversal {
                 uint64_t t = 0, hcount = 0;
                 for (size_t i = b; i < e; ++i) {
                     const Pair pr = pairs[i];
+                    std::atomic_ref<uint32_t>(leaf_pairs_[pr.node])
+                        .fetch_add(1, std::memory_order_relaxed);
                     const TriangleVerts& tri = scene_.tris[pr.prim];
                     for (size_t j = h_.first_child(pr.node), last = h_.last_child(1, pr.node);
                          j < last; ++j) {
@@ -274,6 +281,7 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
         out.occluded.assign(n, 0);
     else
         out.closest.assign(n, kNoHit);
+    out.tests.assign(n, 0);
     if (n == 0 || scene.prim_count() == 0) return;
 
     if (s.accel == Accel::Brute) {
@@ -320,6 +328,12 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
     Traversal trav(scene, h, sorted, order.perm, any, size_t(s.batch_pairs), memory, out);
     trav.run(s.cull_objects);
     const double total_ms = ms_since(t0);
+    parallel_for(
+        "rsh.ray_tests", n,
+        [&](size_t j) {
+            out.tests[order.perm[j]] = trav.leaf_pairs_[j / size_t(s.hierarchy_arity)];
+        },
+        4096);
     stats.add("time_ms.traversal", total_ms - trav.final_ms_);
     stats.add("time_ms.final_tests", trav.final_ms_);
     memory.sub(int64_t(keys.capacity() + order.perm.capacity()) * 4);

@@ -42,6 +42,7 @@ SHEAF_HD_INLINE uint32_t hit_prim(uint64_t h) {
 struct TraceResult {
     std::vector<uint64_t> closest; // reflection and refraction rays: packed hit or kNoHit
     std::vector<uint8_t> occluded; // shadow and AO rays: 1 when something is in the way
+    std::vector<uint32_t> tests;   // exact ray-primitive tests each ray took part in
 };
 
 /// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,

@@ -52,13 +52,14 @@ SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float
         size_t channels = 0;
         if (name == "combined")
             channels = 4;
-        else if (name == "depth" || name == "object_id")
+        else if (name == "depth" || name == "object_id" || name == "tests")
             channels = 1;
         else if (name == "normal" || name == "albedo")
             channels = 3;
         else
-            throw InvalidArgument("unknown pass '" + name +
-                                  "'; known passes: combined, depth, normal, albedo, object_id");
+            throw InvalidArgument(
+                "unknown pass '" + name +
+                "'; known passes: combined, depth, normal, albedo, object_id, tests");
         const size_t needed = pixels * channels;
         if (float_count < needed)
             throw InvalidArgument("pass '" + name + "' needs " + std::to_string(needed) +
@@ -74,6 +75,9 @@ SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float
             check_pass(f.object_id, pixels, "object_id");
             for (size_t i = 0; i < pixels; ++i)
                 dst[i] = f.object_id[i] == 0xFFFFFFFFu ? -1.0f : float(f.object_id[i]);
+        } else if (name == "tests") {
+            check_pass(f.tests, pixels, "tests");
+            for (size_t i = 0; i < pixels; ++i) dst[i] = float(f.tests[i]);
         } else {
             const std::vector<sheaf::Vec3>& v = name == "normal" ? f.normal : f.albedo;
             check_pass(v, pixels, name.c_str());

@@ -156,7 +156,8 @@ SHEAF_API SheafError sheafFrameRelease(SheafFrame frame);
 SHEAF_API SheafError sheafFrameGetSize(SheafFrame frame, int* width, int* height);
 /* Copies a pass, top row first: "combined" (4 floats per pixel, scene-linear RGBA), "depth" (1,
  * +inf where nothing was hit), "normal" (3), "albedo" (3), "object_id" (1, -1 where nothing was
- * hit). float_count is the capacity of dst in floats. */
+ * hit), "tests" (1, the exact ray-primitive tests of the pixel's secondary rays: where the
+ * hierarchy works hardest). float_count is the capacity of dst in floats. */
 SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float* dst,
                                        size_t float_count);
 /* Statistics (docs/statistics.md). *key stays valid as long as the frame. */

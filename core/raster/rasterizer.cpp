@@ -14,7 +14,7 @@ struct D3 {
 };
 
 struct ScreenTri {
-    double x[3], y[3], iz[3]; // screen position and 1 / camera depth of each vertex
+    double x[3], y[3], iz[3]; // screen position and the depth attribute of each vertex
     double inv_area;
     uint32_t prim;
     int x0, y0, x1, y1; // pixel bounds, inclusive; x0 > x1 when empty
@@ -55,7 +55,8 @@ void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<u
     double extent = 1.0 + length(cam.origin);
     for (const Sphere& s : scene.object_sphere)
         extent = std::max(extent, double(s.radius) + length(s.center));
-    const double near = 1e-7 * extent;
+    // Orthographic views start at the camera plane; perspective ones just in front of the eye.
+    const double near = cam.ortho ? 0.0 : 1e-7 * extent;
 
     // 1. Set-up: camera space, near clip, projection. A clipped quad becomes two triangles.
     std::vector<ScreenTri> tris(2 * n);
@@ -77,9 +78,13 @@ void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<u
             const D3 q[3] = {poly[0], poly[k + 1], poly[k + 2]};
             ScreenTri s;
             for (int i = 0; i < 3; ++i) {
-                s.x[i] = (q[i].x / q[i].z / cam.tan_half_x + 1.0) * 0.5 * W;
-                s.y[i] = (1.0 - q[i].y / q[i].z / cam.tan_half_y) * 0.5 * H;
-                s.iz[i] = 1.0 / q[i].z;
+                // Inverse of CameraFrame::ndc. Perspective depth interpolates as 1/z in screen
+                // space, orthographic depth as z.
+                const double px = cam.ortho ? q[i].x : q[i].x / q[i].z;
+                const double py = cam.ortho ? q[i].y : q[i].y / q[i].z;
+                s.x[i] = (px / cam.half_x - cam.shift_x + 1.0) * 0.5 * W;
+                s.y[i] = (1.0 - (py / cam.half_y - cam.shift_y)) * 0.5 * H;
+                s.iz[i] = cam.ortho ? q[i].z : 1.0 / q[i].z;
             }
             double area =
                 (s.x[1] - s.x[0]) * (s.y[2] - s.y[0]) - (s.x[2] - s.x[0]) * (s.y[1] - s.y[0]);
@@ -140,7 +145,7 @@ void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<u
                     if (!inside) continue;
                     const double iz =
                         (w[0] * s.iz[0] + w[1] * s.iz[1] + w[2] * s.iz[2]) * s.inv_area;
-                    const float depth = float(1.0 / iz);
+                    const float depth = float(cam.ortho ? iz : 1.0 / iz);
                     uint32_t bits;
                     std::memcpy(&bits, &depth, 4);
                     const uint64_t key = (uint64_t(bits) << 32) | s.prim;

@@ -103,6 +103,15 @@ TEST(Rasterizer, AgreesWithRayCastingOnRandomTrianglesCrossingTheNearPlane) {
     compare(prepare_scene(s), 64, 48, "soup");
 }
 
+TEST(Rasterizer, AgreesWithRayCastingThroughOrthographicAndShiftedCameras) {
+    Scene s = make_builtin_scene("office");
+    s.camera.shift_x = 0.2f, s.camera.shift_y = -0.1f;
+    compare(prepare_scene(s), 40, 30, "office shifted");
+    s.camera.projection = Projection::Orthographic;
+    s.camera.ortho_height = 6.0f;
+    compare(prepare_scene(s), 40, 30, "office orthographic");
+}
+
 TEST(Rasterizer, SharedEdgesAreCoveredExactlyOnce) {
     // A fan of triangles around a centre: every pixel is owned by exactly one of them, so the
     // visibility buffer has no hole along the shared edges.

@@ -43,12 +43,13 @@ void basis(Vec3 n, Vec3& t, Vec3& b) {
     b = Vec3(c, s + n.y * n.y * a, -n.y);
 }
 
-bool lit_by(const SurfaceHit& h, Vec3 light_pos) {
-    const Vec3 l = light_pos - h.position;
-    return dot(h.geo_normal, l) > 0 && dot(h.normal, l) > 0;
-}
-
 } // namespace
+
+bool lights_point(const Light& l, const SurfaceHit& h, const RayGenParams& p) {
+    const LightSample s = sample_light(l, h.position, p.far);
+    return dot(h.geo_normal, s.to_light) > 0 && dot(h.normal, s.to_light) > 0 &&
+           max_component(s.radiance) > 0;
+}
 
 void generate_shadow_rays(const PreparedScene& scene, const std::vector<SurfaceHit>& hits,
                           const RayGenParams& p, RayBatch& out) {
@@ -58,26 +59,27 @@ void generate_shadow_rays(const PreparedScene& scene, const std::vector<SurfaceH
     const auto& lights = scene.lights;
     emit(
         n * lights.size(), out,
-        [&](size_t k) { return lit_by(hits[k % n], lights[k / n].position) ? 1u : 0u; },
+        [&](size_t k) {
+            const Light& l = lights[k / n];
+            return !l.shadowless && lights_point(l, hits[k % n], p) ? 1u : 0u;
+        },
         [&](size_t k, uint32_t slot) {
             const SurfaceHit& h = hits[k % n];
             const uint32_t li = uint32_t(k / n);
-            const PointLight& l = lights[li];
-            if (!lit_by(h, l.position)) return;
+            const Light& l = lights[li];
+            if (l.shadowless || !lights_point(l, h, p)) return;
             // The ray starts at the light and ends just above the surface.
             const Vec3 target = h.position + h.geo_normal * p.epsilon;
-            const Vec3 d = target - l.position;
-            const float dist = length(d);
+            const LightSample ls = sample_light(l, target, p.far);
             Ray r;
-            r.origin = l.position;
-            r.dir = d / dist;
+            r.origin = ls.origin;
+            r.dir = -ls.to_light;
             r.tmin = 0.0f;
-            r.tmax = dist;
-            const Vec3 to_light = normalize(l.position - h.position);
+            r.tmax = ls.distance;
             out.rays[slot] = r;
             out.pixel[slot] = h.pixel;
             out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h.normal,
-                                                           h.incoming, to_light, l.color);
+                                                           h.incoming, ls.to_light, ls.radiance);
             out.light[slot] = li;
         });
 }

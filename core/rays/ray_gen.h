@@ -13,7 +13,8 @@
 namespace sheaf {
 
 struct RayGenParams {
-    float epsilon = 1e-4f; // offset from surfaces, in scene units
+    float epsilon = 1e-4f;   // offset from surfaces, in scene units
+    float far = 1e4f;        // beyond the scene: where parallel lights' shadow rays start
     int ao_samples = 0;
     float ao_distance = 1.0f;
     float min_weight = 1e-3f; // reflection/refraction rays carrying less are not traced
@@ -22,6 +23,10 @@ struct RayGenParams {
 /// Radical inverse in base b of index i (the Halton sequence's coordinate).
 float radical_inverse(uint32_t i, uint32_t base);
 
+/// True when light l lights hit h at all (the surface faces it, a spot reaches it).
+bool lights_point(const Light& l, const SurfaceHit& h, const RayGenParams& p);
+
+/// Shadow rays for every lit (hit, light) pair of the lights that cast shadows.
 void generate_shadow_rays(const PreparedScene& scene, const std::vector<SurfaceHit>& hits,
                           const RayGenParams& p, RayBatch& out);
 /// `ao_samples` rays per hit; each hit's Halton points start at its pixel index times the count.

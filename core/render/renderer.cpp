@@ -34,7 +34,7 @@ void declare_keys(Stats& st) {
 float scene_extent(const PreparedScene& scene) {
     float e = 1e-3f;
     for (const Sphere& s : scene.object_sphere) e = std::max(e, length(s.center) + s.radius);
-    for (const PointLight& l : scene.lights) e = std::max(e, length(l.position));
+    for (const Light& l : scene.lights) e = std::max(e, length(l.position));
     return std::max(e, length(scene.camera.position));
 }
 
@@ -53,6 +53,7 @@ class FramePipeline {
         tests_.assign(size_t(W_) * H_, 0);
         memory_.add(int64_t(radiance_.size() * sizeof(Vec3)));
         params_.epsilon = 1e-5f * scene_extent(scene_);
+        params_.far = 4.0f * scene_extent(scene_);
         params_.ao_samples = s_.ao_samples;
         params_.ao_distance = s_.ao_distance;
 
@@ -142,10 +143,20 @@ class FramePipeline {
             generate_shadow_rays(scene_, hits, params_, shadow);
             if (trace_ao) generate_ao_rays(scene_, hits, params_, ao);
         }
-        if (!trace_ao) {
+        {
+            // Terms that need no ray: emission, ambient (unless AO traces it), shadowless lights.
             PhaseTimer t(st_, "time_ms.shading");
-            for (const SurfaceHit& h : hits)
-                radiance_[h.pixel] += h.throughput * ambient_light(scene_.materials[h.material]);
+            for (const SurfaceHit& h : hits) {
+                const Material& m = scene_.materials[h.material];
+                Vec3 c = m.emission;
+                if (!trace_ao) c += ambient_light(m);
+                for (const Light& l : scene_.lights) {
+                    if (!l.shadowless || !lights_point(l, h, params_)) continue;
+                    const LightSample ls = sample_light(l, h.position, params_.far);
+                    c += direct_light(m, h.normal, h.incoming, ls.to_light, ls.radiance);
+                }
+                radiance_[h.pixel] += h.throughput * c;
+            }
         }
         TraceResult r;
         trace_batch(scene_, shadow, s_, st_, memory_, r);

@@ -47,7 +47,7 @@ PreparedScene glass_scene() {
     s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
     s.add_mesh_object("glass", make_uv_sphere(Vec3(0, 0, 0), 1.0f, 12, 24), mg);
     s.add_mesh_object("mirror", make_box(Vec3(1.5f, -1, -2), Vec3(2.5f, 1, -1)), mm);
-    s.add_light(PointLight{Vec3(2, 5, 4), Vec3(1.0f)});
+    s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
     s.camera.position = Vec3(0, 1.5f, 5);
     s.camera.look_at = Vec3(0, 0, 0);
     s.background = Vec3(0.2f, 0.3f, 0.5f);
@@ -152,7 +152,7 @@ TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
     Material m;
     m.color = Vec3(0.5f, 0.25f, 1.0f), m.ambient = 0.1f, m.diffuse = 0.6f;
     s.add_mesh_object("quad", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)), s.add_material(m));
-    s.add_light(PointLight{Vec3(0, 0, 3), Vec3(1.0f)});
+    s.add_light(Light{Vec3(0, 0, 3), Vec3(1.0f)});
     s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
     const PreparedScene scene = prepare_scene(s);
     const Frame f = render(scene, {{"width", "33"}, {"height", "33"}});
@@ -164,6 +164,79 @@ TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
     EXPECT_NEAR(f.normal[16 * 33 + 16].z, 1.0f, 1e-5f);
     // The corner sees the background (black).
     EXPECT_EQ(f.rgba[0], 0.0f);
+}
+
+// The quad of the analytic test under other lights: the centre pixel's radiance.
+Vec3 centre_radiance(const Light& light, const Material& m, bool occluder = false) {
+    Scene s;
+    s.add_mesh_object("quad", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)), s.add_material(m));
+    // Halfway to a light at (3, 0, 1.5), outside the orthographic view of the centre.
+    if (occluder)
+        s.add_mesh_object("occluder", make_box(Vec3(1.4f, -0.1f, 0.7f), Vec3(1.6f, 0.1f, 0.8f)), 0);
+    s.add_light(light);
+    s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
+    s.camera.projection = Projection::Orthographic,
+    s.camera.ortho_height = 0.5f; // no occluder in view
+    const Frame f = render(prepare_scene(s), {{"width", "33"}, {"height", "33"}});
+    const size_t c = (16 * 33 + 16) * 4;
+    return Vec3(f.rgba[c], f.rgba[c + 1], f.rgba[c + 2]);
+}
+
+TEST(Renderer, LightTypesFollowTheirFormulas) {
+    Material m;
+    m.color = Vec3(1.0f), m.ambient = 0.1f, m.diffuse = 0.6f;
+    Light parallel;
+    parallel.type = LightType::Parallel;
+    parallel.direction = Vec3(0, -1, -1); // 45 degrees to the quad's normal
+    EXPECT_NEAR(centre_radiance(parallel, m).x, 0.1f + 0.6f * std::sqrt(0.5f), 1e-4f);
+
+    Light spot{Vec3(0, 0, 3), Vec3(1.0f)};
+    spot.type = LightType::Spot;
+    spot.direction = Vec3(0, 0, -1);
+    spot.spot_radius = 10, spot.spot_falloff = 20;
+    EXPECT_NEAR(centre_radiance(spot, m).x, 0.7f, 1e-4f); // on the axis: full
+    spot.direction = Vec3(1, 0, -1);                      // 45 degrees away: outside the falloff
+    EXPECT_NEAR(centre_radiance(spot, m).x, 0.1f, 1e-4f);
+    spot.direction = Vec3(std::tan(15 * kPi / 180), 0, -1); // halfway: smoothstep(0.5) = 0.5
+    EXPECT_NEAR(centre_radiance(spot, m).x, 0.1f + 0.6f * 0.5f, 1e-3f);
+
+    Light faded{Vec3(0, 0, 3), Vec3(1.0f)};
+    faded.fade_distance = 3, faded.fade_power = 2; // at d = 3: 2 / (1 + 1) = 1
+    EXPECT_NEAR(centre_radiance(faded, m).x, 0.7f, 1e-4f);
+    faded.fade_distance = 1.5f; // 2 / (1 + 4)
+    EXPECT_NEAR(centre_radiance(faded, m).x, 0.1f + 0.6f * 0.4f, 1e-4f);
+
+    Light point{Vec3(3, 0, 1.5f), Vec3(1.0f)};
+    const float lit = 0.1f + 0.6f * 1.5f / std::sqrt(9.0f + 2.25f);
+    EXPECT_NEAR(centre_radiance(point, m, false).x, lit, 1e-4f);
+    EXPECT_NEAR(centre_radiance(point, m, true).x, 0.1f, 1e-4f); // shadowed by the occluder
+    point.shadowless = true;
+    EXPECT_NEAR(centre_radiance(point, m, true).x, lit, 1e-4f);
+
+    Material glow = m;
+    glow.emission = Vec3(0.25f, 0, 0);
+    EXPECT_NEAR(centre_radiance(Light{Vec3(0, 0, 3), Vec3(1.0f)}, glow).x, 0.95f, 1e-4f);
+}
+
+TEST(Renderer, SpotAndParallelLightsKeepTheAccelModesIdentical) {
+    Scene s;
+    Material floor;
+    const uint32_t mf = s.add_material(floor);
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+    s.add_mesh_object("ball", make_uv_sphere(Vec3(0, 0, 0), 1.0f, 10, 20), mf);
+    Light spot{Vec3(2, 4, 2), Vec3(0.7f)};
+    spot.type = LightType::Spot, spot.direction = Vec3(-2, -4, -2), spot.spot_radius = 15,
+    spot.spot_falloff = 30;
+    Light sun;
+    sun.type = LightType::Parallel, sun.direction = Vec3(1, -2, 0.5f), sun.color = Vec3(0.5f);
+    s.add_light(spot);
+    s.add_light(sun);
+    s.camera.position = Vec3(0, 2, 6);
+    const PreparedScene scene = prepare_scene(s);
+    const Frame brute = render(scene, {{"width", "40"}, {"height", "30"}, {"accel", "brute"}});
+    const Frame crsh = render(scene, {{"width", "40"}, {"height", "30"}});
+    EXPECT_TRUE(same_image(brute, crsh));
+    EXPECT_GT(crsh.stats.get("rays.shadow"), 0);
 }
 
 TEST(Renderer, AntiAliasingKeepsTheImageSize) {

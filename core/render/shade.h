@@ -26,6 +26,51 @@ SHEAF_HD_INLINE Vec3 direct_light(const Material& m, Vec3 n, Vec3 incoming, Vec3
     return c * light_color;
 }
 
+/// What a light brings to point p: the unit direction towards it, the distance, the radiance
+/// arriving (colour, spot cone, fade) and where its shadow ray starts (paper 000 moves shadow
+/// origins to the light; a parallel light's rays start `far` away, against its direction).
+struct LightSample {
+    Vec3 to_light;
+    float distance = 0;
+    Vec3 radiance;
+    Vec3 origin;
+};
+
+/// Spot-light factor in POV-Ray's manner: full inside `radius`, smoothly to zero at `falloff`,
+/// times cos(angle)^tightness.
+SHEAF_HD_INLINE float spot_factor(const Light& l, Vec3 light_to_point) {
+    const float angle = angle_between(normalize(l.direction), light_to_point) * (180.0f / kPi);
+    if (angle >= l.spot_falloff) return 0.0f;
+    float f = 1.0f;
+    if (angle > l.spot_radius) {
+        const float u = (l.spot_falloff - angle) / fmaxf(l.spot_falloff - l.spot_radius, 1e-6f);
+        f = u * u * (3.0f - 2.0f * u);
+    }
+    if (l.spot_tightness > 0) f *= powf(fmaxf(cosf(angle * kPi / 180.0f), 0.0f), l.spot_tightness);
+    return f;
+}
+
+SHEAF_HD_INLINE LightSample sample_light(const Light& l, Vec3 p, float far) {
+    LightSample s;
+    if (l.type == LightType::Parallel) {
+        s.to_light = -normalize(l.direction);
+        s.distance = far;
+        s.origin = p + s.to_light * far;
+        s.radiance = l.color;
+        return s;
+    }
+    const Vec3 d = l.position - p;
+    s.distance = length(d);
+    s.to_light = s.distance > 0 ? d / s.distance : Vec3(0, 0, 1);
+    s.origin = l.position;
+    float k = 1.0f;
+    if (l.type == LightType::Spot) k *= spot_factor(l, -s.to_light);
+    if (l.fade_distance > 0 && l.fade_power > 0)
+        k *= 2.0f / (1.0f + powf(s.distance / l.fade_distance, l.fade_power));
+    s.radiance = l.color * k;
+    return s;
+}
+
 /// Ambient term (scaled by ambient occlusion where it is traced).
 SHEAF_HD_INLINE Vec3 ambient_light(const Material& m) {
     return m.color * (m.ambient * (1.0f - m.transmission));

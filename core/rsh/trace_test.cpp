@@ -28,8 +28,8 @@ PreparedScene random_scene(uint32_t seed) {
         }
         s.add_mesh_object("cluster" + std::to_string(o), std::move(m), 0);
     }
-    s.add_light(PointLight{Vec3(0, 9, 0), Vec3(1.0f)});
-    s.add_light(PointLight{Vec3(9, 0, 0), Vec3(1.0f)});
+    s.add_light(Light{Vec3(0, 9, 0), Vec3(1.0f)});
+    s.add_light(Light{Vec3(9, 0, 0), Vec3(1.0f)});
     return prepare_scene(s);
 }
 

@@ -33,7 +33,7 @@ struct PreparedScene {
     std::vector<std::string> object_name;
 
     std::vector<Material> materials;
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     Camera camera;
     Vec3 background;
     std::map<std::string, std::string> settings;

@@ -18,7 +18,7 @@ uint32_t Scene::add_object(Object o) {
     objects.push_back(std::move(o));
     return uint32_t(objects.size() - 1);
 }
-uint32_t Scene::add_light(const PointLight& l) {
+uint32_t Scene::add_light(const Light& l) {
     lights.push_back(l);
     return uint32_t(lights.size() - 1);
 }
@@ -81,9 +81,23 @@ void Scene::validate() const {
                 if (!std::isfinite(v))
                     throw SceneError(name + " has a transform that is not finite");
     }
-    for (size_t l = 0; l < lights.size(); ++l)
-        if (!is_finite(lights[l].position) || !is_finite(lights[l].color))
-            throw SceneError("light " + std::to_string(l) + " is not finite");
+    for (size_t l = 0; l < lights.size(); ++l) {
+        const Light& li = lights[l];
+        const std::string name = "light " + std::to_string(l);
+        if (!is_finite(li.position) || !is_finite(li.color) || !is_finite(li.direction) ||
+            !std::isfinite(li.spot_radius) || !std::isfinite(li.spot_falloff) ||
+            !std::isfinite(li.spot_tightness) || !std::isfinite(li.fade_distance) ||
+            !std::isfinite(li.fade_power))
+            throw SceneError(name + " is not finite");
+        if (li.type != LightType::Point && length(li.direction) <= 0)
+            throw SceneError(name + " has no direction");
+        if (li.type == LightType::Spot &&
+            !(li.spot_radius >= 0 && li.spot_falloff > 0 && li.spot_falloff <= 180))
+            throw SceneError(name +
+                             ": a spot light needs 0 <= radius and 0 < falloff <= 180 degrees");
+        if (li.fade_distance < 0 || li.fade_power < 0)
+            throw SceneError(name + ": fade distance and power must be >= 0");
+    }
     const Camera& c = camera;
     if (!is_finite(c.position) || !is_finite(c.look_at) || !is_finite(c.up))
         throw SceneError("the camera is not finite");
@@ -91,8 +105,18 @@ void Scene::validate() const {
         throw SceneError("the camera looks at its own position");
     if (length(cross(c.look_at - c.position, c.up)) <= 0)
         throw SceneError("the camera's up vector is parallel to its view");
-    if (!(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
+    if (c.projection == Projection::Perspective && !(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
         throw SceneError("the camera's field of view must lie in (0, 180) degrees");
+    if (c.projection == Projection::Orthographic &&
+        !(c.ortho_height > 0 && std::isfinite(c.ortho_height)))
+        throw SceneError("an orthographic camera needs a view height > 0");
+    if (!std::isfinite(c.shift_x) || !std::isfinite(c.shift_y))
+        throw SceneError("the camera's shift is not finite");
+    for (size_t m = 0; m < materials.size(); ++m)
+        if (!is_finite(materials[m].color) || !is_finite(materials[m].emission) ||
+            !(materials[m].ior > 0))
+            throw SceneError("material " + std::to_string(m) +
+                             " has a colour that is not finite or an ior <= 0");
 }
 
 } // namespace sheaf

@@ -21,6 +21,7 @@ struct Mesh {
 
 struct Material {
     Vec3 color{0.8f, 0.8f, 0.8f};
+    Vec3 emission{0.0f, 0.0f, 0.0f}; // radiance the surface gives off by itself
     float ambient = 0.1f;
     float diffuse = 0.7f;
     float specular = 0.0f; // Phong highlight strength
@@ -30,16 +31,32 @@ struct Material {
     float ior = 1.5f;
 };
 
-struct PointLight {
+enum class LightType { Point, Spot, Parallel };
+
+/// A light. Position and colour come first so that `Light{position, color}` is a point light.
+struct Light {
     Vec3 position;
     Vec3 color{1, 1, 1};
+    LightType type = LightType::Point;
+    Vec3 direction{0, -1, 0};    // spot: the cone's axis; parallel: the way the light travels
+    float spot_radius = 30.0f;   // spot: degrees from the axis at full intensity
+    float spot_falloff = 45.0f;  // spot: degrees from the axis where it reaches zero
+    float spot_tightness = 0.0f; // spot: intensity times cos(angle)^tightness
+    float fade_distance = 0.0f;  // > 0: intensity 2 / (1 + (d / fade_distance)^fade_power)
+    float fade_power = 0.0f;
+    bool shadowless = false; // lights without shadow rays
 };
+
+enum class Projection { Perspective, Orthographic };
 
 struct Camera {
     Vec3 position{0, 0, 5};
     Vec3 look_at{0, 0, 0};
     Vec3 up{0, 1, 0};
-    float fov_y_degrees = 45.0f; // vertical field of view
+    float fov_y_degrees = 45.0f; // perspective: vertical field of view
+    Projection projection = Projection::Perspective;
+    float ortho_height = 2.0f;      // orthographic: height of the view in scene units
+    float shift_x = 0, shift_y = 0; // lens shift in image widths / heights (off-axis views)
 };
 
 struct Object {
@@ -54,14 +71,14 @@ class Scene {
     uint32_t add_mesh(Mesh mesh);
     uint32_t add_material(const Material& m);
     uint32_t add_object(Object o);
-    uint32_t add_light(const PointLight& l);
+    uint32_t add_light(const Light& l);
     /// Adds a mesh and one object that uses it (the common case of a unique mesh).
     uint32_t add_mesh_object(std::string name, Mesh mesh, uint32_t material, const Affine& t = {});
 
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<Object> objects;
-    std::vector<PointLight> lights;
+    std::vector<Light> lights;
     Camera camera;
     Vec3 background{0, 0, 0};
     /// Settings the scene itself asks for (e.g. trace.depth); a host's explicit settings win.

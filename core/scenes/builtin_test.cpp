@@ -86,7 +86,7 @@ TEST(BuiltinScenes, EachBuildsAndValidates) {
         EXPECT_LE(s.triangle_count(), e.max_tris);
         ASSERT_GE(s.lights.size(), 1u);
         const Bounds b = world_bounds(s);
-        for (const PointLight& l : s.lights) EXPECT_TRUE(b.contains(l.position));
+        for (const Light& l : s.lights) EXPECT_TRUE(b.contains(l.position));
         EXPECT_TRUE(b.contains(s.camera.position));
         EXPECT_TRUE(b.contains(s.camera.look_at));
         EXPECT_GE(s.camera.fov_y_degrees, 45.0f);

@@ -54,6 +54,34 @@ SHEAF_API void sheafMaterialDescInit(SheafMaterialDesc* desc) {
     desc->mirror = m.mirror;
     desc->transmission = m.transmission;
     desc->ior = m.ior;
+    desc->emission[0] = m.emission.x, desc->emission[1] = m.emission.y,
+    desc->emission[2] = m.emission.z;
+}
+
+SHEAF_API void sheafLightDescInit(SheafLightDesc* desc) {
+    if (!desc) return;
+    const sheaf::Light l;
+    desc->type = SHEAF_LIGHT_POINT;
+    for (int i = 0; i < 3; ++i)
+        desc->position[i] = l.position[i], desc->direction[i] = l.direction[i],
+        desc->color[i] = l.color[i];
+    desc->spot_radius = l.spot_radius;
+    desc->spot_falloff = l.spot_falloff;
+    desc->spot_tightness = l.spot_tightness;
+    desc->fade_distance = l.fade_distance;
+    desc->fade_power = l.fade_power;
+    desc->shadowless = l.shadowless ? 1 : 0;
+}
+
+SHEAF_API void sheafCameraDescInit(SheafCameraDesc* desc) {
+    if (!desc) return;
+    const sheaf::Camera c;
+    desc->projection = SHEAF_PROJECTION_PERSPECTIVE;
+    for (int i = 0; i < 3; ++i)
+        desc->position[i] = c.position[i], desc->look_at[i] = c.look_at[i], desc->up[i] = c.up[i];
+    desc->fov_y_degrees = c.fov_y_degrees;
+    desc->ortho_height = c.ortho_height;
+    desc->shift[0] = c.shift_x, desc->shift[1] = c.shift_y;
 }
 
 SHEAF_API SheafError sheafSceneNew(SheafScene* out) {
@@ -102,6 +130,7 @@ SHEAF_API SheafError sheafSceneAddMaterial(SheafScene scene, const SheafMaterial
         m.mirror = desc->mirror;
         m.transmission = desc->transmission;
         m.ior = desc->ior;
+        m.emission = {desc->emission[0], desc->emission[1], desc->emission[2]};
         uint32_t id = 0;
         modify(scene, [&](sheaf::Scene& s) { id = s.add_material(m); });
         if (out_material_id) *out_material_id = id;
@@ -164,7 +193,7 @@ SHEAF_API SheafError sheafSceneAddPointLight(SheafScene scene, const float posit
                                              const float color[3]) {
     return barrier([&] {
         require(scene, "scene");
-        sheaf::PointLight light;
+        sheaf::Light light;
         light.position = vec3(position, "position");
         light.color = vec3(color, "color");
         modify(scene, [&](sheaf::Scene& s) { s.add_light(light); });
@@ -182,6 +211,65 @@ SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[
         camera.up = vec3(up, "up");
         camera.fov_y_degrees = fov_y_degrees;
         modify(scene, [&](sheaf::Scene& s) { s.camera = camera; });
+    });
+}
+
+SHEAF_API SheafError sheafSceneAddLight(SheafScene scene, const SheafLightDesc* desc,
+                                        uint32_t* out_light_id) {
+    return barrier([&] {
+        require(scene, "scene");
+        require(desc, "desc");
+        sheaf::Light l;
+        switch (desc->type) {
+        case SHEAF_LIGHT_POINT:
+            l.type = sheaf::LightType::Point;
+            break;
+        case SHEAF_LIGHT_SPOT:
+            l.type = sheaf::LightType::Spot;
+            break;
+        case SHEAF_LIGHT_PARALLEL:
+            l.type = sheaf::LightType::Parallel;
+            break;
+        default:
+            throw InvalidArgument(
+                "light type " + std::to_string(int(desc->type)) +
+                " is not one of SHEAF_LIGHT_POINT, SHEAF_LIGHT_SPOT, SHEAF_LIGHT_PARALLEL");
+        }
+        l.position = vec3(desc->position, "position");
+        l.direction = vec3(desc->direction, "direction");
+        l.color = vec3(desc->color, "color");
+        l.spot_radius = desc->spot_radius;
+        l.spot_falloff = desc->spot_falloff;
+        l.spot_tightness = desc->spot_tightness;
+        l.fade_distance = desc->fade_distance;
+        l.fade_power = desc->fade_power;
+        l.shadowless = desc->shadowless != 0;
+        uint32_t id = 0;
+        modify(scene, [&](sheaf::Scene& s) { id = s.add_light(l); });
+        if (out_light_id) *out_light_id = id;
+    });
+}
+
+SHEAF_API SheafError sheafSceneSetCameraDesc(SheafScene scene, const SheafCameraDesc* desc) {
+    return barrier([&] {
+        require(scene, "scene");
+        require(desc, "desc");
+        sheaf::Camera c;
+        if (desc->projection == SHEAF_PROJECTION_PERSPECTIVE)
+            c.projection = sheaf::Projection::Perspective;
+        else if (desc->projection == SHEAF_PROJECTION_ORTHOGRAPHIC)
+            c.projection = sheaf::Projection::Orthographic;
+        else
+            throw InvalidArgument(
+                "projection " + std::to_string(int(desc->projection)) +
+                " is not one of SHEAF_PROJECTION_PERSPECTIVE, SHEAF_PROJECTION_ORTHOGRAPHIC");
+        c.position = vec3(desc->position, "position");
+        c.look_at = vec3(desc->look_at, "look_at");
+        c.up = vec3(desc->up, "up");
+        c.fov_y_degrees = desc->fov_y_degrees;
+        c.ortho_height = desc->ortho_height;
+        c.shift_x = desc->shift[0], c.shift_y = desc->shift[1];
+        modify(scene, [&](sheaf::Scene& s) { s.camera = c; });
     });
 }
 

@@ -75,6 +75,7 @@ typedef struct SheafMaterialDesc {
     float mirror;       /* mirror reflection weight */
     float transmission; /* refracted share, split with reflection by Fresnel */
     float ior;
+    float emission[3]; /* radiance the surface gives off by itself, linear RGB */
 } SheafMaterialDesc;
 
 /* Fills *desc with the engine's default material. */
@@ -110,6 +111,47 @@ SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[
                                          const float look_at[3], const float up[3],
                                          float fov_y_degrees);
 SHEAF_API SheafError sheafSceneSetBackground(SheafScene scene, const float rgb[3]);
+
+typedef enum SheafLightType {
+    SHEAF_LIGHT_POINT = 0,
+    SHEAF_LIGHT_SPOT = 1,
+    SHEAF_LIGHT_PARALLEL = 2 /* a sun: every ray parallel to `direction` */
+} SheafLightType;
+
+typedef struct SheafLightDesc {
+    SheafLightType type;
+    float position[3];    /* point and spot */
+    float direction[3];   /* spot: the cone's axis; parallel: the way the light travels */
+    float color[3];       /* linear RGB intensity */
+    float spot_radius;    /* spot: degrees from the axis at full intensity */
+    float spot_falloff;   /* spot: degrees from the axis where the light reaches zero */
+    float spot_tightness; /* spot: intensity times cos(angle)^tightness; 0 for none */
+    float fade_distance;  /* > 0: intensity times 2 / (1 + (d / fade_distance)^fade_power) */
+    float fade_power;
+    int shadowless; /* non-zero: no shadow rays */
+} SheafLightDesc;
+
+/* Fills *desc with a white point light at the origin (the engine's defaults). */
+SHEAF_API void sheafLightDescInit(SheafLightDesc* desc);
+SHEAF_API SheafError sheafSceneAddLight(SheafScene scene, const SheafLightDesc* desc,
+                                        uint32_t* out_light_id);
+
+typedef enum SheafProjection {
+    SHEAF_PROJECTION_PERSPECTIVE = 0,
+    SHEAF_PROJECTION_ORTHOGRAPHIC = 1
+} SheafProjection;
+
+typedef struct SheafCameraDesc {
+    SheafProjection projection;
+    float position[3], look_at[3], up[3];
+    float fov_y_degrees; /* perspective: vertical field of view */
+    float ortho_height;  /* orthographic: height of the view in scene units */
+    float shift[2];      /* lens shift in image widths and heights (off-axis views) */
+} SheafCameraDesc;
+
+/* Fills *desc with the engine's default camera. */
+SHEAF_API void sheafCameraDescInit(SheafCameraDesc* desc);
+SHEAF_API SheafError sheafSceneSetCameraDesc(SheafScene scene, const SheafCameraDesc* desc);
 /* Validates the scene and prepares it for rendering. sheafRender commits a scene that was never
  * committed or was changed since. */
 SHEAF_API SheafError sheafSceneCommit(SheafScene scene);

@@ -1,0 +1,129 @@
+/* The C ABI's description structs from plain C99: lights (point, spot, parallel, shadowless,
+ * fade), cameras (orthographic, shifted) and emissive materials, checked against the radiance
+ * they must give; bad enum values are INVALID_ARGUMENT. Exits non-zero on any failure. */
+#include <sheaf/sheaf.h>
+
+#include <math.h>
+#include <stdio.h>
+
+static int g_failures = 0;
+
+#define CHECK(cond, ...)                                                                           \
+    do {                                                                                           \
+        if (!(cond)) {                                                                             \
+            ++g_failures;                                                                          \
+            fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                      \
+            fprintf(stderr, __VA_ARGS__);                                                          \
+            fprintf(stderr, "\n");                                                                 \
+        }                                                                                          \
+    } while (0)
+
+#define OK(call)                                                                                   \
+    do {                                                                                           \
+        SheafError e_ = (call);                                                                    \
+        const char* m_ = "";                                                                       \
+        if (e_ != SHEAF_OK) sheafGetLastError(&m_);                                                \
+        CHECK(e_ == SHEAF_OK, "%s returned %d: %s", #call, (int)e_, m_);                           \
+    } while (0)
+
+/* A 4x4 quad in the plane z = 0 facing +z, seen by an orthographic camera from +z. */
+static SheafScene quad_scene(const SheafMaterialDesc* mat) {
+    static const float pos[] = {-2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0};
+    static const uint32_t idx[] = {0, 1, 2, 0, 2, 3};
+    SheafScene s = NULL;
+    uint32_t mesh = 0, m = 0;
+    SheafCameraDesc cam;
+    OK(sheafSceneNew(&s));
+    OK(sheafSceneAddMaterial(s, mat, &m));
+    OK(sheafSceneAddMesh(s, pos, 4, idx, 2, NULL, &mesh));
+    OK(sheafSceneAddObject(s, mesh, m, NULL, "quad", NULL));
+    sheafCameraDescInit(&cam);
+    cam.projection = SHEAF_PROJECTION_ORTHOGRAPHIC;
+    cam.position[0] = 0, cam.position[1] = 0, cam.position[2] = 5;
+    cam.look_at[0] = 0, cam.look_at[1] = 0, cam.look_at[2] = 0;
+    cam.ortho_height = 1.0f;
+    OK(sheafSceneSetCameraDesc(s, &cam));
+    return s;
+}
+
+/* Red channel of the centre pixel of a 9x9 render. */
+static float centre_red(SheafScene s) {
+    SheafRenderer r = NULL;
+    SheafFrame f = NULL;
+    float px[9 * 9 * 4] = {0};
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererSetInt(r, "width", 9));
+    OK(sheafRendererSetInt(r, "height", 9));
+    OK(sheafRender(r, s, &f));
+    OK(sheafFrameGetPass(f, "combined", px, sizeof px / sizeof px[0]));
+    sheafFrameRelease(f);
+    sheafRendererRelease(r);
+    return px[(4 * 9 + 4) * 4];
+}
+
+int main(void) {
+    SheafMaterialDesc mat;
+    SheafLightDesc light;
+    SheafScene s;
+    SheafCameraDesc cam;
+    uint32_t id = 99;
+    float red;
+
+    sheafMaterialDescInit(&mat);
+    mat.color[0] = mat.color[1] = mat.color[2] = 1.0f;
+    mat.ambient = 0.1f, mat.diffuse = 0.6f, mat.specular = 0.0f;
+    CHECK(mat.emission[0] == 0 && mat.emission[1] == 0 && mat.emission[2] == 0, "default emission");
+
+    /* A parallel light at 60 degrees from the normal: ambient + diffuse * cos 60. */
+    s = quad_scene(&mat);
+    sheafLightDescInit(&light);
+    CHECK(light.type == SHEAF_LIGHT_POINT && light.color[0] == 1.0f, "light defaults");
+    light.type = SHEAF_LIGHT_PARALLEL;
+    light.direction[0] = 0, light.direction[1] = -sqrtf(3.0f), light.direction[2] = -1;
+    OK(sheafSceneAddLight(s, &light, &id));
+    CHECK(id == 0, "first light id %u", id);
+    red = centre_red(s);
+    CHECK(fabsf(red - (0.1f + 0.6f * 0.5f)) < 1e-4f, "parallel light: %f", red);
+    sheafSceneRelease(s);
+
+    /* A spot pointing away: ambient only. */
+    s = quad_scene(&mat);
+    sheafLightDescInit(&light);
+    light.type = SHEAF_LIGHT_SPOT;
+    light.position[2] = 3;
+    light.direction[0] = 1, light.direction[1] = 0, light.direction[2] = 0;
+    light.spot_radius = 10, light.spot_falloff = 20;
+    OK(sheafSceneAddLight(s, &light, NULL));
+    red = centre_red(s);
+    CHECK(fabsf(red - 0.1f) < 1e-4f, "spot pointing away: %f", red);
+    sheafSceneRelease(s);
+
+    /* An emissive, otherwise black surface shows its emission exactly. */
+    mat.ambient = 0, mat.diffuse = 0;
+    mat.emission[0] = 0.5f;
+    s = quad_scene(&mat);
+    red = centre_red(s);
+    CHECK(fabsf(red - 0.5f) < 1e-6f, "emission: %f", red);
+
+    /* Bad enums and NULLs are argument errors, not crashes. */
+    sheafLightDescInit(&light);
+    light.type = (SheafLightType)7;
+    CHECK(sheafSceneAddLight(s, &light, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "bad light type");
+    CHECK(sheafSceneAddLight(s, NULL, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "NULL light");
+    sheafCameraDescInit(&cam);
+    cam.projection = (SheafProjection)5;
+    CHECK(sheafSceneSetCameraDesc(s, &cam) == SHEAF_ERROR_INVALID_ARGUMENT, "bad projection");
+    /* A spot with a falloff of 0 is rejected when the scene is committed. */
+    sheafLightDescInit(&light);
+    light.type = SHEAF_LIGHT_SPOT;
+    light.spot_falloff = 0;
+    OK(sheafSceneAddLight(s, &light, NULL));
+    CHECK(sheafSceneCommit(s) == SHEAF_ERROR_SCENE, "spot with falloff 0");
+    sheafSceneRelease(s);
+
+    if (g_failures)
+        fprintf(stderr, "%d failures\n", g_failures);
+    else
+        printf("capi_desc: all checks passed\n");
+    return g_failures ? 1 : 0;
+}

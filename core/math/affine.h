@@ -47,6 +47,13 @@ struct Affine {
     /// Normals transform by the inverse transpose of the linear part.
     Vec3 normal(Vec3 n) const;
     float determinant() const;
+    /// The inverse transform (the matrix must not be singular).
+    Affine inverse() const;
+    /// The inverse transpose of the linear part, as an Affine with no translation: what
+    /// normals transform by (not normalised).
+    Affine normal_matrix() const;
+    /// The largest factor by which the transform stretches a length (its largest singular value).
+    float max_scale() const;
 };
 
 /// a * b: first b, then a.

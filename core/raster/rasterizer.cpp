@@ -49,12 +49,12 @@ bool owns_edge(double dx, double dy) {
 void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<uint64_t>& vis) {
     const int W = cam.width, H = cam.height;
     vis.assign(size_t(W) * H, kEmptyPixel);
-    const size_t n = scene.prim_count();
+    const size_t n = scene.triangle_count(); // analytic primitives are ray-cast by the caller
     if (n == 0) return;
 
     double extent = 1.0 + length(cam.origin);
-    for (const Sphere& s : scene.object_sphere)
-        extent = std::max(extent, double(s.radius) + length(s.center));
+    for (const Sphere& s : scene.object_sphere) // unbounded objects (planes) do not count
+        if (std::isfinite(s.radius)) extent = std::max(extent, double(s.radius) + length(s.center));
     // Orthographic views start at the camera plane; perspective ones just in front of the eye.
     const double near = cam.ortho ? 0.0 : 1e-7 * extent;
 

@@ -7,6 +7,7 @@
 #include "core/rays/ray_gen.h"
 #include "core/render/shade.h"
 #include "core/rsh/trace.h"
+#include "core/scene/analytic.h"
 
 #include <tbb/task_arena.h>
 
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 
 namespace sheaf {
 namespace {
@@ -33,7 +35,8 @@ void declare_keys(Stats& st) {
 
 float scene_extent(const PreparedScene& scene) {
     float e = 1e-3f;
-    for (const Sphere& s : scene.object_sphere) e = std::max(e, length(s.center) + s.radius);
+    for (const Sphere& s : scene.object_sphere) // unbounded objects (planes) do not count
+        if (std::isfinite(s.radius)) e = std::max(e, length(s.center) + s.radius);
     for (const Light& l : scene.lights) e = std::max(e, length(l.position));
     return std::max(e, length(scene.camera.position));
 }
@@ -73,6 +76,38 @@ class FramePipeline {
         if (progress_ && !progress_(done)) throw RenderError("cancelled");
     }
 
+    // Analytic objects are ray-cast at the pixel centres and merged into the visibility buffer
+    // by the same depth key as the rasterised triangles.
+    void cast_analytic(const CameraFrame& cam, std::vector<uint64_t>& vis) {
+        const uint32_t first = uint32_t(scene_.tris.size());
+        const uint32_t count = uint32_t(scene_.analytic_root.size());
+        if (count == 0) return;
+        parallel_for(
+            "raster.analytic", vis.size(),
+            [&](size_t i) {
+                const Ray ray = cam.pixel_ray(int(i % W_), int(i / W_));
+                const float depth_per_t = cam.ortho ? 1.0f : dot(ray.dir, cam.forward);
+                for (uint32_t a = 0; a < count; ++a) {
+                    const Sphere& s = scene_.prim_sphere[first + a];
+                    if (std::isfinite(s.radius)) { // the bounding sphere first
+                        const Vec3 oc = s.center - ray.origin;
+                        const float along = dot(oc, ray.dir);
+                        if (length_squared(oc) - along * along > s.radius * s.radius ||
+                            (along < -s.radius && length(oc) > s.radius))
+                            continue;
+                    }
+                    AnalyticHit h;
+                    if (!analytic_first_hit(scene_, a, ray, h)) continue;
+                    const float depth = h.t * depth_per_t;
+                    uint32_t bits;
+                    std::memcpy(&bits, &depth, 4);
+                    const uint64_t key = (uint64_t(bits) << 32) | (first + a);
+                    if (key < vis[i]) vis[i] = key;
+                }
+            },
+            256);
+    }
+
     // Rasterised primary visibility, resolved to surface hits and the primary passes.
     std::vector<SurfaceHit> primary() {
         const CameraFrame cam = make_camera_frame(scene_.camera, W_, H_);
@@ -80,6 +115,7 @@ class FramePipeline {
         {
             PhaseTimer t(st_, "time_ms.raster");
             rasterize(scene_, cam, vis);
+            cast_analytic(cam, vis);
         }
         memory_.add(int64_t(vis.size() * sizeof(uint64_t)));
         st_.set("rays.primary", double(vis.size()));
@@ -104,11 +140,18 @@ class FramePipeline {
                 }
                 const uint32_t prim = vis_prim(vis[i]);
                 const Ray ray = cam.pixel_ray(int(i % W_), int(i / W_));
-                // The exact hit of the pixel's ray with the visible triangle's plane.
-                const TriangleVerts& tv = scene_.tris[prim];
-                const Vec3 n = cross(tv.b - tv.a, tv.c - tv.a);
-                const float dn = dot(ray.dir, n);
-                float t = dn != 0 ? dot(tv.a - ray.origin, n) / dn : 0.0f;
+                float t = 0;
+                if (scene_.is_triangle(prim)) {
+                    // The exact hit of the pixel's ray with the visible triangle's plane.
+                    const TriangleVerts& tv = scene_.tris[prim];
+                    const Vec3 n = cross(tv.b - tv.a, tv.c - tv.a);
+                    const float dn = dot(ray.dir, n);
+                    t = dn != 0 ? dot(tv.a - ray.origin, n) / dn : 0.0f;
+                } else {
+                    AnalyticHit a;
+                    if (analytic_first_hit(scene_, prim - uint32_t(scene_.tris.size()), ray, a))
+                        t = a.t;
+                }
                 if (!(t > 0) || !std::isfinite(t)) t = 0;
                 SurfaceHit h = make_surface_hit(scene_, ray, prim, t);
                 h.pixel = uint32_t(i);

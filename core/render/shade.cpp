@@ -1,8 +1,42 @@
 #include "core/render/shade.h"
 
+#include "core/scene/analytic.h"
+
+#include <cmath>
+
 namespace sheaf {
 
+namespace {
+
+// An analytic primitive's surface: the exact test again gives the normal and the leaf (and so
+// the material) of the surface at t.
+SurfaceHit analytic_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim,
+                                float t) {
+    SurfaceHit h;
+    h.prim = prim;
+    h.t = t;
+    h.incoming = ray.dir;
+    h.position = ray_at(ray, t);
+    AnalyticHit a;
+    Ray r = ray;
+    r.tmax = std::nextafter(t, INFINITY);
+    Vec3 n(0, 0, 1);
+    if (analytic_first_hit(scene, prim - uint32_t(scene.tris.size()), r, a)) {
+        n = a.normal;
+        h.material = scene.shape_material[a.leaf];
+    } else {
+        h.material = scene.object_material[scene.prim_object[prim]];
+    }
+    h.front = dot(n, ray.dir) < 0;
+    if (!h.front) n = -n;
+    h.geo_normal = h.normal = n;
+    return h;
+}
+
+} // namespace
+
 SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim, float t) {
+    if (!scene.is_triangle(prim)) return analytic_surface_hit(scene, ray, prim, t);
     const TriangleVerts& tv = scene.tris[prim];
     const Vec3 e1 = tv.b - tv.a, e2 = tv.c - tv.a;
     Vec3 gn = normalize(cross(e1, e2));

@@ -5,6 +5,7 @@
 #include "core/geometry/ray_triangle.h"
 #include "core/hash/ray_hash.h"
 #include "core/rsh/hierarchy.h"
+#include "core/scene/prim_intersect.h"
 #include "core/sort/ray_order.h"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -60,15 +61,14 @@ void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, Co
                 uint64_t best = kNoHit;
                 for (size_t p = 0; p < prims; ++p) {
                     ++tests;
-                    const TriangleVerts& t = scene.tris[p];
-                    TriangleHit h;
-                    if (!intersect_triangle(r, t.a, t.b, t.c, h)) continue;
+                    float t;
+                    if (!intersect_prim(scene, uint32_t(p), r, t)) continue;
                     ++hits;
                     if (any) {
                         out.occluded[i] = 1;
                         break;
                     }
-                    best = std::min(best, pack_hit(h.t, uint32_t(p)));
+                    best = std::min(best, pack_hit(t, uint32_t(p)));
                 }
                 if (!any) out.closest[i] = best;
                 out.tests[i] = uint32_t(std::min<uint64_t>(tests - before, 0xFFFFFFFFu));
@@ -200,14 +200,23 @@ class Traversal {
                     const Pair pr = pairs[i];
                     std::atomic_ref<uint32_t>(leaf_pairs_[pr.node])
                         .fetch_add(1, std::memory_order_relaxed);
-                    const TriangleVerts& tri = scene_.tris[pr.prim];
-                    for (size_t j = h_.first_child(pr.node), last = h_.last_child(1, pr.node);
-                         j < last; ++j) {
-                        ++t;
-                        TriangleHit hit;
-                        if (!intersect_triangle(rays_[j], tri.a, tri.b, tri.c, hit)) continue;
-                        ++hcount;
-                        record_hit(out_, any_, perm_[j], hit.t, pr.prim);
+                    const size_t first = h_.first_child(pr.node), last = h_.last_child(1, pr.node);
+                    t += last - first;
+                    if (scene_.is_triangle(pr.prim)) { // the hot path, inline
+                        const TriangleVerts& tri = scene_.tris[pr.prim];
+                        for (size_t j = first; j < last; ++j) {
+                            TriangleHit hit;
+                            if (!intersect_triangle(rays_[j], tri.a, tri.b, tri.c, hit)) continue;
+                            ++hcount;
+                            record_hit(out_, any_, perm_[j], hit.t, pr.prim);
+                        }
+                    } else {
+                        for (size_t j = first; j < last; ++j) {
+                            float th;
+                            if (!intersect_prim(scene_, pr.prim, rays_[j], th)) continue;
+                            ++hcount;
+                            record_hit(out_, any_, perm_[j], th, pr.prim);
+                        }
                     }
                 }
                 final_.add(t, hcount);

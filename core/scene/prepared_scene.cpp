@@ -1,6 +1,7 @@
 #include "core/scene/prepared_scene.h"
 
 #include "core/geometry/min_sphere.h"
+#include "core/scene/analytic.h"
 
 #include <tbb/parallel_for.h>
 
@@ -52,6 +53,40 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_sphere.push_back(min_sphere(pts));
         p.object_material.push_back(obj.material);
         p.object_name.push_back(obj.name);
+    }
+    // Analytic objects: one primitive each, its CSG tree flattened into the scene's arrays.
+    for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
+        const ShapeObject& obj = scene.shape_objects[so];
+        const uint32_t base = uint32_t(p.csg.size());
+        p.csg.resize(base + obj.nodes.size());
+        uint32_t first_material = 0;
+        bool have_material = false;
+        for (size_t i = 0; i < obj.nodes.size(); ++i) {
+            const CsgNode& node = obj.nodes[i];
+            PreparedCsgNode& out = p.csg[base + i];
+            out.op = node.op;
+            out.inverse = node.inverse;
+            if (node.op == CsgOp::Leaf) {
+                out.first = uint32_t(p.shapes.size());
+                out.count = 0;
+                p.shapes.push_back(place_shape(node.shape, obj.transform * node.transform));
+                p.shape_material.push_back(node.material);
+                if (!have_material) first_material = node.material, have_material = true;
+            } else {
+                out.first = uint32_t(p.csg_children.size());
+                out.count = uint32_t(node.children.size());
+                for (uint32_t c : node.children) p.csg_children.push_back(base + c);
+            }
+        }
+        const uint32_t root = base + obj.root;
+        p.analytic_root.push_back(root);
+        const Sphere bound = csg_bound(p, root);
+        p.prim_sphere.push_back(bound);
+        p.prim_object.push_back(uint32_t(p.object_sphere.size()));
+        p.object_sphere.push_back(bound);
+        p.object_material.push_back(first_material);
+        p.object_name.push_back(obj.name);
+        p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
     p.materials = scene.materials;
     p.lights = scene.lights;

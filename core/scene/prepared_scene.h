@@ -19,9 +19,19 @@ struct TriangleNormals {
     Vec3 na, nb, nc; // unit vertex normals; all zero when the mesh has none
 };
 
+/// A CSG node in flat arrays: a leaf names its placed shape in `first`; an operation owns
+/// csg_children[first, first + count).
+struct PreparedCsgNode {
+    CsgOp op = CsgOp::Leaf;
+    bool inverse = false;
+    uint32_t first = 0, count = 0;
+};
+
 struct PreparedScene {
     // Primitives (triangles for now), object by object: object o owns
     // [object_begin[o], object_begin[o + 1]).
+    // Primitive ids: triangles first, [0, tris.size()); then analytic objects, one primitive
+    // each (a shape or a CSG tree), [tris.size(), prim_count()).
     std::vector<TriangleVerts> tris;
     std::vector<TriangleNormals> normals;
     std::vector<uint32_t> prim_object;
@@ -32,13 +42,21 @@ struct PreparedScene {
     std::vector<uint32_t> object_material;
     std::vector<std::string> object_name;
 
+    std::vector<PlacedShape> shapes;      // every leaf of every analytic object
+    std::vector<uint32_t> shape_material; // per placed shape
+    std::vector<PreparedCsgNode> csg;
+    std::vector<uint32_t> csg_children;
+    std::vector<uint32_t> analytic_root; // per analytic primitive: its root node in csg
+
     std::vector<Material> materials;
     std::vector<Light> lights;
     Camera camera;
     Vec3 background;
     std::map<std::string, std::string> settings;
 
-    size_t prim_count() const { return tris.size(); }
+    size_t triangle_count() const { return tris.size(); }
+    size_t prim_count() const { return tris.size() + analytic_root.size(); }
+    bool is_triangle(uint32_t prim) const { return prim < tris.size(); }
     size_t object_count() const { return object_sphere.size(); }
 };
 

@@ -31,6 +31,23 @@ uint32_t Scene::add_mesh_object(std::string name, Mesh mesh, uint32_t material, 
     return add_object(std::move(o));
 }
 
+uint32_t Scene::add_shape(std::string name, const Shape& shape, uint32_t material,
+                          const Affine& transform) {
+    ShapeObject o;
+    o.name = std::move(name);
+    CsgNode leaf;
+    leaf.shape = shape;
+    leaf.material = material;
+    o.nodes.push_back(leaf);
+    o.transform = transform;
+    return add_shape_object(std::move(o));
+}
+
+uint32_t Scene::add_shape_object(ShapeObject o) {
+    shape_objects.push_back(std::move(o));
+    return uint32_t(shape_objects.size() - 1);
+}
+
 size_t Scene::triangle_count() const {
     size_t n = 0;
     for (const Object& o : objects) n += meshes[o.mesh].triangle_count();
@@ -80,6 +97,38 @@ void Scene::validate() const {
             for (float v : row)
                 if (!std::isfinite(v))
                     throw SceneError(name + " has a transform that is not finite");
+    }
+    for (size_t o = 0; o < shape_objects.size(); ++o) {
+        const ShapeObject& so = shape_objects[o];
+        const std::string name =
+            "shape object " + std::to_string(o) + (so.name.empty() ? "" : " '" + so.name + "'");
+        if (so.nodes.empty() || so.root >= so.nodes.size())
+            throw SceneError(name + " has no root node");
+        for (size_t n = 0; n < so.nodes.size(); ++n) {
+            const CsgNode& node = so.nodes[n];
+            if (node.op == CsgOp::Leaf) {
+                if (node.material >= materials.size())
+                    throw SceneError(name + " names material " + std::to_string(node.material) +
+                                     ", which does not exist");
+                const Shape& s = node.shape;
+                if (!std::isfinite(s.a) || !std::isfinite(s.b) || s.a < 0 || s.b < 0 ||
+                    (s.kind == ShapeKind::Cone && s.a == 0 && s.b == 0) ||
+                    (s.kind == ShapeKind::Disc && s.a > 1) ||
+                    (s.kind == ShapeKind::Torus && !(s.a > 0)))
+                    throw SceneError(name + ": shape parameters out of range");
+                if (std::fabs(node.transform.determinant()) < 1e-20f)
+                    throw SceneError(name + ": a shape's transform is singular (a zero scale)");
+            } else {
+                if (node.children.empty())
+                    throw SceneError(name + ": a CSG operation without children");
+                for (uint32_t c : node.children)
+                    if (c >= so.nodes.size() || c <= n)
+                        throw SceneError(name + ": CSG child " + std::to_string(c) +
+                                         " must be a later node of the object");
+            }
+        }
+        if (std::fabs(so.transform.determinant()) < 1e-20f)
+            throw SceneError(name + " has a singular transform");
     }
     for (size_t l = 0; l < lights.size(); ++l) {
         const Light& li = lights[l];

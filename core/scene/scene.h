@@ -3,6 +3,7 @@
 // because whole objects are culled by their bounding spheres.
 #pragma once
 
+#include "core/geometry/shape.h"
 #include "core/math/affine.h"
 
 #include <cstdint>
@@ -66,8 +67,33 @@ struct Object {
     Affine transform;
 };
 
+enum class CsgOp : uint8_t { Leaf, Union, Merge, Intersection, Difference };
+
+/// A node of an analytic object: a shape (leaf) or a CSG operation over other nodes of the
+/// same object. `inverse` swaps inside and outside (POV-Ray's `inverse`).
+struct CsgNode {
+    CsgOp op = CsgOp::Leaf;
+    Shape shape;           // leaf
+    Affine transform;      // leaf: shape space -> object space
+    uint32_t material = 0; // leaf
+    bool inverse = false;
+    std::vector<uint32_t> children; // operation: indices into the object's nodes
+};
+
+/// An object made of analytic shapes: one shape, or a CSG tree whose root is `root`.
+struct ShapeObject {
+    std::string name;
+    std::vector<CsgNode> nodes;
+    uint32_t root = 0;
+    Affine transform; // object space -> world
+};
+
 class Scene {
   public:
+    /// Adds an object of one analytic shape.
+    uint32_t add_shape(std::string name, const Shape& shape, uint32_t material,
+                       const Affine& transform = {});
+    uint32_t add_shape_object(ShapeObject o);
     uint32_t add_mesh(Mesh mesh);
     uint32_t add_material(const Material& m);
     uint32_t add_object(Object o);
@@ -78,6 +104,7 @@ class Scene {
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<Object> objects;
+    std::vector<ShapeObject> shape_objects; // rendered after the mesh objects
     std::vector<Light> lights;
     Camera camera;
     Vec3 background{0, 0, 0};

@@ -1,0 +1,260 @@
+// Analytic shapes, exactly: each kind is a canonical solid (or surface) in its local space,
+// placed by an affine transform. A ray is moved into local space without normalising its
+// direction, so distances t stay world distances. Every kind reports the spans of the ray
+// that lie inside it, which is what CSG needs; a plain shape's hit is the first span end.
+//   sphere    unit sphere at the origin
+//   box       [-1, 1]^3
+//   cylinder  radius 1 around z, z in [0, 1]; open: no caps (a surface)
+//   cone      radius r0 at z = 0 to r1 at z = 1; open: no caps (a surface)
+//   disc      z = 0, hole radius h <= r <= 1 (a surface)
+//   plane     the half-space z <= 0 (unbounded)
+//   torus     major radius 1 around z in the plane z = 0, minor radius r
+#pragma once
+
+#include "core/geometry/ray.h"
+#include "core/math/affine.h"
+
+#include <cfloat>
+#include <cstdint>
+
+namespace sheaf {
+
+enum class ShapeKind : uint32_t { Sphere, Box, Cylinder, Cone, Disc, Plane, Torus };
+
+struct Shape {
+    ShapeKind kind = ShapeKind::Sphere;
+    float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius
+    bool open = false;  // cylinder and cone without caps
+};
+
+/// One span [t0, t1] of a ray inside a solid, with the local normals at both ends (pointing
+/// out of the solid). A surface (disc, open cylinder) gives spans with t0 == t1.
+struct Span {
+    float t0, t1;
+    Vec3 n0, n1;
+};
+
+constexpr int kMaxShapeSpans = 4;
+
+namespace shape_detail {
+
+SHEAF_HD_INLINE bool solve_quadratic(double a, double b, double c, double& t0, double& t1) {
+    if (fabs(a) < 1e-300) {
+        if (fabs(b) < 1e-300) return false;
+        t0 = t1 = -c / b;
+        return true;
+    }
+    const double disc = b * b - 4 * a * c;
+    if (disc < 0) return false;
+    const double s = sqrt(disc);
+    const double q = b < 0 ? -0.5 * (b - s) : -0.5 * (b + s);
+    t0 = q / a;
+    t1 = q != 0 ? c / q : t0;
+    if (t0 > t1) {
+        const double t = t0;
+        t0 = t1, t1 = t;
+    }
+    return true;
+}
+
+SHEAF_HD_INLINE int add(Span* out, int n, float t0, float t1, Vec3 n0, Vec3 n1) {
+    if (n < kMaxShapeSpans) out[n++] = Span{t0, t1, n0, n1};
+    return n;
+}
+
+// The frustum z in [0, 1], radius r0 + (r1 - r0) z (r0, r1 >= 0; a cylinder when equal): a
+// convex solid, so a ray meets it in at most one span; open, only its side surface counts.
+SHEAF_HD_INLINE int frustum_spans(const Ray& r, double r0, double r1, bool open, Span* out) {
+    const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
+    const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
+    const double k = r1 - r0, rr = r0 + k * oz, rd = k * dz;
+    // g(t) = x^2 + y^2 - radius(z)^2 = a t^2 + b t + c; inside the side where g <= 0.
+    const double a = dx * dx + dy * dy - rd * rd, b = 2 * (ox * dx + oy * dy - rr * rd),
+                 c = ox * ox + oy * oy - rr * rr;
+    auto side_normal = [&](double t) {
+        const double z = oz + dz * t;
+        return Vec3(float(ox + dx * t), float(oy + dy * t), float(-(r0 + k * z) * k));
+    };
+    // The slab between the caps.
+    double z0 = -DBL_MAX, z1 = DBL_MAX;
+    Vec3 zn0(0, 0, -1), zn1(0, 0, 1);
+    if (fabs(dz) < 1e-30) {
+        if (oz < 0 || oz > 1) return 0;
+    } else {
+        z0 = -oz / dz, z1 = (1 - oz) / dz;
+        if (z0 > z1) {
+            const double t = z0;
+            z0 = z1, z1 = t;
+            zn0 = Vec3(0, 0, 1), zn1 = Vec3(0, 0, -1);
+        }
+    }
+    double t0, t1;
+    const bool roots = solve_quadratic(a, b, c, t0, t1);
+    if (open) {
+        int n = 0;
+        if (!roots) return 0;
+        if (t0 >= z0 && t0 <= z1)
+            n = add(out, n, float(t0), float(t0), side_normal(t0), side_normal(t0));
+        if (t1 != t0 && t1 >= z0 && t1 <= z1)
+            n = add(out, n, float(t1), float(t1), side_normal(t1), side_normal(t1));
+        return n;
+    }
+    double s0 = z0, s1 = z1;
+    Vec3 n0 = zn0, n1 = zn1;
+    if (a > 1e-30) { // inside between the roots
+        if (!roots) return 0;
+        if (t0 > s0) s0 = t0, n0 = side_normal(t0);
+        if (t1 < s1) s1 = t1, n1 = side_normal(t1);
+    } else if (a < -1e-30) { // inside outside the roots (the ray runs along the cone's opening)
+        if (roots) {
+            if (s0 <= t0) {
+                if (t0 < s1) s1 = t0, n1 = side_normal(t0);
+            } else if (t1 > s0) {
+                s0 = t1, n0 = side_normal(t1);
+            }
+        }
+    } else if (fabs(b) > 1e-300) { // linear: b t + c <= 0
+        const double t = -c / b;
+        if (b > 0) {
+            if (t < s1) s1 = t, n1 = side_normal(t);
+        } else if (t > s0) {
+            s0 = t, n0 = side_normal(t);
+        }
+    } else if (c > 0) {
+        return 0;
+    }
+    if (s0 > s1) return 0;
+    return add(out, 0, float(s0), float(s1), n0, n1);
+}
+
+} // namespace shape_detail
+
+/// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans.
+SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out) {
+    using namespace shape_detail;
+    const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
+    const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
+    auto at = [&](double t) {
+        return Vec3(float(ox + dx * t), float(oy + dy * t), float(oz + dz * t));
+    };
+    switch (s.kind) {
+    case ShapeKind::Sphere: {
+        double t0, t1;
+        if (!solve_quadratic(dx * dx + dy * dy + dz * dz, 2 * (ox * dx + oy * dy + oz * dz),
+                             ox * ox + oy * oy + oz * oz - 1, t0, t1))
+            return 0;
+        return add(out, 0, float(t0), float(t1), at(t0), at(t1));
+    }
+    case ShapeKind::Box: {
+        double t0 = -DBL_MAX, t1 = DBL_MAX;
+        Vec3 n0, n1;
+        const double o[3] = {ox, oy, oz}, d[3] = {dx, dy, dz};
+        for (int i = 0; i < 3; ++i) {
+            if (fabs(d[i]) < 1e-30) {
+                if (o[i] < -1 || o[i] > 1) return 0;
+                continue;
+            }
+            double a = (-1 - o[i]) / d[i], b = (1 - o[i]) / d[i];
+            float na = -1, nb = 1;
+            if (a > b) {
+                const double t = a;
+                a = b, b = t, na = 1, nb = -1;
+            }
+            if (a > t0) t0 = a, n0 = Vec3(0, 0, 0), n0[i] = na;
+            if (b < t1) t1 = b, n1 = Vec3(0, 0, 0), n1[i] = nb;
+        }
+        if (t0 > t1) return 0;
+        return add(out, 0, float(t0), float(t1), n0, n1);
+    }
+    case ShapeKind::Cylinder:
+        return frustum_spans(r, 1.0, 1.0, s.open, out);
+    case ShapeKind::Cone:
+        return frustum_spans(r, s.a, s.b, s.open, out);
+    case ShapeKind::Disc: {
+        if (fabs(dz) < 1e-30) return 0;
+        const double t = -oz / dz;
+        const Vec3 p = at(t);
+        const float rr = p.x * p.x + p.y * p.y;
+        if (rr > 1.0f || rr < s.a * s.a) return 0;
+        return add(out, 0, float(t), float(t), Vec3(0, 0, 1), Vec3(0, 0, 1));
+    }
+    case ShapeKind::Plane: {
+        const Vec3 n(0, 0, 1);
+        if (fabs(dz) < 1e-30) return oz <= 0 ? add(out, 0, -FLT_MAX, FLT_MAX, n, n) : 0;
+        const float t = float(-oz / dz);
+        return dz > 0 ? add(out, 0, -FLT_MAX, t, n, n) : add(out, 0, t, FLT_MAX, n, n);
+    }
+    case ShapeKind::Torus: {
+        // Roots of (|p|^2 + 1 - r^2)^2 - 4 (x^2 + y^2) along the ray, found inside the bounding
+        // sphere of radius 1 + r by sampling sign changes and bisection in double precision.
+        const double rmin = s.a, R2 = (1 + rmin) * (1 + rmin);
+        double b0, b1;
+        if (!solve_quadratic(dx * dx + dy * dy + dz * dz, 2 * (ox * dx + oy * dy + oz * dz),
+                             ox * ox + oy * oy + oz * oz - R2, b0, b1))
+            return 0;
+        auto f = [&](double t) {
+            const double x = ox + dx * t, y = oy + dy * t, z = oz + dz * t;
+            const double q = x * x + y * y + z * z + 1 - rmin * rmin;
+            return q * q - 4 * (x * x + y * y);
+        };
+        auto normal = [&](double t) {
+            const Vec3 p = at(t);
+            const float q = p.x * p.x + p.y * p.y + p.z * p.z - 1 - float(rmin * rmin);
+            return Vec3(p.x * q, p.y * q, p.z * (q + 2));
+        };
+        constexpr int kSteps = 96;
+        double roots[4];
+        int nr = 0;
+        double ta = b0, fa = f(ta);
+        const double step = (b1 - b0) / kSteps;
+        for (int i = 1; i <= kSteps && nr < 4; ++i) {
+            const double tb = b0 + step * i, fb = f(tb);
+            if ((fa < 0) != (fb < 0)) {
+                double lo = ta, hi = tb, flo = fa;
+                for (int it = 0; it < 60; ++it) {
+                    const double mid = 0.5 * (lo + hi), fm = f(mid);
+                    if ((fm < 0) == (flo < 0))
+                        lo = mid, flo = fm;
+                    else
+                        hi = mid;
+                }
+                roots[nr++] = 0.5 * (lo + hi);
+            }
+            ta = tb, fa = fb;
+        }
+        int n = 0;
+        // f < 0 inside: spans between consecutive roots where the ray enters.
+        const bool inside_at_start = f(b0) < 0;
+        int i = 0;
+        if (inside_at_start && nr > 0)
+            n = add(out, n, float(b0), float(roots[0]), normal(b0), normal(roots[0])), i = 1;
+        for (; i + 1 < nr; i += 2)
+            n = add(out, n, float(roots[i]), float(roots[i + 1]), normal(roots[i]),
+                    normal(roots[i + 1]));
+        return n;
+    }
+    }
+    return 0;
+}
+
+/// A shape placed in the world: the transforms a ray and a normal need.
+struct PlacedShape {
+    Shape shape;
+    Affine to_local;        // world -> local
+    Affine normal_to_world; // linear part: the inverse transpose of local -> world
+};
+
+SHEAF_HD_INLINE Ray to_local_ray(const PlacedShape& p, const Ray& r) {
+    Ray l;
+    l.origin = p.to_local.point(r.origin);
+    l.dir = p.to_local.vector(r.dir); // not normalised: t stays the world distance
+    l.tmin = r.tmin;
+    l.tmax = r.tmax;
+    return l;
+}
+
+SHEAF_HD_INLINE Vec3 normal_to_world(const PlacedShape& p, Vec3 n_local) {
+    return normalize(p.normal_to_world.vector(n_local));
+}
+
+} // namespace sheaf

@@ -4,6 +4,7 @@
 #include "core/geometry/cone_sphere.h"
 #include "core/geometry/min_sphere.h"
 #include "core/geometry/ray_triangle.h"
+#include "core/geometry/shape.h"
 #include "core/hash/ray_hash.h"
 #include "core/raster/camera.h"
 #include "core/render/shade.h"
@@ -33,6 +34,10 @@ __global__ void device_code_instances(const Ray* rays, const TriangleVerts* tris
     const float kr = fresnel_dielectric(0.5f, 1.0f / 1.5f);
     if (refract(r.dir, Vec3(0, 0, 1), 1.0f / 1.5f, out)) color[i] = out * kr;
     color[i] += direct_light(m, Vec3(0, 0, 1), r.dir, Vec3(0, 0, 1), Vec3(1.0f)) + ambient_light(m);
+    Span spans[kMaxShapeSpans];
+    const Shape shape{ShapeKind(i % 7), 0.3f, 0.5f, (i & 8) != 0};
+    PlacedShape placed{shape, Affine(), Affine()};
+    if (shape_spans(shape, to_local_ray(placed, r), spans) > 0) color[i] += normal_to_world(placed, spans[0].n0);
     (void)sphere_union_paper(spheres[0], spheres[1]);
     (void)cone_union_paper(cones[0], cones[1]);
 }

@@ -33,7 +33,7 @@ __global__ void device_code_instances(const Ray* rays, const TriangleVerts* tris
     Vec3 out;
     const float kr = fresnel_dielectric(0.5f, 1.0f / 1.5f);
     if (refract(r.dir, Vec3(0, 0, 1), 1.0f / 1.5f, out)) color[i] = out * kr;
-    color[i] += direct_light(m, Vec3(0, 0, 1), r.dir, Vec3(0, 0, 1), Vec3(1.0f)) + ambient_light(m);
+    color[i] += direct_light(m, m.color, Vec3(0, 0, 1), r.dir, Vec3(0, 0, 1), Vec3(1.0f)) + ambient_light(m, m.color);
     Span spans[kMaxShapeSpans];
     const Shape shape{ShapeKind(i % 7), 0.3f, 0.5f, (i & 8) != 0};
     PlacedShape placed{shape, Affine(), Affine()};

@@ -78,8 +78,7 @@ void generate_shadow_rays(const PreparedScene& scene, const std::vector<SurfaceH
             r.tmax = ls.distance;
             out.rays[slot] = r;
             out.pixel[slot] = h.pixel;
-            out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h.normal,
-                                                           h.incoming, ls.to_light, ls.radiance);
+            out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h.albedo, h.normal, h.incoming, ls.to_light, ls.radiance);
             out.light[slot] = li;
         });
 }
@@ -96,7 +95,7 @@ void generate_ao_rays(const PreparedScene& scene, const std::vector<SurfaceHit>&
         [&](size_t i, uint32_t slot) {
             const SurfaceHit& h = hits[i];
             const Material& m = scene.materials[h.material];
-            const Vec3 w = h.throughput * ambient_light(m) * (1.0f / float(n));
+            const Vec3 w = h.throughput * ambient_light(m, h.albedo) * (1.0f / float(n));
             Vec3 t, b;
             basis(h.geo_normal, t, b);
             for (uint32_t s = 0; s < n; ++s) {
@@ -135,7 +134,7 @@ BounceSplit split(const PreparedScene& scene, const SurfaceHit& h) {
         const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
         kr = fresnel_dielectric(cos_i, eta);
         if (kr < 1.0f && refract(h.incoming, h.normal, eta, s.refract_dir))
-            s.refract_weight = h.throughput * m.color * (m.transmission * (1.0f - kr));
+            s.refract_weight = h.throughput * h.albedo * (m.transmission * (1.0f - kr));
         else
             kr = 1.0f;
     }

@@ -159,7 +159,7 @@ class FramePipeline {
                 hits[slot[i]] = h;
                 depth_[i] = t;
                 normal_[i] = h.normal;
-                albedo_[i] = scene_.materials[h.material].color;
+                albedo_[i] = h.albedo;
                 object_[i] = scene_.prim_object[prim];
             },
             1024);
@@ -192,11 +192,11 @@ class FramePipeline {
             for (const SurfaceHit& h : hits) {
                 const Material& m = scene_.materials[h.material];
                 Vec3 c = m.emission;
-                if (!trace_ao) c += ambient_light(m);
+                if (!trace_ao) c += ambient_light(m, h.albedo);
                 for (const Light& l : scene_.lights) {
                     if (!l.shadowless || !lights_point(l, h, params_)) continue;
                     const LightSample ls = sample_light(l, h.position, params_.far);
-                    c += direct_light(m, h.normal, h.incoming, ls.to_light, ls.radiance);
+                    c += direct_light(m, h.albedo, h.normal, h.incoming, ls.to_light, ls.radiance);
                 }
                 radiance_[h.pixel] += h.throughput * c;
             }

@@ -1,5 +1,6 @@
 #include "core/render/shade.h"
 
+#include "core/render/texture.h"
 #include "core/scene/analytic.h"
 
 #include <cmath>
@@ -7,6 +8,14 @@
 namespace sheaf {
 
 namespace {
+
+Vec3 albedo_at(const PreparedScene& scene, const SurfaceHit& h, float uv_s, float uv_t) {
+    const Material& m = scene.materials[h.material];
+    if (m.texture < 0 || !scene.sampler) return m.color;
+    float s, t;
+    texture_coordinates(scene.textures[size_t(m.texture)], h.position, uv_s, uv_t, s, t);
+    return m.color * scene.sampler->sample(uint32_t(m.texture), s, t);
+}
 
 // An analytic primitive's surface: the exact test again gives the normal and the leaf (and so
 // the material) of the surface at t.
@@ -30,6 +39,8 @@ SurfaceHit analytic_surface_hit(const PreparedScene& scene, const Ray& ray, uint
     h.front = dot(n, ray.dir) < 0;
     if (!h.front) n = -n;
     h.geo_normal = h.normal = n;
+    // Analytic shapes have no texture coordinates of their own: planar (x, y) in world space.
+    h.albedo = albedo_at(scene, h, h.position.x, h.position.y);
     return h;
 }
 
@@ -68,6 +79,10 @@ SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t
         if (length_squared(n) == 0) n = gn;
     }
     h.normal = n;
+    const TriangleUvs& tu = scene.uvs[prim];
+    const float w = 1.0f - u - v;
+    h.albedo = albedo_at(scene, h, w * tu.s[0] + u * tu.s[1] + v * tu.s[2],
+                         w * tu.t[0] + u * tu.t[1] + v * tu.t[2]);
     return h;
 }
 

@@ -14,10 +14,11 @@ namespace sheaf {
 SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim, float t);
 
 /// Diffuse and Phong light from one point light arriving along unit `to_light`.
-SHEAF_HD_INLINE Vec3 direct_light(const Material& m, Vec3 n, Vec3 incoming, Vec3 to_light,
-                                  Vec3 light_color) {
+/// `albedo` is the material's colour at the point (textured or not).
+SHEAF_HD_INLINE Vec3 direct_light(const Material& m, Vec3 albedo, Vec3 n, Vec3 incoming,
+                                  Vec3 to_light, Vec3 light_color) {
     const float ndl = fmaxf(dot(n, to_light), 0.0f);
-    Vec3 c = m.color * (m.diffuse * ndl * (1.0f - m.transmission));
+    Vec3 c = albedo * (m.diffuse * ndl * (1.0f - m.transmission));
     if (m.specular > 0) {
         const Vec3 r = reflect(-to_light, n);
         const float s = fmaxf(dot(r, -incoming), 0.0f);
@@ -72,8 +73,8 @@ SHEAF_HD_INLINE LightSample sample_light(const Light& l, Vec3 p, float far) {
 }
 
 /// Ambient term (scaled by ambient occlusion where it is traced).
-SHEAF_HD_INLINE Vec3 ambient_light(const Material& m) {
-    return m.color * (m.ambient * (1.0f - m.transmission));
+SHEAF_HD_INLINE Vec3 ambient_light(const Material& m, Vec3 albedo) {
+    return albedo * (m.ambient * (1.0f - m.transmission));
 }
 
 /// Fresnel reflectance of a dielectric for unpolarised light; eta = n_incident / n_transmitted.

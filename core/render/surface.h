@@ -15,7 +15,8 @@ struct SurfaceHit {
     Vec3 normal;       // shading normal, turned to face the incoming ray
     Vec3 geo_normal;   // geometric normal, turned to face the incoming ray
     Vec3 incoming;     // unit direction of the ray that found the point
-    Vec3 throughput;   // share of this point's radiance that reaches the pixel
+    Vec3 throughput; // share of this point's radiance that reaches the pixel
+    Vec3 albedo;     // the material's colour here (times its texture)
     float t = 0;       // distance along the incoming ray
     bool front = true; // the ray arrived on the side the winding calls outside
 };

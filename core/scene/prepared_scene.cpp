@@ -13,6 +13,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     const size_t n = scene.triangle_count();
     p.tris.resize(n);
     p.normals.resize(n);
+    p.uvs.resize(n);
     p.prim_object.resize(n);
     p.prim_sphere.resize(n);
     p.object_begin.reserve(scene.objects.size() + 1);
@@ -40,6 +41,11 @@ PreparedScene prepare_scene(const Scene& scene) {
                 tn.nc = obj.transform.normal(mesh.normals[ix[2]]);
             }
             p.normals[base + t] = tn;
+            TriangleUvs tu{};
+            if (!mesh.uvs.empty())
+                for (int k = 0; k < 3; ++k)
+                    tu.s[k] = mesh.uvs[2 * ix[k]], tu.t[k] = mesh.uvs[2 * ix[k] + 1];
+            p.uvs[base + t] = tu;
         });
         base += tc;
         p.object_begin.push_back(uint32_t(base));
@@ -89,6 +95,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
     p.materials = scene.materials;
+    p.textures = scene.textures;
     p.lights = scene.lights;
     p.camera = scene.camera;
     p.background = scene.background;

@@ -3,9 +3,11 @@
 #pragma once
 
 #include "core/geometry/sphere.h"
+#include "core/render/texture.h"
 #include "core/scene/scene.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,10 @@ namespace sheaf {
 
 struct TriangleVerts {
     Vec3 a, b, c;
+};
+
+struct TriangleUvs {
+    float s[3], t[3]; // texture coordinates of the three vertices (zero when the mesh has none)
 };
 
 struct TriangleNormals {
@@ -34,6 +40,7 @@ struct PreparedScene {
     // each (a shape or a CSG tree), [tris.size(), prim_count()).
     std::vector<TriangleVerts> tris;
     std::vector<TriangleNormals> normals;
+    std::vector<TriangleUvs> uvs;
     std::vector<uint32_t> prim_object;
     std::vector<Sphere> prim_sphere;
 
@@ -49,6 +56,8 @@ struct PreparedScene {
     std::vector<uint32_t> analytic_root; // per analytic primitive: its root node in csg
 
     std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::shared_ptr<const TextureSampler> sampler; // set by the IO layer when there are textures
     std::vector<Light> lights;
     Camera camera;
     Vec3 background;

@@ -74,6 +74,13 @@ void Scene::validate() const {
             if (!is_finite(mesh.positions[i]))
                 throw SceneError(where(m) + ": vertex " + std::to_string(i) +
                                  " is not finite (NaN or infinity)");
+        if (!mesh.uvs.empty() && mesh.uvs.size() != 2 * mesh.positions.size())
+            throw SceneError(where(m) + ": " + std::to_string(mesh.uvs.size() / 2) +
+                             " texture coordinates for " + std::to_string(mesh.positions.size()) +
+                             " vertices");
+        for (float f : mesh.uvs)
+            if (!std::isfinite(f))
+                throw SceneError(where(m) + ": a texture coordinate is not finite");
         for (size_t i = 0; i < mesh.normals.size(); ++i)
             if (!is_finite(mesh.normals[i]))
                 throw SceneError(where(m) + ": normal " + std::to_string(i) + " is not finite");
@@ -166,6 +173,13 @@ void Scene::validate() const {
             !(materials[m].ior > 0))
             throw SceneError("material " + std::to_string(m) +
                              " has a colour that is not finite or an ior <= 0");
+    for (size_t m = 0; m < materials.size(); ++m)
+        if (materials[m].texture >= int32_t(textures.size()))
+            throw SceneError("material " + std::to_string(m) + " names texture " +
+                             std::to_string(materials[m].texture) + ", which does not exist");
+    for (size_t t = 0; t < textures.size(); ++t)
+        if (textures[t].path.empty())
+            throw SceneError("texture " + std::to_string(t) + " has no file");
 }
 
 } // namespace sheaf

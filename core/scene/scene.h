@@ -17,6 +17,7 @@ struct Mesh {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;     // empty, or one per position (smooth shading)
     std::vector<uint32_t> indices; // three per triangle, into positions
+    std::vector<float> uvs;        // empty, or two per position (texture coordinates)
     size_t triangle_count() const { return indices.size() / 3; }
 };
 
@@ -30,6 +31,26 @@ struct Material {
     float mirror = 0.0f;       // mirror reflection weight
     float transmission = 0.0f; // refracted share, split with reflection by Fresnel
     float ior = 1.5f;
+    int32_t texture = -1; // >= 0: an image texture (Scene::textures) multiplies `color`
+};
+
+/// How a texture finds its (s, t) coordinates at a surface point.
+enum class TextureMapping {
+    Uv,          // the mesh's texture coordinates (analytic shapes: planar)
+    Planar,      // (x, y) of the point in texture space, repeated every unit
+    Spherical,   // longitude and latitude around the texture-space origin
+    Cylindrical, // angle around texture-space y, and y
+};
+
+/// An image texture. The image is read by the IO layer (OpenImageIO); the core only asks for
+/// colours at (s, t).
+struct Texture {
+    std::string path;
+    TextureMapping mapping = TextureMapping::Uv;
+    Affine transform; // world -> texture space, for the projections
+    std::string
+        colorspace;     // "", "srgb" or "linear"; empty: from the file (8-bit sRGB, float linear)
+    std::string origin; // where the scene asked for it ("scene.pov:12:3"), for messages
 };
 
 enum class LightType { Point, Spot, Parallel };
@@ -103,6 +124,7 @@ class Scene {
 
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
+    std::vector<Texture> textures;
     std::vector<Object> objects;
     std::vector<ShapeObject> shape_objects; // rendered after the mesh objects
     std::vector<Light> lights;

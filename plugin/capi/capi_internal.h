@@ -8,6 +8,7 @@
 #include "core/scene/prepared_scene.h"
 #include "core/scene/scene.h"
 #include "core/settings/settings.h"
+#include "io/image/texture_sampler.h"
 
 #include <atomic>
 #include <memory>
@@ -71,8 +72,11 @@ struct SheafSceneT : SheafRefCounted {
     /// The prepared scene, committing first when needed. Throws SceneError.
     std::shared_ptr<const sheaf::PreparedScene> commit() {
         std::lock_guard<std::mutex> lock(mutex);
-        if (!prepared)
-            prepared = std::make_shared<const sheaf::PreparedScene>(sheaf::prepare_scene(scene));
+        if (!prepared) {
+            auto p = std::make_shared<sheaf::PreparedScene>(sheaf::prepare_scene(scene));
+            sheaf::io::attach_texture_sampler(*p); // opens the image textures (OpenImageIO)
+            prepared = std::move(p);
+        }
         return prepared;
     }
 };

@@ -56,6 +56,7 @@ SHEAF_API void sheafMaterialDescInit(SheafMaterialDesc* desc) {
     desc->ior = m.ior;
     desc->emission[0] = m.emission.x, desc->emission[1] = m.emission.y,
     desc->emission[2] = m.emission.z;
+    desc->texture = m.texture;
 }
 
 SHEAF_API void sheafLightDescInit(SheafLightDesc* desc) {
@@ -131,6 +132,7 @@ SHEAF_API SheafError sheafSceneAddMaterial(SheafScene scene, const SheafMaterial
         m.transmission = desc->transmission;
         m.ior = desc->ior;
         m.emission = {desc->emission[0], desc->emission[1], desc->emission[2]};
+        m.texture = desc->texture;
         uint32_t id = 0;
         modify(scene, [&](sheaf::Scene& s) { id = s.add_material(m); });
         if (out_material_id) *out_material_id = id;
@@ -211,6 +213,64 @@ SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[
         camera.up = vec3(up, "up");
         camera.fov_y_degrees = fov_y_degrees;
         modify(scene, [&](sheaf::Scene& s) { s.camera = camera; });
+    });
+}
+
+SHEAF_API SheafError sheafSceneAddTexture(SheafScene scene, const char* path,
+                                          SheafTextureMapping mapping,
+                                          const float* world_to_texture_3x4, const char* colorspace,
+                                          uint32_t* out_texture_id) {
+    return barrier([&] {
+        require(scene, "scene");
+        sheaf::Texture t;
+        t.path = require(path, "path");
+        switch (mapping) {
+        case SHEAF_MAPPING_UV:
+            t.mapping = sheaf::TextureMapping::Uv;
+            break;
+        case SHEAF_MAPPING_PLANAR:
+            t.mapping = sheaf::TextureMapping::Planar;
+            break;
+        case SHEAF_MAPPING_SPHERICAL:
+            t.mapping = sheaf::TextureMapping::Spherical;
+            break;
+        case SHEAF_MAPPING_CYLINDRICAL:
+            t.mapping = sheaf::TextureMapping::Cylindrical;
+            break;
+        default:
+            throw InvalidArgument("texture mapping " + std::to_string(int(mapping)) +
+                                  " is not a SheafTextureMapping");
+        }
+        if (world_to_texture_3x4)
+            for (int i = 0; i < 12; ++i) t.transform.m[i / 4][i % 4] = world_to_texture_3x4[i];
+        t.colorspace = colorspace ? colorspace : "";
+        if (!t.colorspace.empty() && t.colorspace != "srgb" && t.colorspace != "linear")
+            throw InvalidArgument("texture colorspace '" + t.colorspace +
+                                  "' is not one of srgb, linear (or empty)");
+        uint32_t id = 0;
+        modify(scene, [&](sheaf::Scene& s) {
+            s.textures.push_back(t);
+            id = uint32_t(s.textures.size() - 1);
+        });
+        if (out_texture_id) *out_texture_id = id;
+    });
+}
+
+SHEAF_API SheafError sheafSceneSetMeshUvs(SheafScene scene, uint32_t mesh_id, const float* uvs,
+                                          uint32_t vertex_count) {
+    return barrier([&] {
+        require(scene, "scene");
+        require(uvs, "uvs");
+        modify(scene, [&](sheaf::Scene& s) {
+            if (mesh_id >= s.meshes.size())
+                throw InvalidArgument("mesh " + std::to_string(mesh_id) + " does not exist");
+            sheaf::Mesh& m = s.meshes[mesh_id];
+            if (vertex_count != m.positions.size())
+                throw InvalidArgument("mesh " + std::to_string(mesh_id) + " has " +
+                                      std::to_string(m.positions.size()) + " vertices; " +
+                                      std::to_string(vertex_count) + " texture coordinates given");
+            m.uvs.assign(uvs, uvs + 2 * size_t(vertex_count));
+        });
     });
 }
 

@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static int g_failures = 0;
 
@@ -121,8 +122,31 @@ int main(void) {
     CHECK(sheafSceneCommit(s) == SHEAF_ERROR_SCENE, "spot with falloff 0");
     sheafSceneRelease(s);
 
-    if (g_failures)
-        fprintf(stderr, "%d failures\n", g_failures);
+    /* Textures: a missing file fails the commit naming it; bad mappings and uv counts are
+     * argument errors. (Textures that render are tested in io/image/texture_sampler_test.) */
+    {
+        uint32_t tex = 99;
+        const float uvs[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+        const char* msg = NULL;
+        sheafMaterialDescInit(&mat);
+        CHECK(mat.texture == -1, "default texture %d", (int)mat.texture);
+        s = quad_scene(&mat);
+        OK(sheafSceneAddTexture(s, "/nonexistent/checker.png", SHEAF_MAPPING_UV, NULL, NULL, &tex));
+        CHECK(tex == 0, "first texture id %u", tex);
+        OK(sheafSceneSetMeshUvs(s, 0, uvs, 4));
+        CHECK(sheafSceneSetMeshUvs(s, 0, uvs, 3) == SHEAF_ERROR_INVALID_ARGUMENT, "uv count");
+        CHECK(sheafSceneAddTexture(s, "x.png", (SheafTextureMapping)9, NULL, NULL, NULL) ==
+                  SHEAF_ERROR_INVALID_ARGUMENT,
+              "bad mapping");
+        mat.texture = 0;
+        OK(sheafSceneAddMaterial(s, &mat, NULL));
+        CHECK(sheafSceneCommit(s) == SHEAF_ERROR_SCENE, "missing texture");
+        sheafGetLastError(&msg);
+        CHECK(msg && strstr(msg, "/nonexistent/checker.png"), "message: %s", msg ? msg : "(null)");
+        sheafSceneRelease(s);
+    }
+
+    if (g_failures) fprintf(stderr, "%d failures\n", g_failures);
     else
         printf("capi_desc: all checks passed\n");
     return g_failures ? 1 : 0;

@@ -76,6 +76,7 @@ typedef struct SheafMaterialDesc {
     float transmission; /* refracted share, split with reflection by Fresnel */
     float ior;
     float emission[3]; /* radiance the surface gives off by itself, linear RGB */
+    int32_t texture;   /* an id from sheafSceneAddTexture multiplying `color`, or -1 */
 } SheafMaterialDesc;
 
 /* Fills *desc with the engine's default material. */
@@ -111,6 +112,25 @@ SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[
                                          const float look_at[3], const float up[3],
                                          float fov_y_degrees);
 SHEAF_API SheafError sheafSceneSetBackground(SheafScene scene, const float rgb[3]);
+
+typedef enum SheafTextureMapping {
+    SHEAF_MAPPING_UV = 0,         /* the mesh's texture coordinates (sheafSceneSetMeshUvs) */
+    SHEAF_MAPPING_PLANAR = 1,     /* (x, y) in texture space, repeating every unit */
+    SHEAF_MAPPING_SPHERICAL = 2,  /* longitude and latitude around the texture-space origin */
+    SHEAF_MAPPING_CYLINDRICAL = 3 /* angle around texture-space y, and y */
+} SheafTextureMapping;
+
+/* An image texture read through OpenImageIO (png, jpeg, tga, tiff, exr, hdr, ...).
+ * world_to_texture_3x4: row-major, NULL for the identity (used by the projections).
+ * colorspace: NULL or "" to follow the file (8-bit sRGB, float linear), "srgb" or "linear".
+ * The file is opened when the scene is committed: a missing one is SHEAF_ERROR_SCENE. */
+SHEAF_API SheafError sheafSceneAddTexture(SheafScene scene, const char* path,
+                                          SheafTextureMapping mapping,
+                                          const float* world_to_texture_3x4, const char* colorspace,
+                                          uint32_t* out_texture_id);
+/* Texture coordinates of a mesh: 2 floats per vertex (t = 0 at the bottom of the image). */
+SHEAF_API SheafError sheafSceneSetMeshUvs(SheafScene scene, uint32_t mesh_id, const float* uvs,
+                                          uint32_t vertex_count);
 
 typedef enum SheafLightType {
     SHEAF_LIGHT_POINT = 0,

@@ -1,0 +1,14 @@
+// Image textures for the core through OpenImageIO's TextureSystem (cached, filtered,
+// mip-mapped): the TextureSampler the renderer asks for colours.
+#pragma once
+
+#include "core/scene/prepared_scene.h"
+
+namespace sheaf::io {
+
+/// Opens every texture of the scene and attaches a sampler to it. A missing or unreadable
+/// texture is a SceneError naming the file and where the scene asked for it. Scenes without
+/// textures are left as they are.
+void attach_texture_sampler(PreparedScene& scene);
+
+} // namespace sheaf::io

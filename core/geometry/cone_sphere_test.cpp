@@ -1,6 +1,7 @@
 // Brute-force checks of the cone-sphere test (paper 000 eq. 9, node sphere folded into the
 // primitive sphere): it must be conservative, and not trivially true.
 #include "core/geometry/cone_sphere.h"
+#include "core/geometry/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -12,43 +13,9 @@
 namespace sheaf {
 namespace {
 
-struct D3 {
-    double x, y, z;
-};
-D3 to_d(Vec3 v) {
-    return {v.x, v.y, v.z};
-}
-double ddot(D3 a, D3 b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-Vec3 random_unit(std::mt19937& g) {
-    std::normal_distribution<double> n;
-    for (;;) {
-        const double x = n(g), y = n(g), z = n(g), l = std::sqrt(x * x + y * y + z * z);
-        if (l > 1e-3) return Vec3(float(x / l), float(y / l), float(z / l));
-    }
-}
-
-// A unit direction at angle `theta` from `axis` (random azimuth), computed in double.
-Vec3 direction_at(Vec3 axis, double theta, std::mt19937& g) {
-    const D3 a0 = to_d(axis);
-    const double al = std::sqrt(ddot(a0, a0));
-    const double a[3] = {a0.x / al, a0.y / al, a0.z / al};
-    double t[3] = {0, 0, 0};
-    t[std::fabs(a[0]) < 0.6 ? 0 : (std::fabs(a[1]) < 0.6 ? 1 : 2)] = 1;
-    const double d = t[0] * a[0] + t[1] * a[1] + t[2] * a[2];
-    double u[3] = {t[0] - d * a[0], t[1] - d * a[1], t[2] - d * a[2]};
-    const double ul = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (double& x : u) x /= ul;
-    const double w[3] = {a[1] * u[2] - a[2] * u[1], a[2] * u[0] - a[0] * u[2],
-                         a[0] * u[1] - a[1] * u[0]};
-    const double psi = std::uniform_real_distribution<double>(0, 2 * M_PI)(g);
-    const double c = std::cos(theta), s = std::sin(theta);
-    double o[3];
-    for (int i = 0; i < 3; ++i) o[i] = c * a[i] + s * (std::cos(psi) * u[i] + std::sin(psi) * w[i]);
-    return Vec3(float(o[0]), float(o[1]), float(o[2]));
-}
+using test::direction_at;
+using test::random_point;
+using test::random_unit;
 
 struct Node {
     RayNode node;
@@ -89,14 +56,14 @@ void sample_ray(const Node& n, std::mt19937& g, Vec3& o, Vec3& d) {
 // Analytic ray-sphere test in double: does {o + t d, t >= 0} meet the ball (c, r)? `margin`
 // shrinks the ball, so only clear hits count.
 bool ray_hits(Vec3 o, Vec3 d, const Sphere& s, double margin) {
-    const D3 dd = to_d(d);
-    const double dl = std::sqrt(ddot(dd, dd));
-    const D3 dn{dd.x / dl, dd.y / dl, dd.z / dl};
-    const D3 w{double(s.center.x) - o.x, double(s.center.y) - o.y, double(s.center.z) - o.z};
-    const double t = std::max(0.0, ddot(w, dn));
-    const D3 q{w.x - t * dn.x, w.y - t * dn.y, w.z - t * dn.z};
+    const Vec3d dd = to_double(d);
+    const double dl = std::sqrt(dot(dd, dd));
+    const Vec3d dn{dd.x / dl, dd.y / dl, dd.z / dl};
+    const Vec3d w{double(s.center.x) - o.x, double(s.center.y) - o.y, double(s.center.z) - o.z};
+    const double t = std::max(0.0, dot(w, dn));
+    const Vec3d q{w.x - t * dn.x, w.y - t * dn.y, w.z - t * dn.z};
     const double r = s.radius - margin;
-    return r >= 0 && ddot(q, q) <= r * r;
+    return r >= 0 && dot(q, q) <= r * r;
 }
 
 float angle_for(int kind, std::mt19937& g) {

@@ -1,5 +1,6 @@
 // Brute-force checks of the cone unions (paper 000 eqs. 5, 6 and the n-ary form).
 #include "core/geometry/cone.h"
+#include "core/geometry/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -11,35 +12,9 @@
 namespace sheaf {
 namespace {
 
-Vec3 random_unit(std::mt19937& g) {
-    std::normal_distribution<double> n;
-    for (;;) {
-        const double x = n(g), y = n(g), z = n(g), l = std::sqrt(x * x + y * y + z * z);
-        if (l > 1e-3) return Vec3(float(x / l), float(y / l), float(z / l));
-    }
-}
-
-// A direction at angle `theta` from `axis`, random azimuth, computed in double.
-Vec3 direction_at(Vec3 axis, double theta, std::mt19937& g) {
-    const double ax = axis.x, ay = axis.y, az = axis.z;
-    const double al = std::sqrt(ax * ax + ay * ay + az * az);
-    const double a[3] = {ax / al, ay / al, az / al};
-    // Orthonormal basis around the axis.
-    double t[3] = {0, 0, 0};
-    t[std::fabs(a[0]) < 0.6 ? 0 : (std::fabs(a[1]) < 0.6 ? 1 : 2)] = 1;
-    const double d = t[0] * a[0] + t[1] * a[1] + t[2] * a[2];
-    double u[3] = {t[0] - d * a[0], t[1] - d * a[1], t[2] - d * a[2]};
-    const double ul = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (double& x : u) x /= ul;
-    const double w[3] = {a[1] * u[2] - a[2] * u[1], a[2] * u[0] - a[0] * u[2],
-                         a[0] * u[1] - a[1] * u[0]};
-    const double psi = std::uniform_real_distribution<double>(0, 2 * M_PI)(g);
-    const double c = std::cos(theta), s = std::sin(theta);
-    double out[3];
-    for (int i = 0; i < 3; ++i)
-        out[i] = c * a[i] + s * (std::cos(psi) * u[i] + std::sin(psi) * w[i]);
-    return Vec3(float(out[0]), float(out[1]), float(out[2]));
-}
+using test::direction_at;
+using test::random_point;
+using test::random_unit;
 
 float random_angle(std::mt19937& g, int kind) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);

@@ -1,4 +1,5 @@
 #include "core/geometry/min_sphere.h"
+#include "core/math/vec3d.h"
 
 #include <algorithm>
 #include <array>
@@ -9,35 +10,16 @@
 namespace sheaf {
 namespace {
 
-struct D3 {
-    double x, y, z;
-};
-D3 operator-(D3 a, D3 b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-D3 operator+(D3 a, D3 b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-D3 operator*(D3 a, double s) {
-    return {a.x * s, a.y * s, a.z * s};
-}
-double dot(D3 a, D3 b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-D3 cross(D3 a, D3 b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-
 struct Ball {
-    D3 c{0, 0, 0};
+    Vec3d c{0, 0, 0};
     double r2 = -1; // empty
 };
 
-bool inside(const Ball& b, D3 p, double tol) {
+bool inside(const Ball& b, Vec3d p, double tol) {
     return b.r2 >= 0 && dot(p - b.c, p - b.c) <= b.r2 * (1 + tol) + tol * 1e-12;
 }
 
-Ball ball2(D3 a, D3 b) {
+Ball ball2(Vec3d a, Vec3d b) {
     Ball r;
     r.c = (a + b) * 0.5;
     r.r2 = dot(a - r.c, a - r.c);
@@ -46,9 +28,9 @@ Ball ball2(D3 a, D3 b) {
 
 // Smallest ball with a, b, c on its boundary (the circumscribed circle's ball); falls back to
 // the widest pair when the points are collinear.
-Ball ball3(D3 a, D3 b, D3 c) {
-    const D3 ab = b - a, ac = c - a;
-    const D3 n = cross(ab, ac);
+Ball ball3(Vec3d a, Vec3d b, Vec3d c) {
+    const Vec3d ab = b - a, ac = c - a;
+    const Vec3d n = cross(ab, ac);
     const double nn = dot(n, n);
     if (nn <= 1e-30 * dot(ab, ab) * dot(ac, ac)) {
         Ball best = ball2(a, b);
@@ -64,15 +46,15 @@ Ball ball3(D3 a, D3 b, D3 c) {
 
 // Ball with a, b, c, d on its boundary; coplanar sets fall back to the smallest of the
 // three-point balls that hold all four.
-Ball ball4(D3 a, D3 b, D3 c, D3 d) {
-    const D3 ab = b - a, ac = c - a, ad = d - a;
+Ball ball4(Vec3d a, Vec3d b, Vec3d c, Vec3d d) {
+    const Vec3d ab = b - a, ac = c - a, ad = d - a;
     const double det = dot(ab, cross(ac, ad));
     const double scale = std::sqrt(dot(ab, ab) * dot(ac, ac) * dot(ad, ad));
     if (std::fabs(det) <= 1e-12 * scale) {
-        std::array<D3, 4> p{a, b, c, d};
+        std::array<Vec3d, 4> p{a, b, c, d};
         Ball best;
         for (int skip = 0; skip < 4; ++skip) {
-            std::array<D3, 3> q;
+            std::array<Vec3d, 3> q;
             for (int i = 0, k = 0; i < 4; ++i)
                 if (i != skip) q[k++] = p[i];
             Ball cand = ball3(q[0], q[1], q[2]);
@@ -80,7 +62,7 @@ Ball ball4(D3 a, D3 b, D3 c, D3 d) {
         }
         return best.r2 >= 0 ? best : ball3(a, b, c);
     }
-    const D3 num =
+    const Vec3d num =
         cross(ac, ad) * dot(ab, ab) + cross(ad, ab) * dot(ac, ac) + cross(ab, ac) * dot(ad, ad);
     Ball r;
     r.c = a + num * (0.5 / det);
@@ -92,14 +74,14 @@ constexpr double kTol = 1e-10;
 
 // Welzl's recursion unrolled by the number of boundary points, with move-to-front: a point
 // found outside moves to the front so that later passes meet it early (Gaertner).
-Ball with3(std::vector<D3>& p, size_t end, D3 q1, D3 q2, D3 q3) {
+Ball with3(std::vector<Vec3d>& p, size_t end, Vec3d q1, Vec3d q2, Vec3d q3) {
     Ball b = ball3(q1, q2, q3);
     for (size_t i = 0; i < end; ++i)
         if (!inside(b, p[i], kTol)) b = ball4(q1, q2, q3, p[i]);
     return b;
 }
 
-Ball with2(std::vector<D3>& p, size_t end, D3 q1, D3 q2) {
+Ball with2(std::vector<Vec3d>& p, size_t end, Vec3d q1, Vec3d q2) {
     Ball b = ball2(q1, q2);
     for (size_t i = 0; i < end; ++i)
         if (!inside(b, p[i], kTol)) {
@@ -109,7 +91,7 @@ Ball with2(std::vector<D3>& p, size_t end, D3 q1, D3 q2) {
     return b;
 }
 
-Ball with1(std::vector<D3>& p, size_t end, D3 q) {
+Ball with1(std::vector<Vec3d>& p, size_t end, Vec3d q) {
     Ball b;
     b.c = q;
     b.r2 = 0;
@@ -125,7 +107,7 @@ Ball with1(std::vector<D3>& p, size_t end, D3 q) {
 
 Sphere min_sphere(std::span<const Vec3> points) {
     if (points.empty()) return {Vec3(0.0f), 0.0f};
-    std::vector<D3> p;
+    std::vector<Vec3d> p;
     p.reserve(points.size());
     for (Vec3 v : points) p.push_back({v.x, v.y, v.z});
     // A fixed pseudo-random order gives Welzl's expected linear time deterministically.

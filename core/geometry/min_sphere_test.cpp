@@ -1,6 +1,7 @@
 // Minimal enclosing spheres against brute force: the triangle's exact sphere and Welzl's
 // algorithm for point sets.
 #include "core/geometry/min_sphere.h"
+#include "core/geometry/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -12,80 +13,59 @@
 namespace sheaf {
 namespace {
 
-struct D3 {
-    double x, y, z;
-};
-D3 to_d(Vec3 v) {
-    return {v.x, v.y, v.z};
-}
-D3 operator-(D3 a, D3 b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-D3 operator+(D3 a, D3 b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-D3 operator*(D3 a, double s) {
-    return {a.x * s, a.y * s, a.z * s};
-}
-double dot(D3 a, D3 b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-D3 cross(D3 a, D3 b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dist(D3 a, D3 b) {
-    return std::sqrt(dot(a - b, a - b));
-}
+using test::direction_at;
+using test::random_point;
+using test::random_unit;
 
 struct Ball {
-    D3 c{0, 0, 0};
+    Vec3d c{0, 0, 0};
     double r = -1; // invalid
 };
 
 // The smallest sphere through three points (their circumcircle's sphere); invalid when they
 // are collinear.
-Ball circum3(D3 a, D3 b, D3 c) {
-    const D3 ab = b - a, ac = c - a, n = cross(ab, ac);
+Ball circum3(Vec3d a, Vec3d b, Vec3d c) {
+    const Vec3d ab = b - a, ac = c - a, n = cross(ab, ac);
     const double nn = dot(n, n);
     if (nn <= 1e-24 * dot(ab, ab) * dot(ac, ac)) return {};
-    const D3 center = a + (cross(n, ab) * dot(ac, ac) + cross(ac, n) * dot(ab, ab)) * (0.5 / nn);
-    return {center, dist(center, a)};
+    const Vec3d center = a + (cross(n, ab) * dot(ac, ac) + cross(ac, n) * dot(ab, ab)) * (0.5 / nn);
+    return {center, distance(center, a)};
 }
 
 // The sphere through four points, by Cramer's rule on 2 (p_i - a) . x = |p_i - a|^2; invalid
 // when they are coplanar.
-Ball circum4(D3 a, D3 b, D3 c, D3 d) {
-    const D3 u = b - a, v = c - a, w = d - a;
+Ball circum4(Vec3d a, Vec3d b, Vec3d c, Vec3d d) {
+    const Vec3d u = b - a, v = c - a, w = d - a;
     const double det = dot(u, cross(v, w));
     const double scale = std::sqrt(dot(u, u) * dot(v, v) * dot(w, w));
     if (std::fabs(det) <= 1e-9 * scale) return {};
-    const D3 x =
+    const Vec3d x =
         (cross(v, w) * dot(u, u) + cross(w, u) * dot(v, v) + cross(u, v) * dot(w, w)) * (0.5 / det);
     return {a + x, std::sqrt(dot(x, x))};
 }
 
-bool holds_all(const Ball& b, const std::vector<D3>& p) {
+bool holds_all(const Ball& b, const std::vector<Vec3d>& p) {
     if (b.r < 0) return false;
-    for (D3 q : p)
-        if (dist(q, b.c) > b.r * (1 + 1e-9) + 1e-12) return false;
+    for (Vec3d q : p)
+        if (distance(q, b.c) > b.r * (1 + 1e-9) + 1e-12) return false;
     return true;
 }
 
-void keep_smaller(Ball& best, const Ball& cand, const std::vector<D3>& p) {
+void keep_smaller(Ball& best, const Ball& cand, const std::vector<Vec3d>& p) {
     if (holds_all(cand, p) && (best.r < 0 || cand.r < best.r)) best = cand;
 }
 
 // Brute force: the minimal enclosing sphere is determined by at most four points on its
 // boundary; try every pair (midpoint), triple (circumcircle) and quadruple (circumsphere).
-Ball brute_min_sphere(const std::vector<D3>& p) {
+Ball brute_min_sphere(const std::vector<Vec3d>& p) {
     const size_t n = p.size();
     Ball best;
     if (n == 1) return {p[0], 0.0};
     keep_smaller(best, {p[0], 0.0}, p); // all points equal
     for (size_t i = 0; i < n; ++i)
         for (size_t j = i + 1; j < n; ++j) {
-            const D3 m = (p[i] + p[j]) * 0.5;
-            keep_smaller(best, {m, dist(m, p[i])}, p);
+            const Vec3d m = (p[i] + p[j]) * 0.5;
+            keep_smaller(best, {m, distance(m, p[i])}, p);
             for (size_t k = j + 1; k < n; ++k) {
                 keep_smaller(best, circum3(p[i], p[j], p[k]), p);
                 for (size_t l = k + 1; l < n; ++l)
@@ -95,9 +75,9 @@ Ball brute_min_sphere(const std::vector<D3>& p) {
     return best;
 }
 
-std::vector<D3> to_d(const std::vector<Vec3>& v) {
-    std::vector<D3> out;
-    for (Vec3 x : v) out.push_back(to_d(x));
+std::vector<Vec3d> to_double(const std::vector<Vec3>& v) {
+    std::vector<Vec3d> out;
+    for (Vec3 x : v) out.push_back(to_double(x));
     return out;
 }
 
@@ -107,29 +87,16 @@ void expect_holds_all(const Sphere& s, const std::vector<Vec3>& p, const char* w
             << what << ": point at " << length(q - s.center) << " > radius " << s.radius;
 }
 
-Vec3 random_point(std::mt19937& g, float extent) {
-    std::uniform_real_distribution<float> u(-extent, extent);
-    return Vec3(u(g), u(g), u(g));
-}
-
-Vec3 random_unit(std::mt19937& g) {
-    std::normal_distribution<float> n;
-    for (;;) {
-        Vec3 v(n(g), n(g), n(g));
-        if (length(v) > 1e-3f) return normalize(v);
-    }
-}
-
 void expect_matches_brute(const Sphere& s, const std::vector<Vec3>& p, double rel,
                           const char* what) {
-    const Ball b = brute_min_sphere(to_d(p));
+    const Ball b = brute_min_sphere(to_double(p));
     ASSERT_GE(b.r, 0) << what;
     // Relative to the radius, plus what float positions far from the origin allow: their
     // rounding, and the padding pad_radius adds for it (1e-7 of the centre's L1 norm).
     const double far = 2e-7 * (std::fabs(b.c.x) + std::fabs(b.c.y) + std::fabs(b.c.z));
     const double tol = rel * b.r + far + 1e-6;
     EXPECT_NEAR(s.radius, b.r, tol) << what << " (" << p.size() << " points)";
-    EXPECT_LE(dist(to_d(s.center), b.c), tol) << what << " (" << p.size() << " points)";
+    EXPECT_LE(distance(to_double(s.center), b.c), tol) << what << " (" << p.size() << " points)";
     EXPECT_GE(s.radius, b.r * (1 - 1e-6)) << what << ": smaller than the minimal sphere";
 }
 

@@ -1,6 +1,7 @@
 // Moeller-Trumbore against an independent double-precision reference: the plane
 // intersection, then barycentrics from sub-areas.
 #include "core/geometry/ray_triangle.h"
+#include "core/geometry/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -11,27 +12,9 @@
 namespace sheaf {
 namespace {
 
-struct D3 {
-    double x, y, z;
-};
-D3 to_d(Vec3 v) {
-    return {v.x, v.y, v.z};
-}
-D3 operator-(D3 a, D3 b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-D3 operator+(D3 a, D3 b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-D3 operator*(D3 a, double s) {
-    return {a.x * s, a.y * s, a.z * s};
-}
-double dot(D3 a, D3 b) {
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-D3 cross(D3 a, D3 b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+using test::direction_at;
+using test::random_point;
+using test::random_unit;
 
 struct Reference {
     bool parallel = true;
@@ -44,32 +27,20 @@ struct Reference {
 
 Reference reference(const Ray& r, Vec3 a, Vec3 b, Vec3 c) {
     Reference ref;
-    const D3 A = to_d(a), e1 = to_d(b) - A, e2 = to_d(c) - A, o = to_d(r.origin), d = to_d(r.dir);
-    const D3 n = cross(e1, e2);
+    const Vec3d A = to_double(a), e1 = to_double(b) - A, e2 = to_double(c) - A,
+                o = to_double(r.origin), d = to_double(r.dir);
+    const Vec3d n = cross(e1, e2);
     const double nn = dot(n, n), dn = dot(d, n);
     if (nn == 0 || dn == 0) return ref;
     ref.parallel = false;
     ref.cos_incidence = std::fabs(dn) / std::sqrt(nn * dot(d, d));
     ref.kappa = std::fabs(dn) / std::sqrt(dot(e1, e1) * dot(e2, e2) * dot(d, d));
     ref.t = dot(n, A - o) / dn;
-    const D3 p = o + d * ref.t - A;
+    const Vec3d p = o + d * ref.t - A;
     // p = u e1 + v e2: the sub-areas against the full area.
     ref.u = dot(cross(p, e2), n) / nn;
     ref.v = dot(cross(e1, p), n) / nn;
     return ref;
-}
-
-Vec3 random_unit(std::mt19937& g) {
-    std::normal_distribution<float> n;
-    for (;;) {
-        Vec3 v(n(g), n(g), n(g));
-        if (length(v) > 1e-3f) return normalize(v);
-    }
-}
-
-Vec3 random_point(std::mt19937& g, float extent) {
-    std::uniform_real_distribution<float> u(-extent, extent);
-    return Vec3(u(g), u(g), u(g));
 }
 
 TEST(IntersectTriangle, AgreesWithDoubleReference) {

@@ -1,5 +1,6 @@
 // Brute-force checks of the sphere unions (paper 000 eqs. 7, 8 and the n-ary form).
 #include "core/geometry/sphere.h"
+#include "core/geometry/test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -11,13 +12,9 @@
 namespace sheaf {
 namespace {
 
-Vec3 random_unit(std::mt19937& g) {
-    std::normal_distribution<float> n;
-    for (;;) {
-        Vec3 v(n(g), n(g), n(g));
-        if (length(v) > 1e-3f) return normalize(v);
-    }
-}
+using test::direction_at;
+using test::random_point;
+using test::random_unit;
 
 // A point inside s: on its surface when `surface`, else uniform in its ball.
 Vec3 point_in(const Sphere& s, std::mt19937& g, bool surface) {

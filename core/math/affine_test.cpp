@@ -1,4 +1,5 @@
 // Affine transforms: points, vectors and normals against double-precision references.
+#include "core/geometry/test_support.h"
 #include "core/math/affine.h"
 
 #include <gtest/gtest.h>
@@ -9,23 +10,14 @@
 namespace sheaf {
 namespace {
 
+using test::direction_at;
+using test::random_point;
+using test::random_unit;
+
 void expect_vec_near(Vec3 a, Vec3 b, float tol) {
     EXPECT_NEAR(a.x, b.x, tol);
     EXPECT_NEAR(a.y, b.y, tol);
     EXPECT_NEAR(a.z, b.z, tol);
-}
-
-Vec3 random_unit(std::mt19937& g) {
-    std::normal_distribution<float> n;
-    for (;;) {
-        Vec3 v(n(g), n(g), n(g));
-        if (length(v) > 1e-3f) return normalize(v);
-    }
-}
-
-Vec3 random_point(std::mt19937& g, float extent) {
-    std::uniform_real_distribution<float> u(-extent, extent);
-    return Vec3(u(g), u(g), u(g));
 }
 
 // A random product of rotations, scales (non-uniform, sometimes mirroring) and translations.

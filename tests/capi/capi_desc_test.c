@@ -7,25 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int g_failures = 0;
-
-#define CHECK(cond, ...)                                                                           \
-    do {                                                                                           \
-        if (!(cond)) {                                                                             \
-            ++g_failures;                                                                          \
-            fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                      \
-            fprintf(stderr, __VA_ARGS__);                                                          \
-            fprintf(stderr, "\n");                                                                 \
-        }                                                                                          \
-    } while (0)
-
-#define OK(call)                                                                                   \
-    do {                                                                                           \
-        SheafError e_ = (call);                                                                    \
-        const char* m_ = "";                                                                       \
-        if (e_ != SHEAF_OK) sheafGetLastError(&m_);                                                \
-        CHECK(e_ == SHEAF_OK, "%s returned %d: %s", #call, (int)e_, m_);                           \
-    } while (0)
+#include "check.h"
 
 /* A 4x4 quad in the plane z = 0 facing +z, seen by an orthographic camera from +z. */
 static SheafScene quad_scene(const SheafMaterialDesc* mat) {

@@ -12,6 +12,9 @@ endmacro()
 sheaf_find(TBB REQUIRED)
 sheaf_find(OpenImageIO REQUIRED)
 sheaf_find(pugixml REQUIRED)
+# Debian installs OpenColorIO's package config straight into /usr/share/cmake, which
+# find_package does not search by itself.
+sheaf_find(OpenColorIO REQUIRED HINTS /usr/share/cmake)
 sheaf_find(Threads REQUIRED)
 if(SHEAF_BUILD_TESTS)
   sheaf_find(GTest REQUIRED)
@@ -21,18 +24,25 @@ if(SHEAF_BUILD_BENCHMARKS)
 endif()
 sheaf_find(CLI11 REQUIRED)
 
-# Debian's OpenImageIO config names /usr/include/opencv4 among its include directories even
-# when OpenCV's headers are not installed; CMake refuses imported targets with missing paths.
-# Keep only the directories that exist rather than pulling in OpenCV.
-if(TARGET OpenImageIO::OpenImageIO)
-  get_target_property(_oiio_inc OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
-  if(_oiio_inc)
-    set(_oiio_keep)
-    foreach(_dir IN LISTS _oiio_inc)
-      if(EXISTS "${_dir}" OR _dir MATCHES "^\\$<")
-        list(APPEND _oiio_keep "${_dir}")
-      endif()
-    endforeach()
-    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_keep}")
+# Debian's package configs name include directories that do not exist: OpenImageIO lists
+# /usr/include/opencv4 even without OpenCV's headers, and OpenColorIO's config, installed in
+# /usr/share/cmake, computes its prefix as "/" and names "/include". CMake refuses imported
+# targets with missing paths; keep the directories that exist (the headers are in /usr/include).
+function(sheaf_drop_missing_include_dirs target)
+  if(NOT TARGET ${target})
+    return()
   endif()
-endif()
+  get_target_property(dirs ${target} INTERFACE_INCLUDE_DIRECTORIES)
+  if(NOT dirs)
+    return()
+  endif()
+  set(keep)
+  foreach(dir IN LISTS dirs)
+    if(EXISTS "${dir}" OR dir MATCHES "^\\$<")
+      list(APPEND keep "${dir}")
+    endif()
+  endforeach()
+  set_target_properties(${target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${keep}")
+endfunction()
+sheaf_drop_missing_include_dirs(OpenImageIO::OpenImageIO)
+sheaf_drop_missing_include_dirs(OpenColorIO::OpenColorIO)

@@ -84,6 +84,43 @@ const std::vector<SettingSpec>& setting_specs() {
          1e30,
          {},
          "ambient-occlusion ray length in scene units"},
+        {"output.display",
+         K::String,
+         "",
+         0,
+         0,
+         {},
+         "OpenColorIO display for 8-bit images (empty: the config's default, sRGB in Sheaf's "
+         "config)"},
+        {"output.view",
+         K::String,
+         "",
+         0,
+         0,
+         {},
+         "OpenColorIO view of the display (empty: its default)"},
+        {"output.look",
+         K::String,
+         "",
+         0,
+         0,
+         {},
+         "OpenColorIO looks applied before the view, comma-separated"},
+        {"output.ocio_config",
+         K::String,
+         "",
+         0,
+         0,
+         {},
+         "OpenColorIO config file (empty: $OCIO, else the config Sheaf ships)"},
+        {"output.exr",
+         K::Choice,
+         "half",
+         0,
+         0,
+         {"half", "float"},
+         "OpenEXR colour channels as half or full float (depth, ids and test counts are always "
+         "float)"},
         {"traversal.batch",
          K::Int,
          "4194304",
@@ -140,6 +177,8 @@ std::string describe_allowed(const SettingSpec& s) {
         return "a number in " + format_number(s.min) + ".." + format_number(s.max);
     case SettingKind::Bool:
         return "true or false (also on/off, yes/no, 1/0)";
+    case SettingKind::String:
+        return "any text";
     case SettingKind::Choice: {
         std::string out = "one of ";
         for (size_t i = 0; i < s.choices.size(); ++i) out += (i ? ", " : "") + s.choices[i];
@@ -171,6 +210,9 @@ std::string canonical_setting(std::string_view key, std::string_view value) {
         if (value == "true" || value == "on" || value == "yes" || value == "1") return "true";
         if (value == "false" || value == "off" || value == "no" || value == "0") return "false";
         bad_value(s, value);
+    case SettingKind::String:
+        if (value.find('\n') != std::string_view::npos) bad_value(s, value);
+        return std::string(value);
     case SettingKind::Choice:
         for (const std::string& c : s.choices)
             if (c == value) return c;

@@ -10,7 +10,7 @@
 
 namespace sheaf {
 
-enum class SettingKind { Int, Float, Bool, Choice };
+enum class SettingKind { Int, Float, Bool, Choice, String };
 
 struct SettingSpec {
     std::string key;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 namespace sheaf {
@@ -21,7 +22,7 @@ enum class Encoding { Display8, Half, Float };
 struct Format {
     const char* extension;
     Encoding encoding;
-    int channels;
+    int max_channels; // jpeg has no alpha; Radiance HDR holds RGB only
 };
 
 constexpr Format kFormats[] = {
@@ -38,31 +39,132 @@ std::string lower_extension(const std::string& path) {
     return ext;
 }
 
-const Format* find_format(const std::string& path) {
+const Format& format_of(const std::string& path) {
     const std::string ext = lower_extension(path);
     for (const Format& f : kFormats)
-        if (ext == f.extension) return &f;
-    return nullptr;
+        if (ext == f.extension) return f;
+    std::string known;
+    for (const Format& f : kFormats)
+        known += (known.empty() ? "" : ", ") + std::string(f.extension);
+    throw RenderError(path + ": unknown image format '" + ext + "'; known: " + known);
 }
 
-std::string known_extensions() {
-    std::string out;
-    for (const Format& f : kFormats) out += (out.empty() ? "" : ", ") + std::string(f.extension);
-    return out;
+std::string setting(const Frame& frame, const char* key) {
+    for (const auto& [k, v] : frame.settings)
+        if (k == key) return v;
+    return {};
 }
 
-std::string settings_text(const Frame& frame) {
-    std::string out;
+std::vector<std::pair<std::string, std::string>> frame_metadata(const Frame& frame) {
+    std::string settings;
     for (const auto& [key, value] : frame.settings)
-        out += (out.empty() ? "" : " ") + key + "=" + value;
+        settings += (settings.empty() ? "" : " ") + key + "=" + value;
+    return {{"sheaf:settings", settings}, {"sheaf:stats", frame.stats.to_json()}};
+}
+
+std::unique_ptr<OIIO::ImageOutput> open_output(const std::string& path,
+                                               const OIIO::ImageSpec& spec) {
+    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
+    if (!out) throw RenderError(path + ": cannot write image: " + OIIO::geterror());
+    if (!out->open(path, spec))
+        throw RenderError(path + ": cannot write image: " + out->geterror());
     return out;
 }
 
-uint8_t to_display8(float linear) {
-    float v = srgb_encode(linear);
-    if (!(v > 0.0f)) v = 0.0f; // also NaN
-    if (v > 1.0f) v = 1.0f;
-    return uint8_t(std::lround(v * 255.0f));
+void finish(std::unique_ptr<OIIO::ImageOutput>& out, bool ok, const std::string& path) {
+    if (!ok) {
+        const std::string message = out->geterror();
+        out->close();
+        throw RenderError(path + ": cannot write image: " + message);
+    }
+    if (!out->close()) throw RenderError(path + ": cannot write image: " + out->geterror());
+}
+
+size_t pixel_count(const Frame& frame, const std::string& path) {
+    const size_t pixels = size_t(std::max(frame.width, 0)) * size_t(std::max(frame.height, 0));
+    if (frame.width <= 0 || frame.height <= 0 || frame.rgba.size() < pixels * 4)
+        throw RenderError(path + ": the frame holds no image to write");
+    return pixels;
+}
+
+// The multi-channel OpenEXR: combined plus every pass, each channel named.
+void write_exr(const Frame& frame, const std::string& path) {
+    const size_t pixels = pixel_count(frame, path);
+    const bool half = setting(frame, "output.exr") != "float";
+    std::vector<std::string> names = {"R", "G", "B", "A"};
+    std::vector<OIIO::TypeDesc> formats(4, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+    std::vector<std::function<float(size_t)>> get = {
+        [&](size_t p) { return frame.rgba[4 * p]; },
+        [&](size_t p) { return frame.rgba[4 * p + 1]; },
+        [&](size_t p) { return frame.rgba[4 * p + 2]; },
+        [&](size_t p) { return frame.rgba[4 * p + 3]; }};
+    auto add = [&](const char* name, std::function<float(size_t)> f, size_t have) {
+        if (have < pixels) return; // a frame without this pass
+        names.push_back(name);
+        formats.push_back(OIIO::TypeDesc::FLOAT);
+        get.push_back(std::move(f));
+    };
+    add(
+        "Z", [&](size_t p) { return frame.depth[p]; }, frame.depth.size());
+    add(
+        "N.X", [&](size_t p) { return frame.normal[p].x; }, frame.normal.size());
+    add(
+        "N.Y", [&](size_t p) { return frame.normal[p].y; }, frame.normal.size());
+    add(
+        "N.Z", [&](size_t p) { return frame.normal[p].z; }, frame.normal.size());
+    add(
+        "albedo.R", [&](size_t p) { return frame.albedo[p].x; }, frame.albedo.size());
+    add(
+        "albedo.G", [&](size_t p) { return frame.albedo[p].y; }, frame.albedo.size());
+    add(
+        "albedo.B", [&](size_t p) { return frame.albedo[p].z; }, frame.albedo.size());
+    add(
+        "object_id",
+        [&](size_t p) {
+            return frame.object_id[p] == 0xFFFFFFFFu ? -1.0f : float(frame.object_id[p]);
+        },
+        frame.object_id.size());
+    add(
+        "tests", [&](size_t p) { return float(frame.tests[p]); }, frame.tests.size());
+
+    const int nc = int(names.size());
+    OIIO::ImageSpec spec(frame.width, frame.height, nc, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = names;
+    spec.channelformats = formats;
+    spec.alpha_channel = 3;
+    spec.z_channel = 4;
+    spec.attribute("Software", "Sheaf");
+    spec.attribute("oiio:ColorSpace", "Linear");
+    spec.attribute("compression", "zip");
+    for (const auto& [k, v] : frame_metadata(frame)) spec.attribute(k, v);
+    std::vector<float> data(pixels * size_t(nc));
+    for (size_t p = 0; p < pixels; ++p)
+        for (int c = 0; c < nc; ++c) data[p * nc + c] = get[size_t(c)](p);
+    auto out = open_output(path, spec);
+    finish(out, out->write_image(OIIO::TypeDesc::FLOAT, data.data()), path);
+}
+
+// A colour for each object id, far apart for neighbouring ids.
+Vec3 id_colour(uint32_t id) {
+    if (id == 0xFFFFFFFFu) return Vec3(0.0f);
+    uint32_t h = id * 2654435761u;
+    h ^= h >> 15;
+    return Vec3(0.25f + 0.75f * float(h & 0xFF) / 255.0f,
+                0.25f + 0.75f * float((h >> 8) & 0xFF) / 255.0f,
+                0.25f + 0.75f * float((h >> 16) & 0xFF) / 255.0f);
+}
+
+// A perceptually ordered heat map (dark blue -> teal -> yellow -> red) of x in [0, 1].
+Vec3 heat(float x) {
+    static const Vec3 stops[] = {{0.05f, 0.03f, 0.25f},
+                                 {0.1f, 0.45f, 0.55f},
+                                 {0.55f, 0.8f, 0.3f},
+                                 {0.98f, 0.85f, 0.2f},
+                                 {0.85f, 0.15f, 0.1f}};
+    x = std::fmin(1.0f, std::fmax(0.0f, x)) * 4.0f;
+    const int i = std::min(3, int(x));
+    const float f = x - float(i);
+    return stops[i] * (1 - f) + stops[i + 1] * f;
 }
 
 } // namespace
@@ -73,65 +175,119 @@ float srgb_encode(float linear) {
 }
 
 bool is_supported_image_path(const std::string& path) {
-    return find_format(path) != nullptr;
+    const std::string ext = lower_extension(path);
+    return std::any_of(std::begin(kFormats), std::end(kFormats),
+                       [&](const Format& f) { return ext == f.extension; });
+}
+
+io::DisplayOptions display_options(const Frame& frame) {
+    return {setting(frame, "output.ocio_config"), setting(frame, "output.display"),
+            setting(frame, "output.view"), setting(frame, "output.look")};
+}
+
+void write_pixels(const std::string& path, int w, int h, int channels, const float* pixels,
+                  bool display_referred, const io::DisplayOptions& display,
+                  const std::vector<std::pair<std::string, std::string>>& metadata) {
+    const Format& format = format_of(path);
+    if (w <= 0 || h <= 0 || channels < 1 || channels > 4 || !pixels)
+        throw RenderError(path + ": nothing to write (" + std::to_string(w) + "x" +
+                          std::to_string(h) + ", " + std::to_string(channels) + " channels)");
+    const size_t n = size_t(w) * size_t(h);
+    const bool colour_in = channels >= 3, alpha_in = channels == 2 || channels == 4;
+    // RGBA working copy: grey expands to RGB.
+    std::vector<float> rgba(n * 4);
+    for (size_t p = 0; p < n; ++p) {
+        const float* src = pixels + p * size_t(channels);
+        for (int c = 0; c < 3; ++c) rgba[4 * p + c] = colour_in ? src[c] : src[0];
+        rgba[4 * p + 3] = alpha_in ? src[channels - 1] : 1.0f;
+    }
+    const bool eight = format.encoding == Encoding::Display8;
+    if (eight && display_referred) io::apply_display_transform(rgba.data(), n, display);
+    // Layout in the file: grey stays grey where the format allows, alpha where it fits.
+    const int colour_out = (colour_in || format.max_channels == 3) ? 3 : 1;
+    const int nc = std::min(format.max_channels, colour_out + (alpha_in ? 1 : 0));
+    const OIIO::TypeDesc type = eight                               ? OIIO::TypeDesc::UINT8
+                                : format.encoding == Encoding::Half ? OIIO::TypeDesc::HALF
+                                                                    : OIIO::TypeDesc::FLOAT;
+    OIIO::ImageSpec spec(w, h, nc, type);
+    spec.attribute("Software", "Sheaf");
+    spec.attribute("oiio:ColorSpace", eight && display_referred ? "sRGB" : "Linear");
+    for (const auto& [k, v] : metadata) spec.attribute(k, v);
+    std::vector<float> data(n * size_t(nc));
+    for (size_t p = 0; p < n; ++p)
+        for (int c = 0; c < nc; ++c) {
+            float v = c < colour_out ? rgba[4 * p + c] : rgba[4 * p + 3];
+            if (eight || format.encoding == Encoding::Float)
+                v = std::isfinite(v) && v > 0 ? v : 0.0f;
+            if (eight)
+                v = std::round(std::fmin(v, 1.0f) * 255.0f) / 255.0f; // OIIO converts to 8 bits
+            data[p * nc + c] = v;
+        }
+    auto out = open_output(path, spec);
+    finish(out, out->write_image(OIIO::TypeDesc::FLOAT, data.data()), path);
 }
 
 void write_image(const Frame& frame, const std::string& path) {
-    const Format* format = find_format(path);
-    if (!format) {
-        const std::string ext = lower_extension(path);
-        throw RenderError(path + ": unknown image format '" + ext +
-                          "'; known: " + known_extensions());
-    }
-    const int w = frame.width, h = frame.height;
-    const size_t pixels = size_t(std::max(w, 0)) * size_t(std::max(h, 0));
-    if (w <= 0 || h <= 0 || frame.rgba.size() < pixels * 4)
-        throw RenderError(path + ": the frame holds no image to write");
+    const Format& format = format_of(path);
+    if (format.encoding == Encoding::Half) return write_exr(frame, path);
+    const size_t pixels = pixel_count(frame, path);
+    // Display images are opaque; scene-linear ones keep the alpha.
+    std::vector<float> rgba(frame.rgba.begin(), frame.rgba.begin() + long(pixels * 4));
+    if (format.encoding == Encoding::Display8)
+        for (size_t p = 0; p < pixels; ++p) rgba[4 * p + 3] = 1.0f;
+    write_pixels(path, frame.width, frame.height, 4, rgba.data(), true, display_options(frame),
+                 frame_metadata(frame));
+}
 
-    const int nc = format->channels;
-    OIIO::TypeDesc file_type = format->encoding == Encoding::Display8 ? OIIO::TypeDesc::UINT8
-                               : format->encoding == Encoding::Half   ? OIIO::TypeDesc::HALF
-                                                                      : OIIO::TypeDesc::FLOAT;
-    OIIO::ImageSpec spec(w, h, nc, file_type);
-    spec.attribute("Software", "Sheaf");
-    spec.attribute("sheaf:settings", settings_text(frame));
-    spec.attribute("sheaf:stats", frame.stats.to_json());
-    if (format->encoding == Encoding::Display8)
-        spec.attribute("oiio:ColorSpace", "sRGB");
-    else
-        spec.attribute("oiio:ColorSpace", "Linear");
+const std::vector<std::string>& pass_names() {
+    static const std::vector<std::string> names = {"combined", "depth",     "normal",
+                                                   "albedo",   "object_id", "tests"};
+    return names;
+}
 
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-    if (!out) throw RenderError(path + ": cannot write image: " + OIIO::geterror());
-    if (!out->open(path, spec))
-        throw RenderError(path + ": cannot write image: " + out->geterror());
-
-    bool ok = false;
-    if (format->encoding == Encoding::Display8) {
-        std::vector<uint8_t> data(pixels * size_t(nc));
-        for (size_t p = 0; p < pixels; ++p) {
-            for (int c = 0; c < 3; ++c) data[p * nc + c] = to_display8(frame.rgba[p * 4 + c]);
-            if (nc == 4) data[p * nc + 3] = 255; // display images are opaque
+void write_pass_image(const Frame& frame, const std::string& pass, const std::string& path) {
+    const size_t n = pixel_count(frame, path);
+    std::vector<float> rgb(n * 3);
+    auto put = [&](size_t p, Vec3 c) {
+        rgb[3 * p] = c.x, rgb[3 * p + 1] = c.y, rgb[3 * p + 2] = c.z;
+    };
+    bool display = false;
+    if (pass == "combined" || pass == "albedo") {
+        display = true;
+        for (size_t p = 0; p < n; ++p)
+            put(p, pass == "combined"
+                       ? Vec3(frame.rgba[4 * p], frame.rgba[4 * p + 1], frame.rgba[4 * p + 2])
+                       : frame.albedo[p]);
+    } else if (pass == "depth") {
+        float lo = INFINITY, hi = 0;
+        for (float d : frame.depth)
+            if (std::isfinite(d)) lo = std::fmin(lo, d), hi = std::fmax(hi, d);
+        for (size_t p = 0; p < n; ++p) {
+            const float d = frame.depth[p];
+            put(p, Vec3(std::isfinite(d) && hi > lo ? 1.0f - 0.9f * (d - lo) / (hi - lo)
+                                                    : (std::isfinite(d) ? 1.0f : 0.0f)));
         }
-        ok = out->write_image(OIIO::TypeDesc::UINT8, data.data());
-    } else if (nc == 4) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, frame.rgba.data());
+    } else if (pass == "normal") {
+        for (size_t p = 0; p < n; ++p)
+            put(p, frame.object_id[p] == 0xFFFFFFFFu ? Vec3(0.0f)
+                                                     : frame.normal[p] * 0.5f + Vec3(0.5f));
+    } else if (pass == "object_id") {
+        for (size_t p = 0; p < n; ++p) put(p, id_colour(frame.object_id[p]));
+    } else if (pass == "tests") {
+        uint32_t most = 0;
+        for (uint32_t t : frame.tests) most = std::max(most, t);
+        const float scale = most > 0 ? 1.0f / std::log1p(float(most)) : 0.0f;
+        for (size_t p = 0; p < n; ++p) put(p, heat(std::log1p(float(frame.tests[p])) * scale));
     } else {
-        // Radiance RGBE holds neither negative nor non-finite values.
-        std::vector<float> data(pixels * size_t(nc));
-        for (size_t p = 0; p < pixels; ++p)
-            for (int c = 0; c < nc; ++c) {
-                const float v = frame.rgba[p * 4 + c];
-                data[p * nc + c] = std::isfinite(v) && v > 0.0f ? v : 0.0f;
-            }
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, data.data());
+        std::string known;
+        for (const auto& s : pass_names()) known += (known.empty() ? "" : ", ") + s;
+        throw RenderError("unknown pass '" + pass + "'; passes: " + known);
     }
-    if (!ok) {
-        const std::string message = out->geterror();
-        out->close();
-        throw RenderError(path + ": cannot write image: " + message);
-    }
-    if (!out->close()) throw RenderError(path + ": cannot write image: " + out->geterror());
+    if (format_of(path).encoding != Encoding::Display8)
+        throw RenderError(path +
+                          ": a false-colour pass is an 8-bit picture; use .png, .jpg or .tif");
+    write_pixels(path, frame.width, frame.height, 3, rgb.data(), display, display_options(frame),
+                 frame_metadata(frame));
 }
 
 } // namespace sheaf

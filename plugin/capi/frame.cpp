@@ -5,6 +5,7 @@
 #include "core/base/error.h"
 #include "io/image/image_io.h"
 
+#include <algorithm>
 #include <cstring>
 
 using namespace sheaf::capi;
@@ -145,6 +146,23 @@ SHEAF_API SheafError sheafFrameSaveImage(SheafFrame frame, const char* path) {
         const char* p = require(path, "path");
         try {
             sheaf::write_image(f, p);
+        } catch (const sheaf::RenderError& e) {
+            throw IoError(e.what());
+        }
+    });
+}
+
+SHEAF_API SheafError sheafFrameSavePass(SheafFrame frame, const char* pass, const char* path) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        const std::string name = require(pass, "pass");
+        const char* p = require(path, "path");
+        const auto& known = sheaf::pass_names();
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            throw InvalidArgument("unknown pass '" + name +
+                                  "'; passes: combined, depth, normal, albedo, object_id, tests");
+        try {
+            sheaf::write_pass_image(f, name, p);
         } catch (const sheaf::RenderError& e) {
             throw IoError(e.what());
         }

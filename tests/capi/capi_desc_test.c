@@ -104,6 +104,35 @@ int main(void) {
     CHECK(sheafSceneCommit(s) == SHEAF_ERROR_SCENE, "spot with falloff 0");
     sheafSceneRelease(s);
 
+    /* Passes as false-colour pictures; an unknown pass is an argument error. */
+    {
+        SheafRenderer r = NULL;
+        SheafFrame f = NULL;
+        sheafMaterialDescInit(&mat);
+        s = quad_scene(&mat);
+        OK(sheafRendererNew(&r));
+        OK(sheafRendererSetInt(r, "width", 8));
+        OK(sheafRendererSetInt(r, "height", 8));
+        OK(sheafRender(r, s, &f));
+        OK(sheafFrameSavePass(f, "tests", "capi_desc_tests_pass.png"));
+        OK(sheafFrameSavePass(f, "normal", "capi_desc_normal_pass.png"));
+        CHECK(sheafFrameSavePass(f, "velocity", "x.png") == SHEAF_ERROR_INVALID_ARGUMENT,
+              "unknown pass");
+        CHECK(sheafFrameSavePass(f, "depth", "x.exr") == SHEAF_ERROR_IO,
+              "false colour needs 8 bits");
+        OK(sheafRendererSetString(r, "output.display", "Rec.709"));
+        sheafFrameRelease(f);
+        OK(sheafRender(r, s, &f));
+        OK(sheafFrameSaveImage(f, "capi_desc_rec709.png"));
+        OK(sheafRendererSetString(r, "output.display", "P3"));
+        sheafFrameRelease(f);
+        OK(sheafRender(r, s, &f));
+        CHECK(sheafFrameSaveImage(f, "capi_desc_p3.png") == SHEAF_ERROR_IO, "unknown display");
+        sheafFrameRelease(f);
+        sheafRendererRelease(r);
+        sheafSceneRelease(s);
+    }
+
     /* Textures: a missing file fails the commit naming it; bad mappings and uv counts are
      * argument errors. (Textures that render are tested in io/image/texture_sampler_test.) */
     {
@@ -128,7 +157,8 @@ int main(void) {
         sheafSceneRelease(s);
     }
 
-    if (g_failures) fprintf(stderr, "%d failures\n", g_failures);
+    if (g_failures)
+        fprintf(stderr, "%d failures\n", g_failures);
     else
         printf("capi_desc: all checks passed\n");
     return g_failures ? 1 : 0;

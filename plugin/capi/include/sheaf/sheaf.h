@@ -231,8 +231,27 @@ SHEAF_API SheafError sheafFrameGetStatByName(SheafFrame frame, const char* key, 
  * snprintf-style, as sheafRendererGetString. */
 SHEAF_API SheafError sheafFrameGetText(SheafFrame frame, const char* what, char* buf, size_t size,
                                        size_t* needed);
-/* Writes the combined pass; the format follows the extension (.png .jpg .tif .exr .hdr). */
+/* Writes the frame; the format follows the extension. 8-bit files (.png .jpg .tif) are
+ * display-referred through OpenColorIO (settings output.display, output.view, output.look,
+ * output.ocio_config); .exr is scene-linear with every pass as named channels (R G B A, Z,
+ * N.X N.Y N.Z, albedo.R/G/B, object_id, tests; output.exr = half or float colour); .hdr is
+ * scene-linear RGB. Settings and statistics go into the file's metadata. */
 SHEAF_API SheafError sheafFrameSaveImage(SheafFrame frame, const char* path);
+/* Writes one pass as an 8-bit false-colour picture (.png .jpg .tif): "combined", "depth" (grey,
+ * near is bright), "normal" (0.5 + 0.5 n), "albedo", "object_id" (a colour per object),
+ * "tests" (a heat map of the intersection tests per pixel, log scale). */
+SHEAF_API SheafError sheafFrameSavePass(SheafFrame frame, const char* pass, const char* path);
+
+/* ---- Images ---- */
+
+/* Writes any image: width x height pixels of `channels` floats each (1 gray, 2 gray+alpha, 3 RGB,
+ * 4 RGBA), top row first. The format follows the extension: .png .tif .tiff (8-bit, alpha kept),
+ * .jpg .jpeg (8-bit, alpha dropped), .exr (half float), .hdr (float RGB; gray is repeated).
+ * display_referred non-zero: the values are scene-linear and the sRGB transfer function is
+ * applied to the colour channels (not alpha) before writing; 0: they are written as given.
+ * 8-bit files clamp to [0, 1]. Needs no handle. */
+SHEAF_API SheafError sheafWriteImage(const char* path, int width, int height, int channels,
+                                     const float* pixels, int display_referred);
 
 #ifdef __cplusplus
 }

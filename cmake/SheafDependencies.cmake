@@ -10,6 +10,8 @@ macro(sheaf_find name)
 endmacro()
 
 sheaf_find(TBB REQUIRED)
+# Debian's OpenImageIO package config lists its command line tools (iconvert, ...) as imported
+# targets and refuses to load when they are missing: the README installs openimageio-tools.
 sheaf_find(OpenImageIO REQUIRED)
 sheaf_find(pugixml REQUIRED)
 # Debian installs OpenColorIO's package config straight into /usr/share/cmake, which

@@ -1,5 +1,6 @@
 /* The C ABI from plain C99: version, errors and the error callback, a scene built through the
- * ABI, rendering, passes, statistics, text, presets, and crsh against brute on a built-in scene.
+ * ABI, rendering, passes, statistics, text, presets, crsh against brute on a built-in scene, and
+ * sheafWriteImage (formats, channel layouts, errors).
  * Prints every failed check and exits non-zero when there is any. */
 #include <sheaf/sheaf.h>
 
@@ -440,6 +441,79 @@ static void test_crsh_matches_brute(void) {
     OK(sheafSceneRelease(scene));
 }
 
+/* ---- sheafWriteImage ---- */
+
+/* Reads the first `n` bytes of a file; returns how many were read (0 when it cannot be opened). */
+static size_t read_head(const char* path, unsigned char* buf, size_t n) {
+    FILE* f = fopen(path, "rb");
+    size_t got;
+    if (!f) return 0;
+    got = fread(buf, 1, n, f);
+    fclose(f);
+    return got;
+}
+
+static unsigned png_u32(const unsigned char* b) {
+    return ((unsigned)b[0] << 24) | ((unsigned)b[1] << 16) | ((unsigned)b[2] << 8) | b[3];
+}
+
+/* A PNG of the given size, bit depth 8 and PNG colour type (0 gray, 4 gray+alpha, 2 RGB,
+ * 6 RGBA), read from the IHDR chunk. */
+static void check_png(const char* path, unsigned w, unsigned h, int color_type) {
+    static const unsigned char kMagic[8] = {0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+    unsigned char head[26];
+    size_t got = read_head(path, head, sizeof head);
+    CHECK(got == sizeof head && memcmp(head, kMagic, 8) == 0, "%s is not a PNG", path);
+    if (got != sizeof head) return;
+    CHECK(memcmp(head + 12, "IHDR", 4) == 0, "%s: no IHDR first", path);
+    CHECK(png_u32(head + 16) == w && png_u32(head + 20) == h, "%s: %ux%u, expected %ux%u", path,
+          png_u32(head + 16), png_u32(head + 20), w, h);
+    CHECK(head[24] == 8, "%s: bit depth %d, expected 8", path, head[24]);
+    CHECK(head[25] == color_type, "%s: colour type %d, expected %d", path, head[25], color_type);
+}
+
+static void test_write_image(void) {
+    enum { W = 5, H = 3 };
+    float px[W * H * 4];
+    unsigned char head[4];
+    int i;
+    for (i = 0; i < W * H * 4; ++i) px[i] = (float)(i % 7) / 6.0f;
+
+    OK(sheafWriteImage("capi_test_write_gray.png", W, H, 1, px, 0));
+    check_png("capi_test_write_gray.png", W, H, 0);
+    OK(sheafWriteImage("capi_test_write_ga.png", W, H, 2, px, 1));
+    check_png("capi_test_write_ga.png", W, H, 4);
+    OK(sheafWriteImage("capi_test_write_rgb.png", W, H, 3, px, 1));
+    check_png("capi_test_write_rgb.png", W, H, 2);
+    OK(sheafWriteImage("capi_test_write_rgba.png", W, H, 4, px, 0));
+    check_png("capi_test_write_rgba.png", W, H, 6);
+
+    OK(sheafWriteImage("capi_test_write.exr", W, H, 4, px, 0));
+    CHECK(read_head("capi_test_write.exr", head, 4) == 4 && head[0] == 0x76 && head[1] == 0x2f &&
+              head[2] == 0x31 && head[3] == 0x01,
+          "capi_test_write.exr is not OpenEXR");
+    OK(sheafWriteImage("capi_test_write.jpg", W, H, 4, px, 1));
+    CHECK(read_head("capi_test_write.jpg", head, 2) == 2 && head[0] == 0xff && head[1] == 0xd8,
+          "capi_test_write.jpg is not JPEG");
+    OK(sheafWriteImage("capi_test_write.hdr", W, H, 1, px, 0));
+    CHECK(read_head("capi_test_write.hdr", head, 2) == 2 && head[0] == '#' && head[1] == '?',
+          "capi_test_write.hdr is not Radiance HDR");
+
+    expect_error(sheafWriteImage("capi_test_write.bogusext", W, H, 3, px, 1), SHEAF_ERROR_IO,
+                 "sheafWriteImage unknown extension", "capi_test_write.bogusext", ".png");
+    expect_error(sheafWriteImage("no/such/dir/capi_test_write.png", W, H, 3, px, 1),
+                 SHEAF_ERROR_IO, "sheafWriteImage unwritable path", "no/such/dir", NULL);
+    expect_error(sheafWriteImage("capi_test_write_bad.png", W, H, 5, px, 1),
+                 SHEAF_ERROR_INVALID_ARGUMENT, "sheafWriteImage 5 channels", "channels", "5");
+    expect_error(sheafWriteImage("capi_test_write_bad.png", 0, H, 3, px, 1),
+                 SHEAF_ERROR_INVALID_ARGUMENT, "sheafWriteImage width 0", "0x3", NULL);
+    expect_error(sheafWriteImage("capi_test_write_bad.png", W, H, 3, NULL, 1),
+                 SHEAF_ERROR_INVALID_ARGUMENT, "sheafWriteImage NULL pixels", "pixels", NULL);
+    expect_error(sheafWriteImage(NULL, W, H, 3, px, 1), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "sheafWriteImage NULL path", "path", NULL);
+    CHECK(read_head("capi_test_write_bad.png", head, 1) == 0, "a failed write left a file");
+}
+
 int main(void) {
     sheafSetErrorCallback(on_error, &g_callback_calls);
     test_version();
@@ -448,6 +522,7 @@ int main(void) {
     test_scene_errors();
     test_render_scene();
     test_crsh_matches_brute();
+    test_write_image();
     CHECK(g_callback_calls == g_expected_errors, "error callback called %d times for %d errors",
           g_callback_calls, g_expected_errors);
     sheafSetErrorCallback(NULL, NULL);

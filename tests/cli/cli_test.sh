@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# End-to-end tests of the render command line tool: outputs, statistics, presets and exit codes.
+# End-to-end tests of the render command line tool: outputs, statistics, presets, exit codes,
+# POV-Ray switches, --threads, -q and the progress bar.
 # Usage: cli_test.sh PATH/TO/render OUTPUT_DIR
 set -u
 
@@ -121,6 +122,66 @@ expect_in "$OUT/builtin_nosuch.err" "nosuch" "builtin:nosuch: stderr names it"
 # Render and image errors: exit 3.
 expect_rc bad_ext 3 builtin:cornell "${S[@]}" -o "$OUT/out.bogusext"
 expect_in "$OUT/bad_ext.err" "out.bogusext" "bad extension: stderr names the file"
+
+# json_value FILE KEY: a number from a flat stats JSON file.
+json_value() { sed -n "s/^ *\"$2\": *\([0-9.e+-]*\).*/\1/p" "$1"; }
+
+# POV-Ray switches: +W +H +O, +I, +A/-A (aa.samples 3 and 1), +L, -D/+D.
+expect_rc pov_size 0 builtin:cornell +W32 +H24 "+O$OUT/pov.png"
+expect_in "$OUT/pov_size.out" "wrote $OUT/pov.png (32x24, " "+W +H +O: size and file"
+expect_rc pov_input 0 +Ibuiltin:cornell -W 16 -H 16 -o "$OUT/pov_in.png" \
+    --stats-json "$OUT/pov_in.json"
+expect_in "$OUT/pov_in.json" '"scene.primitives": 790' "+I: the cornell scene"
+expect_rc pov_aa 0 builtin:cornell -W 16 -H 16 +A -o "$OUT/aa.png" --stats-json "$OUT/aa.json"
+[ "$(json_value "$OUT/aa.json" frame.samples_per_pixel)" = 9 ] && pass "+A: 3x3 samples" ||
+    fail "+A: samples per pixel $(json_value "$OUT/aa.json" frame.samples_per_pixel), expected 9"
+expect_rc pov_aa_threshold 0 builtin:cornell -W 16 -H 16 +A0.3 -o "$OUT/aa.png" \
+    --stats-json "$OUT/aa3.json"
+[ "$(json_value "$OUT/aa3.json" frame.samples_per_pixel)" = 9 ] && pass "+A0.3: 3x3 samples" ||
+    fail "+A0.3: samples per pixel $(json_value "$OUT/aa3.json" frame.samples_per_pixel)"
+expect_rc pov_aa_off 0 builtin:cornell -W 16 -H 16 +A -A -o "$OUT/aa.png" \
+    --stats-json "$OUT/aa0.json"
+[ "$(json_value "$OUT/aa0.json" frame.samples_per_pixel)" = 1 ] && pass "+A -A: one sample" ||
+    fail "+A -A: samples per pixel $(json_value "$OUT/aa0.json" frame.samples_per_pixel)"
+expect_rc pov_include 0 builtin:cornell "${S[@]}" +L/usr/share -D +D -o "$OUT/l.png"
+expect_rc pov_unknown 1 builtin:cornell "${S[@]}" +Q9 -o "$OUT/q.png"
+expect_in "$OUT/pov_unknown.err" "+Q9" "unknown POV-Ray switch: stderr names it"
+expect_rc pov_bad_width 1 builtin:cornell +Wide -o "$OUT/q.png"
+expect_in "$OUT/pov_bad_width.err" "+Wide" "+W without a number: stderr names it"
+expect_rc pov_two_scenes 1 builtin:cornell +Ibuiltin:office "${S[@]}"
+
+# --threads, -q, and no progress bar when stderr is not a terminal.
+expect_rc threads 0 builtin:cornell "${S[@]}" --threads 1 -o "$OUT/t.png"
+expect_rc threads_bad 1 builtin:cornell "${S[@]}" --threads -1 -o "$OUT/t.png"
+expect_in "$OUT/threads_bad.err" "threads" "--threads -1: stderr names threads"
+expect_rc quiet 0 builtin:cornell "${S[@]}" -q -o "$OUT/quiet.png"
+if [ -s "$OUT/quiet.out" ] || [ -s "$OUT/quiet.err" ] || [ ! -s "$OUT/quiet.png" ]; then
+    fail "-q: output printed or no image"
+else
+    pass "-q: silent, image written"
+fi
+if [ -s "$OUT/png.err" ]; then
+    fail "progress drawn when stderr is not a terminal"
+else
+    pass "no progress off a terminal"
+fi
+# On a terminal (script(1) gives a pseudo-terminal): the bar with the time left.
+if command -v script >/dev/null; then
+    script -qec "'$RENDER' builtin:cornell -W 32 -H 32 -o '$OUT/tty.png'" /dev/null \
+        >"$OUT/tty.out" 2>&1
+    expect_in "$OUT/tty.out" "left" "progress bar on a terminal shows the time left"
+    expect_in "$OUT/tty.out" "100%" "progress bar reaches 100%"
+    script -qec "'$RENDER' builtin:cornell -W 32 -H 32 -q -o '$OUT/tty.png'" /dev/null \
+        >"$OUT/ttyq.out" 2>&1
+    if grep -q "left" "$OUT/ttyq.out"; then
+        fail "-q still draws the progress bar"
+    else
+        pass "-q: no progress bar"
+    fi
+fi
+for text in "--compare" "--sweep" "+A0.3" "+L" "--threads" "-q"; do
+    expect_in "$OUT/help.out" "$text" "--help mentions $text"
+done
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

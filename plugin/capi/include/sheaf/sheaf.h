@@ -247,9 +247,10 @@ SHEAF_API SheafError sheafFrameSavePass(SheafFrame frame, const char* pass, cons
 /* Writes any image: width x height pixels of `channels` floats each (1 gray, 2 gray+alpha, 3 RGB,
  * 4 RGBA), top row first. The format follows the extension: .png .tif .tiff (8-bit, alpha kept),
  * .jpg .jpeg (8-bit, alpha dropped), .exr (half float), .hdr (float RGB; gray is repeated).
- * display_referred non-zero: the values are scene-linear and the sRGB transfer function is
- * applied to the colour channels (not alpha) before writing; 0: they are written as given.
- * 8-bit files clamp to [0, 1]. Needs no handle. */
+ * display_referred non-zero: the values are scene-linear and 8-bit files get the display
+ * transform of the OpenColorIO config's default display ($OCIO, else the shipped config: sRGB)
+ * on the colour channels (not alpha); 0: they are written as given. 8-bit files clamp to [0, 1];
+ * .exr and .hdr are always written as given. Needs no handle. */
 SHEAF_API SheafError sheafWriteImage(const char* path, int width, int height, int channels,
                                      const float* pixels, int display_referred);
 

@@ -1,0 +1,108 @@
+// The render tool's thin layer over the C ABI: errors, frame read-back, settings and scenes.
+#include "capi_util.h"
+
+#include <iostream>
+
+namespace render {
+
+int error(int code, const std::string& message) {
+    std::cerr << "render: error: " << message << "\n";
+    return code;
+}
+
+std::string last_error() {
+    const char* message = nullptr;
+    sheafGetLastError(&message);
+    return message && *message ? message : "unknown error";
+}
+
+int render_error_code(SheafError e) {
+    return e == SHEAF_ERROR_SCENE ? kScene : e == SHEAF_ERROR_INVALID_SETTING ? kUsage : kRender;
+}
+
+std::optional<std::string> frame_text(SheafFrame frame, const char* what) {
+    size_t needed = 0;
+    if (sheafFrameGetText(frame, what, nullptr, 0, &needed) != SHEAF_OK) return std::nullopt;
+    std::string text(needed, '\0');
+    if (sheafFrameGetText(frame, what, text.data(), text.size(), &needed) != SHEAF_OK)
+        return std::nullopt;
+    text.resize(needed - 1);
+    return text;
+}
+
+std::optional<std::vector<float>> frame_pass(SheafFrame frame, const char* pass, int channels) {
+    int w = 0, h = 0;
+    if (sheafFrameGetSize(frame, &w, &h) != SHEAF_OK) return std::nullopt;
+    std::vector<float> data(size_t(w) * size_t(h) * size_t(channels));
+    if (sheafFrameGetPass(frame, pass, data.data(), data.size()) != SHEAF_OK) return std::nullopt;
+    return data;
+}
+
+std::vector<std::pair<std::string, double>> frame_stats(SheafFrame frame) {
+    std::vector<std::pair<std::string, double>> out;
+    size_t count = 0;
+    if (sheafFrameGetStatCount(frame, &count) != SHEAF_OK) return out;
+    for (size_t i = 0; i < count; ++i) {
+        const char* key = nullptr;
+        double value = 0;
+        if (sheafFrameGetStat(frame, i, &key, &value) == SHEAF_OK && key)
+            out.emplace_back(key, value);
+    }
+    return out;
+}
+
+int apply_settings(SheafRenderer renderer, const std::string& preset, const CommonSettings& s) {
+    if (!preset.empty() && sheafRendererLoadPreset(renderer, preset.c_str()) != SHEAF_OK)
+        return error(kUsage, "preset '" + preset + "': " + last_error());
+    if (s.width && sheafRendererSetInt(renderer, "width", *s.width) != SHEAF_OK)
+        return error(kUsage, "-W: " + last_error());
+    if (s.height && sheafRendererSetInt(renderer, "height", *s.height) != SHEAF_OK)
+        return error(kUsage, "-H: " + last_error());
+    if (s.threads && sheafRendererSetInt(renderer, "threads", *s.threads) != SHEAF_OK)
+        return error(kUsage, "--threads: " + last_error());
+    for (const std::string& set : s.sets) {
+        const size_t eq = set.find('=');
+        if (eq == std::string::npos || eq == 0)
+            return error(kUsage, "--set '" + set + "': expected key=value");
+        const std::string key = set.substr(0, eq), value = set.substr(eq + 1);
+        if (sheafRendererSetString(renderer, key.c_str(), value.c_str()) != SHEAF_OK)
+            return error(kUsage, "--set " + set + ": " + last_error());
+    }
+    return kOk;
+}
+
+std::string scene_label(const std::string& path) {
+    return path.empty() ? std::string("builtin:") + sheafGetDefaultSceneName() : path;
+}
+
+int load_scene(SheafScene scene, const std::string& path) {
+    const std::string label = scene_label(path);
+    if (sheafSceneLoadFile(scene, label.c_str()) != SHEAF_OK) return error(kScene, last_error());
+    if (sheafSceneCommit(scene) != SHEAF_OK) return error(kScene, label + ": " + last_error());
+    return kOk;
+}
+
+bool is_setting_key(const std::string& key) {
+    size_t count = 0;
+    sheafGetSettingCount(&count);
+    for (size_t i = 0; i < count; ++i) {
+        const char* k = nullptr;
+        if (sheafGetSettingInfo(i, &k, nullptr, nullptr, nullptr) == SHEAF_OK && k && key == k)
+            return true;
+    }
+    return false;
+}
+
+std::string setting_keys() {
+    std::string out;
+    size_t count = 0;
+    sheafGetSettingCount(&count);
+    for (size_t i = 0; i < count; ++i) {
+        const char* k = nullptr;
+        if (sheafGetSettingInfo(i, &k, nullptr, nullptr, nullptr) == SHEAF_OK && k)
+            out += (out.empty() ? "" : ", ") + std::string(k);
+    }
+    return out;
+}
+
+} // namespace render

@@ -1,0 +1,143 @@
+// The render tool's options through CLI11, after POV-Ray switch translation.
+#include "options.h"
+
+#include "pov_switches.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+
+namespace render {
+
+namespace {
+
+const char* const kFooter =
+    R"(Settings apply in this order: the preset, then -W/-H/--threads, then each --set
+(and +A/-A) in the order given.
+Exit codes: 0 ok, 1 usage or settings, 2 scene, 3 render, image write, or --compare images
+that differ.
+
+POV-Ray switches (translated before parsing; no space between switch and value):
+  +W640 +H480      image size (-W 640 -H 480)
+  +Ofile.png       output file (-o file.png)
+  +Ifile           input scene (--input file)
+  +A, +A0.3        anti-aliasing on: aa.samples=3, 3x3 samples per pixel, POV-Ray's default
+                   antialias depth; the threshold is accepted and ignored (sampling is not
+                   adaptive)
+  -A               anti-aliasing off: aa.samples=1
+  +L<dir>          include path: accepted and stored; scene files are not read yet
+  -D, +D           display: accepted, does nothing (render never opens a window)
+
+Examples:
+  render                                         the default built-in scene to render.png
+  render builtin:cornell -W 640 -H 480 -o cornell.exr
+  render builtin:office +W640 +H480 +A +Ooffice.png
+  render builtin:office --preset rah --stats     the Roger et al. hierarchy, with statistics
+  render --set accel=brute --set trace.depth=2 --stats-json stats.json
+  render --compare crsh,rah,brute builtin:cornell --report cmp
+                                                 the papers' tables side by side, images
+                                                 checked identical, cmp/report.html
+  render --sweep hierarchy.depth=1..4 hierarchy.arity=2,4,8,16 builtin:office --report sw
+                                                 the grid's tests and times, the best named
+  render --list-settings                         every key, its default and what it allows
+See docs/cli.md.)";
+
+} // namespace
+
+std::optional<int> parse_options(int argc, char** argv, Options& o) {
+    std::vector<std::string> raw(argv + 1, argv + argc);
+    for (const std::string& a : raw) o.command_line += (o.command_line.empty() ? "" : " ") + a;
+    o.command_line = "render " + o.command_line;
+    std::vector<std::string> args;
+    try {
+        args = translate_args(raw);
+    } catch (const SwitchError& e) {
+        return error(kUsage, std::string(e.what()) + " (see render --help)");
+    }
+
+    CLI::App app{"render: renders a scene with the Sheaf engine and writes an image; compares "
+                 "presets and sweeps settings with the papers' tables and an HTML report."};
+    app.name("render");
+    app.footer(kFooter);
+    std::string input;
+    int width = 0, height = 0, threads = 0;
+    CLI::Option* scene = app.add_option("scene", o.scene,
+                                        "builtin:NAME or a scene file (default: the built-in " +
+                                            std::string(sheafGetDefaultSceneName()) + " scene)");
+    CLI::Option* input_opt =
+        app.add_option("-i,--input", input, "the scene, as the positional argument (+IFILE)")
+            ->type_name("FILE");
+    CLI::Option* output = app.add_option("-o,--output", o.output,
+                                         "image file; the extension picks the format: .png .jpg "
+                                         ".tif .exr .hdr (+OFILE)")
+                              ->capture_default_str();
+    CLI::Option* w = app.add_option("-W,--width", width, "image width in pixels (+W)");
+    CLI::Option* h = app.add_option("-H,--height", height, "image height in pixels (+H)");
+    CLI::Option* t =
+        app.add_option("--threads", threads, "worker threads (setting threads; 0: every core)");
+    CLI::Option* preset =
+        app.add_option("--preset", o.preset, "a preset name (brute, rah, crsh, ...) or .xml file");
+    app.add_option("--set", o.settings.sets,
+                   "a setting, key=value; repeatable (see --list-settings)")
+        ->allow_extra_args(false)
+        ->type_name("KEY=VALUE");
+    CLI::Option* stats = app.add_flag("--stats", o.stats, "print the frame statistics as tables");
+    CLI::Option* stats_json =
+        app.add_option("--stats-json", o.stats_json, "write the frame statistics as JSON to FILE")
+            ->type_name("FILE");
+    CLI::Option* compare =
+        app.add_option("--compare", o.compare,
+                       "render the scene once per preset (comma separated: crsh,rah,brute), "
+                       "check the images agree (exit 3 if not) and print the tables side by side")
+            ->delimiter(',')
+            ->allow_extra_args(false)
+            ->type_name("PRESETS");
+    CLI::Option* sweep =
+        app.add_option("--sweep", o.sweep,
+                       "render over a grid of settings: KEY=A..B (integers) or KEY=V1,V2,...; "
+                       "several axes may follow one --sweep; --preset gives the base")
+            ->allow_extra_args(false)
+            ->type_name("KEY=VALUES");
+    CLI::Option* report =
+        app.add_option("--report", o.report,
+                       "with --compare or --sweep: write DIR/report.html, results.json, "
+                       "results.csv and the images")
+            ->type_name("DIR");
+    app.add_flag("-q,--quiet", o.quiet, "no progress bar and no 'wrote' lines");
+    app.add_option("--include-path", o.include_paths,
+                   "a directory for scene includes (+L); stored, scene files are not read yet")
+        ->allow_extra_args(false)
+        ->type_name("DIR");
+    bool no_display = false;
+    app.add_flag("--no-display", no_display, "accepted for POV-Ray's -D; does nothing");
+    app.add_flag("--list-settings", o.list_settings, "list every setting and exit");
+    app.add_flag("--version", o.version, "print the version and exit");
+
+    compare->excludes(sweep)
+        ->excludes(preset)
+        ->excludes(stats)
+        ->excludes(stats_json)
+        ->excludes(output);
+    sweep->excludes(stats)->excludes(stats_json)->excludes(output);
+    input_opt->excludes(scene);
+    try {
+        std::reverse(args.begin(), args.end()); // CLI11 takes the arguments reversed
+        app.parse(args);
+        if (report->count() && !compare->count() && !sweep->count())
+            throw CLI::ValidationError("--report", "needs --compare or --sweep");
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        return error(kUsage, std::string(e.what()) + " (see render --help)");
+    }
+    if (input_opt->count()) o.scene = input;
+    o.has_output = output->count() > 0;
+    if (w->count()) o.settings.width = width;
+    if (h->count()) o.settings.height = height;
+    if (t->count()) o.settings.threads = threads;
+    return std::nullopt;
+}
+
+} // namespace render

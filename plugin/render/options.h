@@ -1,0 +1,35 @@
+// The render tool's command line: every option, its help text with examples, and the parse
+// (POV-Ray switches are translated first, pov_switches.h).
+#pragma once
+
+#include "capi_util.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace render {
+
+struct Options {
+    std::string scene; ///< the positional scene, or +I/--input
+    std::string output = "render.png";
+    bool has_output = false;
+    std::string preset;
+    CommonSettings settings;
+    bool stats = false;
+    std::string stats_json;
+    bool list_settings = false;
+    bool version = false;
+    bool quiet = false;
+    std::vector<std::string> compare;       ///< preset names, in order
+    std::vector<std::string> sweep;         ///< KEY=VALUES axes, in order
+    std::string report;                     ///< --report DIR
+    std::vector<std::string> include_paths; ///< +L: stored; scene files are not read yet
+    std::string command_line;               ///< as typed, for the report
+};
+
+/// Parses the command line into `o`. Returns an exit code when the program should stop now
+/// (--help printed: 0; a usage error, already printed: 1), nothing to go on.
+std::optional<int> parse_options(int argc, char** argv, Options& o);
+
+} // namespace render

@@ -1,0 +1,116 @@
+// POV-Ray switch translation: each +X/-X word becomes the equivalent long option.
+#include "pov_switches.h"
+
+#include <cctype>
+#include <cstdlib>
+
+namespace render {
+
+namespace {
+
+bool is_number(const std::string& s) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    std::strtod(s.c_str(), &end);
+    return end && *end == '\0';
+}
+
+bool is_positive_integer(const std::string& s) {
+    if (s.empty()) return false;
+    for (char c : s)
+        if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+    return true;
+}
+
+/// A word after --sweep that is a grid axis: KEY=VALUES, not an option.
+bool is_sweep_axis(const std::string& s) {
+    const size_t eq = s.find('=');
+    return eq != std::string::npos && eq > 0 && s[0] != '-' && s[0] != '+';
+}
+
+/// Appends the translation of one POV-Ray switch (a word starting with + or one of -A, -D);
+/// returns false when `word` is not one.
+bool translate_switch(const std::string& word, std::vector<std::string>& out) {
+    if (word.size() < 2) return false;
+    const char sign = word[0], letter = char(std::toupper(static_cast<unsigned char>(word[1])));
+    const std::string rest = word.substr(2);
+    if (sign == '-') {
+        if (word[1] == 'A' && (rest.empty() || is_number(rest))) {
+            out.insert(out.end(), {"--set", "aa.samples=1"});
+            return true;
+        }
+        if (word == "-D") {
+            out.push_back("--no-display");
+            return true;
+        }
+        return false;
+    }
+    if (sign != '+') return false;
+    switch (letter) {
+    case 'W':
+    case 'H':
+        if (!is_positive_integer(rest))
+            throw SwitchError(std::string("POV-Ray switch '") + word + "': expected +" + letter +
+                              " followed by a number of pixels, e.g. +" + letter +
+                              (letter == 'W' ? "640" : "480"));
+        out.insert(out.end(), {std::string("-") + letter, rest});
+        return true;
+    case 'O':
+    case 'I':
+    case 'L':
+        if (rest.empty())
+            throw SwitchError(std::string("POV-Ray switch '") + word + "': expected +" + letter +
+                              (letter == 'L' ? "DIRECTORY" : "FILE") + " with no space");
+        out.insert(out.end(), {letter == 'O'   ? "-o"
+                               : letter == 'I' ? "--input"
+                                               : "--include-path",
+                               rest});
+        return true;
+    case 'A':
+        if (!rest.empty() && !is_number(rest))
+            throw SwitchError("POV-Ray switch '" + word +
+                              "': expected +A or +A followed by a threshold, e.g. +A0.3");
+        out.insert(out.end(), {"--set", "aa.samples=" + std::to_string(kPovAntialiasSamples)});
+        return true;
+    case 'D':
+        if (!rest.empty()) break;
+        out.push_back("--no-display");
+        return true;
+    default:
+        break;
+    }
+    throw SwitchError("unknown POV-Ray switch '" + word +
+                      "'; known: +W<n> +H<n> +O<file> +I<file> +A[threshold] -A +L<dir> +D -D");
+}
+
+} // namespace
+
+std::vector<std::string> translate_args(const std::vector<std::string>& args) {
+    std::vector<std::string> out;
+    bool in_sweep = false, axis_seen = false;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& word = args[i];
+        if (in_sweep && is_sweep_axis(word)) {
+            out.insert(out.end(), {"--sweep", word});
+            axis_seen = true;
+            continue;
+        }
+        // A --sweep with no axis after it is left for CLI11 to report.
+        if (in_sweep && !axis_seen) out.push_back("--sweep");
+        in_sweep = false;
+        if (word == "--") {
+            out.insert(out.end(), args.begin() + long(i), args.end());
+            return out;
+        }
+        if (word == "--sweep") {
+            in_sweep = true;
+            axis_seen = false;
+            continue;
+        }
+        if (!translate_switch(word, out)) out.push_back(word);
+    }
+    if (in_sweep && !axis_seen) out.push_back("--sweep");
+    return out;
+}
+
+} // namespace render

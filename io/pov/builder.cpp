@@ -1,0 +1,256 @@
+// PovModel -> sheaf::Scene (see builder.h).
+#include "io/pov/builder.h"
+
+#include "core/base/error.h"
+#include "core/scenes/shapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <random>
+#include <tuple>
+
+namespace sheaf::io::pov {
+
+Affine pov_to_sheaf() {
+    return Affine::scale({1, 1, -1});
+}
+
+namespace {
+
+struct Builder {
+    Parser& p;
+    Scene& scene;
+    double gamma = 1;
+    Affine flip = pov_to_sheaf();
+    std::map<std::vector<float>, uint32_t> materials;
+    std::map<uint32_t, Mesh> loose; // single triangles by material, in Sheaf world space
+    size_t names = 0;
+
+    double decode(double c) const { return gamma == 1 || c <= 0 ? c : std::pow(c, gamma); }
+    Vec3 decode(const Color5& c) const {
+        return Vec3(float(decode(c[0])), float(decode(c[1])), float(decode(c[2])));
+    }
+
+    uint32_t material(const PovTexture& t, double ior) {
+        Material m;
+        const PovFinish& f = t.finish;
+        m.color = decode(t.pigment);
+        m.transmission = float(std::clamp(t.pigment[3] + t.pigment[4], 0.0, 1.0));
+        const auto& al = p.model.ambient_light;
+        m.ambient =
+            float((f.ambient[0] + f.ambient[1] + f.ambient[2]) / 3 * (al[0] + al[1] + al[2]) / 3);
+        m.diffuse = float(f.diffuse);
+        if (f.phong > 0) {
+            m.specular = float(f.phong);
+            m.phong_exponent = float(std::max(1.0, f.phong_size));
+        } else if (f.specular > 0) {
+            m.specular = float(f.specular);
+            m.phong_exponent = float(std::clamp(1.0 / std::max(f.roughness, 1e-4), 1.0, 10000.0));
+        }
+        m.mirror = float(
+            std::clamp(std::max({f.reflection[0], f.reflection[1], f.reflection[2]}), 0.0, 1.0));
+        m.emission =
+            m.color * Vec3(float(f.emission[0]), float(f.emission[1]), float(f.emission[2]));
+        m.ior = float(ior > 0 ? ior : 1.0);
+        const std::vector<float> key = {m.color.x,    m.color.y,        m.color.z, m.emission.x,
+                                        m.emission.y, m.emission.z,     m.ambient, m.diffuse,
+                                        m.specular,   m.phong_exponent, m.mirror,  m.transmission,
+                                        m.ior};
+        if (auto it = materials.find(key); it != materials.end()) return it->second;
+        const uint32_t id = scene.add_material(m);
+        materials.emplace(key, id);
+        return id;
+    }
+
+    std::string name(const PovObject& o) {
+        return o.where.text + "@" + std::to_string(o.where.line) + "#" + std::to_string(names++);
+    }
+
+    void light(const PovObject& o) {
+        const PovLight& pl = o.light;
+        Light l = pl.light;
+        l.spot_falloff = std::clamp(l.spot_falloff, 0.01f, 180.0f);
+        l.spot_radius = std::clamp(l.spot_radius, 0.0f, l.spot_falloff);
+        l.color =
+            Vec3(float(decode(l.color.x)), float(decode(l.color.y)), float(decode(l.color.z)));
+        const Vec3 aim = pl.point_at - pl.light.position;
+        if (l.type != LightType::Point)
+            l.direction = length(aim) > 0 ? normalize(flip.vector(aim)) : Vec3(0, -1, 0);
+        if (!pl.area || (pl.n1 == 1 && pl.n2 == 1)) {
+            l.position = flip.point(pl.light.position);
+            scene.add_light(l);
+            return;
+        }
+        std::mt19937 rng(12345); // fixed: the same scene gives the same lights
+        std::uniform_real_distribution<float> jitter(-0.5f, 0.5f);
+        const int n = pl.n1 * pl.n2;
+        l.color = l.color / float(n);
+        for (int i = 0; i < pl.n1; ++i)
+            for (int j = 0; j < pl.n2; ++j) {
+                const float u = pl.n1 > 1 ? (i + 0.5f + jitter(rng)) / pl.n1 - 0.5f : 0.0f;
+                const float v = pl.n2 > 1 ? (j + 0.5f + jitter(rng)) / pl.n2 - 0.5f : 0.0f;
+                Light s = l;
+                s.position = flip.point(pl.light.position + pl.axis1 * u + pl.axis2 * v);
+                scene.add_light(s);
+            }
+    }
+
+    void mesh(const PovObject& o, const PovTexture& tex, double ior) {
+        const uint32_t mat = material(tex, ior);
+        const Affine t = flip * o.local;
+        if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty()) {
+            append_mesh(loose[mat], *o.mesh, t);
+            return;
+        }
+        scene.add_mesh_object(name(o), *o.mesh, mat, t);
+    }
+
+    /// Adds the CSG node for `o` to `so`; -1 when nothing of it can be shown analytically.
+    int node(const PovObject& o, const PovTexture& parent, double parent_ior, ShapeObject& so,
+             bool in_union) {
+        const PovTexture& tex = o.texture ? *o.texture : parent;
+        const double ior = o.ior > 0 ? o.ior : parent_ior;
+        switch (o.kind) {
+        case PovKind::Light:
+            light(o);
+            return -1;
+        case PovKind::Mesh:
+            if (in_union) {
+                if (o.inverse) p.unsupported(o.where, "inverse of a mesh (ignored)");
+                mesh(o, tex, ior);
+            } else {
+                p.unsupported(o.where, "mesh inside intersection or difference (left out)");
+            }
+            return -1;
+        case PovKind::Shape: {
+            if (std::fabs(o.local.determinant()) < 1e-30f) {
+                p.unsupported(o.where, "degenerate shape (a zero scale; left out)");
+                return -1;
+            }
+            CsgNode n;
+            n.op = CsgOp::Leaf;
+            n.shape = o.shape;
+            n.transform = o.local;
+            n.material = material(tex, ior);
+            n.inverse = o.inverse;
+            so.nodes.push_back(n);
+            return int(so.nodes.size() - 1);
+        }
+        case PovKind::Csg:
+            break;
+        }
+        const bool uni = o.op == CsgOp::Union || o.op == CsgOp::Merge;
+        if (o.op == CsgOp::Merge)
+            for (const PovObject& c : o.children)
+                if (c.kind == PovKind::Mesh) {
+                    p.unsupported(c.where, "mesh inside merge (rendered as in a union)");
+                    break;
+                }
+        std::vector<uint32_t> kids;
+        for (size_t i = 0; i < o.children.size(); ++i) {
+            const int k = node(o.children[i], tex, ior, so, uni && in_union);
+            if (k >= 0)
+                kids.push_back(uint32_t(k));
+            else if (o.op == CsgOp::Difference && i == 0 && o.children[0].kind != PovKind::Light)
+                return -1; // nothing to cut from
+        }
+        if (kids.empty()) return -1;
+        if (kids.size() == 1 && uni && !o.inverse) return int(kids[0]);
+        CsgNode n;
+        n.op = o.op;
+        n.inverse = o.inverse;
+        n.children = kids;
+        so.nodes.push_back(n);
+        return int(so.nodes.size() - 1);
+    }
+
+    void top(const PovObject& o, const PovTexture& parent, double parent_ior) {
+        const PovTexture& tex = o.texture ? *o.texture : parent;
+        const double ior = o.ior > 0 ? o.ior : parent_ior;
+        if (o.kind == PovKind::Light) return light(o);
+        if (o.kind == PovKind::Mesh) {
+            if (o.inverse) p.unsupported(o.where, "inverse of a mesh (ignored)");
+            return mesh(o, tex, ior);
+        }
+        if (o.kind == PovKind::Csg && o.op == CsgOp::Union && !o.inverse) {
+            // A union of separate objects renders exactly as those objects.
+            for (const PovObject& c : o.children) top(c, tex, ior);
+            return;
+        }
+        ShapeObject built; // children before parents
+        const int root = node(o, parent, parent_ior, built, true);
+        if (root < 0) return;
+        // The core wants parents before children: copy the tree in preorder from the root.
+        ShapeObject so;
+        so.name = name(o);
+        so.transform = flip;
+        std::vector<uint32_t> stack;
+        std::function<uint32_t(uint32_t)> copy = [&](uint32_t i) {
+            const uint32_t at = uint32_t(so.nodes.size());
+            so.nodes.push_back(built.nodes[i]);
+            std::vector<uint32_t> kids;
+            for (uint32_t c : built.nodes[i].children) kids.push_back(copy(c));
+            so.nodes[at].children = kids;
+            return at;
+        };
+        so.root = copy(uint32_t(root));
+        scene.add_shape_object(std::move(so));
+    }
+
+    void camera() {
+        const PovCamera& c = p.model.camera;
+        Vec3 loc = c.location, dir = c.direction, right = c.right, up = c.up;
+        if (c.angle > 0 && c.angle < 180 && !c.orthographic)
+            dir = normalize(dir) * (0.5f * length(right) / std::tan(float(c.angle * M_PI / 360)));
+        if (c.has_look_at && length(c.look_at - loc) > 0) {
+            const float dl = length(dir), rl = length(right), ul = length(up);
+            dir = normalize(c.look_at - loc) * dl;
+            Vec3 r = cross(c.sky, dir);
+            if (length(r) == 0) r = Vec3(1, 0, 0);
+            right = normalize(r) * rl;
+            up = normalize(cross(dir, right)) * ul;
+        }
+        loc = c.transform.point(loc);
+        dir = c.transform.vector(dir);
+        up = c.transform.vector(up);
+        Camera& out = scene.camera;
+        out.position = flip.point(loc);
+        out.look_at = flip.point(loc + dir);
+        out.up = length(up) > 0 ? normalize(flip.vector(up)) : Vec3(0, 1, 0);
+        if (c.orthographic) {
+            out.projection = Projection::Orthographic;
+            out.ortho_height = length(up) > 0 ? length(up) : 1.0f;
+            if (c.angle > 0) // POV-Ray: the angle sets the width seen at the look_at distance
+                out.ortho_height = 2 * length(dir) * std::tan(float(c.angle * M_PI / 360)) *
+                                   length(up) / std::max(length(right), 1e-6f);
+        } else {
+            out.projection = Projection::Perspective;
+            out.fov_y_degrees =
+                float(2 * std::atan(0.5 * length(up) / std::max(length(dir), 1e-6f)) * 180 / M_PI);
+        }
+    }
+};
+
+} // namespace
+
+double build_scene(Parser& p, Scene& scene) {
+    Builder b{p, scene, 1.0, pov_to_sheaf(), {}, {}, 0};
+    const PovModel& m = p.model;
+    b.gamma = m.assumed_gamma > 0                    ? m.assumed_gamma
+              : (m.version_given && m.version < 3.7) ? 2.2
+                                                     : 1.0;
+    for (const PovObject& o : m.objects) b.top(o, m.default_texture, 0);
+    for (auto& [mat, mesh] : b.loose) {
+        mesh.normals.clear();
+        scene.add_mesh_object("triangles#" + std::to_string(mat), std::move(mesh), mat, {});
+    }
+    b.camera();
+    scene.background = b.decode(m.background);
+    if (m.max_trace_level >= 0)
+        scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));
+    return b.gamma;
+}
+
+} // namespace sheaf::io::pov

@@ -1,0 +1,235 @@
+// Built-in functions of the scene language: float math (shared with user functions),
+// vectors (vlength, vcross, vrotate ...), strings (concat, str, substr ...), random streams,
+// arrays (dimension_size) and defined().
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+namespace sheaf::io::pov {
+
+namespace {
+
+const std::set<std::string>& names() {
+    static const std::set<std::string> s = {"vlength",     "vnormalize", "vdot",
+                                            "vcross",      "vrotate",    "vaxis_rotate",
+                                            "vturbulence", "concat",     "str",
+                                            "vstr",        "chr",        "strlen",
+                                            "substr",      "strupr",     "strlwr",
+                                            "val",         "asc",        "file_exists",
+                                            "rand",        "seed",       "dimension_size",
+                                            "dimensions",  "defined",    "inside",
+                                            "trace",       "min_extent", "max_extent",
+                                            "bitwise_and", "bitwise_or", "bitwise_xor",
+                                            "prod",        "sum",        "datetime",
+                                            "now"};
+    return s;
+}
+
+std::string format_float(double d, int width, int precision) {
+    char buf[128];
+    const bool zero = width < 0;
+    const int w = std::min(std::abs(width), 60);
+    if (precision < 0) {
+        std::snprintf(buf, sizeof buf, zero ? "%0*g" : "%*g", w, d);
+    } else {
+        std::snprintf(buf, sizeof buf, zero ? "%0*.*f" : "%*.*f", w, std::min(precision, 40), d);
+    }
+    return buf;
+}
+
+Vec3 rotate_xyz(Vec3 v, Vec3 deg) {
+    const Affine r = Affine::rotate({0, 0, 1}, deg.z * float(M_PI / 180)) *
+                     Affine::rotate({0, 1, 0}, deg.y * float(M_PI / 180)) *
+                     Affine::rotate({1, 0, 0}, deg.x * float(M_PI / 180));
+    return r.vector(v);
+}
+
+} // namespace
+
+bool Parser::builtin_call(const Token& t, Value& out) {
+    const std::string& n = t.text;
+    const bool math = is_float_builtin(n);
+    if (!math && !names().count(n)) return false;
+    advance();
+    if (n == "now") {
+        out = Value::number(0);
+        return true;
+    }
+    expect_sym("(", "'(' after " + n);
+    if (n == "defined") {
+        const Token id = raw();
+        if (id.kind != TokKind::Ident) error_expected(id, "an identifier");
+        advance();
+        bool d = lookup(id.text) != nullptr || find_macro(id.text) != nullptr;
+        if (is_sym_tok(raw(), "[")) { // defined(A[i])
+            const Value* a = lookup(id.text);
+            if (!a) error_at(id, "'" + id.text + "' is not declared");
+            Value probe = *a;
+            const ArrayValue& arr = a->as<ArrayValue>();
+            size_t flat = 0;
+            for (size_t k = 0; k < arr.sizes.size(); ++k) {
+                expect_sym("[");
+                const double i = parse_float();
+                expect_sym("]");
+                flat = flat * arr.sizes[k] + size_t(std::clamp(i, 0.0, double(arr.sizes[k] - 1)));
+            }
+            d = arr.elements[flat].type != VType::None;
+        }
+        expect_sym(")");
+        out = Value::number(d);
+        return true;
+    }
+    std::vector<Value> args;
+    std::vector<Token> at;
+    if (!accept_sym(")")) {
+        for (;;) {
+            at.push_back(peek());
+            args.push_back(parse_rvalue());
+            if (accept_sym(")")) break;
+            expect_sym(",", "',' or ')'");
+        }
+    }
+    auto need = [&](size_t k) {
+        if (args.size() != k)
+            error_at(t, n + " takes " + std::to_string(k) + " arguments, not " +
+                            std::to_string(args.size()));
+    };
+    auto num = [&](size_t i) {
+        if (args[i].type != VType::Float) error_expected(at[i], "a float");
+        return args[i].v[0];
+    };
+    auto vec = [&](size_t i) {
+        const Value& v = args[i];
+        if (!v.numeric()) error_expected(at[i], "a vector");
+        if (v.type == VType::Float) return Vec3(float(v.v[0]));
+        return Vec3(float(v.v[0]), float(v.v[1]), float(v.dim > 2 ? v.v[2] : 0));
+    };
+    auto str = [&](size_t i) -> const std::string& {
+        if (args[i].type != VType::String) error_expected(at[i], "a string");
+        return args[i].str;
+    };
+    auto vout = [](Vec3 v) { return Value::vec3(v.x, v.y, v.z); };
+    if (math) {
+        std::vector<double> a;
+        for (size_t i = 0; i < args.size(); ++i) a.push_back(num(i));
+        double r = 0;
+        if (!eval_builtin(n, a, r))
+            error_at(t, n + " does not take " + std::to_string(a.size()) + " arguments");
+        out = Value::number(r);
+    } else if (n == "vlength") {
+        need(1);
+        out = Value::number(length(vec(0)));
+    } else if (n == "vnormalize") {
+        need(1);
+        const Vec3 v = vec(0);
+        out = length(v) > 0 ? vout(v / length(v)) : vout(v);
+    } else if (n == "vdot") {
+        need(2);
+        out = Value::number(dot(vec(0), vec(1)));
+    } else if (n == "vcross") {
+        need(2);
+        out = vout(cross(vec(0), vec(1)));
+    } else if (n == "vrotate") {
+        need(2);
+        out = vout(rotate_xyz(vec(0), vec(1)));
+    } else if (n == "vaxis_rotate") {
+        need(3);
+        out = vout(Affine::rotate(vec(1), float(num(2) * M_PI / 180)).vector(vec(0)));
+    } else if (n == "vturbulence") {
+        unsupported(t, "vturbulence (gives <0,0,0>)");
+        out = Value::vec3(0, 0, 0);
+    } else if (n == "concat") {
+        std::string s;
+        for (size_t i = 0; i < args.size(); ++i) s += str(i);
+        charge(0, t);
+        if (s.size() > (size_t(256) << 20)) error_at(t, "a string longer than 256 MiB");
+        out = Value::string(std::move(s));
+    } else if (n == "str") {
+        need(3);
+        out = Value::string(format_float(num(0), int(num(1)), int(num(2))));
+    } else if (n == "vstr") {
+        need(5);
+        const Value& v = args[1];
+        std::string s;
+        for (int i = 0; i < int(num(0)) && i < 5; ++i)
+            s += (i ? str(2) : "") +
+                 format_float(v.dim == 1 ? v.v[0] : v.v[i], int(num(3)), int(num(4)));
+        out = Value::string(s);
+    } else if (n == "chr") {
+        need(1);
+        out = Value::string(std::string(1, char(int(num(0)))));
+    } else if (n == "strlen") {
+        need(1);
+        out = Value::number(double(str(0).size()));
+    } else if (n == "substr") {
+        need(3);
+        const std::string& s = str(0);
+        const double p = num(1), l = num(2);
+        if (p < 1 || l < 0 || p - 1 + l > double(s.size()))
+            error_at(t, "substr outside the string (length " + std::to_string(s.size()) + ")");
+        out = Value::string(s.substr(size_t(p) - 1, size_t(l)));
+    } else if (n == "strupr" || n == "strlwr") {
+        need(1);
+        std::string s = str(0);
+        for (char& c : s) c = char(n == "strupr" ? toupper(c) : tolower(c));
+        out = Value::string(s);
+    } else if (n == "val") {
+        need(1);
+        out = Value::number(std::atof(str(0).c_str()));
+    } else if (n == "asc") {
+        need(1);
+        out = Value::number(str(0).empty() ? 0 : double((unsigned char)str(0)[0]));
+    } else if (n == "file_exists") {
+        need(1);
+        namespace fs = std::filesystem;
+        const fs::path p = str(0);
+        bool e = fs::exists(p.is_absolute() ? p : fs::path(scene_dir_) / p);
+        for (const std::string& d : options_.include_paths) e = e || fs::exists(fs::path(d) / p);
+        out = Value::number(e);
+    } else if (n == "seed") {
+        need(1);
+        rand_streams_.push_back(uint64_t(int64_t(num(0))) * 2654435761ull + 1);
+        out = Value::number(double(rand_streams_.size() - 1));
+    } else if (n == "rand") {
+        need(1);
+        const double s = num(0);
+        if (s < 0 || size_t(s) >= rand_streams_.size())
+            error_at(at[0], "rand of a stream that seed() did not make");
+        uint64_t& x = rand_streams_[size_t(s)]; // 64-bit LCG, top 53 bits
+        x = x * 6364136223846793005ull + 1442695040888963407ull;
+        out = Value::number(double(x >> 11) / double(1ull << 53));
+    } else if (n == "dimension_size" || n == "dimensions") {
+        if (args.empty() || args[0].type != VType::Array) error_expected(at[0], "an array");
+        const ArrayValue& a = args[0].as<ArrayValue>();
+        if (n == "dimensions") {
+            out = Value::number(double(a.sizes.size()));
+        } else {
+            need(2);
+            const double d = num(1);
+            out = Value::number(
+                d >= 1 && size_t(d) <= a.sizes.size() ? double(a.sizes[size_t(d) - 1]) : 0.0);
+        }
+    } else if (n == "bitwise_and" || n == "bitwise_or" || n == "bitwise_xor") {
+        long r = long(num(0));
+        for (size_t i = 1; i < args.size(); ++i) {
+            const long b = long(num(i));
+            r = n == "bitwise_and" ? (r & b) : n == "bitwise_or" ? (r | b) : (r ^ b);
+        }
+        out = Value::number(double(r));
+    } else if (n == "min_extent" || n == "max_extent" || n == "trace") {
+        unsupported(t, n + " (gives <0,0,0>)");
+        out = Value::vec3(0, 0, 0);
+    } else { // inside, prod, sum, datetime
+        unsupported(t, n + " (gives 0)");
+        out = n == "datetime" ? Value::string("") : Value::number(0);
+    }
+    return true;
+}
+
+} // namespace sheaf::io::pov

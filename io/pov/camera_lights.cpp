@@ -1,0 +1,336 @@
+// The camera, light sources, global_settings, background and the atmospheric blocks the core
+// cannot show (warned), and the top level: statements and declared values.
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <cmath>
+
+namespace sheaf::io::pov {
+
+void Parser::parse_camera(PovCamera& c) {
+    expect_sym("{");
+    Value declared;
+    if (accept_declared(VType::Camera, declared, "a camera")) c = declared.as<PovCamera>();
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        Affine m;
+        if (parse_transform_item(m)) {
+            c.transform = m * c.transform;
+            continue;
+        }
+        if (t.kind != TokKind::Ident) error_expected(t, "a camera item or '}'");
+        const std::string& k = t.text;
+        advance();
+        if (k == "perspective")
+            c.orthographic = false;
+        else if (k == "orthographic")
+            c.orthographic = true;
+        else if (k == "location")
+            c.location = parse_vector();
+        else if (k == "look_at")
+            c.look_at = parse_vector(), c.has_look_at = true;
+        else if (k == "right")
+            c.right = parse_vector();
+        else if (k == "up")
+            c.up = parse_vector();
+        else if (k == "direction")
+            c.direction = parse_vector();
+        else if (k == "sky")
+            c.sky = parse_vector();
+        else if (k == "angle") {
+            c.angle = parse_float();
+            if (accept_sym(",")) parse_float(); // spherical: the vertical angle
+        } else if (k == "focal_point" || k == "aperture" || k == "blur_samples" ||
+                   k == "confidence" || k == "variance") {
+            unsupported(t, "focal blur ('" + k + "', ignored)");
+            parse_expr();
+            if (k == "blur_samples" && accept_sym(",")) parse_expr();
+        } else if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" ||
+                   k == "panoramic" || k == "cylinder" || k == "spherical" || k == "mesh_camera") {
+            unsupported(t, "camera type '" + k + "' (a perspective camera is used)");
+            if (k == "cylinder") parse_float();
+            if (k == "mesh_camera") skip_block();
+        } else if (k == "normal") {
+            unsupported(t, "camera normal");
+            skip_block();
+        } else {
+            error_expected(t, "a camera item (location, look_at, angle ...)");
+        }
+    }
+}
+
+void Parser::parse_light(const Token& kw, PovObject& o) {
+    o.kind = PovKind::Light;
+    o.where = kw;
+    expect_sym("{");
+    Value declared;
+    const Token first = peek();
+    if (accept_declared(VType::Object, declared, "a light")) {
+        if (declared.as<PovObject>().kind != PovKind::Light) error_expected(first, "a light");
+        o = declared.as<PovObject>();
+    } else {
+        o.light.light.position = parse_vector();
+        accept_sym(",");
+        const Color5 c = parse_color();
+        o.light.light.color = Vec3(float(c[0]), float(c[1]), float(c[2]));
+    }
+    PovLight& l = o.light;
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        Affine m;
+        if (parse_transform_item(m)) {
+            apply_transform(o, m);
+            continue;
+        }
+        if (t.kind != TokKind::Ident) error_expected(t, "a light item or '}'");
+        const std::string& k = t.text;
+        advance();
+        if (k == "spotlight")
+            l.light.type = LightType::Spot;
+        else if (k == "parallel")
+            l.light.type = LightType::Parallel;
+        else if (k == "cylinder") {
+            unsupported(t, "cylindrical light (a spotlight is used)");
+            l.light.type = LightType::Spot;
+        } else if (k == "point_at")
+            l.point_at = parse_vector();
+        else if (k == "radius")
+            l.light.spot_radius = float(parse_float());
+        else if (k == "falloff")
+            l.light.spot_falloff = float(parse_float());
+        else if (k == "tightness")
+            l.light.spot_tightness = float(parse_float());
+        else if (k == "fade_distance")
+            l.light.fade_distance = float(parse_float());
+        else if (k == "fade_power")
+            l.light.fade_power = float(parse_float());
+        else if (k == "shadowless")
+            l.light.shadowless = true;
+        else if (k == "area_light") {
+            l.area = true;
+            l.axis1 = parse_vector();
+            accept_sym(",");
+            l.axis2 = parse_vector();
+            accept_sym(",");
+            l.n1 = std::max(1, int(parse_float()));
+            accept_sym(",");
+            l.n2 = std::max(1, int(parse_float()));
+            if (size_t(l.n1) * size_t(l.n2) > 4096)
+                error_at(t, "an area light of more than 4096 samples");
+        } else if (k == "adaptive") {
+            parse_float();
+        } else if (k == "area_illumination") {
+            parse_bool_opt(true);
+        } else if (k == "jitter" || k == "circular" || k == "orient" || k == "media_interaction" ||
+                   k == "media_attenuation") {
+            parse_bool_opt(true);
+        } else if (k == "looks_like" || k == "projected_through") {
+            unsupported(t, k + " (ignored)");
+            skip_block();
+        } else if (k == "photons") {
+            skip_block();
+        } else {
+            error_expected(t, "a light item (spotlight, point_at, area_light ...)");
+        }
+    }
+}
+
+void Parser::parse_global_settings() {
+    expect_sym("{");
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        if (t.kind != TokKind::Ident) error_expected(t, "a global setting or '}'");
+        const std::string& k = t.text;
+        advance();
+        if (k == "assumed_gamma") {
+            model.assumed_gamma = parse_float();
+        } else if (k == "max_trace_level") {
+            model.max_trace_level = int(parse_float());
+        } else if (k == "ambient_light") {
+            const Color5 c = parse_color();
+            model.ambient_light = {c[0], c[1], c[2]};
+        } else if (k == "radiosity" || k == "photons" || k == "subsurface") {
+            unsupported(t, k);
+            if (is_sym_tok(peek(), "{")) skip_block();
+        } else if (k == "irid_wavelength") {
+            parse_color();
+        } else if (k == "charset") {
+            next();
+        } else if (k == "adc_bailout" || k == "number_of_waves" || k == "noise_generator" ||
+                   k == "max_intersections" || k == "hf_gray_16" || k == "mm_per_unit") {
+            if (starts_expression(peek())) parse_expr();
+        } else {
+            error_expected(t, "a global setting (assumed_gamma, max_trace_level ...)");
+        }
+    }
+}
+
+void Parser::parse_background() {
+    expect_sym("{");
+    model.background = parse_color();
+    expect_sym("}");
+}
+
+void Parser::parse_atmospheric(const Token& kw) {
+    if (kw.text == "sky_sphere") {
+        // Approximated by its average pigment as the background.
+        unsupported(kw, "sky_sphere (its average colour becomes the background)");
+        expect_sym("{");
+        std::vector<Color5> colors;
+        for (;;) {
+            const Token t = peek();
+            if (accept_sym("}")) break;
+            Affine ignored;
+            if (parse_transform_item(ignored)) continue;
+            if (accept_kw("pigment")) {
+                Color5 c{0, 0, 0, 0, 0};
+                parse_pigment(c);
+                colors.push_back(c);
+            } else if (accept_kw("emission")) {
+                parse_color();
+            } else if (t.kind == TokKind::Ident && lookup(t.text)) {
+                advance();
+            } else {
+                error_expected(t, "pigment or '}'");
+            }
+        }
+        if (!colors.empty()) {
+            Color5 avg{0, 0, 0, 0, 0};
+            for (const Color5& c : colors)
+                for (int i = 0; i < 5; ++i) avg[i] += c[i] / double(colors.size());
+            model.background = avg;
+        }
+        return;
+    }
+    unsupported(kw, kw.text);
+    skip_block();
+}
+
+Value Parser::parse_rvalue() {
+    const Token t = peek();
+    if (t.kind == TokKind::Ident && !lookup(t.text)) {
+        const std::string& k = t.text;
+        if (is_object_start(t)) {
+            PovObject o;
+            if (!parse_object(o)) { // unsupported: a marker, so that uses are skipped
+                Value v;
+                v.type = VType::Other;
+                v.str = "object";
+                return v;
+            }
+            return Value::boxed(VType::Object, std::move(o));
+        }
+        if (k == "texture") {
+            advance();
+            Value v = Value::boxed(VType::Texture, parse_texture(model.default_texture));
+            while (is_kw_tok(peek_cont(), "texture")) { // layers: the first one is kept
+                advance();
+                parse_texture(model.default_texture);
+                v.v[1] = 1;
+            }
+            return v;
+        }
+        if (k == "material") {
+            advance();
+            PovObject holder;
+            holder.kind = PovKind::Csg;
+            expect_sym("{");
+            bool texture_here = false;
+            while (!accept_sym("}"))
+                if (!parse_modifier(holder, texture_here))
+                    error_expected(peek(), "texture, interior or '}' in material");
+            Value v = Value::boxed(VType::Texture,
+                                   holder.texture ? *holder.texture : model.default_texture);
+            v.v[0] = holder.ior;
+            return v;
+        }
+        if (k == "pigment") {
+            advance();
+            Color5 c = model.default_texture.pigment;
+            parse_pigment(c);
+            Value v = Value::color(c);
+            v.type = VType::Pigment;
+            return v;
+        }
+        if (k == "finish") {
+            advance();
+            PovFinish f = model.default_texture.finish;
+            parse_finish(f);
+            return Value::boxed(VType::Finish, f);
+        }
+        if (k == "interior") {
+            advance();
+            Value v;
+            v.type = VType::Interior;
+            v.v[0] = parse_interior();
+            return v;
+        }
+        if (k == "camera") {
+            advance();
+            PovCamera c;
+            parse_camera(c);
+            return Value::boxed(VType::Camera, c);
+        }
+        if (k == "color_map" || k == "colour_map") {
+            advance();
+            Value v = Value::color(parse_color_map());
+            v.type = VType::ColorMap;
+            return v;
+        }
+        if (k == "normal" || k == "fog" || k == "media" || k == "rainbow" || k == "sky_sphere" ||
+            k == "density" || k == "interior_texture" || k == "pigment_map" || k == "normal_map" ||
+            k == "slope_map" || k == "texture_map" || k == "spline" || k == "density_map" ||
+            k == "photons" || k == "radiosity" || k == "material_map") {
+            advance();
+            Value v;
+            v.type = VType::Other;
+            v.str = k;
+            skip_block(); // declared only; a use is warned where it happens
+            return v;
+        }
+    }
+    return parse_expr();
+}
+
+bool Parser::parse_statement() {
+    const Token t = peek();
+    if (t.kind == TokKind::End) return false;
+    if (is_sym_tok(t, ";")) { // stray semicolons after directives
+        advance();
+        return true;
+    }
+    if (is_object_start(t)) {
+        PovObject o;
+        if (parse_object(o)) model.objects.push_back(std::move(o));
+        return true;
+    }
+    if (t.kind != TokKind::Ident) error_expected(t, "an object, camera, light_source or directive");
+    const std::string& k = t.text;
+    if (k == "camera") {
+        advance();
+        parse_camera(model.camera);
+        model.has_camera = true;
+    } else if (k == "global_settings") {
+        advance();
+        parse_global_settings();
+    } else if (k == "default") { // the old spelling of #default
+        advance();
+        default_directive();
+    } else if (k == "background") {
+        advance();
+        parse_background();
+    } else if (k == "sky_sphere" || k == "fog" || k == "rainbow" || k == "media" ||
+               k == "photons" || k == "radiosity") {
+        advance();
+        parse_atmospheric(t);
+    } else {
+        error_expected(t, "an object, camera, light_source or directive");
+    }
+    return true;
+}
+
+} // namespace sheaf::io::pov

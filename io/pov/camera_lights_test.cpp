@@ -1,0 +1,116 @@
+// Tests of the camera (perspective and orthographic), the lights (point, spot, parallel,
+// fading, shadowless, area lights as samples), background and global_settings.
+#include "io/pov/pov_test_util.h"
+
+#include <cmath>
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::load_text;
+
+TEST(PovCamera, PerspectiveFromAngleAndLookAt) {
+    const PovResult r = load_text("camera { location <0, 2, -5> look_at <0, 2, 0> angle 90 "
+                                  "right x * 4/3 up y }");
+    const Camera& c = r.scene.camera;
+    EXPECT_EQ(c.projection, Projection::Perspective);
+    // POV-Ray's -z (in front of the scene) is Sheaf's +z.
+    EXPECT_FLOAT_EQ(c.position.z, 5);
+    EXPECT_FLOAT_EQ(c.position.y, 2);
+    EXPECT_LT(c.look_at.z, c.position.z);
+    EXPECT_NEAR(c.up.y, 1, 1e-6);
+    // Horizontal 90 degrees over a 4:3 frame: vertical 2 atan(0.75).
+    EXPECT_NEAR(c.fov_y_degrees, 2 * std::atan(0.75) * 180 / M_PI, 1e-3);
+}
+
+TEST(PovCamera, DirectionWithoutAngleAndSky) {
+    const PovResult r = load_text("camera { location 0 direction z * 2 up y right x sky y }");
+    EXPECT_NEAR(r.scene.camera.fov_y_degrees, 2 * std::atan(0.25) * 180 / M_PI, 1e-3);
+    EXPECT_NEAR(r.scene.camera.look_at.z, -2, 1e-5);
+}
+
+TEST(PovCamera, DefaultAndOrthographic) {
+    EXPECT_NEAR(load_text("").scene.camera.fov_y_degrees, 2 * std::atan(0.5) * 180 / M_PI, 1e-3);
+    const PovResult r = load_text("camera { orthographic location <0, 0, -10> look_at 0 "
+                                  "up y * 6 right x * 8 translate x }");
+    EXPECT_EQ(r.scene.camera.projection, Projection::Orthographic);
+    EXPECT_FLOAT_EQ(r.scene.camera.ortho_height, 6);
+    EXPECT_FLOAT_EQ(r.scene.camera.position.x, 1);
+    EXPECT_FLOAT_EQ(r.scene.camera.position.z, 10);
+}
+
+TEST(PovCamera, DeclaredCameras) {
+    const PovResult r = load_text("#declare C = camera { location <1, 2, 3> look_at 0 }\n"
+                                  "camera { C translate y }");
+    EXPECT_FLOAT_EQ(r.scene.camera.position.y, 3);
+    EXPECT_FLOAT_EQ(r.scene.camera.position.z, -3);
+}
+
+TEST(PovLights, PointSpotParallel) {
+    const PovResult r = load_text(
+        "light_source { <1, 2, 3>, rgb <1, 0.5, 0.25> fade_distance 4 fade_power 2 shadowless }\n"
+        "light_source { <0, 10, 0> color rgb 1 spotlight point_at <0, 0, 0> radius 10 falloff 20 "
+        "tightness 5 }\n"
+        "light_source { <0, 0, -10> rgb 1 parallel point_at <0, 0, 0> }\n");
+    ASSERT_EQ(r.scene.lights.size(), 3u);
+    const Light& p = r.scene.lights[0];
+    EXPECT_EQ(p.type, LightType::Point);
+    EXPECT_FLOAT_EQ(p.position.z, -3);
+    EXPECT_FLOAT_EQ(p.color.y, 0.5f);
+    EXPECT_FLOAT_EQ(p.fade_distance, 4);
+    EXPECT_FLOAT_EQ(p.fade_power, 2);
+    EXPECT_TRUE(p.shadowless);
+    const Light& s = r.scene.lights[1];
+    EXPECT_EQ(s.type, LightType::Spot);
+    EXPECT_NEAR(s.direction.y, -1, 1e-6);
+    EXPECT_FLOAT_EQ(s.spot_radius, 10);
+    EXPECT_FLOAT_EQ(s.spot_falloff, 20);
+    EXPECT_FLOAT_EQ(s.spot_tightness, 5);
+    const Light& l = r.scene.lights[2];
+    EXPECT_EQ(l.type, LightType::Parallel);
+    EXPECT_NEAR(l.direction.z, -1, 1e-6); // towards POV-Ray +z, which is Sheaf -z
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_NO_THROW(r.scene.validate());
+}
+
+TEST(PovLights, AreaLightsBecomeSamples) {
+    const PovResult r = load_text("light_source { <0, 5, 0> rgb <1, 1, 1> area_light x * 2, z * 2, "
+                                  "3, 4 adaptive 1 jitter circular orient translate y }");
+    ASSERT_EQ(r.scene.lights.size(), 12u);
+    float sum = 0;
+    for (const Light& l : r.scene.lights) {
+        sum += l.color.x;
+        EXPECT_NEAR(l.position.y, 6, 1e-5);
+        EXPECT_LE(std::fabs(l.position.x), 1.0f + 1e-5f);
+    }
+    EXPECT_NEAR(sum, 1, 1e-5);
+    // A fixed seed: the same scene gives the same samples.
+    const PovResult again =
+        load_text("light_source { <0, 5, 0> rgb <1, 1, 1> area_light x * 2, z * 2, "
+                  "3, 4 adaptive 1 jitter circular orient translate y }");
+    EXPECT_EQ(again.scene.lights[5].position.x, r.scene.lights[5].position.x);
+}
+
+TEST(PovLights, LightsInsideObjectsMoveWithThem) {
+    const PovResult r =
+        load_text("union { sphere { 0, 1 } light_source { <0, 2, 0>, 1 } translate x * 3 }");
+    ASSERT_EQ(r.scene.lights.size(), 1u);
+    EXPECT_FLOAT_EQ(r.scene.lights[0].position.x, 3);
+    EXPECT_FLOAT_EQ(r.scene.lights[0].position.y, 2);
+}
+
+TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
+    const PovResult r = load_text("global_settings { assumed_gamma 1 max_trace_level 3 "
+                                  "ambient_light rgb 0.5 }\n"
+                                  "background { color rgb <0.1, 0.2, 0.3> }\n"
+                                  "fog { distance 10 color rgb 1 }\n"
+                                  "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0.4 } }");
+    EXPECT_FLOAT_EQ(r.scene.background.z, 0.3f);
+    EXPECT_EQ(r.scene.settings.at("trace.depth"), "2");
+    EXPECT_FLOAT_EQ(r.scene.materials.back().ambient, 0.2f);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:3:1: warning: unsupported fog"), std::string::npos);
+}
+
+} // namespace
+} // namespace sheaf::io::pov

@@ -1,0 +1,419 @@
+// Directives: #declare/#local/#undef, #if/#ifdef/#ifndef/#else/#elseif, #while, #for,
+// #switch/#case/#range/#break, #end, #version, #default, #debug/#warning/#error.
+// (#macro is in macros.cpp, #include and the #fopen family in files.cpp.)
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <cmath>
+#include <iostream>
+
+namespace sheaf::io::pov {
+
+namespace {
+
+bool opens_block(const std::string& d) {
+    return d == "if" || d == "ifdef" || d == "ifndef" || d == "while" || d == "for" ||
+           d == "switch" || d == "macro";
+}
+
+bool truthy(const Value& v) {
+    return std::fabs(v.v[0]) > 1e-10;
+}
+
+} // namespace
+
+bool Parser::directive(bool continuation) {
+    Frame& f = frames_.back();
+    const Token hash = f.file->tokens[f.pos];
+    const Token name = f.file->tokens[f.pos + 1 < f.file->tokens.size() ? f.pos + 1 : f.pos];
+    if (name.kind != TokKind::Ident) { // a stray '#': POV-Ray ignores it
+        if (continuation) return false;
+        advance();
+        return true;
+    }
+    const std::string& d = name.text;
+    if (continuation) {
+        const Cond* top = f.conds.empty() ? nullptr : &f.conds.back();
+        bool ok = false;
+        if (d == "end")
+            ok = top ? (top->kind == Cond::If || top->kind == Cond::Switch) : f.macro;
+        else if (d == "else" || d == "elseif")
+            ok = top && (top->kind == Cond::If || top->kind == Cond::Switch);
+        else if (d == "break" || d == "case" || d == "range")
+            ok = top && top->kind == Cond::Switch;
+        if (!ok) return false;
+    }
+    advance();
+    advance();
+    if (d == "declare" || d == "local") {
+        declare_directive(d == "local");
+    } else if (d == "undef") {
+        undef_directive();
+    } else if (d == "include") {
+        include_directive(name);
+    } else if (d == "macro") {
+        define_macro(name);
+    } else if (d == "if") {
+        if (truthy(parse_condition())) {
+            Cond c;
+            c.kind = Cond::If, c.where = name;
+            frames_.back().conds.push_back(c);
+        } else {
+            skip_to_branch(name);
+        }
+    } else if (d == "ifdef" || d == "ifndef") {
+        ifdef_directive(d == "ifdef");
+    } else if (d == "else" || d == "elseif") {
+        Frame& cur = frames_.back();
+        if (cur.conds.empty()) error_at(name, "#" + d + " without #if");
+        if (cur.conds.back().kind == Cond::Switch) {
+            if (d == "elseif") parse_condition(); // falls through, like #case
+        } else if (cur.conds.back().kind == Cond::If) {
+            cur.conds.pop_back();
+            skip_raw_to_end(1, name);
+        } else {
+            error_at(name, "#" + d + " without #if");
+        }
+    } else if (d == "end") {
+        end_directive(name);
+    } else if (d == "while") {
+        Cond c;
+        c.kind = Cond::While, c.where = name, c.pos = frames_.back().pos;
+        if (truthy(parse_condition()))
+            frames_.back().conds.push_back(c);
+        else
+            skip_raw_to_end(1, name);
+    } else if (d == "for") {
+        expect_sym("(");
+        Cond c;
+        c.kind = Cond::For, c.where = name;
+        c.var = expect_ident("the loop variable");
+        expect_sym(",");
+        const double start = parse_float();
+        expect_sym(",");
+        c.end = parse_float();
+        if (accept_sym(",")) c.step = parse_float();
+        expect_sym(")");
+        if (c.step == 0) error_at(name, "#for with a step of 0 never ends");
+        declare(c.var, Value::number(start), false);
+        c.pos = frames_.back().pos;
+        if (c.step > 0 ? start <= c.end : start >= c.end)
+            frames_.back().conds.push_back(c);
+        else
+            skip_raw_to_end(1, name);
+    } else if (d == "switch") {
+        Cond c;
+        c.kind = Cond::Switch, c.where = name;
+        const Value v = parse_condition();
+        c.end = v.v[0];
+        frames_.back().conds.push_back(c);
+        switch_scan(name);
+    } else if (d == "case" || d == "range") {
+        Frame& cur = frames_.back();
+        if (cur.conds.empty() || cur.conds.back().kind != Cond::Switch)
+            error_at(name, "#" + d + " outside #switch");
+        expect_sym("(");
+        parse_float();
+        if (d == "range") {
+            expect_sym(",");
+            parse_float();
+        }
+        expect_sym(")"); // a matched clause runs on into the next one
+    } else if (d == "break") {
+        break_directive(name);
+    } else if (d == "version") {
+        version_directive();
+    } else if (d == "default") {
+        default_directive();
+    } else if (d == "debug" || d == "warning" || d == "error" || d == "render" ||
+               d == "statistics") {
+        const std::string msg = parse_string();
+        if (d == "error") error_at(name, msg);
+        if (d == "warning")
+            warn(name, msg);
+        else
+            std::cerr << msg;
+    } else if (d == "fopen") {
+        fopen_directive(name);
+    } else if (d == "read") {
+        read_directive(name);
+    } else if (d == "write") {
+        write_directive(name);
+    } else if (d == "fclose") {
+        const std::string id = expect_ident("a file identifier");
+        Value* v = lookup_mut(id);
+        if (v && v->type == VType::File) {
+            for (auto& scope : scopes_) scope.erase(id);
+        }
+    } else {
+        error_expected(name, "a directive");
+    }
+    return true;
+}
+
+Value Parser::parse_condition() {
+    ++directive_args_;
+    try {
+        Value v = parse_expr();
+        --directive_args_;
+        return v;
+    } catch (...) {
+        --directive_args_;
+        throw;
+    }
+}
+
+void Parser::declare_directive(bool local) {
+    if (is_kw_tok(raw(), "deprecated")) { // #declare deprecated [once] "message" NAME = ...
+        advance();
+        if (is_kw_tok(raw(), "once")) advance();
+        if (raw().kind == TokKind::String) advance();
+    }
+    const Token name = raw();
+    if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
+    advance();
+    std::vector<size_t> index;
+    while (is_sym_tok(raw(), "[")) {
+        advance();
+        const double i = parse_float();
+        expect_sym("]");
+        index.push_back(size_t(std::max(0.0, i)));
+    }
+    expect_sym("=", "'='");
+    Value v = parse_rvalue();
+    if (is_sym_tok(peek_cont(), ";")) advance();
+    if (v.type == VType::Array) { // arrays are copied on assignment
+        auto copy = std::make_shared<ArrayValue>();
+        const ArrayValue& src = v.as<ArrayValue>();
+        copy->sizes = src.sizes;
+        charge(src.bytes, name);
+        copy->elements = src.elements;
+        copy->budget = &data_bytes_, copy->bytes = src.bytes;
+        v.ptr = copy;
+    }
+    if (index.empty()) {
+        declare(name.text, std::move(v), local);
+        return;
+    }
+    Value* arr = lookup_mut(name.text);
+    if (!arr || arr->type != VType::Array) error_at(name, "'" + name.text + "' is not an array");
+    ArrayValue& a = arr->as<ArrayValue>();
+    if (index.size() != a.sizes.size())
+        error_at(name, "'" + name.text + "' has " + std::to_string(a.sizes.size()) +
+                           " dimensions, not " + std::to_string(index.size()));
+    size_t flat = 0;
+    for (size_t k = 0; k < index.size(); ++k) {
+        if (index[k] >= a.sizes[k])
+            error_at(name, "index " + std::to_string(index[k]) + " is out of range for '" +
+                               name.text + "' (size " + std::to_string(a.sizes[k]) + ")");
+        flat = flat * a.sizes[k] + index[k];
+    }
+    a.elements[flat] = std::move(v);
+}
+
+void Parser::undef_directive() {
+    const Token name = raw();
+    if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
+    advance();
+    for (size_t i = scopes_.size(); i-- > 0;)
+        if (scopes_[i].erase(name.text)) return;
+    macros_.erase(name.text);
+}
+
+void Parser::ifdef_directive(bool want_defined) {
+    const Token where = raw();
+    expect_sym("(");
+    const Token name = raw();
+    if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
+    advance();
+    bool defined = lookup(name.text) != nullptr || find_macro(name.text) != nullptr;
+    if (defined && is_sym_tok(raw(), "[")) { // an array element
+        const Value* a = lookup(name.text);
+        std::vector<size_t> index;
+        while (accept_sym("[")) {
+            index.push_back(size_t(std::max(0.0, parse_float())));
+            expect_sym("]");
+        }
+        if (a->type != VType::Array) error_at(name, "'" + name.text + "' is not an array");
+        const ArrayValue& arr = a->as<ArrayValue>();
+        size_t flat = 0;
+        for (size_t k = 0; k < index.size() && k < arr.sizes.size(); ++k)
+            flat = flat * arr.sizes[k] + std::min(index[k], arr.sizes[k] - 1);
+        defined = flat < arr.elements.size() && arr.elements[flat].type != VType::None;
+    }
+    expect_sym(")");
+    if (defined == want_defined) {
+        Cond c;
+        c.kind = Cond::If, c.where = where;
+        frames_.back().conds.push_back(c);
+    } else {
+        skip_to_branch(where);
+    }
+}
+
+// Skips raw tokens until `levels` unmatched #end directives have been passed.
+void Parser::skip_raw_to_end(int levels, const Token& from) {
+    int depth = levels;
+    for (;;) {
+        const Token& t = raw();
+        if (t.kind == TokKind::End) error_at(from, "this block has no #end");
+        advance();
+        if (!is_sym_tok(t, "#")) continue;
+        const Token& d = raw();
+        if (opens_block(d.text))
+            ++depth;
+        else if (d.text == "end" && --depth == 0) {
+            advance();
+            return;
+        }
+    }
+}
+
+// After a false #if/#ifdef/#elseif: skips to the #else, a true #elseif or the #end.
+void Parser::skip_to_branch(const Token& from) {
+    int depth = 0;
+    for (;;) {
+        const Token& t = raw();
+        if (t.kind == TokKind::End) error_at(from, "this block has no #end");
+        advance();
+        if (!is_sym_tok(t, "#")) continue;
+        const Token d = raw();
+        if (opens_block(d.text)) {
+            ++depth;
+        } else if (d.text == "end") {
+            if (depth-- == 0) {
+                advance();
+                return;
+            }
+        } else if (depth == 0 && (d.text == "else" || d.text == "elseif")) {
+            advance();
+            if (d.text == "elseif" && !truthy(parse_condition())) continue;
+            Cond c;
+            c.kind = Cond::If, c.where = d;
+            frames_.back().conds.push_back(c);
+            return;
+        }
+    }
+}
+
+// Positions the stream at the clause of the #switch on top that matches, or past its #end.
+void Parser::switch_scan(const Token& from) {
+    const double value = frames_.back().conds.back().end;
+    int depth = 0;
+    for (;;) {
+        const Token& t = raw();
+        if (t.kind == TokKind::End) error_at(from, "this #switch has no #end");
+        advance();
+        if (!is_sym_tok(t, "#")) continue;
+        const Token d = raw();
+        if (opens_block(d.text)) {
+            ++depth;
+        } else if (d.text == "end") {
+            if (depth-- == 0) {
+                advance();
+                frames_.back().conds.pop_back();
+                return;
+            }
+        } else if (depth == 0 && (d.text == "case" || d.text == "range")) {
+            advance();
+            expect_sym("(");
+            const double a = parse_float();
+            bool match = std::fabs(a - value) <= 1e-10;
+            if (d.text == "range") {
+                expect_sym(",");
+                const double b = parse_float();
+                match = value >= a && value <= b;
+            }
+            expect_sym(")");
+            if (match) return;
+        } else if (depth == 0 && d.text == "else") {
+            advance();
+            return;
+        }
+    }
+}
+
+void Parser::end_directive(const Token& where) {
+    Frame& f = frames_.back();
+    if (f.conds.empty()) {
+        if (f.macro) {
+            pop_frame();
+            return;
+        }
+        error_at(where, "#end without a block to close");
+    }
+    Cond& c = f.conds.back();
+    if (c.kind == Cond::If || c.kind == Cond::Switch) {
+        f.conds.pop_back();
+        return;
+    }
+    if (++c.iterations >= kMaxLoopIterations)
+        error_at(c.where,
+                 "this loop ran more than " + std::to_string(kMaxLoopIterations) + " times");
+    if (c.kind == Cond::While) {
+        const Token loop = c.where;
+        f.pos = c.pos;
+        if (!truthy(parse_condition())) {
+            frames_.back().conds.pop_back();
+            skip_raw_to_end(1, loop);
+        }
+        return;
+    }
+    // #for
+    Value* v = lookup_mut(c.var);
+    const double next = (v && v->type == VType::Float ? v->v[0] : c.end) + c.step;
+    if (c.step > 0 ? next <= c.end + 1e-10 : next >= c.end - 1e-10) {
+        declare(c.var, Value::number(next), false);
+        f.pos = c.pos;
+    } else {
+        f.conds.pop_back();
+    }
+}
+
+void Parser::break_directive(const Token& where) {
+    Frame& f = frames_.back();
+    int levels = 0;
+    for (size_t i = f.conds.size(); i-- > 0;) {
+        ++levels;
+        if (f.conds[i].kind != Cond::If) {
+            f.conds.resize(i);
+            skip_raw_to_end(levels, where);
+            return;
+        }
+    }
+    error_at(where, "#break outside #switch, #while or #for");
+}
+
+void Parser::version_directive() {
+    const Token t = peek();
+    const double v = parse_float();
+    if (v < 1 || v > 10) error_at(t, "#version " + std::to_string(v) + " is not a version");
+    model.version = v;
+    model.version_given = true;
+    if (is_sym_tok(peek_cont(), ";")) advance();
+}
+
+void Parser::default_directive() {
+    expect_sym("{");
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        if (accept_kw("texture")) {
+            model.default_texture = parse_texture(model.default_texture);
+        } else if (accept_kw("pigment")) {
+            parse_pigment(model.default_texture.pigment);
+        } else if (accept_kw("finish")) {
+            parse_finish(model.default_texture.finish);
+        } else if (t.kind == TokKind::Ident &&
+                   (t.text == "normal" || t.text == "interior" || t.text == "radiosity")) {
+            advance();
+            unsupported(t, "#default " + t.text);
+            skip_block();
+        } else {
+            error_expected(t, "texture, pigment or finish in #default");
+        }
+    }
+}
+
+} // namespace sheaf::io::pov

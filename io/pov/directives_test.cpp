@@ -1,0 +1,270 @@
+// Tests of the directives: declarations and scopes, macros, loops, conditionals, #switch,
+// #include search, file I/O, #error/#warning, and the limits (loops, recursion, arrays,
+// self-includes) that must end in an error with a position, never a hang.
+#include "io/pov/pov_test_util.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::declared;
+using test::error_of;
+using test::TempDir;
+
+TEST(PovDirectives, DeclareLocalUndef) {
+    EXPECT_DOUBLE_EQ(declared("#declare A = 1; #local B = A + 1; #declare A = B * 3;", "A").v[0],
+                     6);
+    EXPECT_THROW(declared("#declare A = 1;\n#undef A\n", "A"), SceneError);
+    EXPECT_DOUBLE_EQ(declared("#declare A = 1 #declare B = A + 1", "B").v[0], 2); // no ';'
+}
+
+TEST(PovDirectives, MacrosHaveLocalScope) {
+    const std::string s = "#declare X = 1;\n"
+                          "#macro M(X, Y)\n"
+                          "  #local T = X * 10;\n"
+                          "  #declare Out = T + Y;\n"
+                          "#end\n"
+                          "M(2, 3)\n"
+                          "#declare Seen = defined(T);\n";
+    EXPECT_DOUBLE_EQ(declared(s, "Out").v[0], 23);
+    EXPECT_DOUBLE_EQ(declared(s, "X").v[0], 1);    // the parameter shadowed it
+    EXPECT_DOUBLE_EQ(declared(s, "Seen").v[0], 0); // T was local
+}
+
+TEST(PovDirectives, MacrosReturnValuesAndRecurse) {
+    const std::string s = "#macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end\n"
+                          "#macro Sq(A) (A * A) #end\n"
+                          "#declare V = Fact(5) + Sq(3) + 1;\n";
+    EXPECT_DOUBLE_EQ(declared(s, "V").v[0], 120 + 9 + 1);
+    // A local counter changed with #declare inside the macro's loop.
+    EXPECT_DOUBLE_EQ(declared("#macro Count(N) #local I = 0; #local S = 0;\n"
+                              "#while (I < N) #declare S = S + I; #declare I = I + 1; #end S #end\n"
+                              "#declare V = Count(5);",
+                              "V")
+                         .v[0],
+                     10);
+    EXPECT_NE(error_of("#macro M(A) A #end\n#declare V = M(1, 2);")
+                  .find("scene.pov:2:14: error: macro 'M' takes 1 arguments, not 2"),
+              std::string::npos);
+}
+
+TEST(PovDirectives, WhileAndFor) {
+    EXPECT_DOUBLE_EQ(declared("#declare S = 0; #declare I = 0;\n"
+                              "#while (I < 10) #declare S = S + I; #declare I = I + 1; #end",
+                              "S")
+                         .v[0],
+                     45);
+    EXPECT_DOUBLE_EQ(
+        declared("#declare S = 0; #for (I, 1, 9, 2) #declare S = S + I; #end", "S").v[0], 25);
+    EXPECT_DOUBLE_EQ(
+        declared("#declare S = 0; #for (I, 3, 1, -1) #declare S = S * 10 + I; #end", "S").v[0],
+        321);
+    EXPECT_DOUBLE_EQ(declared("#declare S = 0; #for (I, 5, 1) #declare S = 1; #end", "S").v[0], 0);
+    // Nested loops and #break out of a loop.
+    EXPECT_DOUBLE_EQ(declared("#declare S = 0; #for (I, 1, 3) #for (J, 1, 3) #declare S = S + 1;"
+                              " #end #end",
+                              "S")
+                         .v[0],
+                     9);
+    EXPECT_DOUBLE_EQ(declared("#declare S = 0; #while (1) #declare S = S + 1;"
+                              " #if (S = 4) #break #end #end",
+                              "S")
+                         .v[0],
+                     4);
+}
+
+TEST(PovDirectives, Conditionals) {
+    const std::string base = "#declare A = 2;\n";
+    EXPECT_DOUBLE_EQ(declared(base + "#if (A = 1) #declare R = 1; #elseif (A = 2) #declare R = 2;"
+                                     " #else #declare R = 3; #end",
+                              "R")
+                         .v[0],
+                     2);
+    EXPECT_DOUBLE_EQ(declared(base + "#if (A > 5) #declare R = 1; #else #if (0) #declare R = 9;"
+                                     " #end #declare R = 3; #end",
+                              "R")
+                         .v[0],
+                     3);
+    EXPECT_DOUBLE_EQ(
+        declared(base + "#ifdef (A) #declare R = 1; #else #declare R = 0; #end", "R").v[0], 1);
+    EXPECT_DOUBLE_EQ(declared(base + "#ifndef (Q) #declare R = 1; #end", "R").v[0], 1);
+}
+
+TEST(PovDirectives, SwitchCaseRangeBreak) {
+    auto pick = [](double v) {
+        return declared("#declare V = " + std::to_string(v) +
+                            ";\n"
+                            "#switch (V)\n"
+                            "  #case (1) #declare R = 10; #break\n"
+                            "  #case (2)\n"
+                            "  #case (3) #declare R = 23; #break\n"
+                            "  #range (4, 6) #declare R = 46; #break\n"
+                            "  #else #declare R = -1;\n"
+                            "#end\n",
+                        "R")
+            .v[0];
+    };
+    EXPECT_DOUBLE_EQ(pick(1), 10);
+    EXPECT_DOUBLE_EQ(pick(2), 23);
+    EXPECT_DOUBLE_EQ(pick(3), 23);
+    EXPECT_DOUBLE_EQ(pick(5.5), 46);
+    EXPECT_DOUBLE_EQ(pick(9), -1);
+}
+
+TEST(PovDirectives, IncludeSearchOrder) {
+    TempDir d;
+    d.write("sub/local.inc", "#declare FromLocal = 1;");
+    d.write("lib/a.inc", "#declare FromLib = 2;\n#include \"b.inc\"");
+    d.write("lib/b.inc", "#declare FromLibB = 3;");
+    const std::string scene =
+        d.write("sub/scene.pov", "#include \"local.inc\"\n#include \"a.inc\"\n"
+                                 "sphere { 0, FromLocal + FromLib + FromLibB }");
+    PovOptions o;
+    o.include_paths = {d.path() + "/lib"};
+    const PovResult r = load_pov_scene(scene, o);
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    EXPECT_FLOAT_EQ(r.scene.shape_objects[0].nodes[0].transform.m[0][0], 6);
+    // Without the path it is an error naming the file and the folders searched.
+    try {
+        load_pov_scene(scene, {});
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_NE(
+            std::string(e.what()).find("scene.pov:2:2: error: cannot find include file 'a.inc'"),
+            std::string::npos);
+    }
+}
+
+TEST(PovDirectives, IncludeLocalsStayInTheFile) {
+    TempDir d;
+    d.write("a.inc", "#local Hidden = 1; #declare Shown = 2;");
+    Parser p(PovOptions{});
+    p.parse_scene(d.write("s.pov", "#include \"a.inc\""));
+    EXPECT_EQ(p.lookup("Hidden"), nullptr);
+    ASSERT_NE(p.lookup("Shown"), nullptr);
+}
+
+TEST(PovDirectives, FileReadAndWrite) {
+    TempDir d;
+    d.write("data.txt", "1, <2, 3, 4>, \"five\", -6\n");
+    Parser p(PovOptions{});
+    p.parse_scene(d.write("s.pov", "#fopen F \"data.txt\" read\n"
+                                   "#read (F, A, B, C)\n#declare Open = defined(F);\n"
+                                   "#read (F, D)\n#declare Closed = !defined(F);\n"));
+    EXPECT_DOUBLE_EQ(p.lookup("A")->v[0], 1);
+    EXPECT_DOUBLE_EQ(p.lookup("B")->v[2], 4);
+    EXPECT_EQ(p.lookup("C")->str, "five");
+    EXPECT_DOUBLE_EQ(p.lookup("D")->v[0], -6);
+    EXPECT_DOUBLE_EQ(p.lookup("Open")->v[0], 1);
+    EXPECT_DOUBLE_EQ(p.lookup("Closed")->v[0], 1);
+    // Reading outside the scene's folder and writing outside the current folder are errors.
+    EXPECT_NE(
+        error_of("#fopen F \"/etc/passwd\" read").find("may read only under the scene's folder"),
+        std::string::npos);
+    EXPECT_NE(
+        error_of("#fopen F \"../x.txt\" read").find("scene.pov:1:2: error: #fopen may read only"),
+        std::string::npos);
+    EXPECT_NE(error_of("#fopen F \"/tmp/../etc/x\" write")
+                  .find("may write only under the current folder"),
+              std::string::npos);
+    // Writing under the current folder works.
+    const auto cwd = std::filesystem::current_path();
+    std::filesystem::current_path(d.path());
+    Parser w(PovOptions{});
+    w.parse_scene(d.write("w.pov",
+                          "#fopen O \"out.txt\" write\n#write (O, \"v=\", 2, \",\", <1,2>)\n"
+                          "#fclose O\n"));
+    std::filesystem::current_path(cwd);
+    std::ifstream in(d.path() + "/out.txt");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text, "v=2,<1,2>");
+}
+
+TEST(PovDirectives, ErrorWarningDebugVersion) {
+    EXPECT_EQ(error_of("#declare A = 1;\n  #error concat(\"bad \", str(A, 0, 0))"),
+              "scene.pov:2:4: error: bad 1");
+    const PovResult r = test::load_text("#version 3.6;\n#warning \"careful\"\n#debug \"dbg\\n\"\n");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:2:2: warning: careful"), std::string::npos);
+    EXPECT_DOUBLE_EQ(r.version, 3.6);
+    EXPECT_DOUBLE_EQ(r.assumed_gamma, 2.2); // pre-3.7 scenes without assumed_gamma
+    EXPECT_DOUBLE_EQ(test::load_text("#version 3.7;").assumed_gamma, 1.0);
+    EXPECT_DOUBLE_EQ(declared("#version 3.5; #declare V = version;", "V").v[0], 3.5);
+}
+
+TEST(PovDirectives, DefaultTexture) {
+    const PovResult r = test::load_text(
+        "#default { pigment { rgb <0, 1, 0> } finish { ambient 0.3 } }\nsphere { 0, 1 }");
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    const Material& m = r.scene.materials[r.scene.shape_objects[0].nodes[0].material];
+    EXPECT_FLOAT_EQ(m.color.y, 1);
+    EXPECT_FLOAT_EQ(m.ambient, 0.3f);
+}
+
+// ---- limits: each ends quickly in an error with a position ----
+
+template <class F> double seconds(F f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+TEST(PovLimits, EndlessWhile) {
+    std::string e;
+    const double s =
+        seconds([&] { e = error_of("#declare I = 0;\n#while (1)\n  #declare I = I + 1;\n#end"); });
+    EXPECT_EQ(e, "scene.pov:2:2: error: this loop ran more than 10000000 times");
+    EXPECT_LT(s, 60);
+}
+
+TEST(PovLimits, InfiniteMacroRecursion) {
+    EXPECT_EQ(error_of("#macro R(N) R(N + 1) #end\nR(0)"),
+              "scene.pov:1:13: error: macro calls nested deeper than 200 (endless recursion?)");
+}
+
+TEST(PovLimits, HugeArrays) {
+    EXPECT_EQ(error_of("#declare A = array[200000000];"),
+              "scene.pov:1:20: error: an array of more than 100000000 elements");
+    EXPECT_EQ(error_of("#declare A = array[20000][20000];"),
+              "scene.pov:1:27: error: an array of more than 100000000 elements");
+    // Under the element limit but over the data budget.
+    EXPECT_NE(error_of("#declare A = array[90000000];")
+                  .find("scene.pov:1:14: error: the scene's data would exceed"),
+              std::string::npos);
+}
+
+TEST(PovLimits, SelfAndDeepIncludes) {
+    TempDir d;
+    const std::string self = d.write("self.pov", "\n  #include \"self.pov\"");
+    try {
+        load_pov_scene(self, {});
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), self + ":2:4: error: 'self.pov' includes itself");
+    }
+    d.write("a.inc", "#include \"b.inc\"");
+    d.write("b.inc", "#include \"a.inc\"");
+    EXPECT_THROW(load_pov_scene(d.write("cycle.pov", "#include \"a.inc\""), {}), SceneError);
+    for (int i = 0; i < 70; ++i)
+        d.write("d" + std::to_string(i) + ".inc",
+                "#include \"d" + std::to_string(i + 1) + ".inc\"");
+    d.write("d70.inc", "");
+    try {
+        load_pov_scene(d.write("deep.pov", "#include \"d0.inc\""), {});
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("includes nested deeper than 64"), std::string::npos);
+    }
+}
+
+TEST(PovLimits, UnclosedBlocks) {
+    EXPECT_EQ(error_of("#if (1)\nsphere { 0, 1 }"), "scene.pov:1:2: error: this block has no #end");
+    EXPECT_EQ(error_of("#while (0)\n"), "scene.pov:1:2: error: this block has no #end");
+    EXPECT_EQ(error_of("#end"), "scene.pov:1:2: error: #end without a block to close");
+}
+
+} // namespace
+} // namespace sheaf::io::pov

@@ -1,0 +1,171 @@
+// Tests of expressions: precedence, vectors, colours, strings, arrays, built-ins and user
+// functions.
+#include "io/pov/pov_test_util.h"
+
+#include <cmath>
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::declared;
+using test::error_of;
+using test::num;
+
+TEST(PovExpressions, Precedence) {
+    EXPECT_DOUBLE_EQ(num("1 + 2 * 3"), 7);
+    EXPECT_DOUBLE_EQ(num("(1 + 2) * 3"), 9);
+    EXPECT_DOUBLE_EQ(num("-2 * -3"), 6);
+    EXPECT_DOUBLE_EQ(num("10 - 4 - 3"), 3);
+    EXPECT_DOUBLE_EQ(num("8 / 4 / 2"), 1);
+    EXPECT_DOUBLE_EQ(num("1 < 2 & 3 > 2"), 1);
+    EXPECT_DOUBLE_EQ(num("0 | 0 & 1"), 0);
+    EXPECT_DOUBLE_EQ(num("!0 + 1"), 2);
+    EXPECT_DOUBLE_EQ(num("1 = 1 ? 5 : 6"), 5);
+    EXPECT_DOUBLE_EQ(num("0 ? 5 : 1 ? 7 : 8"), 7);
+    EXPECT_DOUBLE_EQ(num("2 != 2"), 0);
+    EXPECT_DOUBLE_EQ(num("3 >= 3 & 2 <= 1"), 0);
+}
+
+TEST(PovExpressions, VectorsAndMembers) {
+    const Value v = declared("#declare V = <1, 2, 3> * 2 + x;", "V");
+    ASSERT_EQ(v.type, VType::Vector);
+    EXPECT_EQ(v.dim, 3);
+    EXPECT_DOUBLE_EQ(v.v[0], 3);
+    EXPECT_DOUBLE_EQ(v.v[2], 6);
+    EXPECT_DOUBLE_EQ(num("<4, 5, 6>.y"), 5);
+    EXPECT_DOUBLE_EQ(num("<1, 2, 3, 4, 5>.t"), 4);
+    EXPECT_DOUBLE_EQ(num("vlength(<3, 0, 4>)"), 5);
+    EXPECT_DOUBLE_EQ(num("vdot(x, y)"), 0);
+    EXPECT_DOUBLE_EQ(num("vcross(x, y).z"), 1);
+    EXPECT_NEAR(num("vrotate(x, <0, 0, 90>).y"), 1, 1e-6);
+    EXPECT_NEAR(num("vaxis_rotate(x, z, 90).y"), 1, 1e-6);
+    EXPECT_NEAR(num("vnormalize(<0, 3, 4>).z"), 0.8, 1e-6);
+    EXPECT_EQ(declared("#declare V = <1, 2>;", "V").dim, 2);
+    EXPECT_EQ(declared("#declare V = <1 2 3>;", "V").dim, 3); // commas may be left out
+}
+
+TEST(PovExpressions, Colors) {
+    Value c = declared("#declare C = rgb <1, 0.5, 0>;", "C");
+    ASSERT_EQ(c.type, VType::Color);
+    EXPECT_DOUBLE_EQ(c.v[1], 0.5);
+    EXPECT_DOUBLE_EQ(c.v[3], 0);
+    c = declared("#declare C = rgbft <0.1, 0.2, 0.3, 0.4, 0.5>;", "C");
+    EXPECT_DOUBLE_EQ(c.v[3], 0.4);
+    EXPECT_DOUBLE_EQ(c.v[4], 0.5);
+    c = declared("#declare C = rgbt <1, 1, 1, 0.7>;", "C");
+    EXPECT_DOUBLE_EQ(c.v[3], 0);
+    EXPECT_DOUBLE_EQ(c.v[4], 0.7);
+    c = declared("#declare C = color red 1 green 0.5 filter 0.25;", "C");
+    EXPECT_DOUBLE_EQ(c.v[0], 1);
+    EXPECT_DOUBLE_EQ(c.v[1], 0.5);
+    EXPECT_DOUBLE_EQ(c.v[2], 0);
+    EXPECT_DOUBLE_EQ(c.v[3], 0.25);
+    c = declared("#declare C = srgb <0.5, 1, 0>;", "C");
+    EXPECT_NEAR(c.v[0], 0.2140, 1e-4); // linearised
+    EXPECT_DOUBLE_EQ(c.v[1], 1);
+    c = declared("#declare C = rgb 1 * 0.5;", "C");
+    EXPECT_DOUBLE_EQ(c.v[2], 0.5);
+    EXPECT_DOUBLE_EQ(num("(rgb <0.2, 0.4, 0.6>).green"), 0.4);
+}
+
+TEST(PovExpressions, ColorsInc) {
+    if (!std::filesystem::exists("/usr/share/povray-3.7/include/colors.inc"))
+        GTEST_SKIP() << "povray-includes is not installed";
+    const Value c = declared("#include \"colors.inc\"\n#declare C = Red;", "C");
+    EXPECT_DOUBLE_EQ(c.v[0], 1);
+    EXPECT_DOUBLE_EQ(c.v[1], 0);
+}
+
+TEST(PovExpressions, FloatBuiltins) {
+    EXPECT_NEAR(num("sin(pi / 2)"), 1, 1e-12);
+    EXPECT_NEAR(num("cos(0) + tan(0)"), 1, 1e-12);
+    EXPECT_NEAR(num("atan2(1, 1)"), M_PI / 4, 1e-12);
+    EXPECT_NEAR(num("asin(1) + acos(1) + atan(0)"), M_PI / 2, 1e-12);
+    EXPECT_NEAR(num("sinh(0) + cosh(0) + tanh(0) + asinh(0) + acosh(1) + atanh(0)"), 1, 1e-12);
+    EXPECT_DOUBLE_EQ(num("pow(2, 10)"), 1024);
+    EXPECT_DOUBLE_EQ(num("sqrt(16) + exp(0)"), 5);
+    EXPECT_DOUBLE_EQ(num("log(100)"), 2);
+    EXPECT_DOUBLE_EQ(num("ln(1)"), 0);
+    EXPECT_DOUBLE_EQ(num("abs(-3) + int(-2.5) + floor(-2.5) + ceil(2.1)"), 3 - 2 - 3 + 3);
+    EXPECT_DOUBLE_EQ(num("mod(7, 3) + div(7, 2)"), 4);
+    EXPECT_DOUBLE_EQ(num("min(3, 1, 2) + max(3, 9)"), 10);
+    EXPECT_DOUBLE_EQ(num("select(-1, 10, 20) + select(0, 1, 2, 3)"), 12);
+    EXPECT_NEAR(num("degrees(pi) + radians(180)"), 180 + M_PI, 1e-9);
+    EXPECT_DOUBLE_EQ(num("true + on + yes + false + off + no"), 3);
+    EXPECT_DOUBLE_EQ(num("clock"), 0);
+    EXPECT_DOUBLE_EQ(num("bitwise_and(6, 3)"), 2);
+}
+
+TEST(PovExpressions, Strings) {
+    EXPECT_EQ(declared("#declare S = concat(\"a\", str(1.5, 0, 2), chr(66));", "S").str, "a1.50B");
+    EXPECT_EQ(declared("#declare S = substr(\"hello\", 2, 3);", "S").str, "ell");
+    EXPECT_EQ(declared("#declare S = strupr(\"ab\");", "S").str, "AB");
+    EXPECT_EQ(declared("#declare S = strlwr(\"AB\");", "S").str, "ab");
+    EXPECT_EQ(declared("#declare S = str(5, -3, 0);", "S").str, "005");
+    EXPECT_DOUBLE_EQ(num("strlen(\"four\") + val(\"2.5\") + asc(\"A\")"), 4 + 2.5 + 65);
+    EXPECT_DOUBLE_EQ(num("\"abc\" = \"abc\""), 1);
+    EXPECT_DOUBLE_EQ(num("file_exists(\"scene.pov\")"), 1);
+    EXPECT_DOUBLE_EQ(num("file_exists(\"nope.inc\")"), 0);
+}
+
+TEST(PovExpressions, RandomStreamsAreDeterministic) {
+    const std::string s = "#declare S = seed(42); #declare A = rand(S); #declare B = rand(S);";
+    const double a = declared(s, "A").v[0], b = declared(s, "B").v[0];
+    EXPECT_GE(a, 0);
+    EXPECT_LT(a, 1);
+    EXPECT_NE(a, b);
+    EXPECT_EQ(a, declared(s, "A").v[0]);
+}
+
+TEST(PovExpressions, Arrays) {
+    const std::string s = "#declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };\n"
+                          "#declare B = array[4];\n#declare B[2] = 7;\n"
+                          "#declare V = A[1][2] + B[2] + dimension_size(A, 2) + "
+                          "defined(B[2]) + defined(B[0]);";
+    EXPECT_DOUBLE_EQ(declared(s, "V").v[0], 6 + 7 + 3 + 1 + 0);
+    EXPECT_NE(error_of("#declare B = array[4];\n#declare V = B[1];")
+                  .find("scene.pov:2:14: error: element of 'B' used before it was set"),
+              std::string::npos);
+    EXPECT_EQ(error_of("#declare B = array[4];\n#declare V = B[4];"),
+              "scene.pov:2:16: error: index 4 is out of range for 'B' (size 4)");
+    // Copies on assignment.
+    EXPECT_DOUBLE_EQ(declared("#declare A = array[1] {1}; #declare B = A; #declare B[0] = 2;"
+                              "#declare V = A[0];",
+                              "V")
+                         .v[0],
+                     1);
+}
+
+TEST(PovExpressions, UserFunctions) {
+    EXPECT_DOUBLE_EQ(
+        declared("#declare F = function { x * x + y - z }; #declare V = F(3, 1, 2);", "V").v[0], 8);
+    EXPECT_DOUBLE_EQ(declared("#declare F = function(a, b) { pow(a, b) + (a < b ? 1 : 0) };"
+                              "#declare V = F(2, 3);",
+                              "V")
+                         .v[0],
+                     9);
+    EXPECT_DOUBLE_EQ(declared("#declare K = 10; #declare F = function(a) { a * K };"
+                              "#declare G = function { F(x) + abs(-y) + max(x, y, z) };"
+                              "#declare V = G(1, -2, 5);",
+                              "V")
+                         .v[0],
+                     10 + 2 + 5);
+    EXPECT_NE(error_of("#declare F = function(a) { a };\n#declare V = F(1, 2);")
+                  .find("'F' takes 1 arguments, not 2"),
+              std::string::npos);
+}
+
+TEST(PovExpressions, TypeErrorsNameTheToken) {
+    EXPECT_EQ(error_of("#declare V = 1 + ;"),
+              "scene.pov:1:18: error: found ';', expected a float, vector, colour or string "
+              "expression");
+    EXPECT_EQ(error_of("#declare V = sin(\"a\");"),
+              "scene.pov:1:18: error: found '\"a\"', expected a float");
+    EXPECT_EQ(error_of("#declare V = <1, 2;"),
+              "scene.pov:1:19: error: found ';', expected ',' or '>'");
+    EXPECT_NE(error_of("#declare V = Nope + 1;").find("scene.pov:1:14: error: found 'Nope'"),
+              std::string::npos);
+}
+
+} // namespace
+} // namespace sheaf::io::pov

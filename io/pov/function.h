@@ -1,0 +1,55 @@
+// User functions (`function { ... }`, `function(a, b) { ... }`): the body is compiled to a small
+// expression tree over the parameters (x, y, z by default) and evaluated with doubles. The
+// float built-ins (sin, pow, min, select ...) are shared with the scene-language expressions.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sheaf::io::pov {
+
+struct FnNode {
+    enum Op {
+        Const,
+        Param,
+        Neg,
+        Not,
+        Add,
+        Sub,
+        Mul,
+        Div,
+        Lt,
+        Le,
+        Gt,
+        Ge,
+        Eq,
+        Ne,
+        And,
+        Or,
+        Cond,    // a ? b : c
+        Builtin, // name(args)
+        Call,    // a user function (args)
+    };
+    Op op = Const;
+    double value = 0; // Const
+    int param = 0;    // Param
+    std::string name; // Builtin
+    std::shared_ptr<const struct PovFunction> fn;
+    std::vector<FnNode> args;
+};
+
+struct PovFunction {
+    std::vector<std::string> params; // x, y, z when none were given
+    FnNode body;
+    std::string unsupported; // non-empty: what it uses that the reader cannot evaluate
+    double eval(const double* args, int n) const;
+};
+
+/// Evaluates the float built-in `name` (sin, cos, pow, min, max, select, mod ...). Returns
+/// false when `name` is not one, or takes another number of arguments (then `out` is unset).
+bool eval_builtin(const std::string& name, const std::vector<double>& args, double& out);
+/// Whether `name` is a float built-in with `n` arguments (min/max/select: variadic).
+bool is_float_builtin(const std::string& name);
+
+} // namespace sheaf::io::pov

@@ -1,0 +1,208 @@
+// `function { ... }` and `function(a, b) { ... }`: the body compiled to an FnNode tree over the
+// parameters; declared floats become constants, declared functions calls. Pattern and pigment
+// functions are accepted and marked unsupported (they evaluate to 0).
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <algorithm>
+
+namespace sheaf::io::pov {
+
+Value Parser::parse_function(const Token& t) {
+    auto f = std::make_shared<PovFunction>();
+    if (accept_sym("(")) {
+        if (!accept_sym(")")) {
+            for (;;) {
+                f->params.push_back(expect_ident("a parameter name"));
+                if (accept_sym(")")) break;
+                expect_sym(",", "',' or ')'");
+            }
+        }
+    } else {
+        f->params = {"x", "y", "z"};
+    }
+    const Token& first = peek();
+    if (!is_sym_tok(first, "{")) error_expected(first, "'{'");
+    advance();
+    const Token& b = peek();
+    if (is_kw_tok(b, "pattern") || is_kw_tok(b, "pigment") || is_kw_tok(b, "internal") ||
+        is_kw_tok(b, "spline") || is_kw_tok(b, "image_map") || is_kw_tok(b, "transform")) {
+        f->unsupported = b.text + " function";
+        int depth = 1;
+        while (depth > 0) {
+            const Token& s = peek();
+            if (s.kind == TokKind::End) error_expected(s, "'}'");
+            if (is_sym_tok(s, "{")) ++depth;
+            if (is_sym_tok(s, "}")) --depth;
+            advance();
+        }
+    } else {
+        const std::string saved = fn_unsupported_;
+        fn_unsupported_.clear();
+        f->body = parse_fn(f->params, 0);
+        f->unsupported = fn_unsupported_;
+        fn_unsupported_ = saved;
+        expect_sym("}", "'}' or an operator");
+    }
+    (void)t;
+    Value v;
+    v.type = VType::Function;
+    v.ptr = f;
+    return v;
+}
+
+namespace {
+
+FnNode node(FnNode::Op op, std::vector<FnNode> args) {
+    FnNode n;
+    n.op = op;
+    n.args = std::move(args);
+    return n;
+}
+
+} // namespace
+
+// Levels: 0 ?:, 1 |, 2 &, 3 comparisons, 4 + -, 5 * /, 6 unary.
+FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
+    if (level == 6) {
+        const Token t = peek();
+        if (is_sym_tok(t, "-")) {
+            advance();
+            return node(FnNode::Neg, {parse_fn(params, 6)});
+        }
+        if (is_sym_tok(t, "+")) {
+            advance();
+            return parse_fn(params, 6);
+        }
+        if (is_sym_tok(t, "!")) {
+            advance();
+            return node(FnNode::Not, {parse_fn(params, 6)});
+        }
+        return parse_fn_primary(params);
+    }
+    FnNode a = parse_fn(params, level + 1);
+    for (;;) {
+        const Token t = peek();
+        if (t.kind != TokKind::Symbol) return a;
+        const std::string& o = t.text;
+        FnNode::Op op;
+        if (level == 0 && o == "?") {
+            advance();
+            FnNode b = parse_fn(params, 0);
+            expect_sym(":");
+            FnNode c = parse_fn(params, 0);
+            return node(FnNode::Cond, {a, b, c});
+        } else if (level == 1 && o == "|")
+            op = FnNode::Or;
+        else if (level == 2 && o == "&")
+            op = FnNode::And;
+        else if (level == 3 && o == "<")
+            op = FnNode::Lt;
+        else if (level == 3 && o == "<=")
+            op = FnNode::Le;
+        else if (level == 3 && o == ">")
+            op = FnNode::Gt;
+        else if (level == 3 && o == ">=")
+            op = FnNode::Ge;
+        else if (level == 3 && o == "=")
+            op = FnNode::Eq;
+        else if (level == 3 && o == "!=")
+            op = FnNode::Ne;
+        else if (level == 4 && o == "+")
+            op = FnNode::Add;
+        else if (level == 4 && o == "-")
+            op = FnNode::Sub;
+        else if (level == 5 && o == "*")
+            op = FnNode::Mul;
+        else if (level == 5 && o == "/")
+            op = FnNode::Div;
+        else
+            return a;
+        advance();
+        a = node(op, {a, parse_fn(params, level + 1)});
+    }
+}
+
+FnNode Parser::parse_fn_primary(const std::vector<std::string>& params) {
+    FnNode n = parse_fn_atom(params);
+    while (is_sym_tok(peek(), ".")) { // F(x,y,z).x of a pigment function: unsupported anyway
+        advance();
+        expect_ident("a component");
+    }
+    return n;
+}
+
+FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
+    const Token t = peek();
+    FnNode n;
+    if (t.kind == TokKind::Number) {
+        advance();
+        n.value = t.number;
+        return n;
+    }
+    if (is_sym_tok(t, "(")) {
+        advance();
+        n = parse_fn(params, 0);
+        expect_sym(")");
+        return n;
+    }
+    if (t.kind != TokKind::Ident) error_expected(t, "a function expression");
+    advance();
+    auto args = [&]() {
+        std::vector<FnNode> a;
+        expect_sym("(", "'(' after " + t.text);
+        if (accept_sym(")")) return a;
+        for (;;) {
+            a.push_back(parse_fn(params, 0));
+            if (accept_sym(")")) return a;
+            expect_sym(",", "',' or ')'");
+        }
+    };
+    if (auto it = std::find(params.begin(), params.end(), t.text); it != params.end()) {
+        n.op = FnNode::Param;
+        n.param = int(it - params.begin());
+        return n;
+    }
+    if (const Value* v = lookup(t.text)) {
+        if (v->type == VType::Float) {
+            n.value = v->v[0];
+            return n;
+        }
+        if (v->type == VType::Function) {
+            n.op = FnNode::Call;
+            n.fn = std::static_pointer_cast<const PovFunction>(v->ptr);
+            if (!n.fn->unsupported.empty() && fn_unsupported_.empty()) // warned when called
+                fn_unsupported_ = n.fn->unsupported + " ('" + t.text + "')";
+            n.args = args();
+            if (n.args.size() != n.fn->params.size() && n.fn->unsupported.empty())
+                error_at(t, "'" + t.text + "' takes " + std::to_string(n.fn->params.size()) +
+                                " arguments");
+            return n;
+        }
+        error_at(t, "'" + t.text + "' (" + type_name(v->type) + ") in a function");
+    }
+    if (t.text == "pi") {
+        n.value = M_PI;
+        return n;
+    }
+    if (t.text == "true" || t.text == "on" || t.text == "yes") {
+        n.value = 1;
+        return n;
+    }
+    if (t.text == "false" || t.text == "off" || t.text == "no" || t.text == "clock") return n;
+    if (is_float_builtin(t.text)) {
+        n.op = FnNode::Builtin;
+        n.name = t.text;
+        n.args = args();
+        double out;
+        if (!eval_builtin(n.name, std::vector<double>(n.args.size(), 0.5), out))
+            error_at(t, t.text + " does not take " + std::to_string(n.args.size()) + " arguments");
+        return n;
+    }
+    error_at(t, "found '" + t.text +
+                    "', expected a parameter, number or function in a function "
+                    "body");
+}
+
+} // namespace sheaf::io::pov

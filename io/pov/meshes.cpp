@@ -1,0 +1,294 @@
+// Triangle objects: triangle, smooth_triangle, mesh, mesh2 and polygon (ear-clipped in its
+// plane; each closed sub-polygon is filled on its own). They become core Mesh objects.
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <cmath>
+
+namespace sheaf::io::pov {
+
+namespace {
+
+void add_triangle(Mesh& m, Vec3 a, Vec3 b, Vec3 c, const Vec3* n) {
+    const uint32_t base = uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), {a, b, c});
+    if (n) m.normals.insert(m.normals.end(), {n[0], n[1], n[2]});
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2});
+}
+
+/// Gives flat triangles (no normals) face normals when some triangles of the mesh are smooth.
+void complete_normals(Mesh& m, bool any_smooth, const std::vector<bool>& smooth) {
+    if (!any_smooth) {
+        m.normals.clear();
+        return;
+    }
+    std::vector<Vec3> normals;
+    size_t k = 0;
+    for (size_t t = 0; t < smooth.size(); ++t) {
+        if (smooth[t]) {
+            normals.insert(normals.end(), {m.normals[k], m.normals[k + 1], m.normals[k + 2]});
+            k += 3;
+        } else {
+            const Vec3 a = m.positions[3 * t], b = m.positions[3 * t + 1],
+                       c = m.positions[3 * t + 2];
+            Vec3 n = cross(b - a, c - a);
+            n = length(n) > 0 ? normalize(n) : Vec3(0, 1, 0);
+            normals.insert(normals.end(), {n, n, n});
+        }
+    }
+    m.normals = std::move(normals);
+}
+
+} // namespace
+
+void Parser::parse_triangle(const Token& kw, PovObject& o, bool smooth) {
+    expect_sym("{");
+    Vec3 p[3], n[3];
+    for (int i = 0; i < 3; ++i) {
+        if (i) accept_sym(",");
+        p[i] = parse_vector();
+        if (smooth) {
+            accept_sym(",");
+            n[i] = parse_vector();
+        }
+    }
+    auto mesh = std::make_shared<Mesh>();
+    add_triangle(*mesh, p[0], p[1], p[2], smooth ? n : nullptr);
+    o.kind = PovKind::Mesh;
+    o.mesh = mesh;
+    bool texture_here = false;
+    parse_object_modifiers(o, texture_here);
+    (void)kw;
+}
+
+void Parser::parse_mesh(const Token& kw, PovObject& o) {
+    expect_sym("{");
+    auto mesh = std::make_shared<Mesh>();
+    std::vector<bool> smooth;
+    bool any_smooth = false;
+    for (;;) {
+        const Token t = peek();
+        const bool tri = is_kw_tok(t, "triangle"), stri = is_kw_tok(t, "smooth_triangle");
+        if (!tri && !stri) break;
+        advance();
+        expect_sym("{");
+        Vec3 p[3], n[3];
+        for (int i = 0; i < 3; ++i) {
+            if (i) accept_sym(",");
+            p[i] = parse_vector();
+            if (stri) {
+                accept_sym(",");
+                n[i] = parse_vector();
+            }
+        }
+        for (;;) {
+            const Token i = peek();
+            if (accept_sym("}")) break;
+            if (accept_kw("uv_vectors")) {
+                for (int k = 0; k < 3; ++k) {
+                    if (k) accept_sym(",");
+                    parse_vector();
+                }
+            } else if (accept_kw("texture")) {
+                unsupported(i, "textures of single mesh triangles (the mesh's texture is used)");
+                if (is_sym_tok(peek(), "{"))
+                    skip_block();
+                else
+                    next();
+            } else {
+                error_expected(i, "uv_vectors, texture or '}'");
+            }
+        }
+        add_triangle(*mesh, p[0], p[1], p[2], stri ? n : nullptr);
+        smooth.push_back(stri);
+        any_smooth = any_smooth || stri;
+        if (mesh->positions.size() > size_t(kMaxArrayElements)) error_at(t, "mesh too large");
+    }
+    if (mesh->indices.empty()) error_expected(peek(), "triangle or smooth_triangle in mesh");
+    complete_normals(*mesh, any_smooth, smooth);
+    o.kind = PovKind::Mesh;
+    o.mesh = mesh;
+    bool texture_here = false;
+    parse_object_modifiers(o, texture_here);
+    (void)kw;
+}
+
+void Parser::parse_mesh2(const Token& kw, PovObject& o) {
+    expect_sym("{");
+    std::vector<Vec3> vertices, normals;
+    std::vector<Vec3> faces, normal_faces; // index triples as floats
+    // A section: "NAME { count, item, item ... }"; vectors are kept, floats after a vector
+    // (texture indices of faces) are skipped.
+    auto section = [&](std::vector<Vec3>& out) {
+        expect_sym("{");
+        const Token at = peek();
+        const Value count = parse_additive(); // "14 <-1, ...>": a count, not a comparison
+        if (count.type != VType::Float) error_expected(at, "the item count");
+        const double n = count.v[0];
+        if (n < 0 || n > double(kMaxArrayElements)) error_at(at, "bad item count");
+        charge(size_t(n) * sizeof(Vec3), at);
+        out.reserve(size_t(n));
+        accept_sym(",");
+        while (!accept_sym("}")) {
+            const Token t = peek();
+            const Value v = parse_expr();
+            if (v.type == VType::Vector || v.type == VType::Color)
+                out.emplace_back(float(v.v[0]), float(v.v[1]), float(v.dim > 2 ? v.v[2] : 0));
+            else if (v.type != VType::Float)
+                error_expected(t, "a vector");
+            accept_sym(",");
+        }
+        if (out.size() != size_t(n))
+            error_at(at, "the section says " + std::to_string(size_t(n)) + " items but has " +
+                             std::to_string(out.size()));
+    };
+    for (;;) {
+        const Token t = peek();
+        if (accept_kw("vertex_vectors"))
+            section(vertices);
+        else if (accept_kw("normal_vectors"))
+            section(normals);
+        else if (accept_kw("face_indices"))
+            section(faces);
+        else if (accept_kw("normal_indices"))
+            section(normal_faces);
+        else if (accept_kw("uv_vectors") || accept_kw("uv_indices")) {
+            std::vector<Vec3> ignored;
+            if (t.text == "uv_indices")
+                section(ignored);
+            else
+                skip_block();
+        } else if (accept_kw("texture_list")) {
+            unsupported(t, "mesh2 texture_list (the mesh's texture is used)");
+            skip_block();
+        } else {
+            break;
+        }
+    }
+    if (vertices.empty() || faces.empty())
+        error_at(kw, "mesh2 needs vertex_vectors and face_indices");
+    auto mesh = std::make_shared<Mesh>();
+    const bool smooth = !normals.empty();
+    if (smooth && !normal_faces.empty() && normal_faces.size() != faces.size())
+        error_at(kw, "normal_indices and face_indices differ in count");
+    auto index = [&](float f, size_t count) {
+        if (f < 0 || size_t(f) >= count)
+            error_at(kw, "mesh2 index " + std::to_string(long(f)) + " out of range (" +
+                             std::to_string(count) + ")");
+        return uint32_t(f);
+    };
+    if (smooth && (!normal_faces.empty() || normals.size() != vertices.size())) {
+        const std::vector<Vec3>& nf = normal_faces.empty() ? faces : normal_faces;
+        for (size_t f = 0; f < faces.size(); ++f) {
+            Vec3 p[3], n[3];
+            for (int k = 0; k < 3; ++k) {
+                p[k] = vertices[index(faces[f][k], vertices.size())];
+                n[k] = normals[index(nf[f][k], normals.size())];
+            }
+            add_triangle(*mesh, p[0], p[1], p[2], n);
+        }
+    } else {
+        mesh->positions = vertices;
+        if (smooth) mesh->normals = normals;
+        for (const Vec3& f : faces)
+            for (int k = 0; k < 3; ++k) mesh->indices.push_back(index(f[k], vertices.size()));
+    }
+    o.kind = PovKind::Mesh;
+    o.mesh = mesh;
+    bool texture_here = false;
+    parse_object_modifiers(o, texture_here);
+}
+
+namespace {
+
+/// Ear clipping of one simple polygon (no repeated closing point) in 3D.
+void triangulate(const std::vector<Vec3>& pts, Mesh& m) {
+    if (pts.size() < 3) return;
+    Vec3 n(0, 0, 0); // Newell's normal
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const Vec3 a = pts[i], b = pts[(i + 1) % pts.size()];
+        n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    int ax = 0;
+    if (std::fabs(n.y) > std::fabs(n[ax])) ax = 1;
+    if (std::fabs(n.z) > std::fabs(n[ax])) ax = 2;
+    const int u = (ax + 1) % 3, v = (ax + 2) % 3;
+    const float sign = n[ax] >= 0 ? 1.0f : -1.0f;
+    auto area = [&](Vec3 a, Vec3 b, Vec3 c) {
+        return sign * ((b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]));
+    };
+    std::vector<size_t> idx(pts.size());
+    for (size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+    const uint32_t base = uint32_t(m.positions.size());
+    m.positions.insert(m.positions.end(), pts.begin(), pts.end());
+    size_t guard = 0;
+    while (idx.size() > 3 && guard++ < 4 * pts.size() * pts.size()) {
+        bool clipped = false;
+        for (size_t i = 0; i < idx.size(); ++i) {
+            const size_t a = idx[(i + idx.size() - 1) % idx.size()], b = idx[i],
+                         c = idx[(i + 1) % idx.size()];
+            if (area(pts[a], pts[b], pts[c]) <= 0) continue;
+            bool inside = false;
+            for (size_t j : idx) {
+                if (j == a || j == b || j == c) continue;
+                if (area(pts[a], pts[b], pts[j]) >= 0 && area(pts[b], pts[c], pts[j]) >= 0 &&
+                    area(pts[c], pts[a], pts[j]) >= 0) {
+                    inside = true;
+                    break;
+                }
+            }
+            if (inside) continue;
+            m.indices.insert(m.indices.end(),
+                             {base + uint32_t(a), base + uint32_t(b), base + uint32_t(c)});
+            idx.erase(idx.begin() + long(i));
+            clipped = true;
+            break;
+        }
+        if (!clipped) break; // degenerate: fan the rest
+    }
+    for (size_t i = 1; i + 1 < idx.size(); ++i)
+        m.indices.insert(m.indices.end(), {base + uint32_t(idx[0]), base + uint32_t(idx[i]),
+                                           base + uint32_t(idx[i + 1])});
+}
+
+} // namespace
+
+void Parser::parse_polygon(const Token& kw, PovObject& o) {
+    expect_sym("{");
+    const Token at = peek();
+    const Value count = parse_additive();
+    if (count.type != VType::Float) error_expected(at, "the point count");
+    const double n = count.v[0];
+    if (n < 3 || n > double(kMaxArrayElements)) error_at(at, "a polygon needs at least 3 points");
+    std::vector<Vec3> pts;
+    for (size_t i = 0; i < size_t(n); ++i) {
+        accept_sym(",");
+        pts.push_back(parse_vector());
+    }
+    auto mesh = std::make_shared<Mesh>();
+    std::vector<Vec3> cur;
+    int pieces = 0;
+    for (const Vec3& p : pts) {
+        if (!cur.empty() && cur.size() > 2 && p == cur.front()) {
+            triangulate(cur, *mesh);
+            cur.clear();
+            ++pieces;
+            continue;
+        }
+        cur.push_back(p);
+    }
+    if (cur.size() >= 3) {
+        if (cur.back() == cur.front()) cur.pop_back();
+        triangulate(cur, *mesh);
+        ++pieces;
+    }
+    if (pieces > 1) unsupported(kw, "polygon holes (each closed outline is filled on its own)");
+    if (mesh->indices.empty()) error_at(kw, "degenerate polygon");
+    o.kind = PovKind::Mesh;
+    o.mesh = mesh;
+    bool texture_here = false;
+    parse_object_modifiers(o, texture_here);
+}
+
+} // namespace sheaf::io::pov

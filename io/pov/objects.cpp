@@ -1,0 +1,458 @@
+// Objects: the analytic shapes (sphere, box, cylinder, cone, disc, plane, torus) placed on
+// their canonical forms (core/geometry/shape.h), CSG, object references, the modifiers and
+// transforms. Transforms are applied to the object as they are read, in POV-Ray's own
+// coordinates; rotations follow POV-Ray (x, then y, then z, degrees).
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <cmath>
+#include <set>
+
+namespace sheaf::io::pov {
+
+namespace {
+
+const std::set<std::string>& supported_objects() {
+    static const std::set<std::string> s = {
+        "sphere",     "box",      "cylinder",        "cone",       "disc",   "plane",
+        "torus",      "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
+        "union",      "merge",    "intersection",    "difference", "object", "light_source",
+        "light_group"};
+    return s;
+}
+
+const std::set<std::string>& unsupported_objects() {
+    static const std::set<std::string> s = {
+        "blob",       "height_field",  "isosurface",   "julia_fractal",  "lathe",
+        "prism",      "sor",           "sphere_sweep", "superellipsoid", "text",
+        "parametric", "bicubic_patch", "quadric",      "quartic",        "cubic",
+        "poly",       "polynomial",    "ovus",         "lemon"};
+    return s;
+}
+
+/// The affine map whose columns are c0, c1, c2 and whose translation is `o`.
+Affine frame(Vec3 o, Vec3 c0, Vec3 c1, Vec3 c2) {
+    Affine a;
+    for (int i = 0; i < 3; ++i)
+        a.m[i][0] = c0[i], a.m[i][1] = c1[i], a.m[i][2] = c2[i], a.m[i][3] = o[i];
+    return a;
+}
+
+/// Unit vectors u, v with (u, v, w) right-handed and orthonormal; w must be unit length.
+void basis(Vec3 w, Vec3& u, Vec3& v) {
+    const Vec3 a = std::fabs(w.x) < 0.9f ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    u = normalize(cross(a, w));
+    v = cross(w, u);
+}
+
+} // namespace
+
+bool Parser::is_object_start(const Token& t) const {
+    return t.kind == TokKind::Ident &&
+           (supported_objects().count(t.text) || unsupported_objects().count(t.text));
+}
+
+bool Parser::parse_object(PovObject& o) {
+    const Token kw = next();
+    o = PovObject();
+    o.where = kw;
+    if (++objects_made_ > kMaxObjects)
+        error_at(kw, "more than " + std::to_string(kMaxObjects) + " objects");
+    const std::string& k = kw.text;
+    if (unsupported_objects().count(k)) {
+        unsupported(kw, "object '" + k + "'");
+        skip_block();
+        return false;
+    }
+    if (k == "light_group") {
+        unsupported(kw, "light_group (rendered as a union; its lights light everything)");
+        parse_csg(kw, o);
+        o.op = CsgOp::Union;
+        return true;
+    }
+    if (k == "union" || k == "merge" || k == "intersection" || k == "difference") {
+        parse_csg(kw, o);
+        return true;
+    }
+    if (k == "object") {
+        expect_sym("{");
+        const Token& t = peek();
+        bool ok = true;
+        Value declared;
+        if (accept_declared_any(declared)) {
+            if (declared.type == VType::Other && declared.str == "object")
+                ok = false; // an unsupported object, warned where it was declared
+            else if (declared.type == VType::Object)
+                o = declared.as<PovObject>();
+            else
+                error_expected(t, std::string("an object, not ") + type_name(declared.type));
+        } else if (is_object_start(t)) {
+            ok = parse_object(o);
+        } else {
+            error_expected(t, "an object identifier or an object");
+        }
+        bool texture_here = false;
+        parse_object_modifiers(o, texture_here);
+        return ok;
+    }
+    if (k == "triangle" || k == "smooth_triangle") {
+        parse_triangle(kw, o, k == "smooth_triangle");
+        return true;
+    }
+    if (k == "mesh") {
+        parse_mesh(kw, o);
+        return true;
+    }
+    if (k == "mesh2") {
+        parse_mesh2(kw, o);
+        return true;
+    }
+    if (k == "polygon") {
+        parse_polygon(kw, o);
+        return true;
+    }
+    if (k == "light_source") {
+        parse_light(kw, o);
+        return true;
+    }
+    parse_shape(kw, o);
+    return true;
+}
+
+void Parser::parse_shape(const Token& kw, PovObject& o) {
+    const std::string& k = kw.text;
+    o.kind = PovKind::Shape;
+    expect_sym("{");
+    if (k == "sphere") {
+        const Vec3 c = parse_vector();
+        accept_sym(",");
+        const float r = float(parse_float());
+        o.shape.kind = ShapeKind::Sphere;
+        o.local = Affine::translate(c) * Affine::scale(Vec3(r));
+    } else if (k == "box") {
+        const Vec3 a = parse_vector();
+        accept_sym(",");
+        const Vec3 b = parse_vector();
+        o.shape.kind = ShapeKind::Box;
+        Vec3 h = (b - a) * 0.5f;
+        for (int i = 0; i < 3; ++i) h[i] = std::max(std::fabs(h[i]), 1e-6f);
+        o.local = Affine::translate((a + b) * 0.5f) * Affine::scale(h);
+    } else if (k == "cylinder" || k == "cone") {
+        const Vec3 base = parse_vector();
+        accept_sym(",");
+        float r0 = 0;
+        if (k == "cone") {
+            r0 = float(parse_float());
+            accept_sym(",");
+        }
+        const Vec3 cap = parse_vector();
+        accept_sym(",");
+        const float r1 = float(parse_float());
+        const Vec3 axis = cap - base;
+        if (length(axis) <= 0) { // POV-Ray stops here; left out, so the rest still loads
+            unsupported(kw, "degenerate " + k + " (its base and cap are the same point; left out)");
+            o.kind = PovKind::Csg, o.op = CsgOp::Union;
+            bool texture_here = false;
+            parse_object_modifiers(o, texture_here);
+            return;
+        }
+        Vec3 u, v;
+        basis(normalize(axis), u, v);
+        if (k == "cylinder") {
+            o.shape.kind = ShapeKind::Cylinder;
+            o.local = frame(base, u * r1, v * r1, axis);
+        } else {
+            o.shape.kind = ShapeKind::Cone;
+            o.shape.a = std::fabs(r0), o.shape.b = std::fabs(r1);
+            o.local = frame(base, u, v, axis);
+        }
+    } else if (k == "disc") {
+        const Vec3 c = parse_vector();
+        accept_sym(",");
+        const Vec3 n = parse_vector();
+        accept_sym(",");
+        const float r = float(parse_float());
+        float hole = 0;
+        if (accept_sym(",")) hole = float(parse_float());
+        if (length(n) <= 0 || r <= 0) error_at(kw, "degenerate disc (zero normal or radius)");
+        Vec3 u, v;
+        const Vec3 w = normalize(n);
+        basis(w, u, v);
+        o.shape.kind = ShapeKind::Disc;
+        o.shape.a = std::clamp(hole / r, 0.0f, 1.0f);
+        o.local = frame(c, u * r, v * r, w);
+    } else if (k == "plane") {
+        const Vec3 n = parse_vector();
+        accept_sym(",");
+        const float d = float(parse_float());
+        if (length(n) <= 0) error_at(kw, "degenerate plane (zero normal)");
+        Vec3 u, v;
+        const Vec3 w = normalize(n);
+        basis(w, u, v);
+        o.shape.kind = ShapeKind::Plane;
+        o.local = frame(w * d, u, v, w);
+    } else if (k == "torus") {
+        const float R = float(parse_float());
+        accept_sym(",");
+        const float r = float(parse_float());
+        if (R <= 0) error_at(kw, "a torus needs a positive major radius");
+        o.shape.kind = ShapeKind::Torus;
+        o.shape.a = r / R;
+        // Canonical torus around z; POV-Ray's lies around y.
+        o.local = frame({0, 0, 0}, {R, 0, 0}, {0, 0, -R}, {0, R, 0});
+    }
+    bool texture_here = false;
+    parse_object_modifiers(o, texture_here);
+}
+
+void Parser::parse_csg(const Token& kw, PovObject& o) {
+    const std::string& k = kw.text;
+    o.kind = PovKind::Csg;
+    o.op = k == "union"          ? CsgOp::Union
+           : k == "merge"        ? CsgOp::Merge
+           : k == "intersection" ? CsgOp::Intersection
+                                 : CsgOp::Difference;
+    expect_sym("{");
+    bool texture_here = false;
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        if (is_object_start(t)) {
+            PovObject child;
+            if (parse_object(child)) o.children.push_back(std::move(child));
+            continue;
+        }
+        if (!parse_modifier(o, texture_here)) error_expected(t, "an object, a modifier or '}'");
+    }
+}
+
+void Parser::parse_object_modifiers(PovObject& o, bool& texture_here) {
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        if (!parse_modifier(o, texture_here)) error_expected(t, "an object modifier or '}'");
+    }
+}
+
+bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
+    Affine m;
+    if (parse_transform_item(m)) {
+        apply_transform(o, m);
+        return true;
+    }
+    const Token t = peek();
+    if (t.kind != TokKind::Ident) return false;
+    const std::string& k = t.text;
+    auto base = [&]() { return o.texture ? *o.texture : model.default_texture; };
+    if (k == "texture") {
+        advance();
+        PovTexture tex = parse_texture(model.default_texture);
+        if (texture_here) {
+            unsupported(t, "layered texture (the first layer is used)");
+        } else {
+            o.texture = std::make_shared<PovTexture>(tex);
+            texture_here = true;
+        }
+    } else if (k == "pigment") {
+        advance();
+        PovTexture tex = base();
+        parse_pigment(tex.pigment);
+        o.texture = std::make_shared<PovTexture>(tex);
+    } else if (k == "finish") {
+        advance();
+        PovTexture tex = base();
+        parse_finish(tex.finish);
+        o.texture = std::make_shared<PovTexture>(tex);
+    } else if (k == "interior") {
+        advance();
+        o.ior = parse_interior();
+    } else if (k == "material") {
+        advance();
+        expect_sym("{");
+        for (;;) {
+            const Token& i = peek();
+            if (accept_sym("}")) break;
+            Value mat;
+            if (accept_declared(VType::Texture, mat, "a material")) {
+                o.texture = std::make_shared<PovTexture>(mat.as<PovTexture>());
+                if (mat.v[0] > 0) o.ior = mat.v[0];
+                texture_here = true;
+            } else if (!parse_modifier(o, texture_here)) {
+                error_expected(i, "texture, interior or '}' in material");
+            }
+        }
+    } else if (k == "normal" || k == "interior_texture" || k == "photons") {
+        advance();
+        unsupported(t, k);
+        if (is_sym_tok(peek(), "{"))
+            skip_block();
+        else
+            next();
+    } else if (k == "radiosity") {
+        advance();
+        skip_block();
+    } else if (k == "inverse") {
+        advance();
+        o.inverse = !o.inverse;
+    } else if (k == "open") {
+        advance();
+        if (o.kind == PovKind::Shape) o.shape.open = parse_bool_opt(true);
+    } else if (k == "hollow" || k == "sturm" || k == "no_radiosity" || k == "double_illuminate" ||
+               k == "split_union" || k == "cutaway_textures" || k == "uv_mapping" ||
+               k == "hierarchy" || k == "smooth" || k == "global_lights") {
+        advance();
+        parse_bool_opt(true);
+    } else if (k == "no_shadow" || k == "no_reflection" || k == "no_image") {
+        advance();
+        if (parse_bool_opt(true)) unsupported(t, k + " (the object is rendered normally)");
+    } else if (k == "inside_vector") {
+        advance();
+        parse_vector();
+    } else if (k == "bounded_by") {
+        advance();
+        skip_block();
+    } else if (k == "clipped_by") {
+        advance();
+        parse_clipped_by(t, o);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+bool analytic(const PovObject& o) {
+    if (o.kind == PovKind::Shape) return true;
+    if (o.kind != PovKind::Csg) return false;
+    for (const PovObject& c : o.children)
+        if (!analytic(c)) return false;
+    return true;
+}
+
+} // namespace
+
+void Parser::parse_clipped_by(const Token& kw, PovObject& o) {
+    expect_sym("{");
+    std::vector<PovObject> clips;
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) break;
+        if (accept_kw("bounded_by")) continue; // clipped_by { bounded_by }: nothing to add
+        if (!is_object_start(t)) error_expected(t, "an object or '}'");
+        PovObject c;
+        if (parse_object(c)) clips.push_back(std::move(c));
+    }
+    if (clips.empty()) return;
+    bool ok = analytic(o);
+    for (const PovObject& c : clips) ok = ok && analytic(c);
+    if (!ok) {
+        unsupported(kw, "clipped_by on a mesh (ignored)");
+        return;
+    }
+    PovObject group;
+    group.kind = PovKind::Csg;
+    group.op = CsgOp::Intersection;
+    group.where = o.where;
+    group.texture = o.texture;
+    group.ior = o.ior;
+    for (PovObject& c : clips) {
+        if (!c.texture) c.texture = o.texture;
+        c.inverse = c.inverse; // clips keep their own inside
+    }
+    group.children.push_back(std::move(o));
+    for (PovObject& c : clips) group.children.push_back(std::move(c));
+    o = std::move(group);
+}
+
+bool Parser::parse_transform_item(Affine& m) {
+    const Token t = peek();
+    if (t.kind != TokKind::Ident) return false;
+    if (t.text == "translate") {
+        advance();
+        m = Affine::translate(parse_vector());
+    } else if (t.text == "scale") {
+        advance();
+        Vec3 s = parse_vector();
+        for (int i = 0; i < 3; ++i)
+            if (s[i] == 0) s[i] = 1; // POV-Ray too (with a warning)
+        m = Affine::scale(s);
+    } else if (t.text == "rotate") {
+        advance();
+        const Vec3 r = parse_vector() * float(M_PI / 180);
+        m = Affine::rotate({0, 0, 1}, r.z) * Affine::rotate({0, 1, 0}, r.y) *
+            Affine::rotate({1, 0, 0}, r.x);
+    } else if (t.text == "matrix") {
+        advance();
+        expect_sym("<");
+        double v[12];
+        ++no_gt_;
+        for (int i = 0; i < 12; ++i) {
+            v[i] = parse_float();
+            if (i < 11) expect_sym(",", "',' (a matrix has 12 values)");
+        }
+        --no_gt_;
+        expect_sym(">");
+        m = Affine();
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 3; ++c) m.m[r][c] = float(v[c * 3 + r]);
+            m.m[r][3] = float(v[9 + r]);
+        }
+    } else if (t.text == "transform") {
+        advance();
+        m = parse_transform_block();
+    } else {
+        return false;
+    }
+    return true;
+}
+
+Affine Parser::parse_transform_block() {
+    const Token t = peek();
+    Value declared;
+    if (accept_declared(VType::Transform, declared, "a transform")) return declared.as<Affine>();
+    expect_sym("{", "'{' or a transform identifier");
+    Affine total;
+    bool inverse = false;
+    for (;;) {
+        const Token i = peek();
+        if (accept_sym("}")) break;
+        if (accept_kw("inverse")) {
+            inverse = !inverse;
+            continue;
+        }
+        if (accept_declared(VType::Transform, declared, "a transform")) {
+            total = declared.as<Affine>() * total;
+            continue;
+        }
+        Affine m;
+        if (!parse_transform_item(m)) error_expected(i, "translate, rotate, scale, matrix or '}'");
+        total = m * total;
+    }
+    if (inverse) {
+        if (std::fabs(total.determinant()) < 1e-20f) error_at(t, "inverse of a singular transform");
+        total = total.inverse();
+    }
+    return total;
+}
+
+void Parser::apply_transform(PovObject& o, const Affine& m) {
+    switch (o.kind) {
+    case PovKind::Shape:
+    case PovKind::Mesh:
+        o.local = m * o.local;
+        break;
+    case PovKind::Csg:
+        for (PovObject& c : o.children) apply_transform(c, m);
+        break;
+    case PovKind::Light:
+        o.light.light.position = m.point(o.light.light.position);
+        o.light.point_at = m.point(o.light.point_at);
+        o.light.axis1 = m.vector(o.light.axis1);
+        o.light.axis2 = m.vector(o.light.axis2);
+        break;
+    }
+}
+
+} // namespace sheaf::io::pov

@@ -1,0 +1,270 @@
+// Tests of objects: each shape on its canonical form, CSG trees, meshes, object references,
+// transforms (POV-Ray's rotation order, the z mirror), textures to materials, and unsupported
+// features as warnings (errors when strict).
+#include "io/pov/builder.h"
+#include "io/pov/pov_test_util.h"
+
+#include <cmath>
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::error_of;
+using test::load_text;
+using test::TempDir;
+
+void expect_near(Vec3 a, Vec3 b, float eps = 1e-5f) {
+    EXPECT_NEAR(a.x, b.x, eps);
+    EXPECT_NEAR(a.y, b.y, eps);
+    EXPECT_NEAR(a.z, b.z, eps);
+}
+
+/// Where the canonical point `p` of the single shape of `r` lands in POV-Ray coordinates.
+Vec3 pov_point(const PovResult& r, Vec3 p) {
+    const ShapeObject& o = r.scene.shape_objects.at(0);
+    const Vec3 world = o.transform.point(o.nodes.at(0).transform.point(p));
+    return pov_to_sheaf().point(world); // the mirror is its own inverse
+}
+
+TEST(PovObjects, SphereAndTheMirror) {
+    const PovResult r = load_text("sphere { <1, 2, 3>, 0.5 }");
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    const ShapeObject& o = r.scene.shape_objects[0];
+    EXPECT_EQ(o.nodes[0].shape.kind, ShapeKind::Sphere);
+    // Sheaf world: z mirrored.
+    expect_near(o.transform.point(o.nodes[0].transform.point({0, 0, 0})), {1, 2, -3});
+    expect_near(pov_point(r, {1, 0, 0}), {1.5f, 2, 3});
+    EXPECT_TRUE(r.warnings.empty());
+}
+
+TEST(PovObjects, BoxCylinderCone) {
+    PovResult r = load_text("box { <-1, 0, 2>, <3, 2, 4> }");
+    EXPECT_EQ(r.scene.shape_objects[0].nodes[0].shape.kind, ShapeKind::Box);
+    expect_near(pov_point(r, {-1, -1, -1}), {-1, 0, 2});
+    expect_near(pov_point(r, {1, 1, 1}), {3, 2, 4});
+
+    r = load_text("cylinder { <0, 1, 0>, <0, 4, 0>, 2 open }");
+    const Shape& cyl = r.scene.shape_objects[0].nodes[0].shape;
+    EXPECT_EQ(cyl.kind, ShapeKind::Cylinder);
+    EXPECT_TRUE(cyl.open);
+    expect_near(pov_point(r, {0, 0, 0}), {0, 1, 0});
+    expect_near(pov_point(r, {0, 0, 1}), {0, 4, 0});
+    EXPECT_NEAR(length(pov_point(r, {1, 0, 0}) - Vec3(0, 1, 0)), 2, 1e-5);
+
+    r = load_text("cone { <0, 0, 0>, 1, <2, 0, 0>, 0.5 }");
+    const Shape& cone = r.scene.shape_objects[0].nodes[0].shape;
+    EXPECT_EQ(cone.kind, ShapeKind::Cone);
+    EXPECT_FLOAT_EQ(cone.a, 1);
+    EXPECT_FLOAT_EQ(cone.b, 0.5f);
+    EXPECT_FALSE(cone.open);
+    expect_near(pov_point(r, {0, 0, 1}), {2, 0, 0});
+}
+
+TEST(PovObjects, DiscPlaneTorus) {
+    PovResult r = load_text("disc { <0, 1, 0>, y, 2, 0.5 }");
+    const Shape& disc = r.scene.shape_objects[0].nodes[0].shape;
+    EXPECT_EQ(disc.kind, ShapeKind::Disc);
+    EXPECT_FLOAT_EQ(disc.a, 0.25f);
+    expect_near(pov_point(r, {0, 0, 1}), {0, 2, 0}); // the normal
+    EXPECT_NEAR(length(pov_point(r, {1, 0, 0}) - Vec3(0, 1, 0)), 2, 1e-5);
+
+    r = load_text("plane { <0, 2, 0>, -1 }"); // y = -1, inside below
+    EXPECT_EQ(r.scene.shape_objects[0].nodes[0].shape.kind, ShapeKind::Plane);
+    expect_near(pov_point(r, {0, 0, 0}), {0, -1, 0});
+    expect_near(pov_point(r, {0, 0, 1}), {0, 0, 0}); // local +z is the outside normal (+y)
+
+    r = load_text("torus { 2, 0.5 }");
+    const Shape& torus = r.scene.shape_objects[0].nodes[0].shape;
+    EXPECT_EQ(torus.kind, ShapeKind::Torus);
+    EXPECT_FLOAT_EQ(torus.a, 0.25f);
+    expect_near(pov_point(r, {0, 0, 1}), {0, 2, 0}); // POV-Ray's torus is around y
+    EXPECT_NEAR(std::fabs(pov_point(r, {1, 0, 0}).x), 2, 1e-5);
+}
+
+TEST(PovObjects, TransformsFollowPovRay) {
+    // rotate <0, 0, 90> turns +x into +y; rotations apply x, then y, then z.
+    PovResult r = load_text("sphere { <1, 0, 0>, 1 rotate <0, 0, 90> }");
+    expect_near(pov_point(r, {0, 0, 0}), {0, 1, 0});
+    r = load_text("sphere { <0, 1, 0>, 1 rotate <90, 90, 0> }");
+    // x by 90: (0,1,0) -> (0,0,1); then y by 90: (0,0,1) -> (1,0,0).
+    expect_near(pov_point(r, {0, 0, 0}), {1, 0, 0});
+    r = load_text("sphere { 0, 1 scale <1, 2, 3> translate <1, 1, 1> }");
+    expect_near(pov_point(r, {1, 1, 1}), {2, 3, 4});
+    r = load_text("sphere { 0, 1 matrix <1,0,0, 0,1,0, 0,0,1, 5,6,7> }");
+    expect_near(pov_point(r, {0, 0, 0}), {5, 6, 7});
+    r = load_text("#declare T = transform { translate x rotate z*90 }\n"
+                  "sphere { 0, 1 transform T transform { T inverse } translate y }");
+    expect_near(pov_point(r, {0, 0, 0}), {0, 1, 0});
+}
+
+TEST(PovObjects, CsgTrees) {
+    const PovResult r =
+        load_text("difference {\n"
+                  "  box { -1, 1 }\n"
+                  "  intersection { sphere { 0, 1.2 } cylinder { -2*x, 2*x, 0.5 } }\n"
+                  "  sphere { y, 0.3 inverse }\n"
+                  "  translate x\n"
+                  "}\n");
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    const ShapeObject& o = r.scene.shape_objects[0];
+    ASSERT_EQ(o.nodes.size(), 6u);
+    const CsgNode& root = o.nodes[o.root];
+    EXPECT_EQ(root.op, CsgOp::Difference);
+    ASSERT_EQ(root.children.size(), 3u);
+    EXPECT_EQ(o.nodes[root.children[0]].shape.kind, ShapeKind::Box);
+    EXPECT_EQ(o.nodes[root.children[1]].op, CsgOp::Intersection);
+    EXPECT_TRUE(o.nodes[root.children[2]].inverse);
+    for (size_t i = 0; i < o.nodes.size(); ++i)
+        for (uint32_t c : o.nodes[i].children) EXPECT_GT(c, i); // parents first
+    // The CSG's translate reached the leaves.
+    const Vec3 c = pov_to_sheaf().point(
+        o.transform.point(o.nodes[root.children[0]].transform.point({0, 0, 0})));
+    expect_near(c, {1, 0, 0});
+    EXPECT_NO_THROW(r.scene.validate());
+}
+
+TEST(PovObjects, UnionsSplitAndMergesStay) {
+    PovResult r = load_text("union { sphere { 0, 1 } box { 2, 3 } }");
+    EXPECT_EQ(r.scene.shape_objects.size(), 2u);
+    r = load_text("merge { sphere { 0, 1 } sphere { x, 1 } }");
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    EXPECT_EQ(r.scene.shape_objects[0].nodes[0].op, CsgOp::Merge);
+}
+
+TEST(PovObjects, TexturesAndMaterials) {
+    const PovResult r = load_text(
+        "global_settings { assumed_gamma 1.0 }\n"
+        "#declare Glass = material { texture { pigment { rgbf <1, 1, 1, 0.9> }\n"
+        "  finish { phong 0.8 phong_size 120 reflection 0.2 } } interior { ior 1.33 } }\n"
+        "union { sphere { 0, 1 material { Glass } }\n"
+        "  sphere { x * 3, 1 }\n"
+        "  pigment { color rgb <1, 0, 0> } finish { ambient 0.2 diffuse 0.5 emission 2 } }\n");
+    ASSERT_EQ(r.scene.shape_objects.size(), 2u);
+    const Material& glass = r.scene.materials[r.scene.shape_objects[0].nodes[0].material];
+    EXPECT_FLOAT_EQ(glass.transmission, 0.9f);
+    EXPECT_FLOAT_EQ(glass.specular, 0.8f);
+    EXPECT_FLOAT_EQ(glass.phong_exponent, 120);
+    EXPECT_FLOAT_EQ(glass.mirror, 0.2f);
+    EXPECT_FLOAT_EQ(glass.ior, 1.33f);
+    const Material& red = r.scene.materials[r.scene.shape_objects[1].nodes[0].material];
+    EXPECT_FLOAT_EQ(red.color.x, 1);
+    EXPECT_FLOAT_EQ(red.color.y, 0);
+    EXPECT_FLOAT_EQ(red.ambient, 0.2f);
+    EXPECT_FLOAT_EQ(red.diffuse, 0.5f);
+    EXPECT_FLOAT_EQ(red.emission.x, 2); // pigment times emission
+    EXPECT_TRUE(r.warnings.empty());
+}
+
+TEST(PovObjects, GammaDecodesLegacyColours) {
+    const PovResult r = load_text("global_settings { assumed_gamma 2.2 }\n"
+                                  "sphere { 0, 1 pigment { rgb 0.5 } }\nbackground { rgb 0.5 }");
+    EXPECT_NEAR(r.scene.materials[r.scene.shape_objects[0].nodes[0].material].color.x,
+                std::pow(0.5, 2.2), 1e-5);
+    EXPECT_NEAR(r.scene.background.x, std::pow(0.5, 2.2), 1e-5);
+}
+
+TEST(PovObjects, PatternsAreAveragedWithAWarning) {
+    const PovResult r =
+        load_text("sphere { 0, 1 pigment { marble turbulence 0.5 color_map { [0 rgb 0] [1 rgb <1, "
+                  "0.5, 0>] } } }\n"
+                  "box { 0, 1 pigment { checker rgb 1, rgb 0 scale 0.5 } normal { bumps 0.3 } }\n");
+    const Material& m = r.scene.materials[r.scene.shape_objects[0].nodes[0].material];
+    EXPECT_FLOAT_EQ(m.color.x, 0.5f);
+    EXPECT_FLOAT_EQ(m.color.y, 0.25f);
+    const Material& c = r.scene.materials[r.scene.shape_objects[1].nodes[0].material];
+    EXPECT_FLOAT_EQ(c.color.x, 0.5f);
+    ASSERT_EQ(r.warnings.size(), 3u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:25: warning: unsupported pigment pattern 'marble'"),
+              std::string::npos);
+    EXPECT_NE(r.warnings[1].find("unsupported pigment pattern 'checker'"), std::string::npos);
+    EXPECT_NE(r.warnings[2].find("scene.pov:2:55: warning: unsupported normal"), std::string::npos);
+}
+
+TEST(PovObjects, TrianglesMeshesPolygons) {
+    const PovResult r = load_text(
+        "triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n"
+        "triangle { <0,0,1>, <1,0,1>, <0,1,1> }\n"
+        "smooth_triangle { <0,0,0>, y, <1,0,0>, y, <0,0,1>, y }\n"
+        "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } smooth_triangle { 0, y, x, y, z, y }\n"
+        "  inside_vector y translate x }\n"
+        "mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }\n"
+        "  normal_vectors { 1, z } face_indices { 2, <0,1,2>, <0,2,3> } normal_indices { 2, "
+        "<0,0,0>, <0,0,0> } }\n"
+        "polygon { 5, <0,0>, <2,0>, <2,2>, <1,1>, <0,2> }\n");
+    // Two loose triangles share one object; the others are their own meshes.
+    ASSERT_EQ(r.scene.objects.size(), 5u);
+    size_t total = 0;
+    for (const Object& o : r.scene.objects) total += r.scene.meshes[o.mesh].triangle_count();
+    EXPECT_EQ(total, 2u + 1u + 2u + 2u + 3u);
+    const Mesh& smooth = r.scene.meshes[r.scene.objects[0].mesh];
+    EXPECT_EQ(smooth.normals.size(), smooth.positions.size());
+    EXPECT_NO_THROW(r.scene.validate());
+    EXPECT_TRUE(r.warnings.empty());
+}
+
+TEST(PovObjects, ObjectReferences) {
+    const PovResult r = load_text("#declare Ball = sphere { 0, 1 pigment { rgb x } }\n"
+                                  "object { Ball translate y*2 }\n"
+                                  "object { Ball pigment { rgb y } }\n"
+                                  "#declare Arr = array[1] { box { 0, 1 } }\nobject { Arr[0] }\n");
+    ASSERT_EQ(r.scene.shape_objects.size(), 3u);
+    expect_near(pov_point(r, {0, 0, 0}), {0, 2, 0});
+    EXPECT_FLOAT_EQ(r.scene.materials[r.scene.shape_objects[1].nodes[0].material].color.y, 1);
+    EXPECT_EQ(r.scene.shape_objects[2].nodes[0].shape.kind, ShapeKind::Box);
+}
+
+TEST(PovObjects, MeshesInsideCsg) {
+    const PovResult r = load_text("union { sphere { 0, 1 } triangle { 0, x, y } }\n"
+                                  "difference { box { -1, 1 } triangle { 0, x, y } }\n");
+    EXPECT_EQ(r.scene.objects.size(), 1u);       // the union's triangle, plainly
+    EXPECT_EQ(r.scene.shape_objects.size(), 2u); // sphere, and the box without the triangle
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:2:28: warning: unsupported mesh inside intersection or "
+                                 "difference"),
+              std::string::npos);
+}
+
+TEST(PovObjects, ClippedByIsAnIntersection) {
+    const PovResult r =
+        load_text("sphere { 0, 1 clipped_by { plane { y, 0 } } bounded_by { box { -1, 1 } } }");
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    const ShapeObject& o = r.scene.shape_objects[0];
+    EXPECT_EQ(o.nodes[o.root].op, CsgOp::Intersection);
+    EXPECT_EQ(o.nodes[o.root].children.size(), 2u);
+}
+
+TEST(PovObjects, UnsupportedIsAWarningOrStrictError) {
+    const std::string s =
+        "sphere { 0, 1 }\n  blob { threshold 0.5 sphere { 0, 1, 1 } }\nbox { 0, 1 no_shadow }";
+    const PovResult r = load_text(s);
+    EXPECT_EQ(r.scene.shape_objects.size(), 2u);
+    ASSERT_EQ(r.warnings.size(), 2u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:2:3: warning: unsupported object 'blob'"),
+              std::string::npos);
+    EXPECT_NE(r.warnings[1].find("unsupported no_shadow"), std::string::npos);
+    PovOptions strict;
+    strict.strict = true;
+    EXPECT_EQ(error_of(s, strict), "scene.pov:2:3: error: unsupported object 'blob'");
+}
+
+TEST(PovObjects, SyntaxErrorsNameFileLineColumnAndToken) {
+    EXPECT_EQ(error_of("sphere { <0, 0, 0>, 1\n  pigment { rgb 1 }\n  wobble 3 }"),
+              "scene.pov:3:3: error: found 'wobble', expected an object modifier or '}'");
+    EXPECT_EQ(error_of("box { 0, 1 "),
+              "scene.pov:1:12: error: found 'end of file', expected an object "
+              "modifier or '}'");
+    EXPECT_EQ(error_of("42"), "scene.pov:1:1: error: found '42', expected an object, camera, "
+                              "light_source or directive");
+    TempDir d;
+    d.write("bad.inc", "\n\n   sphere { 0 1 ] }");
+    try {
+        load_pov_scene(d.write("s.pov", "#include \"bad.inc\""), {});
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()), d.path() + "/bad.inc:3:17: error: found ']', expected an "
+                                                    "object modifier or '}'");
+    }
+}
+
+} // namespace
+} // namespace sheaf::io::pov

@@ -1,0 +1,231 @@
+// The parser shared by the reader's parts: the token stream with its directives and macros
+// (token_stream.cpp, directives.cpp, macros.cpp, files.cpp), expressions (expressions.cpp,
+// builtins.cpp, functions_parse.cpp), objects (objects.cpp, meshes.cpp), textures
+// (textures.cpp), camera, lights and settings (camera_lights.cpp). One instance reads one scene.
+#pragma once
+
+#include "io/pov/function.h"
+#include "io/pov/lexer.h"
+#include "io/pov/model.h"
+#include "io/pov/pov_reader.h"
+#include "io/pov/value.h"
+
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace sheaf::io::pov {
+
+/// Limits: exceeding one is a SceneError at the offending position, never a hang.
+constexpr uint64_t kMaxLoopIterations = 10'000'000;
+constexpr int kMaxMacroDepth = 200;
+constexpr int kMaxIncludeDepth = 64;
+constexpr size_t kMaxArrayElements = 100'000'000;
+constexpr size_t kMaxDataBytes = size_t(2) << 30;
+constexpr size_t kMaxObjects = 20'000'000;
+
+struct Macro {
+    std::shared_ptr<const TokenFile> file;
+    size_t body = 0; // index of the first body token
+    std::vector<std::string> params;
+};
+
+/// An open #fopen file.
+struct PovFileHandle {
+    bool reading = false;
+    std::shared_ptr<const TokenFile> tokens; // reading: the file's tokens
+    size_t pos = 0;
+    std::shared_ptr<std::ofstream> out; // writing
+};
+
+class Parser {
+  public:
+    explicit Parser(const PovOptions& options);
+    /// Parses the scene file at `path` into `model`.
+    void parse_scene(const std::string& path);
+
+    PovModel model;
+    std::vector<std::string> warnings;
+
+    // ---- token stream (token_stream.cpp) ----
+    struct Cond {
+        enum Kind { If, While, For, Switch } kind = If;
+        size_t pos = 0; // While: the condition; For: the body
+        std::string var;
+        double end = 0, step = 1;
+        uint64_t iterations = 0;
+        Token where;
+    };
+    struct Frame {
+        std::shared_ptr<const TokenFile> file;
+        size_t pos = 0;
+        bool macro = false;
+        bool own_scope = false;
+        std::vector<Cond> conds;
+        Token where; // the include or the call
+    };
+    const Token& raw() const { return frames_.back().file->tokens[frames_.back().pos]; }
+    void advance();
+    /// The next token after running directives, expanding macros and leaving finished files.
+    const Token& peek();
+    /// The next token for an expression that may continue: only closes #if/#switch branches,
+    /// macros and files; any other directive ends the expression.
+    const Token& peek_cont();
+    Token next();
+    bool is_sym(const char* s) { return is_sym_tok(peek(), s); }
+    bool is_kw(const char* s) { return is_kw_tok(peek(), s); }
+    static bool is_sym_tok(const Token& t, const char* s) {
+        return t.kind == TokKind::Symbol && t.text == s;
+    }
+    static bool is_kw_tok(const Token& t, const char* s) {
+        return t.kind == TokKind::Ident && t.text == s;
+    }
+    bool accept_sym(const char* s);
+    bool accept_kw(const char* s);
+    void expect_sym(const char* s, const std::string& expected = "");
+    std::string expect_ident(const std::string& expected);
+    std::string where(const Token& t) const;
+    [[noreturn]] void error_expected(const Token& found, const std::string& expected) const;
+    [[noreturn]] void error_at(const Token& t, const std::string& msg) const;
+    void warn(const Token& t, const std::string& msg);
+    void unsupported(const Token& t, const std::string& what);
+    /// Skips a balanced { ... } block (directives inside still run).
+    void skip_block();
+    void push_file(const std::string& path, const Token& where);
+    bool in_macro_or_include() const { return frames_.size() > 1; }
+
+    // ---- symbols ----
+    const Value* lookup(const std::string& name) const;
+    Value* lookup_mut(const std::string& name);
+    void declare(const std::string& name, Value v, bool local);
+    const Macro* find_macro(const std::string& name) const;
+
+    // ---- directives (directives.cpp, macros.cpp, files.cpp) ----
+    /// Runs the directive at '#'. In continuation mode only the ones that close a branch run;
+    /// for any other, returns false and consumes nothing.
+    bool directive(bool continuation);
+    void skip_to_branch(const Token& from);
+    void declare_directive(bool local);
+    void define_macro(const Token& where);
+    void call_macro(const Token& name, const Macro& m);
+    void undef_directive();
+    void ifdef_directive(bool want_defined);
+    void include_directive(const Token& where);
+    std::string find_include(const std::string& name, const Token& where) const;
+    void fopen_directive(const Token& where);
+    void read_directive(const Token& where);
+    void write_directive(const Token& where);
+    void default_directive();
+    void version_directive();
+
+    // ---- expressions (expressions.cpp, builtins.cpp, functions_parse.cpp) ----
+    Value parse_expr();
+    double parse_float();
+    Vec3 parse_vector();
+    Color5 parse_color();
+    bool parse_bool_opt(bool dflt); // an optional boolean after a flag keyword
+    std::string parse_string();
+    /// Anything a #declare or a macro argument may hold: objects, textures, expressions...
+    Value parse_rvalue();
+    bool starts_expression(const Token& t) const;
+    Value parse_ternary();
+    Value parse_or();
+    Value parse_and();
+    Value parse_compare();
+    Value parse_additive();
+    Value parse_term();
+    Value parse_unary();
+    Value parse_postfix();
+    Value parse_primary();
+    Value parse_identifier(const Token& t);
+    Value parse_color_keyword(const Token& t);
+    Value parse_array_literal(const Token& t);
+    Value parse_array_init(const std::vector<size_t>& sizes, const Token& t);
+    Value index_value(const Value& base, const Token& t);
+    bool builtin_call(const Token& t, Value& out);
+    Value call_function(const Token& t, const PovFunction& f);
+    Value parse_function(const Token& t);
+    FnNode parse_fn(const std::vector<std::string>& params, int level);
+    FnNode parse_fn_primary(const std::vector<std::string>& params);
+    FnNode parse_fn_atom(const std::vector<std::string>& params);
+    std::string fn_unsupported_; // what the function being compiled uses that is unsupported
+    /// If the next token is a declared identifier (an array element with its indices) of
+    /// type `t`, consumes it into `out`. A declared identifier of another type is an error
+    /// naming `expected`.
+    bool accept_declared(VType t, Value& out, const std::string& expected);
+    /// If the next token is a declared identifier, consumes it (and its indices) into `out`.
+    bool accept_declared_any(Value& out);
+    int no_gt_ = 0;          // inside < >: '>' closes the vector
+    int directive_args_ = 0; // parsing a directive's condition: peek_cont runs no directive
+    /// A directive's condition (#if, #while ...): parsed without running later directives.
+    Value parse_condition();
+
+    // ---- objects (objects.cpp, meshes.cpp) ----
+    bool is_object_start(const Token& t) const;
+    /// Parses an object; false (after a warning) for an unsupported kind, skipped.
+    bool parse_object(PovObject& out);
+    /// Parses modifiers up to and including the closing '}'.
+    void parse_object_modifiers(PovObject& o, bool& texture_here);
+    /// One modifier (transform, texture, flag ...); false when the next token is not one.
+    bool parse_modifier(PovObject& o, bool& texture_here);
+    void parse_clipped_by(const Token& kw, PovObject& o);
+    bool parse_transform_item(Affine& m);
+    Affine parse_transform_block();
+    void apply_transform(PovObject& o, const Affine& m);
+    void parse_shape(const Token& kw, PovObject& o);
+    void parse_csg(const Token& kw, PovObject& o);
+    void parse_triangle(const Token& kw, PovObject& o, bool smooth);
+    void parse_mesh(const Token& kw, PovObject& o);
+    void parse_mesh2(const Token& kw, PovObject& o);
+    void parse_polygon(const Token& kw, PovObject& o);
+    size_t objects_made_ = 0;
+
+    // ---- textures (textures.cpp) ----
+    PovTexture parse_texture(const PovTexture& base);
+    PovTexture parse_texture_body(const PovTexture& base, const char* close);
+    void parse_pigment(Color5& c);
+    void parse_pigment_body(Color5& c, const char* close);
+    void parse_pattern_tail(const Token& pattern, Color5& c, bool have_entries,
+                            std::vector<Color5>& entries);
+    Color5 parse_color_map();
+    void parse_finish(PovFinish& f);
+    double parse_interior();
+    void skip_pattern_modifier(const Token& t);
+    PovTexture current_default() const { return model.default_texture; }
+
+    // ---- camera, lights, settings (camera_lights.cpp) ----
+    void parse_camera(PovCamera& c);
+    void parse_light(const Token& kw, PovObject& o);
+    void parse_global_settings();
+    void parse_background();
+    void parse_atmospheric(const Token& kw);
+    bool parse_statement(); // one top-level item; false at the end of the scene
+
+    // ---- files and random streams ----
+    std::string scene_dir_;
+    std::vector<std::string> file_names_;
+    std::vector<uint64_t> rand_streams_;
+    size_t data_bytes_ = 0; // live array elements and strings, against kMaxDataBytes
+    void charge(size_t bytes, const Token& t);
+
+    // ---- state ----
+    PovOptions options_;
+    std::vector<Frame> frames_;
+    std::vector<std::unordered_map<std::string, Value>> scopes_;
+    std::unordered_map<std::string, Macro> macros_;
+    std::map<std::string, bool> warned_; // de-duplication of identical warnings
+    int macro_depth_ = 0;
+    std::map<std::string, std::shared_ptr<const TokenFile>> file_cache_;
+    void pop_frame();
+    void skip_raw_to_end(int levels, const Token& from);
+    void switch_scan(const Token& from);
+    void end_directive(const Token& where);
+    void break_directive(const Token& where);
+    std::shared_ptr<const TokenFile> load_tokens(const std::string& path, const Token* where);
+};
+
+} // namespace sheaf::io::pov

@@ -1,0 +1,33 @@
+// load_pov_scene: parses the scene file and builds the core scene (see pov_reader.h).
+#include "io/pov/pov_reader.h"
+
+#include "core/base/error.h"
+#include "io/pov/builder.h"
+#include "io/pov/parser.h"
+
+#include <filesystem>
+
+namespace sheaf::io::pov {
+
+void Parser::parse_scene(const std::string& path) {
+    scene_dir_ = std::filesystem::path(path).parent_path().string();
+    if (scene_dir_.empty()) scene_dir_ = ".";
+    Token none;
+    push_file(path, none);
+    while (parse_statement()) {
+    }
+}
+
+PovResult load_pov_scene(const std::string& path, const PovOptions& options) {
+    if (!std::filesystem::is_regular_file(path))
+        throw SceneError(path + ": error: no such scene file");
+    Parser p(options);
+    p.parse_scene(path);
+    PovResult r;
+    r.assumed_gamma = build_scene(p, r.scene);
+    r.version = p.model.version;
+    r.warnings = std::move(p.warnings);
+    return r;
+}
+
+} // namespace sheaf::io::pov

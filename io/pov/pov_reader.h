@@ -1,0 +1,33 @@
+// The POV-Ray 3.7 scene language reader: load_pov_scene parses a .pov file (with its
+// #includes, macros, loops and declarations) into a sheaf::Scene. What the core cannot show
+// is reported as a warning "FILE:LINE:COL: warning: unsupported ..." (an error when strict);
+// syntax errors throw SceneError "FILE:LINE:COL: error: found 'TOKEN', expected ...".
+// POV-Ray is left-handed and y-up; the scene is mirrored in z (see docs/pov.md) so that
+// pictures are not mirrored.
+#pragma once
+
+#include "core/scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace sheaf::io::pov {
+
+struct PovOptions {
+    std::vector<std::string> include_paths; // searched after the including file's folder
+    bool strict = false;                    // the first unsupported feature is an error
+};
+
+struct PovResult {
+    sheaf::Scene scene;
+    std::vector<std::string> warnings;
+    double version = 3.7;     // the scene's #version (the last one), 3.7 when none
+    double assumed_gamma = 1; // the gamma the colours were decoded with
+};
+
+/// Reads the scene at `path`. Throws SceneError on a syntax error, an #error directive, an
+/// unreadable file, a limit exceeded (loops, recursion, memory), or in strict mode the first
+/// unsupported feature.
+PovResult load_pov_scene(const std::string& path, const PovOptions& options = {});
+
+} // namespace sheaf::io::pov

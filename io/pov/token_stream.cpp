@@ -1,0 +1,227 @@
+// The token stream: tokens of the current file or macro body, with directives run and macros
+// expanded as they come (peek), messages with positions, warnings and the symbol tables.
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace sheaf::io::pov {
+
+Parser::Parser(const PovOptions& options) : options_(options) {
+    scopes_.emplace_back();
+}
+
+std::string Parser::where(const Token& t) const {
+    const std::string file =
+        t.file >= 0 && size_t(t.file) < file_names_.size() ? file_names_[t.file] : std::string("?");
+    return file + ":" + std::to_string(t.line) + ":" + std::to_string(t.col);
+}
+
+void Parser::error_expected(const Token& found, const std::string& expected) const {
+    throw SceneError(where(found) + ": error: found '" + describe(found) + "', expected " +
+                     expected);
+}
+
+void Parser::error_at(const Token& t, const std::string& msg) const {
+    throw SceneError(where(t) + ": error: " + msg);
+}
+
+void Parser::warn(const Token& t, const std::string& msg) {
+    std::string w = where(t) + ": warning: " + msg;
+    if (warned_.emplace(w, true).second) warnings.push_back(std::move(w));
+}
+
+void Parser::unsupported(const Token& t, const std::string& what) {
+    if (options_.strict) throw SceneError(where(t) + ": error: unsupported " + what);
+    warn(t, "unsupported " + what);
+}
+
+void Parser::charge(size_t bytes, const Token& t) {
+    if (data_bytes_ + bytes > kMaxDataBytes)
+        error_at(t,
+                 "the scene's data would exceed " + std::to_string(kMaxDataBytes >> 20) + " MiB");
+    data_bytes_ += bytes;
+}
+
+std::shared_ptr<const TokenFile> Parser::load_tokens(const std::string& path, const Token* where) {
+    if (auto it = file_cache_.find(path); it != file_cache_.end()) return it->second;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        if (where) error_at(*where, "cannot read '" + path + "'");
+        throw SceneError(path + ": error: cannot read the file");
+    }
+    std::stringstream ss;
+    ss << in.rdbuf();
+    file_names_.push_back(path);
+    auto tf = tokenize(ss.str(), path, int(file_names_.size() - 1));
+    file_cache_[path] = tf;
+    return tf;
+}
+
+void Parser::push_file(const std::string& path, const Token& where) {
+    Frame f;
+    f.file = load_tokens(path, frames_.empty() ? nullptr : &where);
+    f.where = where;
+    f.own_scope = !frames_.empty();
+    if (f.own_scope) scopes_.emplace_back();
+    frames_.push_back(std::move(f));
+}
+
+void Parser::pop_frame() {
+    Frame& f = frames_.back();
+    if (f.own_scope) scopes_.pop_back();
+    if (f.macro) --macro_depth_;
+    frames_.pop_back();
+}
+
+void Parser::advance() {
+    Frame& f = frames_.back();
+    if (f.file->tokens[f.pos].kind != TokKind::End) ++f.pos;
+}
+
+const Token& Parser::peek() {
+    for (;;) {
+        const Token& t = raw();
+        if (t.kind == TokKind::End) {
+            Frame& f = frames_.back();
+            if (!f.conds.empty()) error_at(f.conds.back().where, "this block has no #end");
+            if (frames_.size() == 1) return t;
+            pop_frame();
+            continue;
+        }
+        if (t.kind == TokKind::Symbol && t.text == "#") {
+            directive(false);
+            continue;
+        }
+        if (t.kind == TokKind::Ident && !lookup(t.text)) {
+            if (const Macro* m = find_macro(t.text)) {
+                const Token name = t;
+                advance();
+                call_macro(name, *m);
+                continue;
+            }
+        }
+        return t;
+    }
+}
+
+const Token& Parser::peek_cont() {
+    for (;;) {
+        const Token& t = raw();
+        if (t.kind == TokKind::End && frames_.size() > 1 && frames_.back().conds.empty() &&
+            !frames_.back().macro && directive_args_ == 0) {
+            pop_frame();
+            continue;
+        }
+        if (t.kind == TokKind::Symbol && t.text == "#" && directive_args_ == 0 && directive(true))
+            continue;
+        return t;
+    }
+}
+
+Token Parser::next() {
+    Token t = peek();
+    advance();
+    return t;
+}
+
+bool Parser::accept_sym(const char* s) {
+    if (!is_sym(s)) return false;
+    advance();
+    return true;
+}
+
+bool Parser::accept_kw(const char* s) {
+    if (!is_kw(s)) return false;
+    advance();
+    return true;
+}
+
+void Parser::expect_sym(const char* s, const std::string& expected) {
+    const Token& t = peek();
+    if (!is_sym_tok(t, s))
+        error_expected(t, expected.empty() ? "'" + std::string(s) + "'" : expected);
+    advance();
+}
+
+std::string Parser::expect_ident(const std::string& expected) {
+    const Token& t = peek();
+    if (t.kind != TokKind::Ident) error_expected(t, expected);
+    std::string s = t.text;
+    advance();
+    return s;
+}
+
+void Parser::skip_block() {
+    expect_sym("{");
+    int depth = 1;
+    while (depth > 0) {
+        const Token& t = peek();
+        if (t.kind == TokKind::End) error_expected(t, "'}'");
+        if (is_sym_tok(t, "{")) ++depth;
+        if (is_sym_tok(t, "}")) --depth;
+        advance();
+    }
+}
+
+const Value* Parser::lookup(const std::string& name) const {
+    for (size_t i = scopes_.size(); i-- > 0;)
+        if (auto it = scopes_[i].find(name); it != scopes_[i].end()) return &it->second;
+    return nullptr;
+}
+
+Value* Parser::lookup_mut(const std::string& name) {
+    for (size_t i = scopes_.size(); i-- > 0;)
+        if (auto it = scopes_[i].find(name); it != scopes_[i].end()) return &it->second;
+    return nullptr;
+}
+
+void Parser::declare(const std::string& name, Value v, bool local) {
+    if (local) {
+        scopes_.back()[name] = std::move(v);
+        return;
+    }
+    if (Value* existing = lookup_mut(name)) {
+        *existing = std::move(v);
+        return;
+    }
+    scopes_.front()[name] = std::move(v);
+}
+
+bool Parser::accept_declared(VType type, Value& out, const std::string& expected) {
+    const Token t = peek();
+    if (t.kind != TokKind::Ident) return false;
+    const Value* v = lookup(t.text);
+    if (!v) return false;
+    if (v->type != type && v->type != VType::Array) return false;
+    advance();
+    Value got = *v;
+    if (got.type == VType::Array) {
+        if (!is_sym_tok(peek_cont(), "[")) error_expected(t, expected);
+        got = index_value(got, t);
+    }
+    if (got.type != type) error_expected(t, expected + ", not " + type_name(got.type));
+    out = std::move(got);
+    return true;
+}
+
+bool Parser::accept_declared_any(Value& out) {
+    const Token t = peek();
+    if (t.kind != TokKind::Ident) return false;
+    const Value* v = lookup(t.text);
+    if (!v) return false;
+    advance();
+    out = *v;
+    if (out.type == VType::Array && is_sym_tok(peek_cont(), "[")) out = index_value(out, t);
+    return true;
+}
+
+const Macro* Parser::find_macro(const std::string& name) const {
+    auto it = macros_.find(name);
+    return it == macros_.end() ? nullptr : &it->second;
+}
+
+} // namespace sheaf::io::pov

@@ -9,12 +9,14 @@
 #include "core/scene/scene.h"
 #include "core/settings/settings.h"
 #include "io/image/texture_sampler.h"
+#include "io/scene/scene_file.h"
 
 #include <atomic>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sheaf::capi {
 
@@ -66,6 +68,10 @@ template <class T> void sheaf_release(T* handle) {
 struct SheafSceneT : SheafRefCounted {
     std::mutex mutex;
     sheaf::Scene scene;
+    /// How sheafSceneLoadFile reads files (sheafSceneSetLoadOption), and what the last load
+    /// warned about.
+    sheaf::io::SceneFileOptions load_options;
+    std::vector<std::string> warnings;
     /// The committed scene; null when never committed or changed since.
     std::shared_ptr<const sheaf::PreparedScene> prepared;
 

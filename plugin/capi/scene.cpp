@@ -4,10 +4,8 @@
 
 #include "core/base/error.h"
 #include "core/scenes/builtin.h"
+#include "io/scene/scene_file.h"
 
-#include <filesystem>
-#include <fstream>
-#include <string_view>
 
 using namespace sheaf::capi;
 
@@ -24,19 +22,6 @@ template <class Edit> void modify(SheafScene handle, Edit&& edit) {
     std::lock_guard<std::mutex> lock(s.mutex);
     edit(s.scene);
     s.prepared.reset();
-}
-
-sheaf::Scene load_scene_file(const std::string& path) {
-    constexpr std::string_view kBuiltin = "builtin:";
-    if (path.compare(0, kBuiltin.size(), kBuiltin) == 0)
-        return sheaf::make_builtin_scene(std::string_view(path).substr(kBuiltin.size()));
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw sheaf::SceneError(path + ": is a directory, not a scene file");
-    if (!std::ifstream(path)) throw sheaf::SceneError(path + ": cannot open file");
-    const std::string ext = std::filesystem::path(path).extension().string();
-    // The POV-Ray and XML scene readers are still to come.
-    throw sheaf::SceneError(path + ": no reader for '" + ext + "' files yet");
 }
 
 } // namespace
@@ -106,14 +91,72 @@ SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name) {
         require(scene, "scene");
         sheaf::Scene loaded = sheaf::make_builtin_scene(require(name, "name"));
         modify(scene, [&](sheaf::Scene& s) { s = std::move(loaded); });
+        std::lock_guard<std::mutex> lock(scene->mutex);
+        scene->warnings.clear();
     });
 }
 
 SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path) {
     return barrier([&] {
-        require(scene, "scene");
-        sheaf::Scene loaded = load_scene_file(require(path, "path"));
-        modify(scene, [&](sheaf::Scene& s) { s = std::move(loaded); });
+        SheafSceneT& s = *require(scene, "scene");
+        require(path, "path");
+        sheaf::io::SceneFileOptions options;
+        {
+            std::lock_guard<std::mutex> lock(s.mutex);
+            options = s.load_options;
+        }
+        sheaf::io::SceneFile loaded = sheaf::io::load_scene_file(path, options);
+        std::lock_guard<std::mutex> lock(s.mutex);
+        s.scene = std::move(loaded.scene);
+        s.warnings = std::move(loaded.warnings);
+        s.prepared.reset();
+    });
+}
+
+SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
+                                             const char* value) {
+    return barrier([&] {
+        SheafSceneT& s = *require(scene, "scene");
+        const std::string k = require(key, "key"), v = require(value, "value");
+        std::lock_guard<std::mutex> lock(s.mutex);
+        if (k == "include_path") {
+            if (v.empty())
+                s.load_options.include_paths.clear();
+            else
+                s.load_options.include_paths.push_back(v);
+        } else if (k == "strict") {
+            if (v == "1" || v == "true" || v == "on")
+                s.load_options.strict = true;
+            else if (v == "0" || v == "false" || v == "off")
+                s.load_options.strict = false;
+            else
+                throw InvalidArgument("load option 'strict': '" + v +
+                                      "' is not allowed; expected 0 or 1");
+        } else {
+            throw InvalidArgument("unknown load option '" + k +
+                                  "'; known options: include_path, strict");
+        }
+    });
+}
+
+SHEAF_API SheafError sheafSceneGetWarningCount(SheafScene scene, size_t* count) {
+    return barrier([&] {
+        SheafSceneT& s = *require(scene, "scene");
+        require(count, "count");
+        std::lock_guard<std::mutex> lock(s.mutex);
+        *count = s.warnings.size();
+    });
+}
+
+SHEAF_API SheafError sheafSceneGetWarning(SheafScene scene, size_t index, const char** message) {
+    return barrier([&] {
+        SheafSceneT& s = *require(scene, "scene");
+        require(message, "message");
+        std::lock_guard<std::mutex> lock(s.mutex);
+        if (index >= s.warnings.size())
+            throw InvalidArgument("warning " + std::to_string(index) + " does not exist (the scene has " +
+                                  std::to_string(s.warnings.size()) + " warnings)");
+        *message = s.warnings[index].c_str();
     });
 }
 

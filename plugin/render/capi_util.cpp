@@ -75,9 +75,21 @@ std::string scene_label(const std::string& path) {
     return path.empty() ? std::string("builtin:") + sheafGetDefaultSceneName() : path;
 }
 
-int load_scene(SheafScene scene, const std::string& path) {
-    const std::string label = scene_label(path);
+int load_scene(SheafScene scene, const SceneSource& source) {
+    const std::string label = scene_label(source.path);
+    for (const std::string& dir : source.include_paths)
+        if (sheafSceneSetLoadOption(scene, "include_path", dir.c_str()) != SHEAF_OK)
+            return error(kUsage, "--include-path " + dir + ": " + last_error());
+    if (sheafSceneSetLoadOption(scene, "strict", source.strict ? "1" : "0") != SHEAF_OK)
+        return error(kUsage, "--strict: " + last_error());
     if (sheafSceneLoadFile(scene, label.c_str()) != SHEAF_OK) return error(kScene, last_error());
+    size_t warnings = 0;
+    sheafSceneGetWarningCount(scene, &warnings);
+    for (size_t i = 0; i < warnings; ++i) {
+        const char* message = nullptr;
+        if (sheafSceneGetWarning(scene, i, &message) == SHEAF_OK && message)
+            std::cerr << message << "\n";
+    }
     if (sheafSceneCommit(scene) != SHEAF_OK) return error(kScene, label + ": " + last_error());
     return kOk;
 }

@@ -57,8 +57,15 @@ struct CommonSettings {
 /// the error and returns its exit code on failure.
 int apply_settings(SheafRenderer renderer, const std::string& preset, const CommonSettings& s);
 
-/// Loads and commits the scene (empty: the default built-in scene). Returns an exit code.
-int load_scene(SheafScene scene, const std::string& path);
+/// Where the scene comes from and how its file is read.
+struct SceneSource {
+    std::string path;                       ///< empty: the default built-in scene
+    std::vector<std::string> include_paths; ///< --include-path, +L
+    bool strict = false;                    ///< --strict: unsupported features are errors
+};
+
+/// Loads and commits the scene, printing the reader's warnings on stderr. Returns an exit code.
+int load_scene(SheafScene scene, const SceneSource& source);
 
 /// The scene argument as shown: the default built-in scene when empty.
 std::string scene_label(const std::string& path);

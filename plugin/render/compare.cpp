@@ -68,7 +68,7 @@ int run_compare(const Options& o) {
     SheafScene raw_scene = nullptr;
     if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
     Scene scene(raw_scene);
-    if (int rc = load_scene(scene.get(), o.scene)) return rc;
+    if (int rc = load_scene(scene.get(), scene_source(o))) return rc;
 
     if (!o.report.empty())
         if (int rc = make_report_dir(o.report, true)) return rc;

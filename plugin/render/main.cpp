@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
         list_settings();
         return kOk;
     }
+    if (o.check) return run_check(o);
     if (!o.compare.empty()) return run_compare(o);
     if (!o.sweep.empty()) return run_sweep(o);
     return run_single(o);

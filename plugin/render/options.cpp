@@ -25,11 +25,14 @@ POV-Ray switches (translated before parsing; no space between switch and value):
                    antialias depth; the threshold is accepted and ignored (sampling is not
                    adaptive)
   -A               anti-aliasing off: aa.samples=1
-  +L<dir>          include path: accepted and stored; scene files are not read yet
+  +L<dir>          a folder searched for #include (--include-path dir)
   -D, +D           display: accepted, does nothing (render never opens a window)
 
 Examples:
   render                                         the default built-in scene to render.png
+  render scenes/glass.pov -W 800 -H 600 -o glass.png
+                                                 a POV-Ray scene (warnings on stderr)
+  render --check scene.pov --strict              parse and build only; unsupported is an error
   render builtin:cornell -W 640 -H 480 -o cornell.exr
   render builtin:office +W640 +H480 +A +Ooffice.png
   render builtin:office --preset rah --stats     the Roger et al. hierarchy, with statistics
@@ -62,7 +65,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     std::string input;
     int width = 0, height = 0, threads = 0;
     CLI::Option* scene = app.add_option("scene", o.scene,
-                                        "builtin:NAME or a scene file (default: the built-in " +
+                                        "builtin:NAME or a scene file: .pov (default: the built-in " +
                                             std::string(sheafGetDefaultSceneName()) + " scene)");
     CLI::Option* input_opt =
         app.add_option("-i,--input", input, "the scene, as the positional argument (+IFILE)")
@@ -105,9 +108,14 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
             ->type_name("DIR");
     app.add_flag("-q,--quiet", o.quiet, "no progress bar and no 'wrote' lines");
     app.add_option("--include-path", o.include_paths,
-                   "a directory for scene includes (+L); stored, scene files are not read yet")
+                   "a folder searched for #include after the scene's own; repeatable (+L)")
         ->allow_extra_args(false)
         ->type_name("DIR");
+    app.add_flag("--strict", o.strict,
+                 "an unsupported feature of the scene file is an error (exit 2), not a warning");
+    CLI::Option* check = app.add_flag(
+        "--check", o.check,
+        "load and build the scene without rendering, print its warnings; exit 0 when usable");
     bool no_display = false;
     app.add_flag("--no-display", no_display, "accepted for POV-Ray's -D; does nothing");
     app.add_flag("--list-settings", o.list_settings, "list every setting and exit");
@@ -120,6 +128,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         ->excludes(output);
     sweep->excludes(stats)->excludes(stats_json)->excludes(output);
     input_opt->excludes(scene);
+    check->excludes(compare)->excludes(sweep)->excludes(stats)->excludes(stats_json)->excludes(output);
     try {
         std::reverse(args.begin(), args.end()); // CLI11 takes the arguments reversed
         app.parse(args);

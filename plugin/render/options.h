@@ -24,9 +24,14 @@ struct Options {
     std::vector<std::string> compare;       ///< preset names, in order
     std::vector<std::string> sweep;         ///< KEY=VALUES axes, in order
     std::string report;                     ///< --report DIR
-    std::vector<std::string> include_paths; ///< +L: stored; scene files are not read yet
+    std::vector<std::string> include_paths; ///< --include-path, +L: folders for #include
+    bool strict = false;                    ///< --strict: unsupported features are errors
+    bool check = false;                     ///< --check: load the scene, report, do not render
     std::string command_line;               ///< as typed, for the report
 };
+
+/// The scene argument with the options that say how to read it.
+inline SceneSource scene_source(const Options& o) { return {o.scene, o.include_paths, o.strict}; }
 
 /// Parses the command line into `o`. Returns an exit code when the program should stop now
 /// (--help printed: 0; a usage error, already printed: 1), nothing to go on.

@@ -49,6 +49,18 @@ void list_settings() {
     }
 }
 
+int run_check(const Options& o) {
+    SheafScene raw_scene = nullptr;
+    if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
+    Scene scene(raw_scene);
+    if (int rc = load_scene(raw_scene, scene_source(o))) return rc;
+    size_t warnings = 0;
+    sheafSceneGetWarningCount(raw_scene, &warnings);
+    std::cout << scene_label(o.scene) << ": usable, " << warnings
+              << (warnings == 1 ? " warning\n" : " warnings\n");
+    return kOk;
+}
+
 int run_single(const Options& o) {
     SheafRenderer raw_renderer = nullptr;
     SheafScene raw_scene = nullptr;
@@ -57,7 +69,7 @@ int run_single(const Options& o) {
     if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
     Scene scene(raw_scene);
     if (int rc = apply_settings(raw_renderer, o.preset, o.settings)) return rc;
-    if (int rc = load_scene(raw_scene, o.scene)) return rc;
+    if (int rc = load_scene(raw_scene, scene_source(o))) return rc;
 
     Progress progress(Progress::wanted(o.quiet), 1);
     progress.start_run(raw_renderer, 0, scene_label(o.scene));

@@ -53,7 +53,7 @@ int run_sweep(const Options& o) {
     SheafScene raw_scene = nullptr;
     if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
     Scene scene(raw_scene);
-    if (int rc = load_scene(scene.get(), o.scene)) return rc;
+    if (int rc = load_scene(scene.get(), scene_source(o))) return rc;
 
     std::vector<RunResult> results(points.size());
     Progress progress(Progress::wanted(o.quiet), int(points.size()));

@@ -252,7 +252,7 @@ static void test_scene_errors(void) {
     expect_error(sheafSceneAddObject(s, mesh, 9, NULL, NULL, NULL), SHEAF_ERROR_SCENE,
                  "unknown material id", "material", NULL);
     expect_error(sheafSceneLoadFile(s, "/nonexistent/scene.pov"), SHEAF_ERROR_SCENE, "missing file",
-                 "/nonexistent/scene.pov", "cannot open");
+                 "/nonexistent/scene.pov", "no such file");
     expect_error(sheafSceneLoadFile(s, "builtin:nosuch"), SHEAF_ERROR_SCENE, "builtin:nosuch",
                  "nosuch", NULL);
     expect_error(sheafSceneLoadBuiltin(s, "nosuch"), SHEAF_ERROR_SCENE, "LoadBuiltin nosuch",
@@ -514,6 +514,71 @@ static void test_write_image(void) {
     CHECK(read_head("capi_test_write_bad.png", head, 1) == 0, "a failed write left a file");
 }
 
+/* ---- Scene files: a POV-Ray scene, load options, warnings ---- */
+
+static void write_text(const char* path, const char* text) {
+    FILE* f = fopen(path, "w");
+    CHECK(f != NULL, "cannot write %s", path);
+    if (!f) return;
+    fputs(text, f);
+    fclose(f);
+}
+
+static void test_scene_files(void) {
+    SheafScene s = NULL;
+    SheafRenderer r = NULL;
+    SheafFrame frame = NULL;
+    size_t count = 99;
+    const char* message = NULL;
+    double prims = 0;
+    /* The include lives in a folder of its own, found only through the include_path option. */
+    (void)system("mkdir -p capi_test_inc");
+    write_text("capi_test_inc/capi_test_colors.inc", "#declare Gold = rgb <1, 0.8, 0.2>;\n");
+    write_text("capi_test_scene.pov",
+               "#include \"capi_test_colors.inc\"\n"
+               "camera { location <0, 1, -5> look_at <0, 0, 0> }\n"
+               "light_source { <3, 5, -4> rgb 1 }\n"
+               "sphere { 0, 1 pigment { Gold } }\n"
+               "box { <-2, -1, -2>, <2, -0.9, 2> pigment { rgb 1 } }\nglobal_settings { radiosity { } }\n");
+
+    OK(sheafSceneNew(&s));
+    expect_error(sheafSceneLoadFile(s, "capi_test_scene.pov"), SHEAF_ERROR_SCENE,
+                 "include not on the path", "capi_test_colors.inc", NULL);
+    OK(sheafSceneSetLoadOption(s, "include_path", "capi_test_inc"));
+    OK(sheafSceneLoadFile(s, "capi_test_scene.pov"));
+    OK(sheafSceneGetWarningCount(s, &count));
+    CHECK(count == 1, "the scene has %zu warnings, expected 1 (radiosity)", count);
+    OK(sheafSceneGetWarning(s, 0, &message));
+    CHECK(message && strstr(message, "capi_test_scene.pov:6:") && strstr(message, "radiosity"),
+          "warning '%s' should name the file, line 6 and radiosity", message ? message : "(null)");
+    expect_error(sheafSceneGetWarning(s, 1, &message), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "warning out of range", "warning 1", NULL);
+
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererSetInt(r, "width", 32));
+    OK(sheafRendererSetInt(r, "height", 24));
+    OK(sheafRender(r, s, &frame));
+    OK(sheafFrameGetStatByName(frame, "scene.primitives", &prims));
+    CHECK(prims == 2, "the POV scene has %g primitives, expected 2 (sphere and box)", prims);
+    OK(sheafFrameRelease(frame));
+    OK(sheafRendererRelease(r));
+
+    /* Strict: the unsupported media is an error, and the loaded scene stays as it was. */
+    OK(sheafSceneSetLoadOption(s, "strict", "1"));
+    expect_error(sheafSceneLoadFile(s, "capi_test_scene.pov"), SHEAF_ERROR_SCENE, "strict",
+                 "radiosity", NULL);
+    OK(sheafSceneGetWarningCount(s, &count));
+    CHECK(count == 1, "a failed load changed the warnings (%zu)", count);
+    expect_error(sheafSceneSetLoadOption(s, "strict", "maybe"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "strict maybe", "maybe", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "nosuch", "1"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "unknown load option", "nosuch", NULL);
+    OK(sheafSceneLoadBuiltin(s, "cornell"));
+    OK(sheafSceneGetWarningCount(s, &count));
+    CHECK(count == 0, "a built-in scene kept %zu warnings", count);
+    OK(sheafSceneRelease(s));
+}
+
 int main(void) {
     sheafSetErrorCallback(on_error, &g_callback_calls);
     test_version();
@@ -523,6 +588,7 @@ int main(void) {
     test_render_scene();
     test_crsh_matches_brute();
     test_write_image();
+    test_scene_files();
     CHECK(g_callback_calls == g_expected_errors, "error callback called %d times for %d errors",
           g_callback_calls, g_expected_errors);
     sheafSetErrorCallback(NULL, NULL);

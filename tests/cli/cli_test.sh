@@ -123,6 +123,36 @@ expect_in "$OUT/builtin_nosuch.err" "nosuch" "builtin:nosuch: stderr names it"
 expect_rc bad_ext 3 builtin:cornell "${S[@]}" -o "$OUT/out.bogusext"
 expect_in "$OUT/bad_ext.err" "out.bogusext" "bad extension: stderr names the file"
 
+
+# POV-Ray scene files: render, --check, --strict, include paths, a syntax error.
+mkdir -p "$OUT/inc"
+echo '#declare Col = rgb <0.9, 0.3, 0.2>;' >"$OUT/inc/cli_colors.inc"
+cat >"$OUT/scene.pov" <<'POV'
+#include "cli_colors.inc"
+camera { location <0, 1, -4> look_at 0 }
+light_source { <2, 4, -3> rgb 1 }
+sphere { 0, 1 pigment { Col } }
+plane { y, -1 pigment { rgb 1 } }
+global_settings { radiosity { } }
+POV
+expect_rc pov_file 0 "$OUT/scene.pov" --include-path "$OUT/inc" "${S[@]}" -o "$OUT/scene.png"
+expect_in "$OUT/pov_file.err" "scene.pov:6:" "a POV scene's warning names file and line"
+expect_in "$OUT/pov_file.err" "warning: unsupported" "the warning says unsupported"
+expect_rc pov_plus_l 0 "$OUT/scene.pov" "+L$OUT/inc" "${S[@]}" -o "$OUT/scene.png"
+expect_rc pov_no_include 2 "$OUT/scene.pov" "${S[@]}" -o "$OUT/scene.png"
+expect_in "$OUT/pov_no_include.err" "cli_colors.inc" "a missing include is named"
+expect_rc check 0 --check "$OUT/scene.pov" --include-path "$OUT/inc"
+expect_in "$OUT/check.out" "usable, 1 warning" "--check: the verdict with the warning count"
+expect_rc check_strict 2 --check --strict "$OUT/scene.pov" --include-path "$OUT/inc"
+expect_in "$OUT/check_strict.err" "error: unsupported" "--strict: the unsupported feature is an error"
+printf 'sphere { <0, 0, 0>, 1\n  pigment { rgb <1, 0, 0> }\n  translate <1, 2\n}\n' >"$OUT/bad.pov"
+expect_rc pov_syntax 2 "$OUT/bad.pov" "${S[@]}" -o "$OUT/bad.png"
+expect_in "$OUT/pov_syntax.err" "bad.pov:4:1: error: found '}'" "a syntax error: file, line, column, token"
+expect_rc pov_unknown_ext 2 "$OUT/inc" "${S[@]}" -o "$OUT/bad.png"
+echo 'x' >"$OUT/scene.txt"
+expect_rc pov_txt 2 "$OUT/scene.txt" "${S[@]}" -o "$OUT/bad.png"
+expect_in "$OUT/pov_txt.err" "no reader for '.txt'" "an unknown extension is named"
+
 # json_value FILE KEY: a number from a flat stats JSON file.
 json_value() { sed -n "s/^ *\"$2\": *\([0-9.e+-]*\).*/\1/p" "$1"; }
 

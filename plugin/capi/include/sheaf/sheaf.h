@@ -89,8 +89,18 @@ SHEAF_API SheafError sheafSceneRelease(SheafScene scene);
 
 /* Replaces the content with a built-in scene ("cornell", ...). */
 SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name);
-/* Replaces the content with a scene file, or a built-in scene for "builtin:NAME". */
+/* Replaces the content with a scene file (.pov, .inc: POV-Ray 3.7's scene language), or a
+ * built-in scene for "builtin:NAME". Errors name the file, line and column. What the file asks
+ * for and the engine cannot show is kept as warnings (sheafSceneGetWarning). */
 SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);
+/* How the next sheafSceneLoadFile reads files, by name:
+ *   "include_path"  a folder searched for #include after the scene's own (appends; "" clears)
+ *   "strict"        "1": an unsupported feature is an error (SHEAF_ERROR_SCENE); "0": a warning */
+SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key, const char* value);
+/* The warnings of the last sheafSceneLoadFile ("FILE:LINE:COL: warning: unsupported ..."), in
+ * order; *message stays valid until the scene is loaded again or released. */
+SHEAF_API SheafError sheafSceneGetWarningCount(SheafScene scene, size_t* count);
+SHEAF_API SheafError sheafSceneGetWarning(SheafScene scene, size_t index, const char** message);
 
 /* Ids count from 0 in the order of addition; out ids may be NULL. */
 SHEAF_API SheafError sheafSceneAddMaterial(SheafScene scene, const SheafMaterialDesc* desc,

@@ -1,0 +1,31 @@
+// Scene files by extension: one entry point for every reader, so the C ABI, the CLI and the
+// tests load "builtin:NAME", .pov and (as readers are added) other formats the same way.
+#pragma once
+
+#include "core/scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace sheaf::io {
+
+/// How a scene file is read. Readers use what applies to them.
+struct SceneFileOptions {
+    std::vector<std::string> include_paths; // POV-Ray #include folders, after the scene's own
+    bool strict = false;                    // an unsupported feature is an error, not a warning
+};
+
+struct SceneFile {
+    Scene scene;
+    /// "FILE:LINE:COL: warning: ..." lines: what was read but cannot be shown exactly.
+    std::vector<std::string> warnings;
+};
+
+/// Reads `path`: "builtin:NAME", or a file whose extension picks the reader (.pov, .inc).
+/// Throws SceneError naming the file (and the line and column where the reader knows them).
+SceneFile load_scene_file(const std::string& path, const SceneFileOptions& options = {});
+
+/// The extensions load_scene_file reads, e.g. ".pov .inc", for messages.
+std::string scene_file_extensions();
+
+} // namespace sheaf::io

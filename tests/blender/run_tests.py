@@ -210,6 +210,38 @@ def sun(scene, rotation, strength=3.0):
     return obj
 
 
+class MockLayout:
+    """Stands in for UILayout (background Blender draws no panels): records labels and checks
+    that every drawn property exists."""
+
+    CONTAINERS = ("column", "row", "box", "split", "grid_flow", "column_flow")
+
+    def __init__(self, log):
+        self.log = log
+
+    def __getattr__(self, name):
+        if name in self.CONTAINERS:
+            return lambda *args, **kwargs: MockLayout(self.log)
+        raise AttributeError(name)
+
+    def label(self, text="", **kwargs):
+        self.log.append(text)
+
+    def prop(self, data, attr, **kwargs):
+        check(attr in data.bl_rna.properties, "a panel draws a missing property %s" % attr)
+        self.log.append("prop:" + attr)
+
+
+def draw_panel(name):
+    panel = getattr(bpy.types, name)
+    log = []
+    attrs = {k: v for k, v in vars(panel).items() if not k.startswith("__")}
+    fake = type("FakePanel", (), dict(attrs, layout=MockLayout(log)))()
+    check(panel.poll(bpy.context), "%s does not show for the Sheaf engine" % name)
+    panel.draw(fake, bpy.context)
+    return log
+
+
 # ---- the tests ----
 
 ADDON = None
@@ -303,8 +335,15 @@ def test_default_cube():
                                                  "scene.lights", "scene.primitives")})
     check(stats["summary"].startswith("Sheaf |") and "tests" in stats["summary"],
           "stats line: %s" % stats["summary"])
-    check(int(np.sum(tests[:, :, 0])) == int(s["tests.total"]) or s["tests.total"] > 0,
-          "tests pass and statistics disagree")
+    # The panels: the settings (every panel key) and the statistics of this frame.
+    log = draw_panel("SHEAF_RENDER_PT_settings")
+    for key in ADDON.properties.PANEL_KEYS:
+        check("prop:" + key.replace(".", "_") in log, "the panel lacks %s" % key)
+    log = draw_panel("SHEAF_RENDER_PT_statistics")
+    check("Intersection tests" in log and "{:,}".format(int(s["tests.total"])) in log,
+          "the statistics panel shows %s" % log)
+    log = draw_panel("SHEAF_VIEWLAYER_PT_passes")
+    check("prop:use_pass_tests" in log and "prop:use_pass_z" in log, "passes panel: %s" % log)
 
 
 def build_spheres_scene():
@@ -486,34 +525,67 @@ def test_instances_texture_and_lights():
 
 
 def test_subdivision():
-    """A last Subdivision Surface modifier: its cage comes from the evaluated object with the
-    modifier off (never the user's object), and the render has the refined surface."""
+    """A last Subdivision Surface modifier: its cage is the rest of the stack (here an Array
+    modifier) evaluated with the subdivision off on the evaluated copy, never on the user's
+    object. With sheafSceneAddSubdivisionMesh in the library, Sheaf refines the cage and the
+    picture matches Blender's own subdivision (without the limit surface); without it Blender's
+    is used."""
     scene = new_scene("Subdivision", 64, 48)
     me = bpy.data.meshes.new("Cage")
-    v, f = box_mesh(1.0)
+    v, f = box_mesh(0.7)
     me.from_pydata(v, [], f)
     obj = bpy.data.objects.new("Subdivided", me)
+    obj.location = (-0.7, 0, 0)
     scene.collection.objects.link(obj)
+    array = obj.modifiers.new("Array", 'ARRAY')
+    array.count = 2
+    array.relative_offset_displace = (1.5, 0, 0)
     mod = obj.modifiers.new("Subdivision", 'SUBSURF')
     mod.levels = 1
     mod.render_levels = 2
-    camera(scene, (4, -4, 3), (0, 0, 0))
+    # Sheaf refines the cage uniformly; Blender's default projects onto the limit surface, a
+    # few percent smaller at level 2 (docs/blender.md). Without it the two agree exactly.
+    mod.use_limit_surface = False
+    camera(scene, (3, -5, 3), (0.35, 0, 0))
     sun(scene, (0.5, 0.2, 0.3))
     dg = scene.view_layers[0].depsgraph
     dg.update()
     obj_eval = obj.evaluated_get(dg)
     cage = ADDON.export.cage_mesh(obj_eval, obj_eval.modifiers[-1], dg)
     try:
-        check(cage is not None and len(cage.vertices) == 8 and len(cage.polygons) == 6,
+        check(cage is not None and len(cage.vertices) == 16 and len(cage.polygons) == 12,
               "the cage has %s vertices" % (cage and len(cage.vertices)))
     finally:
         obj_eval.to_mesh_clear()
     check(obj_eval.modifiers[-1].show_viewport and mod.show_viewport and mod.show_render,
           "the modifier was left switched off")
-    render(scene, "subdivision")
-    s = ADDON.engine.last_stats(scene.name)["stats"]
-    # 6 quads refined twice: 96 quads, 192 triangles (Blender's or Sheaf's subdivision).
-    check(s["scene.primitives"] == 192, "primitives: %d" % s["scene.primitives"])
+    lib = ADDON.capi.library()
+    name = "sheafSceneAddSubdivisionMesh"
+    had = lib.has_subdivision
+    depths = {}
+    for through_sheaf in ((True, False) if had else (False,)):
+        if not through_sheaf:
+            lib.optional.discard(name)
+        try:
+            depths[through_sheaf] = render(scene, "subdivision_" +
+                                           ("sheaf" if through_sheaf else "blender"))["Depth"]
+        finally:
+            if had:
+                lib.optional.add(name)
+        last = ADDON.engine.last_stats(scene.name)
+        s = last["stats"]
+        # 12 quads refined twice: 192 quads, 384 triangles.
+        check(s["scene.primitives"] == 384, "primitives: %d" % s["scene.primitives"])
+        fallback = [w for w in last["warnings"] if "Subdivision" in w]
+        check(not fallback, "fell back to Blender: %s" % fallback)
+    if had:
+        a, b = depths[True][:, :, 0], depths[False][:, :, 0]
+        ha, hb = a < 1e9, b < 1e9
+        iou = np.count_nonzero(ha & hb) / max(np.count_nonzero(ha | hb), 1)
+        diff = np.abs(a - b)[ha & hb]
+        check(iou > 0.99 and np.median(diff) < 1e-3,
+              "Sheaf's and Blender's subdivision differ: overlap %.3f, median depth "
+              "difference %.4f" % (iou, np.median(diff)))
 
 
 def expect_render_error(scene, fragment):

@@ -18,6 +18,29 @@ sheaf_find(pugixml REQUIRED)
 # find_package does not search by itself.
 sheaf_find(OpenColorIO REQUIRED HINTS /usr/share/cmake)
 sheaf_find(Threads REQUIRED)
+# Mesh files (OBJ, PLY, glTF) for io/mesh. Its package config looks for draco itself.
+sheaf_find(assimp REQUIRED)
+# Subdivision (io/subdiv): OpenSubdiv's Far API in the CPU library osdCPU. Debian's package
+# config (libosd-dev 3.5) names static libraries it does not ship and stops the configure, so
+# it is not loaded here: the header and the shared library are found directly and given the
+# config's target name, OpenSubdiv::osdCPU. A config that does load may define it first.
+if(NOT TARGET OpenSubdiv::osdCPU)
+  find_path(SHEAF_OPENSUBDIV_INCLUDE_DIR opensubdiv/version.h)
+  find_library(SHEAF_OPENSUBDIV_OSDCPU_LIBRARY osdCPU)
+  if(NOT SHEAF_OPENSUBDIV_INCLUDE_DIR OR NOT SHEAF_OPENSUBDIV_OSDCPU_LIBRARY)
+    message(FATAL_ERROR "Sheaf: OpenSubdiv not found (opensubdiv/version.h and libosdCPU; "
+                        "Debian: libosd-dev)")
+  endif()
+  file(STRINGS ${SHEAF_OPENSUBDIV_INCLUDE_DIR}/opensubdiv/version.h _sheaf_osd_version
+       REGEX "#define OPENSUBDIV_VERSION_(MAJOR|MINOR|PATCH) ")
+  string(REGEX REPLACE ".*MAJOR ([0-9]+).*MINOR ([0-9]+).*PATCH ([0-9]+).*" "\\1.\\2.\\3"
+         OpenSubdiv_VERSION "${_sheaf_osd_version}")
+  add_library(OpenSubdiv::osdCPU UNKNOWN IMPORTED)
+  set_target_properties(OpenSubdiv::osdCPU PROPERTIES
+    IMPORTED_LOCATION ${SHEAF_OPENSUBDIV_OSDCPU_LIBRARY}
+    INTERFACE_INCLUDE_DIRECTORIES ${SHEAF_OPENSUBDIV_INCLUDE_DIR})
+  message(STATUS "Sheaf: found OpenSubdiv ${OpenSubdiv_VERSION} (${SHEAF_OPENSUBDIV_OSDCPU_LIBRARY})")
+endif()
 if(SHEAF_BUILD_TESTS)
   sheaf_find(GTest REQUIRED)
 endif()

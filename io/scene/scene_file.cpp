@@ -3,7 +3,9 @@
 
 #include "core/base/error.h"
 #include "core/scenes/builtin.h"
+#include "io/mesh/mesh_scene.h"
 #include "io/pov/pov_reader.h"
+#include "io/xml/xml_scene.h"
 
 #include <algorithm>
 #include <cctype>
@@ -37,6 +39,11 @@ struct Reader {
 constexpr Reader kReaders[] = {
     {".pov", read_pov},
     {".inc", read_pov},
+    {".xml", read_xml_scene},
+    {".obj", read_mesh_scene},
+    {".ply", read_mesh_scene},
+    {".gltf", read_mesh_scene},
+    {".glb", read_mesh_scene},
 };
 
 } // namespace

@@ -264,6 +264,18 @@ SHEAF_API SheafError sheafFrameSavePass(SheafFrame frame, const char* pass, cons
 SHEAF_API SheafError sheafWriteImage(const char* path, int width, int height, int channels,
                                      const float* pixels, int display_referred);
 
+/* ---- Subdivision surfaces (OpenSubdiv) ---- */
+
+typedef enum SheafSubdivScheme { SHEAF_SUBDIV_CATMULL_CLARK = 0, SHEAF_SUBDIV_LOOP = 1 } SheafSubdivScheme;
+/* A polygon cage refined uniformly by OpenSubdiv to `level` (0..8) and added as a triangle mesh with smooth normals.
+ * positions: 3 floats per vertex; face_sizes: vertices per face; face_indices: the faces' vertex indices, concatenated.
+ * crease_edges: 2 vertex indices per crease (NULL when crease_count is 0); crease_sharpness: one per crease.
+ * uvs: 2 floats per vertex or NULL. */
+SHEAF_API SheafError sheafSceneAddSubdivisionMesh(SheafScene scene, const float* positions, uint32_t vertex_count,
+    const uint32_t* face_sizes, uint32_t face_count, const uint32_t* face_indices,
+    const uint32_t* crease_edges, const float* crease_sharpness, uint32_t crease_count,
+    const float* uvs, SheafSubdivScheme scheme, int level, uint32_t* out_mesh_id);
+
 #ifdef __cplusplus
 }
 #endif

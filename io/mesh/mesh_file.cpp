@@ -1,0 +1,310 @@
+// Mesh files through Assimp (see mesh_file.h): the import, the walk over the node tree, and the
+// conversion of each placed mesh into a sheaf::Mesh, checked.
+#include "io/mesh/mesh_file.h"
+
+#include "core/base/error.h"
+#include "io/mesh/mesh_check.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace sheaf::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kExtensions[] = {".obj", ".ply", ".gltf", ".glb"};
+constexpr size_t kMaxNodeDepth = 1024;
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+// Assimp sizes its PLY arrays by the header's element counts before reading them; a header
+// that claims more elements than the file has bytes would make it allocate without bound.
+void check_ply_header(const std::string& path, uintmax_t file_size) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    for (int n = 0; n < 4096 && std::getline(in, line); ++n) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line == "end_header") return;
+        std::istringstream words(line);
+        std::string keyword, name, count;
+        if (!(words >> keyword) || keyword != "element") continue;
+        words >> name >> count;
+        const bool digits = !count.empty() && count.size() < 20 &&
+                            std::all_of(count.begin(), count.end(),
+                                        [](unsigned char c) { return std::isdigit(c); });
+        if (!digits || std::stoull(count) > file_size)
+            throw SceneError(path + ": the PLY header declares " + count + " '" + name +
+                             "' elements, more than the file can hold (" +
+                             std::to_string(file_size) + " bytes)");
+    }
+}
+
+/// Checks the path and imports it with `flags`; the scene lives as long as `importer`.
+const aiScene* import(Assimp::Importer& importer, const std::string& path, unsigned flags) {
+    if (!is_mesh_file(path))
+        throw SceneError(path + ": not a mesh file; mesh files are " +
+                         std::string(mesh_file_extensions()));
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw SceneError(path + ": is a directory, not a mesh file");
+    if (!fs::exists(path, ec)) throw SceneError(path + ": no such file");
+    const uintmax_t size = fs::file_size(path, ec);
+    if (ec) throw SceneError(path + ": cannot read the file (" + ec.message() + ")");
+    if (lower_extension(path) == ".ply") check_ply_header(path, size);
+    // Points and lines are not surfaces: SortByPType removes them.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene = importer.ReadFile(path, flags | aiProcess_ValidateDataStructure);
+    if (!scene) {
+        std::string why = importer.GetErrorString();
+        if (why.empty()) why = "Assimp could not read it";
+        throw SceneError(path + ": " + why);
+    }
+    if (!scene->mRootNode || scene->mNumMeshes == 0)
+        throw SceneError(path + ": the file has no faces (only points, lines or nothing)");
+    return scene;
+}
+
+/// Calls fn(node, mesh index, node-to-file transform) for every mesh every node places.
+template <class Fn>
+void for_each_placement(const std::string& path, const aiScene* scene, Fn&& fn) {
+    struct Item {
+        const aiNode* node;
+        aiMatrix4x4 parent;
+        size_t depth;
+    };
+    std::vector<Item> stack{{scene->mRootNode, aiMatrix4x4(), 0}};
+    while (!stack.empty()) {
+        const Item it = stack.back();
+        stack.pop_back();
+        if (it.depth > kMaxNodeDepth)
+            throw SceneError(path + ": the node tree is deeper than " +
+                             std::to_string(kMaxNodeDepth) + " levels");
+        const aiMatrix4x4 global = it.parent * it.node->mTransformation;
+        for (unsigned i = 0; i < it.node->mNumMeshes; ++i) {
+            const unsigned m = it.node->mMeshes[i];
+            if (m >= scene->mNumMeshes)
+                throw SceneError(path + ": a node names mesh " + std::to_string(m) +
+                                 ", which does not exist");
+            fn(*it.node, m, global);
+        }
+        for (unsigned c = it.node->mNumChildren; c-- > 0;)
+            if (it.node->mChildren[c])
+                stack.push_back({it.node->mChildren[c], global, it.depth + 1});
+    }
+}
+
+Vec3 point(const aiMatrix4x4& m, const aiVector3D& v) {
+    const aiVector3D p = m * v;
+    return {p.x, p.y, p.z};
+}
+
+struct NormalMatrix {
+    aiMatrix3x3 m;
+    bool flips = false; // a mirroring transform: triangles turn the other way round
+};
+
+NormalMatrix normal_matrix(const aiMatrix4x4& global) {
+    aiMatrix3x3 linear(global);
+    NormalMatrix n;
+    n.flips = linear.Determinant() < 0;
+    if (std::fabs(linear.Determinant()) > 1e-30f)
+        n.m = linear.Inverse().Transpose();
+    else
+        n.m = linear;
+    return n;
+}
+
+std::string mesh_label(const std::string& path, const aiMesh& mesh, unsigned index) {
+    std::string s = path + ": mesh " + std::to_string(index);
+    if (mesh.mName.length) s += " '" + std::string(mesh.mName.C_Str()) + "'";
+    return s;
+}
+
+void read_color(const aiScene* scene, const aiMesh& mesh, MeshPart& part) {
+    if (mesh.mMaterialIndex >= scene->mNumMaterials || !scene->mMaterials) return;
+    const aiMaterial* mat = scene->mMaterials[mesh.mMaterialIndex];
+    aiColor4D c;
+    if (mat->Get(AI_MATKEY_BASE_COLOR, c) == aiReturn_SUCCESS ||
+        mat->Get(AI_MATKEY_COLOR_DIFFUSE, c) == aiReturn_SUCCESS) {
+        const Vec3 v(c.r, c.g, c.b);
+        if (is_finite(v)) part.has_color = true, part.color = v;
+    }
+}
+
+MeshPart convert(const std::string& path, const aiScene* scene, const aiNode& node, unsigned index,
+                 const aiMatrix4x4& global) {
+    const aiMesh& src = *scene->mMeshes[index];
+    const std::string label = mesh_label(path, src, index);
+    MeshPart part;
+    part.name = node.mName.length ? node.mName.C_Str() : src.mName.C_Str();
+    read_color(scene, src, part);
+    Mesh& mesh = part.mesh;
+    if (!src.mVertices && src.mNumVertices) throw SceneError(label + " has no vertex positions");
+    const NormalMatrix nm = normal_matrix(global);
+    mesh.positions.resize(src.mNumVertices);
+    for (unsigned v = 0; v < src.mNumVertices; ++v) {
+        if (!is_finite(Vec3(src.mVertices[v].x, src.mVertices[v].y, src.mVertices[v].z)))
+            throw SceneError(label + ": vertex " + std::to_string(v) +
+                             " is not finite (NaN or infinity)");
+        mesh.positions[v] = point(global, src.mVertices[v]);
+    }
+    if (src.mNormals) {
+        mesh.normals.resize(src.mNumVertices);
+        for (unsigned v = 0; v < src.mNumVertices; ++v) {
+            const aiVector3D n = nm.m * src.mNormals[v];
+            const Vec3 u = normalize(Vec3(n.x, n.y, n.z));
+            if (!is_finite(Vec3(n.x, n.y, n.z)))
+                throw SceneError(label + ": normal " + std::to_string(v) +
+                                 " is not finite (NaN or infinity)");
+            mesh.normals[v] = u;
+        }
+    }
+    if (src.mTextureCoords[0]) {
+        mesh.uvs.resize(2 * size_t(src.mNumVertices));
+        for (unsigned v = 0; v < src.mNumVertices; ++v)
+            mesh.uvs[2 * v] = src.mTextureCoords[0][v].x,
+                         mesh.uvs[2 * v + 1] = src.mTextureCoords[0][v].y;
+    }
+    mesh.indices.reserve(3 * size_t(src.mNumFaces));
+    for (unsigned f = 0; f < src.mNumFaces; ++f) {
+        const aiFace& face = src.mFaces[f];
+        if (face.mNumIndices != 3) continue; // points and lines left by a failed triangulation
+        for (unsigned k = 0; k < 3; ++k)
+            if (face.mIndices[k] >= src.mNumVertices)
+                throw SceneError(label + ": face " + std::to_string(f) + " names vertex " +
+                                 std::to_string(face.mIndices[k]) + ", out of range (" +
+                                 std::to_string(src.mNumVertices) + " vertices)");
+        const unsigned a = face.mIndices[0], b = face.mIndices[nm.flips ? 2 : 1],
+                       c = face.mIndices[nm.flips ? 1 : 2];
+        mesh.indices.insert(mesh.indices.end(), {a, b, c});
+    }
+    check_mesh(mesh, label);
+    return part;
+}
+
+} // namespace
+
+const char* mesh_file_extensions() {
+    return ".obj .ply .gltf .glb";
+}
+
+bool is_mesh_file(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    return std::find(std::begin(kExtensions), std::end(kExtensions), ext) != std::end(kExtensions);
+}
+
+std::vector<MeshPart> read_mesh_parts(const std::string& path) {
+    Assimp::Importer importer;
+    const aiScene* scene =
+        import(importer, path,
+               aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    std::vector<MeshPart> parts;
+    size_t triangles = 0;
+    for_each_placement(path, scene, [&](const aiNode& node, unsigned m, const aiMatrix4x4& g) {
+        const aiMesh* src = scene->mMeshes[m];
+        if (!src || !(src->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;
+        triangles += src->mNumFaces;
+        if (triangles > kMaxMeshFileTriangles)
+            throw SceneError(path + ": more than " + std::to_string(kMaxMeshFileTriangles) +
+                             " triangles once every node places its meshes");
+        parts.push_back(convert(path, scene, node, m, g));
+    });
+    if (parts.empty())
+        throw SceneError(path + ": the file has no faces (only points, lines or nothing)");
+    return parts;
+}
+
+Mesh merge_mesh_parts(const std::vector<MeshPart>& parts) {
+    bool all_normals = true, any_uvs = false;
+    size_t vertices = 0;
+    for (const MeshPart& p : parts) {
+        all_normals = all_normals && !p.mesh.normals.empty();
+        any_uvs = any_uvs || !p.mesh.uvs.empty();
+        vertices += p.mesh.positions.size();
+    }
+    if (vertices > UINT32_MAX) throw SceneError("a merged mesh has more than 2^32 vertices");
+    Mesh out;
+    for (const MeshPart& p : parts) {
+        const uint32_t base = uint32_t(out.positions.size());
+        out.positions.insert(out.positions.end(), p.mesh.positions.begin(), p.mesh.positions.end());
+        if (all_normals)
+            out.normals.insert(out.normals.end(), p.mesh.normals.begin(), p.mesh.normals.end());
+        if (any_uvs) {
+            if (p.mesh.uvs.empty())
+                out.uvs.resize(out.uvs.size() + 2 * p.mesh.positions.size(), 0.0f);
+            else
+                out.uvs.insert(out.uvs.end(), p.mesh.uvs.begin(), p.mesh.uvs.end());
+        }
+        for (uint32_t i : p.mesh.indices) out.indices.push_back(base + i);
+    }
+    return out;
+}
+
+Mesh read_mesh_file(const std::string& path) {
+    return merge_mesh_parts(read_mesh_parts(path));
+}
+
+PolygonCage read_polygon_cage(const std::string& path) {
+    Assimp::Importer importer;
+    const aiScene* scene = import(importer, path, aiProcess_SortByPType);
+    PolygonCage cage;
+    std::map<std::tuple<float, float, float>, uint32_t> welded;
+    size_t corners = 0;
+    for_each_placement(path, scene, [&](const aiNode&, unsigned m, const aiMatrix4x4& g) {
+        const aiMesh* src = scene->mMeshes[m];
+        if (!src || !src->mVertices) return;
+        const std::string label = mesh_label(path, *src, m);
+        const bool flips = normal_matrix(g).flips;
+        std::vector<uint32_t> remap(src->mNumVertices);
+        for (unsigned v = 0; v < src->mNumVertices; ++v) {
+            const Vec3 p = point(g, src->mVertices[v]);
+            if (!is_finite(p))
+                throw SceneError(label + ": vertex " + std::to_string(v) +
+                                 " is not finite (NaN or infinity)");
+            auto [it, added] = welded.try_emplace({p.x, p.y, p.z}, uint32_t(cage.positions.size()));
+            if (added) cage.positions.push_back(p);
+            remap[v] = it->second;
+        }
+        for (unsigned f = 0; f < src->mNumFaces; ++f) {
+            const aiFace& face = src->mFaces[f];
+            if (face.mNumIndices < 3) continue;
+            corners += face.mNumIndices;
+            if (corners > 3 * kMaxMeshFileTriangles)
+                throw SceneError(path + ": more than " + std::to_string(3 * kMaxMeshFileTriangles) +
+                                 " face corners once every node places its meshes");
+            cage.face_sizes.push_back(face.mNumIndices);
+            for (unsigned k = 0; k < face.mNumIndices; ++k) {
+                const unsigned i =
+                    face.mIndices[flips ? (face.mNumIndices - k) % face.mNumIndices : k];
+                if (i >= src->mNumVertices)
+                    throw SceneError(label + ": face " + std::to_string(f) + " names vertex " +
+                                     std::to_string(i) + ", out of range (" +
+                                     std::to_string(src->mNumVertices) + " vertices)");
+                cage.face_indices.push_back(remap[i]);
+            }
+        }
+    });
+    if (cage.face_sizes.empty())
+        throw SceneError(path + ": the file has no faces (only points, lines or nothing)");
+    return cage;
+}
+
+} // namespace sheaf::io

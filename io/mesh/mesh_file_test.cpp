@@ -1,0 +1,186 @@
+// Mesh files through Assimp: OBJ, PLY (ASCII and binary) and glTF (.gltf, .glb) read back what
+// was written (positions, normals, texture coordinates, node transforms), and bad files are
+// errors that name the file and the problem.
+#include "io/mesh/mesh_file.h"
+
+#include "core/base/error.h"
+#include "io/mesh/mesh_test_files.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sheaf {
+namespace {
+
+using io::read_mesh_file;
+using io::read_mesh_parts;
+
+/// The index of the vertex at `p` (exactly), or -1.
+int find_vertex(const Mesh& m, Vec3 p) {
+    for (size_t i = 0; i < m.positions.size(); ++i)
+        if (length(m.positions[i] - p) < 1e-6f) return int(i);
+    return -1;
+}
+
+/// Checks the unit quad: four corners, two triangles facing +z, normals +z, (s, t) = corner.
+void expect_quad(const Mesh& m, bool normals, bool uvs) {
+    ASSERT_EQ(m.positions.size(), 4u);
+    ASSERT_EQ(m.triangle_count(), 2u);
+    for (size_t t = 0; t < 2; ++t) {
+        const Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+                   c = m.positions[m.indices[3 * t + 2]];
+        EXPECT_GT(cross(b - a, c - a).z, 0) << "triangle " << t << " turns the wrong way";
+    }
+    EXPECT_EQ(m.normals.empty(), !normals);
+    for (const Vec3& n : m.normals) EXPECT_NEAR(n.z, 1.0f, 1e-6f);
+    ASSERT_EQ(m.uvs.empty(), !uvs);
+    if (uvs) {
+        for (Vec3 corner : {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)}) {
+            const int v = find_vertex(m, corner);
+            ASSERT_GE(v, 0);
+            EXPECT_NEAR(m.uvs[2 * v], corner.x > 0 ? 1.0f : 0.0f, 1e-6f);
+            EXPECT_NEAR(m.uvs[2 * v + 1], corner.y > 0 ? 1.0f : 0.0f, 1e-6f);
+        }
+    }
+}
+
+std::string error_of(const std::string& path) {
+    try {
+        read_mesh_file(path);
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(MeshFile, ObjRoundTrip) {
+    const auto dir = test::temp_folder("obj");
+    expect_quad(read_mesh_file(test::write_text(dir / "quad.obj", test::kQuadObj)), true, true);
+    // Without normals and texture coordinates: none are made up.
+    expect_quad(
+        read_mesh_file(test::write_text(dir / "bare.obj", "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                                          "f 1 2 3\nf 1 3 4\n")),
+        false, false);
+}
+
+TEST(MeshFile, PlyRoundTrip) {
+    const auto dir = test::temp_folder("ply");
+    expect_quad(read_mesh_file(test::write_text(dir / "quad.ply", test::kQuadPly)), true, true);
+    expect_quad(read_mesh_file(test::write_binary_ply(dir / "binary.ply")), false, false);
+}
+
+TEST(MeshFile, GltfRoundTripWithNodeTransforms) {
+    const auto dir = test::temp_folder("gltf");
+    for (const std::string& path :
+         {test::write_gltf(dir / "quad.gltf"), test::write_glb(dir / "quad.glb")}) {
+        SCOPED_TRACE(path);
+        const std::vector<io::MeshPart> parts = read_mesh_parts(path);
+        ASSERT_EQ(parts.size(), 2u); // one mesh, placed by two nodes
+        const io::MeshPart& up = parts[0].name == "up" ? parts[0] : parts[1];
+        const io::MeshPart& big = parts[0].name == "up" ? parts[1] : parts[0];
+        EXPECT_EQ(up.name, "up");
+        EXPECT_EQ(big.name, "big");
+        EXPECT_GE(find_vertex(up.mesh, Vec3(1, 3, 0)), 0) << "translation not applied";
+        EXPECT_GE(find_vertex(big.mesh, Vec3(2, 2, 0)), 0) << "scale not applied";
+        Mesh moved_back = up.mesh;
+        for (Vec3& p : moved_back.positions) p.y -= 2;
+        expect_quad(moved_back, true, true); // glTF's flipped t comes back as t up
+        const Mesh merged = read_mesh_file(path);
+        EXPECT_EQ(merged.positions.size(), 8u);
+        EXPECT_EQ(merged.triangle_count(), 4u);
+        EXPECT_EQ(merged.normals.size(), 8u);
+        EXPECT_EQ(merged.uvs.size(), 16u);
+    }
+}
+
+TEST(MeshFile, ExtensionsAreCaseInsensitive) {
+    const auto dir = test::temp_folder("case");
+    expect_quad(read_mesh_file(test::write_text(dir / "QUAD.OBJ", test::kQuadObj)), true, true);
+    EXPECT_TRUE(io::is_mesh_file("a/b.GLB"));
+    EXPECT_FALSE(io::is_mesh_file("a/b.stl"));
+}
+
+TEST(MeshFile, NonFiniteCoordinatesAreAnError) {
+    const auto dir = test::temp_folder("nan");
+    for (const char* bad : {"nan", "inf"}) {
+        const std::string path =
+            test::write_text(dir / (std::string(bad) + ".obj"),
+                             "v 0 0 0\nv 1 0 0\nv 0 " + std::string(bad) + " 0\nf 1 2 3\n");
+        const std::string e = error_of(path);
+        EXPECT_NE(e.find(path), std::string::npos) << e;
+        EXPECT_NE(e.find("not finite"), std::string::npos) << e;
+    }
+    const std::string ply = test::write_text(
+        dir / "nan.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                         "property float y\nproperty float z\nelement face 1\n"
+                         "property list uchar int vertex_indices\nend_header\n"
+                         "0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n");
+    const std::string e = error_of(ply);
+    EXPECT_NE(e.find(ply), std::string::npos) << e;
+}
+
+TEST(MeshFile, IndicesOutOfRangeAreAnError) {
+    const auto dir = test::temp_folder("index");
+    const std::string obj =
+        test::write_text(dir / "index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    std::string e = error_of(obj);
+    EXPECT_NE(e.find(obj), std::string::npos) << e;
+    const std::string ply = test::write_text(
+        dir / "index.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                           "property float y\nproperty float z\nelement face 1\n"
+                           "property list uchar int vertex_indices\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+    e = error_of(ply);
+    EXPECT_NE(e.find(ply), std::string::npos) << e;
+}
+
+TEST(MeshFile, NoFacesIsAnError) {
+    const auto dir = test::temp_folder("nofaces");
+    for (const char* text : {"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "v 0 0 0\nv 1 0 0\nl 1 2\n", ""}) {
+        const std::string path = test::write_text(dir / "empty.obj", text);
+        const std::string e = error_of(path);
+        EXPECT_NE(e.find(path), std::string::npos) << e;
+        EXPECT_NE(e.find("no"), std::string::npos) << e;
+    }
+}
+
+TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
+    const auto dir = test::temp_folder("bad");
+    // A header that promises more elements than the file could hold.
+    std::string e = error_of(test::write_text(
+        dir / "huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
+                          "property float x\nproperty float y\nproperty float z\nend_header\n"));
+    EXPECT_NE(e.find("more than the file can hold"), std::string::npos) << e;
+    e = error_of(test::write_text(dir / "garbage.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));
+    EXPECT_NE(e.find("garbage.glb"), std::string::npos) << e;
+    e = error_of(test::write_text(dir / "garbage.gltf", "{\"asset\": [1, 2"));
+    EXPECT_NE(e.find("garbage.gltf"), std::string::npos) << e;
+    std::string glb = test::write_glb(dir / "cut.glb");
+    std::filesystem::resize_file(glb, 100);
+    e = error_of(glb);
+    EXPECT_NE(e.find("cut.glb"), std::string::npos) << e;
+    e = error_of((dir / "missing.obj").string());
+    EXPECT_NE(e.find("no such file"), std::string::npos) << e;
+    e = error_of(test::write_text(dir / "model.stl", "solid x\nendsolid x\n"));
+    EXPECT_NE(e.find("not a mesh file"), std::string::npos) << e;
+}
+
+TEST(MeshFile, PolygonCageKeepsFacesAndWeldsVertices) {
+    const auto dir = test::temp_folder("cage");
+    // A quad and a pentagon sharing an edge, written with separate vertices and normals.
+    const std::string path =
+        test::write_text(dir / "cage.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                           "v 1 0 0\nv 2 0 0\nv 2.5 0.5 0\nv 2 1 0\nv 1 1 0\n"
+                                           "vn 0 0 1\n"
+                                           "f 1//1 2//1 3//1 4//1\nf 5//1 6//1 7//1 8//1 9//1\n");
+    const io::PolygonCage cage = io::read_polygon_cage(path);
+    EXPECT_EQ(cage.positions.size(), 7u); // the shared edge's two vertices welded
+    ASSERT_EQ(cage.face_sizes.size(), 2u);
+    EXPECT_EQ(cage.face_sizes[0] + cage.face_sizes[1], 9u);
+    EXPECT_EQ(cage.face_indices.size(), 9u);
+}
+
+} // namespace
+} // namespace sheaf

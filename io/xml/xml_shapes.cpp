@@ -1,0 +1,192 @@
+// Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus> and
+// <union>, <merge>, <intersection>, <difference> over them. The geometric attributes (centre,
+// radius, base and cap, ...) become the transform from the core's canonical shape
+// (core/geometry/shape.h); transform elements then place the node.
+#include "io/xml/xml_reader.h"
+
+#include <cmath>
+
+namespace sheaf::io::xml {
+namespace {
+
+constexpr int kMaxCsgDepth = 64;
+
+const std::vector<std::string> kShapeElements = {"sphere", "box",          "cylinder",  "cone",
+                                                 "disc",   "plane",        "torus",     "union",
+                                                 "merge",  "intersection", "difference"};
+
+/// The transform taking local z from `base` to `cap`, with local x and y scaled by `radius`.
+Affine axis_frame(Vec3 base, Vec3 cap, float radius) {
+    const Vec3 w = cap - base;
+    const Vec3 axis = normalize(w);
+    const Vec3 helper = std::fabs(axis.x) < 0.6f ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    const Vec3 e1 = normalize(cross(helper, axis));
+    const Vec3 e2 = cross(axis, e1);
+    Affine a;
+    for (int r = 0; r < 3; ++r) {
+        a.m[r][0] = e1[r] * radius;
+        a.m[r][1] = e2[r] * radius;
+        a.m[r][2] = w[r];
+        a.m[r][3] = base[r];
+    }
+    return a;
+}
+
+} // namespace
+
+bool SceneReader::is_shape(const pugi::xml_node& node) {
+    const std::string_view n = node.name();
+    for (const std::string& s : kShapeElements)
+        if (n == s) return true;
+    return false;
+}
+
+void SceneReader::read_shape_object(const pugi::xml_node& node) {
+    ShapeObject o;
+    read_csg_node(node, o, Affine{}, std::nullopt, 0, true);
+    scene_.add_shape_object(std::move(o));
+}
+
+void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, const Affine& placement,
+                                std::optional<uint32_t> material, int depth, bool top_level) {
+    if (depth > kMaxCsgDepth)
+        ctx_.fail(node, "CSG nested deeper than " + std::to_string(kMaxCsgDepth) + " levels");
+    const std::string_view kind = node.name();
+    Attributes a(ctx_, node);
+    if (top_level) a.get("name", o.name);
+    CsgNode n;
+    a.get("inverse", n.inverse);
+    const uint32_t index = uint32_t(o.nodes.size());
+
+    // Transform elements of this node; for an operation, its other children are its operands.
+    Affine own;
+    std::vector<pugi::xml_node> operands;
+    const bool leaf =
+        !(kind == "union" || kind == "merge" || kind == "intersection" || kind == "difference");
+    auto read_children = [&] {
+        for (const pugi::xml_node& c : child_elements(ctx_, node)) {
+            if (apply_transform(c, own)) continue;
+            if (leaf) unknown_element(ctx_, c, node, {"translate", "rotate", "scale", "matrix"});
+            if (!is_shape(c)) {
+                std::vector<std::string> allowed = kShapeElements;
+                allowed.insert(allowed.end(), {"translate", "rotate", "scale", "matrix"});
+                unknown_element(ctx_, c, node, allowed);
+            }
+            operands.push_back(c);
+        }
+    };
+
+    if (leaf) {
+        Affine frame;
+        Shape& s = n.shape;
+        auto fail_attr = [&](const char* attr, const std::string& why) {
+            ctx_.fail(node, node.attribute(attr), tag(node) + ": " + why);
+        };
+        if (kind == "sphere") {
+            Vec3 centre;
+            float radius = 1;
+            a.get("center", centre);
+            a.get("radius", radius);
+            if (!(radius > 0)) fail_attr("radius", "the radius must be > 0");
+            s.kind = ShapeKind::Sphere;
+            frame = Affine::translate(centre) * Affine::scale(Vec3(radius));
+        } else if (kind == "box") {
+            Vec3 lo(-1), hi(1);
+            a.get("min", lo);
+            a.get("max", hi);
+            if (!(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
+                fail_attr("max", "max must be greater than min in x, y and z");
+            s.kind = ShapeKind::Box;
+            frame = Affine::translate((lo + hi) * 0.5f) * Affine::scale((hi - lo) * 0.5f);
+        } else if (kind == "cylinder" || kind == "cone") {
+            Vec3 base(0, 0, 0), cap(0, 1, 0);
+            a.get("base", base);
+            a.get("cap", cap);
+            a.get("open", s.open);
+            if (!(length(cap - base) > 0)) fail_attr("cap", "base and cap must differ");
+            if (kind == "cylinder") {
+                float radius = 1;
+                a.get("radius", radius);
+                if (!(radius > 0)) fail_attr("radius", "the radius must be > 0");
+                s.kind = ShapeKind::Cylinder;
+                frame = axis_frame(base, cap, radius);
+            } else {
+                float r0 = 1, r1 = 0;
+                a.get("base_radius", r0);
+                a.get("cap_radius", r1);
+                if (!(r0 >= 0 && r1 >= 0 && (r0 > 0 || r1 > 0)))
+                    fail_attr("base_radius", "the radii must be >= 0 and not both 0");
+                s.kind = ShapeKind::Cone, s.a = r0, s.b = r1;
+                frame = axis_frame(base, cap, 1.0f);
+            }
+        } else if (kind == "disc") {
+            Vec3 centre, normal(0, 1, 0);
+            float radius = 1, hole = 0;
+            a.get("center", centre);
+            a.get("normal", normal);
+            a.get("radius", radius);
+            a.get("hole", hole);
+            if (!(length(normal) > 0)) fail_attr("normal", "the normal must not be zero");
+            if (!(radius > 0)) fail_attr("radius", "the radius must be > 0");
+            if (!(hole >= 0 && hole <= radius))
+                fail_attr("hole", "the hole's radius must lie in 0..radius");
+            s.kind = ShapeKind::Disc, s.a = hole / radius;
+            frame = axis_frame(centre, centre + normalize(normal), radius);
+        } else if (kind == "plane") {
+            Vec3 normal(0, 1, 0);
+            float offset = 0;
+            a.get("normal", normal);
+            a.get("offset", offset);
+            if (!(length(normal) > 0)) fail_attr("normal", "the normal must not be zero");
+            const Vec3 u = normalize(normal);
+            s.kind = ShapeKind::Plane;
+            frame = axis_frame(u * offset, u * (offset + 1), 1.0f);
+        } else { // torus
+            Vec3 centre;
+            float major = 1, minor = 0.25f;
+            a.get("center", centre);
+            a.get("major", major);
+            a.get("minor", minor);
+            if (!(major > 0)) fail_attr("major", "the major radius must be > 0");
+            if (!(minor > 0)) fail_attr("minor", "the minor radius must be > 0");
+            s.kind = ShapeKind::Torus, s.a = minor / major;
+            // The core's torus lies around z; this one lies in the xz plane, around y.
+            frame = Affine::translate(centre) * Affine::rotate(Vec3(1, 0, 0), -0.5f * float(M_PI)) *
+                    Affine::scale(Vec3(major));
+        }
+        n.material = material_of(a, material);
+        a.finish();
+        read_children();
+        n.op = CsgOp::Leaf;
+        n.transform = top_level ? frame : placement * own * frame;
+        if (top_level) o.transform = own;
+        o.nodes.push_back(n);
+        return;
+    }
+
+    std::optional<uint32_t> inner = material;
+    std::string mname;
+    if (a.get("material", mname))
+        inner = lookup(materials_, "material", mname, node, node.attribute("material"));
+    a.finish();
+    read_children();
+    const size_t needed = (kind == "difference" || kind == "intersection") ? 2 : 1;
+    if (operands.size() < needed)
+        ctx_.fail(node, tag(node) + " needs at least " + std::to_string(needed) +
+                            (needed == 1 ? " shape" : " shapes") + "; it has " +
+                            std::to_string(operands.size()));
+    n.op = kind == "union"          ? CsgOp::Union
+           : kind == "merge"        ? CsgOp::Merge
+           : kind == "intersection" ? CsgOp::Intersection
+                                    : CsgOp::Difference;
+    o.nodes.push_back(n);
+    const Affine inner_placement = top_level ? Affine{} : placement * own;
+    if (top_level) o.transform = own;
+    for (const pugi::xml_node& c : operands) {
+        const uint32_t child = uint32_t(o.nodes.size());
+        o.nodes[index].children.push_back(child);
+        read_csg_node(c, o, inner_placement, inner, depth + 1, false);
+    }
+}
+
+} // namespace sheaf::io::xml

@@ -1,0 +1,126 @@
+// <camera>, <light>, <background> and <settings>: what the scene is seen with.
+#include "io/xml/xml_reader.h"
+
+#include "core/base/error.h"
+#include "core/settings/settings.h"
+
+#include <cmath>
+
+namespace sheaf::io::xml {
+namespace {
+
+void no_children(const XmlContext& ctx, const pugi::xml_node& node) {
+    const std::vector<pugi::xml_node> children = child_elements(ctx, node);
+    if (!children.empty()) unknown_element(ctx, children[0], node, {});
+}
+
+} // namespace
+
+void SceneReader::read_camera(const pugi::xml_node& node) {
+    if (camera_seen_) ctx_.fail(node, "a scene has one <camera>; this is the second");
+    camera_seen_ = true;
+    no_children(ctx_, node);
+    Attributes a(ctx_, node);
+    Camera c;
+    int projection = 0;
+    a.get("projection", projection, {"perspective", "orthographic"});
+    c.projection = projection == 1 ? Projection::Orthographic : Projection::Perspective;
+    a.get("position", c.position);
+    a.get("look_at", c.look_at);
+    a.get("up", c.up);
+    if (c.projection == Projection::Perspective)
+        a.get("fov", c.fov_y_degrees);
+    else
+        a.get("ortho_height", c.ortho_height);
+    std::vector<float> shift;
+    if (a.get_numbers("shift", shift)) {
+        if (shift.size() != 2)
+            ctx_.fail(node, node.attribute("shift"),
+                      "attribute 'shift' of <camera>: expected two numbers (x y), found " +
+                          std::to_string(shift.size()));
+        c.shift_x = shift[0], c.shift_y = shift[1];
+    }
+    a.finish();
+    if (!(length(c.look_at - c.position) > 0))
+        ctx_.fail(node, node.attribute("look_at"), "the camera looks at its own position");
+    if (!(length(cross(c.look_at - c.position, c.up)) > 0))
+        ctx_.fail(node, node.attribute("up"), "the camera's up vector is parallel to its view");
+    if (c.projection == Projection::Perspective && !(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
+        ctx_.fail(node, node.attribute("fov"), "the field of view must lie in (0, 180) degrees");
+    if (c.projection == Projection::Orthographic && !(c.ortho_height > 0))
+        ctx_.fail(node, node.attribute("ortho_height"), "ortho_height must be > 0");
+    scene_.camera = c;
+}
+
+void SceneReader::read_light(const pugi::xml_node& node) {
+    no_children(ctx_, node);
+    Attributes a(ctx_, node);
+    Light l;
+    int type = 0;
+    a.get("type", type, {"point", "spot", "parallel"});
+    constexpr LightType kTypes[] = {LightType::Point, LightType::Spot, LightType::Parallel};
+    l.type = kTypes[type];
+    a.get("color", l.color, true);
+    a.get("fade_distance", l.fade_distance);
+    a.get("fade_power", l.fade_power);
+    a.get("shadowless", l.shadowless);
+    if (l.type != LightType::Parallel) a.get("position", l.position);
+    if (l.type != LightType::Point) a.get("direction", l.direction);
+    if (l.type == LightType::Spot) {
+        Vec3 look_at;
+        if (a.get("look_at", look_at)) {
+            if (node.attribute("direction"))
+                ctx_.fail(node, node.attribute("look_at"),
+                          "a spot light takes a direction or a look_at point, not both");
+            l.direction = look_at - l.position;
+        }
+        a.get("radius", l.spot_radius);
+        a.get("falloff", l.spot_falloff);
+        a.get("tightness", l.spot_tightness);
+    }
+    a.finish();
+    if (l.type != LightType::Point && !(length(l.direction) > 0))
+        ctx_.fail(node, "the light's direction must not be zero");
+    if (l.type == LightType::Spot && !(l.spot_radius >= 0 && l.spot_falloff > 0 &&
+                                       l.spot_falloff <= 180 && l.spot_tightness >= 0))
+        ctx_.fail(node, "a spot light needs radius >= 0, 0 < falloff <= 180 degrees and "
+                        "tightness >= 0");
+    if (!(l.fade_distance >= 0 && l.fade_power >= 0))
+        ctx_.fail(node, "fade_distance and fade_power must be >= 0");
+    scene_.add_light(l);
+}
+
+void SceneReader::read_background(const pugi::xml_node& node) {
+    if (background_seen_) ctx_.fail(node, "a scene has one <background>; this is the second");
+    background_seen_ = true;
+    no_children(ctx_, node);
+    Attributes a(ctx_, node);
+    a.get("color", scene_.background, true);
+    a.finish();
+    a.require("color");
+}
+
+void SceneReader::read_settings(const pugi::xml_node& node) {
+    Attributes(ctx_, node).finish();
+    for (const pugi::xml_node& s : child_elements(ctx_, node)) {
+        if (std::string_view(s.name()) != "set") unknown_element(ctx_, s, node, {"set"});
+        no_children(ctx_, s);
+        Attributes a(ctx_, s);
+        std::string key, value;
+        a.get("key", key);
+        a.get("value", value);
+        a.finish();
+        a.require("key");
+        a.require("value");
+        std::string canonical;
+        try {
+            canonical = canonical_setting(key, value);
+        } catch (const SettingsError& e) {
+            ctx_.fail(s, s.attribute(find_setting(key) ? "value" : "key"), e.what());
+        }
+        if (!scene_.settings.emplace(key, canonical).second)
+            ctx_.fail(s, s.attribute("key"), "setting '" + key + "' is set twice");
+    }
+}
+
+} // namespace sheaf::io::xml

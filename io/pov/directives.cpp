@@ -181,7 +181,17 @@ void Parser::declare_directive(bool local) {
         index.push_back(size_t(std::max(0.0, i)));
     }
     expect_sym("=", "'='");
-    Value v = parse_rvalue();
+    captures_.emplace_back();
+    Value v;
+    try {
+        v = parse_rvalue();
+    } catch (...) {
+        captures_.pop_back();
+        throw;
+    }
+    if (!captures_.back().empty())
+        v.pending = std::make_shared<const std::vector<PendingWarning>>(std::move(captures_.back()));
+    captures_.pop_back();
     if (is_sym_tok(peek_cont(), ";")) advance();
     if (v.type == VType::Array) { // arrays are copied on assignment
         auto copy = std::make_shared<ArrayValue>();

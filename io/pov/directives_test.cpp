@@ -268,3 +268,45 @@ TEST(PovLimits, UnclosedBlocks) {
 
 } // namespace
 } // namespace sheaf::io::pov
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::error_of;
+using test::load_text;
+
+// A declaration that is never used warns about nothing; its first use reports what it holds,
+// at the place inside the declaration, once; strict mode fails only at that use.
+TEST(PovDirectives, DeclaredUnsupportedFeaturesWarnWhenUsed) {
+    const std::string decl = "#declare Q = quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }\n"
+                             "#declare R = Q\n";
+    const PovResult unused = load_text(decl + "sphere { 0, 1 }\n");
+    EXPECT_TRUE(unused.warnings.empty()) << unused.warnings.front();
+    PovOptions strict;
+    strict.strict = true;
+    EXPECT_EQ(error_of(decl + "sphere { 0, 1 }\n", strict), "");
+
+    const PovResult used = load_text(decl + "object { R }\nobject { Q translate x }\n");
+    ASSERT_EQ(used.warnings.size(), 1u);
+    EXPECT_NE(used.warnings[0].find("scene.pov:1:14: warning: unsupported object 'quadric'"),
+              std::string::npos)
+        << used.warnings[0];
+    EXPECT_NE(error_of(decl + "object { R }\n", strict).find("scene.pov:1:14: error: unsupported"),
+              std::string::npos);
+}
+
+TEST(PovDirectives, ImageSizeComesFromTheOptions) {
+    PovOptions o;
+    o.image_width = 640;
+    o.image_height = 480;
+    const PovResult r = load_text("#if (image_width / image_height != 640 / 480)\n"
+                                  "#error \"wrong size\"\n#end\nsphere { 0, 1 }\n",
+                                  o);
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_EQ(error_of("#if (image_width != 512 | image_height != 512) #error \"size\" #end\n"),
+              "")
+        << "without options the size is 512 x 512";
+}
+
+} // namespace
+} // namespace sheaf::io::pov

@@ -389,6 +389,7 @@ Value Parser::parse_identifier(const Token& t) {
         advance();
         Value v = *found;
         if (v.type == VType::Array && is_sym_tok(peek_cont(), "[")) v = index_value(v, t);
+        raise_pending(v);
         if (v.type == VType::Other && v.str == "spline" && is_sym_tok(peek_cont(), "(")) {
             unsupported(t, "spline (gives <0,0,0>)");
             advance();
@@ -434,10 +435,8 @@ Value Parser::parse_identifier(const Token& t) {
         return Value::number(0);
     if (k == "final_clock" || k == "final_frame" || k == "clock_delta") return Value::number(1);
     if (k == "version") return Value::number(model.version);
-    if (k == "image_width" || k == "image_height") {
-        unsupported(t, "'" + k + "' (the image size is not known while parsing; 800x600 assumed)");
-        return Value::number(k == "image_width" ? 800 : 600);
-    }
+    if (k == "image_width") return Value::number(options_.image_width);
+    if (k == "image_height") return Value::number(options_.image_height);
     if (k == "function") return parse_function(t);
     if (k == "array") return parse_array_literal(t);
     if (k == "transform") {

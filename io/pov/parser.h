@@ -93,6 +93,10 @@ class Parser {
     [[noreturn]] void error_at(const Token& t, const std::string& msg) const;
     void warn(const Token& t, const std::string& msg);
     void unsupported(const Token& t, const std::string& what);
+    /// Reports the unsupported features a declared value carries (see PendingWarning).
+    void raise_pending(const Value& v);
+    /// While a #declare is read, unsupported features are collected here instead.
+    std::vector<std::vector<PendingWarning>> captures_;
     /// Skips a balanced { ... } block (directives inside still run).
     void skip_block();
     void push_file(const std::string& path, const Token& where);

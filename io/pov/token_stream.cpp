@@ -35,8 +35,18 @@ void Parser::warn(const Token& t, const std::string& msg) {
 }
 
 void Parser::unsupported(const Token& t, const std::string& what) {
+    if (!captures_.empty()) {
+        captures_.back().push_back({t, what});
+        return;
+    }
     if (options_.strict) throw SceneError(where(t) + ": error: unsupported " + what);
     warn(t, "unsupported " + what);
+}
+
+void Parser::raise_pending(const Value& v) {
+    if (!v.pending) return;
+    const auto pending = v.pending; // unsupported() may add to the same declaration's list
+    for (const PendingWarning& p : *pending) unsupported(p.where, p.what);
 }
 
 void Parser::charge(size_t bytes, const Token& t) {
@@ -204,6 +214,7 @@ bool Parser::accept_declared(VType type, Value& out, const std::string& expected
         got = index_value(got, t);
     }
     if (got.type != type) error_expected(t, expected + ", not " + type_name(got.type));
+    raise_pending(got);
     out = std::move(got);
     return true;
 }
@@ -216,6 +227,7 @@ bool Parser::accept_declared_any(Value& out) {
     advance();
     out = *v;
     if (out.type == VType::Array && is_sym_tok(peek_cont(), "[")) out = index_value(out, t);
+    raise_pending(out);
     return true;
 }
 

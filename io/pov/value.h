@@ -36,12 +36,21 @@ enum class VType {
 
 const char* type_name(VType t);
 
+/// An unsupported feature met while a #declare was read: reported when the declared value is
+/// used, so that include files full of declarations a scene never uses do not warn.
+struct PendingWarning {
+    Token where;
+    std::string what;
+};
+
 struct Value {
     VType type = VType::None;
     int dim = 1;               // Float 1, Vector 2..5, Color 5
     double v[5] = {};          // Float, Vector, Color (r, g, b, f, t)
     std::string str;           // String; Other: the block's keyword
     std::shared_ptr<void> ptr; // Array, Function, Object, Texture, ... (by type)
+    /// What its declaration met that is unsupported; raised again at each use.
+    std::shared_ptr<const std::vector<PendingWarning>> pending;
 
     template <class T> T& as() const { return *static_cast<T*>(ptr.get()); }
     bool numeric() const {

@@ -27,6 +27,8 @@ SceneFile read_pov(const std::string& path, const SceneFileOptions& options) {
     pov::PovOptions po;
     po.include_paths = options.include_paths;
     po.strict = options.strict;
+    po.image_width = options.image_width;
+    po.image_height = options.image_height;
     pov::PovResult r = pov::load_pov_scene(path, po);
     return {std::move(r.scene), std::move(r.warnings)};
 }

@@ -13,6 +13,8 @@ namespace sheaf::io {
 struct SceneFileOptions {
     std::vector<std::string> include_paths; // POV-Ray #include folders, after the scene's own
     bool strict = false;                    // an unsupported feature is an error, not a warning
+    int image_width = 512, image_height = 512; // the size the scene will be rendered at, for
+                                               // scenes that ask (POV-Ray's image_width)
 };
 
 struct SceneFile {

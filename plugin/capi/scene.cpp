@@ -6,6 +6,8 @@
 #include "core/scenes/builtin.h"
 #include "io/scene/scene_file.h"
 
+#include <cstdlib>
+
 
 using namespace sheaf::capi;
 
@@ -132,9 +134,18 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
             else
                 throw InvalidArgument("load option 'strict': '" + v +
                                       "' is not allowed; expected 0 or 1");
+        } else if (k == "image_width" || k == "image_height") {
+            char* end = nullptr;
+            const long n = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end != '\0' || n < 1 || n > 16384)
+                throw InvalidArgument("load option '" + k + "': '" + v +
+                                      "' is not allowed; expected an integer in 1..16384");
+            (k == "image_width" ? s.load_options.image_width : s.load_options.image_height) =
+                int(n);
         } else {
             throw InvalidArgument("unknown load option '" + k +
-                                  "'; known options: include_path, strict");
+                                  "'; known options: include_path, strict, image_width, "
+                                  "image_height");
         }
     });
 }

@@ -82,6 +82,10 @@ int load_scene(SheafScene scene, const SceneSource& source) {
             return error(kUsage, "--include-path " + dir + ": " + last_error());
     if (sheafSceneSetLoadOption(scene, "strict", source.strict ? "1" : "0") != SHEAF_OK)
         return error(kUsage, "--strict: " + last_error());
+    if (source.width)
+        sheafSceneSetLoadOption(scene, "image_width", std::to_string(*source.width).c_str());
+    if (source.height)
+        sheafSceneSetLoadOption(scene, "image_height", std::to_string(*source.height).c_str());
     if (sheafSceneLoadFile(scene, label.c_str()) != SHEAF_OK) return error(kScene, last_error());
     size_t warnings = 0;
     sheafSceneGetWarningCount(scene, &warnings);

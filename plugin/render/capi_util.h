@@ -62,6 +62,7 @@ struct SceneSource {
     std::string path;                       ///< empty: the default built-in scene
     std::vector<std::string> include_paths; ///< --include-path, +L
     bool strict = false;                    ///< --strict: unsupported features are errors
+    std::optional<int> width, height;       ///< -W/-H: the size the scene is told
 };
 
 /// Loads and commits the scene, printing the reader's warnings on stderr. Returns an exit code.

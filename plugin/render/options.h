@@ -31,7 +31,9 @@ struct Options {
 };
 
 /// The scene argument with the options that say how to read it.
-inline SceneSource scene_source(const Options& o) { return {o.scene, o.include_paths, o.strict}; }
+inline SceneSource scene_source(const Options& o) {
+    return {o.scene, o.include_paths, o.strict, o.settings.width, o.settings.height};
+}
 
 /// Parses the command line into `o`. Returns an exit code when the program should stop now
 /// (--help printed: 0; a usage error, already printed: 1), nothing to go on.

@@ -95,7 +95,9 @@ SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name);
 SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);
 /* How the next sheafSceneLoadFile reads files, by name:
  *   "include_path"  a folder searched for #include after the scene's own (appends; "" clears)
- *   "strict"        "1": an unsupported feature is an error (SHEAF_ERROR_SCENE); "0": a warning */
+ *   "strict"        "1": an unsupported feature is an error (SHEAF_ERROR_SCENE); "0": a warning
+ *   "image_width", "image_height"  the size the scene will be rendered at, for scenes that ask
+ *                   (POV-Ray's image_width and image_height); 512 when not set */
 SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key, const char* value);
 /* The warnings of the last sheafSceneLoadFile ("FILE:LINE:COL: warning: unsupported ..."), in
  * order; *message stays valid until the scene is loaded again or released. */

@@ -7,6 +7,7 @@
 #include "core/geometry/shape.h"
 #include "core/hash/ray_hash.h"
 #include "core/raster/camera.h"
+#include "core/render/pattern_eval.h"
 #include "core/render/shade.h"
 #include "core/rsh/trace.h"
 
@@ -33,7 +34,14 @@ __global__ void device_code_instances(const Ray* rays, const TriangleVerts* tris
     Vec3 out;
     const float kr = fresnel_dielectric(0.5f, 1.0f / 1.5f);
     if (refract(r.dir, Vec3(0, 0, 1), 1.0f / 1.5f, out)) color[i] = out * kr;
-    color[i] += direct_light(m, m.color, Vec3(0, 0, 1), r.dir, Vec3(0, 0, 1), Vec3(1.0f)) + ambient_light(m, m.color);
+    SurfaceHit sh;
+    sh.normal = sh.geo_normal = Vec3(0, 0, 1);
+    sh.incoming = r.dir;
+    sh.albedo = m.color;
+    color[i] += direct_light(m, sh, Vec3(0, 0, 1), Vec3(1.0f)) + ambient_light(m, sh) +
+                interior_fade(m, 1.0f) + mirror_weight(m, sh);
+    const Vec3 q = pattern_point(Pattern{}, r.origin);
+    color[i] += Vec3(pattern_value_at(Pattern{}, q) + float(pattern_index_at(Pattern{}, q)));
     Span spans[kMaxShapeSpans];
     const Shape shape{ShapeKind(i % 7), 0.3f, 0.5f, (i & 8) != 0};
     PlacedShape placed{shape, Affine(), Affine()};

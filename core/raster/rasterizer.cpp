@@ -62,6 +62,7 @@ void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<u
     std::vector<ScreenTri> tris(2 * n);
     parallel_for("raster.setup", n, [&](size_t p) {
         tris[2 * p].x0 = tris[2 * p + 1].x0 = 1, tris[2 * p].x1 = tris[2 * p + 1].x1 = 0;
+        if (scene.prim_flag(uint32_t(p), kNoImage)) return; // not seen by the camera
         const TriangleVerts& t = scene.tris[p];
         const Vec3 v[3] = {t.a, t.b, t.c};
         D3 c[3];

@@ -78,7 +78,8 @@ void generate_shadow_rays(const PreparedScene& scene, const std::vector<SurfaceH
             r.tmax = ls.distance;
             out.rays[slot] = r;
             out.pixel[slot] = h.pixel;
-            out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h.albedo, h.normal, h.incoming, ls.to_light, ls.radiance);
+            out.weight[slot] =
+                h.throughput * direct_light(scene.materials[h.material], h, ls.to_light, ls.radiance);
             out.light[slot] = li;
         });
 }
@@ -95,7 +96,7 @@ void generate_ao_rays(const PreparedScene& scene, const std::vector<SurfaceHit>&
         [&](size_t i, uint32_t slot) {
             const SurfaceHit& h = hits[i];
             const Material& m = scene.materials[h.material];
-            const Vec3 w = h.throughput * ambient_light(m, h.albedo) * (1.0f / float(n));
+            const Vec3 w = h.throughput * ambient_light(m, h) * (1.0f / float(n));
             Vec3 t, b;
             basis(h.geo_normal, t, b);
             for (uint32_t s = 0; s < n; ++s) {
@@ -127,18 +128,28 @@ struct BounceSplit {
 BounceSplit split(const PreparedScene& scene, const SurfaceHit& h) {
     const Material& m = scene.materials[h.material];
     BounceSplit s{};
-    float kr = 0.0f;
-    if (m.transmission > 0) {
+    // Light passing through: tinted by the colour (filter) or not (transmit).
+    const Vec3 pass = h.albedo * h.filter + Vec3(h.transmit);
+    const Vec3 mirror = mirror_weight(m, h);
+    Vec3 reflect_w = mirror;
+    if (max_component(pass) > 0) {
         // Entering from outside the object: n_outside / n_inside; leaving: the inverse.
         const float eta = h.front ? 1.0f / m.ior : m.ior;
-        const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
-        kr = fresnel_dielectric(cos_i, eta);
-        if (kr < 1.0f && refract(h.incoming, h.normal, eta, s.refract_dir))
-            s.refract_weight = h.throughput * h.albedo * (m.transmission * (1.0f - kr));
-        else
-            kr = 1.0f;
+        float kr = 0.0f;
+        if (m.fresnel_split) {
+            const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
+            kr = fresnel_dielectric(cos_i, eta);
+        }
+        if (kr < 1.0f && refract(h.incoming, h.normal, eta, s.refract_dir)) {
+            float keep = 1.0f - kr;
+            if (m.conserve_energy) keep *= fmaxf(0.0f, 1.0f - max_component(mirror));
+            s.refract_weight = h.throughput * pass * keep;
+        } else {
+            kr = 1.0f; // total internal reflection: what would pass is reflected
+        }
+        reflect_w += pass * kr;
     }
-    s.reflect_weight = h.throughput * (m.mirror + m.transmission * kr);
+    s.reflect_weight = h.throughput * reflect_w;
     s.reflect_dir = reflect(h.incoming, h.normal);
     // A shading normal can send a reflection below the surface; the geometric one cannot.
     if (dot(s.reflect_dir, h.geo_normal) <= 0) s.reflect_dir = reflect(h.incoming, h.geo_normal);

@@ -6,6 +6,7 @@
 #include "core/raster/rasterizer.h"
 #include "core/rays/ray_gen.h"
 #include "core/render/shade.h"
+#include "core/render/surface_texture.h"
 #include "core/rsh/trace.h"
 #include "core/scene/analytic.h"
 
@@ -88,6 +89,7 @@ class FramePipeline {
                 const Ray ray = cam.pixel_ray(int(i % W_), int(i / W_));
                 const float depth_per_t = cam.ortho ? 1.0f : dot(ray.dir, cam.forward);
                 for (uint32_t a = 0; a < count; ++a) {
+                    if (scene_.prim_flag(first + a, kNoImage)) continue;
                     const Sphere& s = scene_.prim_sphere[first + a];
                     if (std::isfinite(s.radius)) { // the bounding sphere first
                         const Vec3 oc = s.center - ray.origin;
@@ -134,12 +136,12 @@ class FramePipeline {
         parallel_for(
             "gbuffer.resolve", vis.size(),
             [&](size_t i) {
+                const Ray ray = cam.pixel_ray(int(i % W_), int(i / W_));
                 if (vis[i] == kEmptyPixel) {
-                    radiance_[i] = scene_.background;
+                    radiance_[i] = leave_scene(ray.dir, Vec3(1.0f));
                     return;
                 }
                 const uint32_t prim = vis_prim(vis[i]);
-                const Ray ray = cam.pixel_ray(int(i % W_), int(i / W_));
                 float t = 0;
                 if (scene_.is_triangle(prim)) {
                     // The exact hit of the pixel's ray with the visible triangle's plane.
@@ -156,6 +158,7 @@ class FramePipeline {
                 SurfaceHit h = make_surface_hit(scene_, ray, prim, t);
                 h.pixel = uint32_t(i);
                 h.throughput = Vec3(1.0f);
+                radiance_[i] = through_fog(h);
                 hits[slot[i]] = h;
                 depth_[i] = t;
                 normal_[i] = h.normal;
@@ -165,6 +168,25 @@ class FramePipeline {
             1024);
         memory_.sub(int64_t(vis.size() * sizeof(uint64_t)));
         return hits;
+    }
+
+    // What a ray leaving the scene along `dir` brings with weight w: the sky, through the fog.
+    Vec3 leave_scene(Vec3 dir, Vec3 w) const {
+        float keep;
+        Vec3 add;
+        fog_over(scene_.fog, INFINITY, keep, add);
+        return w * (sky_color(scene_, dir) * keep + add);
+    }
+
+    // The fog between the ray's origin and the hit: scales the hit's throughput, and returns
+    // the fog's own colour the ray brings.
+    Vec3 through_fog(SurfaceHit& h) const {
+        float keep;
+        Vec3 add;
+        fog_over(scene_.fog, h.t, keep, add);
+        const Vec3 fog = h.throughput * add;
+        h.throughput = h.throughput * keep;
+        return fog;
     }
 
     void accumulate(const RayBatch& batch, const TraceResult& r) {
@@ -192,11 +214,11 @@ class FramePipeline {
             for (const SurfaceHit& h : hits) {
                 const Material& m = scene_.materials[h.material];
                 Vec3 c = m.emission;
-                if (!trace_ao) c += ambient_light(m, h.albedo);
+                if (!trace_ao) c += ambient_light(m, h);
                 for (const Light& l : scene_.lights) {
                     if (!l.shadowless || !lights_point(l, h, params_)) continue;
                     const LightSample ls = sample_light(l, h.position, params_.far);
-                    c += direct_light(m, h.albedo, h.normal, h.incoming, ls.to_light, ls.radiance);
+                    c += direct_light(m, h, ls.to_light, ls.radiance);
                 }
                 radiance_[h.pixel] += h.throughput * c;
             }
@@ -233,10 +255,11 @@ class FramePipeline {
                 if (r.closest[i] != kNoHit)
                     ++count;
                 else
-                    radiance_[b->pixel[i]] += b->weight[i] * scene_.background;
+                    radiance_[b->pixel[i]] += leave_scene(b->rays[i].dir, b->weight[i]);
             }
             const size_t base = next.size();
             next.resize(base + count);
+            fog_.assign(count, Vec3(0.0f));
             parallel_for(
                 "shade.next", b->size(),
                 [&](size_t i) {
@@ -245,9 +268,15 @@ class FramePipeline {
                                                     hit_t(r.closest[i]));
                     h.pixel = b->pixel[i];
                     h.throughput = b->weight[i];
+                    // Leaving an object through its far side: what its interior faded.
+                    if (!h.front)
+                        h.throughput = h.throughput * interior_fade(scene_.materials[h.material], h.t);
+                    fog_[slot[i]] = through_fog(h);
                     next[base + slot[i]] = h;
                 },
                 1024);
+            if (scene_.fog.distance > 0) // in ray order: sums stay the same on every accel
+                for (size_t k = 0; k < count; ++k) radiance_[next[base + k].pixel] += fog_[k];
         }
         return next;
     }
@@ -325,6 +354,7 @@ class FramePipeline {
     std::vector<Vec3> radiance_;
     std::vector<float> depth_;
     std::vector<Vec3> normal_, albedo_;
+    std::vector<Vec3> fog_; // fog colour brought by each hit of the wave being built
     std::vector<uint32_t> object_;
     std::vector<uint32_t> tests_;
 };

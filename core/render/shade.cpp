@@ -1,5 +1,6 @@
 #include "core/render/shade.h"
 
+#include "core/render/surface_texture.h"
 #include "core/render/texture.h"
 #include "core/scene/analytic.h"
 
@@ -9,12 +10,32 @@ namespace sheaf {
 
 namespace {
 
-Vec3 albedo_at(const PreparedScene& scene, const SurfaceHit& h, float uv_s, float uv_t) {
+// The surface's material (texture maps resolved), colour, filter, transmit and shading normal
+// at h.position; (uv_s, uv_t) are its texture coordinates.
+void finish_surface(const PreparedScene& scene, SurfaceHit& h, float uv_s, float uv_t) {
+    h.material = resolve_material(scene, h.material, h.position);
     const Material& m = scene.materials[h.material];
-    if (m.texture < 0 || !scene.sampler) return m.color;
-    float s, t;
-    texture_coordinates(scene.textures[size_t(m.texture)], h.position, uv_s, uv_t, s, t);
-    return m.color * scene.sampler->sample(uint32_t(m.texture), s, t);
+    if (m.pigment >= 0) {
+        const SurfaceColor c = evaluate_pigment(scene, uint32_t(m.pigment), h.position, uv_s, uv_t);
+        h.albedo = c.rgb;
+        h.filter = c.filter;
+        h.transmit = c.transmit;
+    } else {
+        h.albedo = m.color;
+        h.filter = m.transmission;
+        h.transmit = 0;
+        if (m.texture >= 0 && scene.sampler) {
+            float s, t;
+            texture_coordinates(scene.textures[size_t(m.texture)], h.position, uv_s, uv_t, s, t);
+            h.albedo = m.color * scene.sampler->sample(uint32_t(m.texture), s, t);
+        }
+    }
+    if (m.normal >= 0) {
+        Vec3 n = perturb_normal(scene, uint32_t(m.normal), h.position, h.normal);
+        // A tilted normal never turns away from the side the ray came from.
+        if (dot(n, h.geo_normal) <= 0) n = h.normal;
+        h.normal = n;
+    }
 }
 
 // An analytic primitive's surface: the exact test again gives the normal and the leaf (and so
@@ -40,7 +61,7 @@ SurfaceHit analytic_surface_hit(const PreparedScene& scene, const Ray& ray, uint
     if (!h.front) n = -n;
     h.geo_normal = h.normal = n;
     // Analytic shapes have no texture coordinates of their own: planar (x, y) in world space.
-    h.albedo = albedo_at(scene, h, h.position.x, h.position.y);
+    finish_surface(scene, h, h.position.x, h.position.y);
     return h;
 }
 
@@ -81,8 +102,8 @@ SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t
     h.normal = n;
     const TriangleUvs& tu = scene.uvs[prim];
     const float w = 1.0f - u - v;
-    h.albedo = albedo_at(scene, h, w * tu.s[0] + u * tu.s[1] + v * tu.s[2],
-                         w * tu.t[0] + u * tu.t[1] + v * tu.t[2]);
+    finish_surface(scene, h, w * tu.s[0] + u * tu.s[1] + v * tu.s[2],
+                   w * tu.t[0] + u * tu.t[1] + v * tu.t[2]);
     return h;
 }
 

@@ -13,16 +13,60 @@ namespace sheaf {
 /// grazes an edge still gets a normal from the triangle.
 SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim, float t);
 
-/// Diffuse and Phong light from one point light arriving along unit `to_light`.
-/// `albedo` is the material's colour at the point (textured or not).
-SHEAF_HD_INLINE Vec3 direct_light(const Material& m, Vec3 albedo, Vec3 n, Vec3 incoming,
-                                  Vec3 to_light, Vec3 light_color) {
+/// The share of a surface that is opaque: what filter and transmit do not let through.
+SHEAF_HD_INLINE float opacity(const SurfaceHit& h) {
+    return fmaxf(0.0f, 1.0f - h.filter - h.transmit);
+}
+
+/// Fresnel reflectance of a dielectric for unpolarised light; eta = n_incident / n_transmitted.
+SHEAF_HD_INLINE float fresnel_dielectric(float cos_i, float eta) {
+    const float sin_t2 = eta * eta * fmaxf(0.0f, 1.0f - cos_i * cos_i);
+    if (sin_t2 >= 1.0f) return 1.0f; // total internal reflection
+    const float cos_t = sqrtf(1.0f - sin_t2);
+    const float rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    const float rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5f * (rs * rs + rp * rp);
+}
+
+
+/// The mirror reflection of the surface at h (per channel): constant, or varying with the angle
+/// of view (POV-Ray's reflection { min max falloff } and fresnel), tinted when metallic.
+SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
+    float r = m.mirror;
+    if (m.mirror_min >= 0.0f || m.mirror_fresnel) {
+        const float lo = fmaxf(m.mirror_min, 0.0f), hi = m.mirror;
+        const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
+        const float f = m.mirror_fresnel ? fresnel_dielectric(cos_i, h.front ? 1.0f / m.ior : m.ior)
+                                         : powf(1.0f - cos_i, m.mirror_falloff);
+        r = lo + (hi - lo) * f;
+    }
+    Vec3 w = m.mirror_color * r;
+    if (m.mirror_metallic) w = w * h.albedo;
+    return w;
+}
+
+/// Diffuse and highlights from one light arriving along unit `to_light` with `light_color`:
+/// diffuse cos^brilliance on the opaque share (less the reflected share with conserve_energy),
+/// Phong (reflection vector) and Blinn (half vector) highlights, tinted when metallic.
+SHEAF_HD_INLINE Vec3 direct_light(const Material& m, const SurfaceHit& h, Vec3 to_light,
+                                  Vec3 light_color) {
+    const Vec3 n = h.normal;
     const float ndl = fmaxf(dot(n, to_light), 0.0f);
-    Vec3 c = albedo * (m.diffuse * ndl * (1.0f - m.transmission));
+    float kd = m.diffuse * (m.brilliance == 1.0f ? ndl : powf(ndl, m.brilliance)) * opacity(h);
+    if (m.conserve_energy) kd *= fmaxf(0.0f, 1.0f - max_component(mirror_weight(m, h)));
+    Vec3 c = h.albedo * kd;
+    float highlight = 0.0f;
     if (m.specular > 0) {
         const Vec3 r = reflect(-to_light, n);
-        const float s = fmaxf(dot(r, -incoming), 0.0f);
-        c += Vec3(m.specular * powf(s, m.phong_exponent));
+        highlight += m.specular * powf(fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
+    }
+    if (m.blinn > 0) {
+        const Vec3 half = normalize(to_light - h.incoming);
+        highlight += m.blinn * powf(fmaxf(dot(n, half), 0.0f), m.blinn_exponent);
+    }
+    if (highlight > 0) {
+        const Vec3 tint = Vec3(1.0f - m.metallic) + h.albedo * m.metallic;
+        c += tint * highlight;
     }
     return c * light_color;
 }
@@ -72,19 +116,30 @@ SHEAF_HD_INLINE LightSample sample_light(const Light& l, Vec3 p, float far) {
     return s;
 }
 
-/// Ambient term (scaled by ambient occlusion where it is traced).
-SHEAF_HD_INLINE Vec3 ambient_light(const Material& m, Vec3 albedo) {
-    return albedo * (m.ambient * (1.0f - m.transmission));
+/// Ambient term on the opaque share (scaled by ambient occlusion where it is traced).
+SHEAF_HD_INLINE Vec3 ambient_light(const Material& m, const SurfaceHit& h) {
+    return h.albedo * (m.ambient * opacity(h));
 }
 
-/// Fresnel reflectance of a dielectric for unpolarised light; eta = n_incident / n_transmitted.
-SHEAF_HD_INLINE float fresnel_dielectric(float cos_i, float eta) {
-    const float sin_t2 = eta * eta * fmaxf(0.0f, 1.0f - cos_i * cos_i);
-    if (sin_t2 >= 1.0f) return 1.0f; // total internal reflection
-    const float cos_t = sqrtf(1.0f - sin_t2);
-    const float rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    const float rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    return 0.5f * (rs * rs + rp * rp);
+/// What light keeps after travelling d inside a material that fades it (POV-Ray's interior
+/// fade_distance, fade_power, fade_color).
+SHEAF_HD_INLINE Vec3 interior_fade(const Material& m, float d) {
+    if (!(m.fade_distance > 0) || !(m.fade_power > 0)) return Vec3(1.0f);
+    const float a = 1.0f / (1.0f + powf(d / m.fade_distance, m.fade_power));
+    return Vec3(a) + m.fade_color * (1.0f - a);
+}
+
+/// Constant fog along a ray segment of length d (infinite for rays that leave the scene): the
+/// far colour keeps `keep` of itself and the fog adds `add`.
+SHEAF_HD_INLINE void fog_over(const Fog& f, float d, float& keep, Vec3& add) {
+    if (!(f.distance > 0)) {
+        keep = 1.0f, add = Vec3(0.0f);
+        return;
+    }
+    const float a = d < 3.0e38f ? expf(-d / f.distance) : 0.0f;
+    const float amount = (1.0f - a) * (1.0f - f.transmit);
+    keep = 1.0f - amount;
+    add = f.color * amount;
 }
 
 /// Snell refraction of unit d through unit n (facing d's origin side); false on total

@@ -16,7 +16,9 @@ struct SurfaceHit {
     Vec3 geo_normal;   // geometric normal, turned to face the incoming ray
     Vec3 incoming;     // unit direction of the ray that found the point
     Vec3 throughput; // share of this point's radiance that reaches the pixel
-    Vec3 albedo;     // the material's colour here (times its texture)
+    Vec3 albedo;     // the material's colour here (its pigment, or colour times texture)
+    float filter = 0;   // share of light passing through, tinted by albedo
+    float transmit = 0; // share of light passing through untinted
     float t = 0;       // distance along the incoming ray
     bool front = true; // the ray arrived on the side the winding calls outside
 };

@@ -48,8 +48,8 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 // ---------------------------------------------------------------------------------------------
 // brute: every ray against every primitive. Any-hit queries stop at the first hit.
-void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, Counter& final,
-                 TraceResult& out) {
+void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, uint8_t skip,
+                 Counter& final, TraceResult& out) {
     const size_t prims = scene.prim_count();
     parallel_for_range(
         "brute.trace", batch.size(),
@@ -60,6 +60,7 @@ void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, Co
                 const uint64_t before = tests;
                 uint64_t best = kNoHit;
                 for (size_t p = 0; p < prims; ++p) {
+                    if (skip && scene.prim_flag(uint32_t(p), skip)) continue;
                     ++tests;
                     float t;
                     if (!intersect_prim(scene, uint32_t(p), r, t)) continue;
@@ -83,10 +84,11 @@ void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, Co
 class Traversal {
   public:
     Traversal(const PreparedScene& scene, const RayHierarchy& h, const TrackedVector<Ray>& rays,
-              const std::vector<uint32_t>& perm, bool any, size_t batch, MemoryTracker& memory,
-              TraceResult& out)
+              const std::vector<uint32_t>& perm, bool any, uint8_t skip, size_t batch,
+              MemoryTracker& memory, TraceResult& out)
         : levels_(size_t(h.depth) + 1), scene_(scene), h_(h), rays_(rays), perm_(perm), any_(any),
-          batch_(batch), out_(out), local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
+          skip_(skip), batch_(batch), out_(out),
+          local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
         for (int k = 0; k <= h.depth; ++k) buffers_.push_back(tracked_vector<Pair>(memory));
         leaf_pairs_.assign(h.node_count(1), 0);
     }
@@ -110,6 +112,7 @@ class Traversal {
                         const RayNode& n = nodes[i];
                         auto test_range = [&](uint32_t p0, uint32_t p1) {
                             for (uint32_t p = p0; p < p1; ++p) {
+                                if (skip_ && scene_.prim_flag(p, skip_)) continue;
                                 ++lt;
                                 if (node_hits_sphere(n, scene_.prim_sphere[p])) {
                                     ++lh;
@@ -230,6 +233,7 @@ class Traversal {
     const TrackedVector<Ray>& rays_;
     const std::vector<uint32_t>& perm_;
     bool any_;
+    uint8_t skip_; // primitives whose objects have these flags are not candidates
     size_t batch_;
     TraceResult& out_;
     tbb::enumerable_thread_specific<TrackedVector<Pair>> local_;
@@ -283,6 +287,11 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
                  Stats& stats, MemoryTracker& memory, TraceResult& out) {
     const size_t n = batch.size();
     const bool any = any_hit_query(batch.type);
+    // Objects without shadows let shadow and AO rays pass; objects without reflections are
+    // not seen by reflection rays.
+    const uint8_t skip = any                                ? uint8_t(kNoShadow)
+                         : batch.type == RayType::Reflection ? uint8_t(kNoReflection)
+                                                             : uint8_t(0);
     const std::string p = std::string("tests.") + ray_type_name(batch.type) + ".";
     stats.add(std::string("rays.") + ray_type_name(batch.type), double(n));
     stats.add(p + "brute_force", double(n) * double(scene.prim_count()));
@@ -297,7 +306,7 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
         Counter final;
         {
             PhaseTimer t(stats, "time_ms.final_tests");
-            trace_brute(scene, batch, any, final, out);
+            trace_brute(scene, batch, any, skip, final, out);
         }
         stats.add(p + "final.tests", double(final.tests));
         stats.add(p + "final.hits", double(final.hits));
@@ -334,7 +343,7 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
               double(h.node_count(s.hierarchy_depth)));
 
     const auto t0 = std::chrono::steady_clock::now();
-    Traversal trav(scene, h, sorted, order.perm, any, size_t(s.batch_pairs), memory, out);
+    Traversal trav(scene, h, sorted, order.perm, any, skip, size_t(s.batch_pairs), memory, out);
     trav.run(s.cull_objects);
     const double total_ms = ms_since(t0);
     parallel_for(

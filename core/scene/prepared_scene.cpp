@@ -94,7 +94,20 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_name.push_back(obj.name);
         p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
+    p.prim_flags.resize(p.prim_count());
+    for (size_t o = 0; o < scene.objects.size(); ++o)
+        for (uint32_t i = p.object_begin[o]; i < p.object_begin[o + 1]; ++i)
+            p.prim_flags[i] = scene.objects[o].flags;
+    for (size_t so = 0; so < scene.shape_objects.size(); ++so)
+        p.prim_flags[p.tris.size() + so] = scene.shape_objects[so].flags;
     p.materials = scene.materials;
+    p.pigments = scene.pigments;
+    p.pigment_entries = scene.pigment_entries;
+    p.normal_patterns = scene.normal_patterns;
+    p.material_switches = scene.material_switches;
+    p.material_entries = scene.material_entries;
+    p.sky = scene.sky;
+    p.fog = scene.fog;
     p.textures = scene.textures;
     p.lights = scene.lights;
     p.camera = scene.camera;

@@ -55,7 +55,16 @@ struct PreparedScene {
     std::vector<uint32_t> csg_children;
     std::vector<uint32_t> analytic_root; // per analytic primitive: its root node in csg
 
+    std::vector<uint8_t> prim_flags; // ObjectFlag bits of each primitive's object
+
     std::vector<Material> materials;
+    std::vector<Pigment> pigments;
+    std::vector<PigmentEntry> pigment_entries;
+    std::vector<NormalPattern> normal_patterns;
+    std::vector<MaterialSwitch> material_switches;
+    std::vector<MaterialEntry> material_entries;
+    int32_t sky = -1;
+    Fog fog;
     std::vector<Texture> textures;
     std::shared_ptr<const TextureSampler> sampler; // set by the IO layer when there are textures
     std::vector<Light> lights;
@@ -67,6 +76,10 @@ struct PreparedScene {
     size_t prim_count() const { return tris.size() + analytic_root.size(); }
     bool is_triangle(uint32_t prim) const { return prim < tris.size(); }
     size_t object_count() const { return object_sphere.size(); }
+    /// Whether primitive `prim`'s object has ObjectFlag `flag`.
+    bool prim_flag(uint32_t prim, uint8_t flag) const {
+        return prim < prim_flags.size() && (prim_flags[prim] & flag) != 0;
+    }
 };
 
 /// Validates and flattens. Throws SceneError.

@@ -3,6 +3,7 @@
 #include "core/base/error.h"
 
 #include <cmath>
+#include <functional>
 
 namespace sheaf {
 
@@ -180,6 +181,87 @@ void Scene::validate() const {
     for (size_t t = 0; t < textures.size(); ++t)
         if (textures[t].path.empty())
             throw SceneError("texture " + std::to_string(t) + " has no file");
+    validate_patterns();
+}
+
+namespace {
+
+void check_pattern(const Pattern& p, size_t textures, const std::string& name) {
+    for (auto& row : p.to_pattern.m)
+        for (float v : row)
+            if (!std::isfinite(v)) throw SceneError(name + ": its transform is not finite");
+    if (!is_finite(p.turbulence) || !std::isfinite(p.frequency) || !std::isfinite(p.phase) ||
+        !is_finite(p.vector) || p.octaves < 1 || p.octaves > 16)
+        throw SceneError(name + ": a pattern parameter is out of range");
+    if (p.kind == PatternKind::Image && (p.image < 0 || size_t(p.image) >= textures))
+        throw SceneError(name + " names texture " + std::to_string(p.image) +
+                         ", which does not exist");
+}
+
+} // namespace
+
+void Scene::validate_patterns() const {
+    const auto range = [](uint32_t first, uint32_t count, size_t size) {
+        return size_t(first) + count <= size;
+    };
+    for (size_t i = 0; i < pigments.size(); ++i) {
+        const Pigment& pg = pigments[i];
+        const std::string name = "pigment " + std::to_string(i);
+        if (pg.solid) continue;
+        check_pattern(pg.pattern, textures.size(), name);
+        if (!range(pg.first, pg.count, pigment_entries.size()))
+            throw SceneError(name + ": its entries lie outside the pigment entries");
+        for (uint32_t e = pg.first; e < pg.first + pg.count; ++e) {
+            // Entries name earlier pigments only, so maps cannot refer to themselves.
+            const int32_t ref = pigment_entries[e].pigment;
+            if (ref >= int32_t(i))
+                throw SceneError(name + ": entry " + std::to_string(e - pg.first) +
+                                 " names pigment " + std::to_string(ref) +
+                                 "; entries must name earlier pigments");
+        }
+    }
+    for (size_t i = 0; i < normal_patterns.size(); ++i)
+        check_pattern(normal_patterns[i].pattern, textures.size(),
+                      "normal pattern " + std::to_string(i));
+    for (size_t i = 0; i < material_switches.size(); ++i) {
+        const MaterialSwitch& ms = material_switches[i];
+        const std::string name = "material switch " + std::to_string(i);
+        check_pattern(ms.pattern, textures.size(), name);
+        if (ms.count == 0 || !range(ms.first, ms.count, material_entries.size()))
+            throw SceneError(name + ": its entries lie outside the material entries");
+        for (uint32_t e = ms.first; e < ms.first + ms.count; ++e)
+            if (material_entries[e].material >= materials.size())
+                throw SceneError(name + " names material " +
+                                 std::to_string(material_entries[e].material) +
+                                 ", which does not exist");
+    }
+    for (size_t m = 0; m < materials.size(); ++m) {
+        const Material& mt = materials[m];
+        const std::string name = "material " + std::to_string(m);
+        if (mt.pigment >= int32_t(pigments.size()) || mt.normal >= int32_t(normal_patterns.size()) ||
+            mt.select >= int32_t(material_switches.size()))
+            throw SceneError(name + " names a pigment, normal or switch that does not exist");
+    }
+    // A switch may lead to materials with switches of their own, but never back to itself:
+    // depth-first, 1 = on the current path, 2 = done.
+    std::vector<char> state(materials.size(), 0);
+    std::function<void(uint32_t)> visit = [&](uint32_t cur) {
+        if (state[cur] == 2) return;
+        if (state[cur] == 1)
+            throw SceneError("material " + std::to_string(cur) +
+                             ": its texture maps lead back to itself");
+        state[cur] = 1;
+        if (const int32_t sw = materials[cur].select; sw >= 0) {
+            const MaterialSwitch& ms = material_switches[size_t(sw)];
+            for (uint32_t e = ms.first; e < ms.first + ms.count; ++e)
+                visit(material_entries[e].material);
+        }
+        state[cur] = 2;
+    };
+    for (size_t m = 0; m < materials.size(); ++m) visit(uint32_t(m));
+    if (sky >= int32_t(pigments.size())) throw SceneError("the sky names a missing pigment");
+    if (!(fog.distance >= 0) || !is_finite(fog.color))
+        throw SceneError("the fog's distance or colour is out of range");
 }
 
 } // namespace sheaf

@@ -5,6 +5,7 @@
 
 #include "core/geometry/shape.h"
 #include "core/math/affine.h"
+#include "core/scene/pattern.h"
 
 #include <cstdint>
 #include <map>
@@ -32,6 +33,32 @@ struct Material {
     float transmission = 0.0f; // refracted share, split with reflection by Fresnel
     float ior = 1.5f;
     int32_t texture = -1; // >= 0: an image texture (Scene::textures) multiplies `color`
+
+    // Procedural textures and POV-Ray's finish (the defaults keep the plain model above).
+    int32_t pigment = -1; // >= 0: Scene::pigments gives colour, filter and transmit at each
+                          // point, replacing color, texture and transmission (as filter)
+    int32_t normal = -1;  // >= 0: Scene::normal_patterns tilts the shading normal
+    int32_t select = -1;  // >= 0: Scene::material_switches picks the material at each point
+    float brilliance = 1.0f;                   // the diffuse term is cos^brilliance
+    float blinn = 0.0f, blinn_exponent = 20.0f; // half-vector highlight (POV-Ray's specular)
+    float metallic = 0.0f;                     // highlights tinted by the surface colour
+    Vec3 mirror_color{1.0f, 1.0f, 1.0f};       // mirror reflection is mirror * mirror_color
+    float mirror_min = -1.0f; // >= 0: reflection varies from mirror_min (facing) to mirror
+    float mirror_falloff = 1.0f; //   (grazing) as (1 - cos)^falloff,
+    bool mirror_fresnel = false; //   or by Fresnel's law with `ior`
+    bool mirror_metallic = false; // reflection tinted by the surface colour
+    bool conserve_energy = false; // diffuse and transmission keep what reflection leaves
+    bool fresnel_split = true; // transmission splits into reflection and refraction by Fresnel
+                               // (POV-Ray: reflection only from the finish)
+    Vec3 fade_color{0.0f, 0.0f, 0.0f}; // light inside fades to this colour:
+    float fade_distance = 0.0f, fade_power = 0.0f; //   1 / (1 + (d / fade_distance)^fade_power)
+};
+
+/// What an object takes part in: bits of Object::flags and ShapeObject::flags.
+enum ObjectFlag : uint8_t {
+    kNoShadow = 1,     // casts no shadow (shadow and ambient-occlusion rays pass)
+    kNoReflection = 2, // not seen in reflections
+    kNoImage = 4,      // not seen by the camera (still in shadows and reflections)
 };
 
 /// How a texture finds its (s, t) coordinates at a surface point.
@@ -86,6 +113,7 @@ struct Object {
     uint32_t mesh = 0;
     uint32_t material = 0;
     Affine transform;
+    uint8_t flags = 0; // ObjectFlag bits
 };
 
 enum class CsgOp : uint8_t { Leaf, Union, Merge, Intersection, Difference };
@@ -107,6 +135,7 @@ struct ShapeObject {
     std::vector<CsgNode> nodes;
     uint32_t root = 0;
     Affine transform; // object space -> world
+    uint8_t flags = 0; // ObjectFlag bits
 };
 
 class Scene {
@@ -128,14 +157,25 @@ class Scene {
     std::vector<Object> objects;
     std::vector<ShapeObject> shape_objects; // rendered after the mesh objects
     std::vector<Light> lights;
+    // Procedural textures (core/scene/pattern.h), indexed by materials and each other.
+    std::vector<Pigment> pigments;
+    std::vector<PigmentEntry> pigment_entries;
+    std::vector<NormalPattern> normal_patterns;
+    std::vector<MaterialSwitch> material_switches;
+    std::vector<MaterialEntry> material_entries;
     Camera camera;
     Vec3 background{0, 0, 0};
+    int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene
+    Fog fog;
     /// Settings the scene itself asks for (e.g. trace.depth); a host's explicit settings win.
     std::map<std::string, std::string> settings;
 
     size_t triangle_count() const;
     /// Throws SceneError naming the offending mesh, object or value.
     void validate() const;
+
+  private:
+    void validate_patterns() const;
 };
 
 } // namespace sheaf

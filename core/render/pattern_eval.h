@@ -1,0 +1,226 @@
+// Evaluating a Pattern (core/scene/pattern.h) at a world point: the point moves into pattern
+// space, turbulence displaces it, then a continuous pattern gives a value in [0, 1] (after
+// frequency, phase and the wave) and a list pattern gives the index of an entry.
+// The shapes follow POV-Ray 3.7's descriptions; the noise is Sheaf's own (noise.h), so noise
+// patterns look alike but are not POV-Ray's pixel for pixel.
+#pragma once
+
+#include "core/render/noise.h"
+#include "core/scene/pattern.h"
+
+namespace sheaf {
+
+namespace pattern_detail {
+
+SHEAF_HD_INLINE float frac(float v) {
+    return v - floorf(v);
+}
+SHEAF_HD_INLINE float clamp01(float v) {
+    return fminf(1.0f, fmaxf(0.0f, v));
+}
+SHEAF_HD_INLINE int floor_int(float v) {
+    return int(floorf(v));
+}
+SHEAF_HD_INLINE int imod(int a, int n) {
+    const int r = a % n;
+    return r < 0 ? r + n : r;
+}
+
+// The ten fixed sources of ripples and waves, inside the unit cube around the origin.
+SHEAF_HD_INLINE Vec3 wave_source(int k) {
+    const uint32_t h = lattice_hash(k, 17, 29, 11);
+    return Vec3(hash_unit(h), hash_unit(h * 0x2545f491u + 3), hash_unit(h * 0x9e3779b9u + 5)) *
+               2.0f -
+           Vec3(1.0f);
+}
+
+// The wave shapes a value in [0, 1].
+SHEAF_HD_INLINE float apply_wave(const Pattern& pt, float v) {
+    switch (pt.wave) {
+    case Wave::Ramp:
+        return v;
+    case Wave::Triangle:
+        return v < 0.5f ? 2.0f * v : 2.0f - 2.0f * v;
+    case Wave::Sine:
+        return 0.5f + 0.5f * sinf(2.0f * kPi * v);
+    case Wave::Scallop:
+        return fabsf(sinf(kPi * v));
+    case Wave::Cubic:
+        return v * v * (3.0f - 2.0f * v);
+    case Wave::Poly:
+        return powf(v, pt.wave_exponent);
+    }
+    return v;
+}
+
+// The raw value of a continuous pattern at pattern-space point p, before frequency, phase and
+// the wave; some leave [0, 1] (gradient, onion, wood ...) and wrap.
+SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
+    switch (pt.kind) {
+    case PatternKind::Gradient: {
+        const float l = length(pt.vector);
+        return l > 0 ? dot(p, pt.vector) / l : 0.0f;
+    }
+    case PatternKind::Marble:
+        return p.x;
+    case PatternKind::Wood:
+        return sqrtf(p.x * p.x + p.y * p.y);
+    case PatternKind::Onion:
+        return length(p);
+    case PatternKind::Radial:
+        return atan2f(p.x, -p.z) / (2.0f * kPi) + 0.5f;
+    case PatternKind::Spherical:
+        return 1.0f - clamp01(length(p));
+    case PatternKind::Cylindrical:
+        return 1.0f - clamp01(sqrtf(p.x * p.x + p.z * p.z));
+    case PatternKind::Planar:
+        return 1.0f - clamp01(fabsf(p.y));
+    case PatternKind::Boxed:
+        return 1.0f - clamp01(fmaxf(fabsf(p.x), fmaxf(fabsf(p.y), fabsf(p.z))));
+    case PatternKind::Leopard: {
+        const float s = (sinf(p.x) + sinf(p.y) + sinf(p.z)) / 3.0f;
+        return s * s;
+    }
+    case PatternKind::Bozo:
+        return noise01(p);
+    case PatternKind::Granite: {
+        float sum = 0, f = 1;
+        for (int i = 0; i < 6; ++i) {
+            sum += fabsf(gradient_noise(p * (4.0f * f))) / f;
+            f *= 2.0f;
+        }
+        return clamp01(sum * 0.9f);
+    }
+    case PatternKind::Agate: {
+        const float turb = turbulence(p, 7, 0.5f, 2.0f) * (pt.param[0] > 0 ? pt.param[0] : 1.0f);
+        const float v = 0.5f + 0.5f * cosf((p.z + 2.0f * turb) * 2.0f * kPi * 0.5f);
+        return clamp01(powf(v, 0.5f));
+    }
+    case PatternKind::Wrinkles: {
+        float sum = 0, f = 1;
+        for (int i = 0; i < 10; ++i) {
+            sum += gradient_noise(p * (f * kPatternNoiseScale)) / f;
+            f *= 2.0f;
+        }
+        return clamp01(0.5f + 0.5f * sum);
+    }
+    case PatternKind::Dents: {
+        const float n = noise01(p);
+        return n * n * n;
+    }
+    case PatternKind::Crackle: {
+        float f1, f2;
+        uint32_t id;
+        cell_distances(p, f1, f2, id);
+        return clamp01(f2 - f1);
+    }
+    case PatternKind::Cells:
+        return hash_unit(lattice_hash(floor_int(p.x), floor_int(p.y), floor_int(p.z), 3));
+    case PatternKind::Ripples:
+    case PatternKind::Waves: {
+        // The mean of ten cosine waves; waves weigh near sources more.
+        float sum = 0, weight = 0;
+        for (int k = 0; k < 10; ++k) {
+            const float d = length(p - wave_source(k));
+            const float w = pt.kind == PatternKind::Waves ? 1.0f / (1.0f + d) : 1.0f;
+            sum += w * cosf(2.0f * kPi * (d * pt.frequency + pt.phase));
+            weight += w;
+        }
+        return clamp01(0.5f + 0.5f * sum / weight);
+    }
+    case PatternKind::Spiral1:
+    case PatternKind::Spiral2: {
+        const float arms = pt.param[0] != 0 ? pt.param[0] : 1.0f;
+        const float r = sqrtf(p.x * p.x + p.y * p.y);
+        const float a = atan2f(p.y, p.x) / (2.0f * kPi);
+        if (pt.kind == PatternKind::Spiral1) return r + arms * a;
+        const float s1 = frac(r + arms * a), s2 = frac(r - arms * a);
+        return 0.5f * (s1 + s2);
+    }
+    case PatternKind::Quilted: {
+        const Vec3 q(frac(p.x + 0.5f) - 0.5f, frac(p.y + 0.5f) - 0.5f, frac(p.z + 0.5f) - 0.5f);
+        const float m = 2.0f * fmaxf(fabsf(q.x), fmaxf(fabsf(q.y), fabsf(q.z)));
+        return clamp01(m * m * (3.0f - 2.0f * m));
+    }
+    default:
+        return 0.0f;
+    }
+}
+
+// Frequency and phase, then the value wraps into [0, 1) when it left [0, 1] or was modified
+// (an unmodified 1 stays 1), then the wave. Ripples and waves use frequency and phase inside.
+SHEAF_HD_INLINE float shape_value(const Pattern& pt, float raw) {
+    if (pt.kind == PatternKind::Ripples || pt.kind == PatternKind::Waves)
+        return apply_wave(pt, raw);
+    float v = raw * pt.frequency + pt.phase;
+    if (v < 0.0f || v > 1.0f || pt.frequency != 1.0f || pt.phase != 0.0f) v = frac(v);
+    return apply_wave(pt, v);
+}
+
+} // namespace pattern_detail
+
+/// The pattern-space point of world point `p`, turbulence applied.
+SHEAF_HD_INLINE Vec3 pattern_point(const Pattern& pt, Vec3 world) {
+    Vec3 p = pt.to_pattern.point(world);
+    if (pt.has_turbulence)
+        p += pt.turbulence * vector_turbulence(p, pt.octaves, pt.omega, pt.lambda);
+    return p;
+}
+
+/// A continuous pattern's value in [0, 1] at pattern-space point p.
+SHEAF_HD_INLINE float pattern_value_at(const Pattern& pt, Vec3 p) {
+    using namespace pattern_detail;
+    return shape_value(pt, raw_value(pt, p));
+}
+
+/// A list pattern's entry (0 .. entries-1) at pattern-space point p.
+SHEAF_HD_INLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
+    using namespace pattern_detail;
+    const float e = 1e-4f; // keeps faces lying on integer planes on one side
+    switch (pt.kind) {
+    case PatternKind::Checker:
+        return imod(floor_int(p.x + e) + floor_int(p.y + e) + floor_int(p.z + e), 2);
+    case PatternKind::Square:
+        return imod(floor_int(p.x + e), 2) + 2 * imod(floor_int(p.z + e), 2);
+    case PatternKind::Hexagon:
+    case PatternKind::Triangular: {
+        // Axial coordinates of hexagons of unit side in the x-z plane, flat sides along x.
+        const float q = (2.0f / 3.0f) * p.x;
+        const float r = (-1.0f / 3.0f) * p.x + (sqrtf(3.0f) / 3.0f) * p.z;
+        // Cube rounding.
+        float cx = q, cz = r, cy = -q - r;
+        float rx = roundf(cx), ry = roundf(cy), rz = roundf(cz);
+        const float dx = fabsf(rx - cx), dy = fabsf(ry - cy), dz = fabsf(rz - cz);
+        if (dx > dy && dx > dz)
+            rx = -ry - rz;
+        else if (dy > dz)
+            ry = -rx - rz;
+        else
+            rz = -rx - ry;
+        const int hex = imod(int(rx) - int(rz), 3);
+        if (pt.kind == PatternKind::Hexagon) return hex;
+        // Six triangles per hexagon: the sector of the point around its hexagon's centre.
+        const float hx = 1.5f * rx, hz = sqrtf(3.0f) * (rz + 0.5f * rx);
+        const float a = atan2f(p.z - hz, p.x - hx) / (2.0f * kPi) + 0.5f;
+        return imod(floor_int(a * 6.0f), 6);
+    }
+    case PatternKind::Brick: {
+        const Vec3 size(pt.param[0] > 0 ? pt.param[0] : 8.0f, pt.param[1] > 0 ? pt.param[1] : 3.0f,
+                        pt.param[2] > 0 ? pt.param[2] : 4.5f);
+        const float mortar = pt.param[3] > 0 ? pt.param[3] : 0.5f;
+        const int course = floor_int(p.y / size.y);
+        const float shift = (course & 1) ? 0.5f : 0.0f;
+        const float fx = frac(p.x / size.x + shift) * size.x;
+        const float fy = frac(p.y / size.y) * size.y;
+        const float fz = frac(p.z / size.z + shift) * size.z;
+        const float m = 0.5f * mortar;
+        const bool in_mortar = fx < m || fx > size.x - m || fy < m || fy > size.y - m ||
+                               fz < m || fz > size.z - m;
+        return in_mortar ? 0 : 1;
+    }
+    default:
+        return 0;
+    }
+}
+
+} // namespace sheaf

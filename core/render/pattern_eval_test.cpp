@@ -1,0 +1,151 @@
+// Patterns: list patterns alternate where POV-Ray's do, continuous patterns stay in [0, 1] and
+// follow frequency, phase and the waves, noise is deterministic and smooth, turbulence moves
+// points by about its amount.
+#include "core/render/pattern_eval.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace sheaf {
+namespace {
+
+Pattern make(PatternKind k) {
+    Pattern p;
+    p.kind = k;
+    return p;
+}
+
+TEST(Patterns, CheckerAlternatesInEveryAxis) {
+    const Pattern p = make(PatternKind::Checker);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 0.5f, 0.5f)), 0);
+    EXPECT_EQ(pattern_index_at(p, Vec3(1.5f, 0.5f, 0.5f)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 1.5f, 0.5f)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 0.5f, -0.5f)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(-0.5f, -0.5f, 0.5f)), 0);
+    // A face on an integer plane takes one side consistently.
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.25f, 0.0f, 0.25f)), pattern_index_at(p, Vec3(0.25f, 1e-6f, 0.25f)));
+}
+
+TEST(Patterns, ListPatternsStayInTheirEntries) {
+    std::mt19937 g(3);
+    std::uniform_real_distribution<float> u(-20, 20);
+    const std::pair<PatternKind, int> kinds[] = {{PatternKind::Checker, 2},
+                                                 {PatternKind::Hexagon, 3},
+                                                 {PatternKind::Brick, 2},
+                                                 {PatternKind::Square, 4},
+                                                 {PatternKind::Triangular, 6}};
+    for (auto [k, n] : kinds) {
+        std::vector<int> seen(size_t(n), 0);
+        for (int i = 0; i < 4000; ++i) {
+            const int idx = pattern_index_at(make(k), Vec3(u(g), u(g), u(g)));
+            ASSERT_GE(idx, 0);
+            ASSERT_LT(idx, n);
+            seen[size_t(idx)]++;
+        }
+        for (int i = 0; i < n; ++i) EXPECT_GT(seen[size_t(i)], 0) << int(k) << " entry " << i;
+    }
+}
+
+TEST(Patterns, HexagonNeighboursDiffer) {
+    const Pattern p = make(PatternKind::Hexagon);
+    // Centres of a hexagon and its six neighbours (unit side, flat sides along x).
+    const Vec3 c(0, 0, 0);
+    const float h = std::sqrt(3.0f);
+    const Vec3 n[6] = {{1.5f, 0, h / 2}, {1.5f, 0, -h / 2}, {-1.5f, 0, h / 2},
+                       {-1.5f, 0, -h / 2}, {0, 0, h}, {0, 0, -h}};
+    for (const Vec3& q : n) EXPECT_NE(pattern_index_at(p, c), pattern_index_at(p, q));
+}
+
+TEST(Patterns, BrickHasMortarBetweenBricks) {
+    Pattern p = make(PatternKind::Brick); // 8 x 3 x 4.5 bricks, 0.5 mortar
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 1.5f, 2.25f)), 1);  // inside a brick
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 0.1f, 2.25f)), 0);  // the mortar under it
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 1.5f, 2.25f)), 0); // between two bricks
+    // The next course is offset by half a brick: x = 0 is inside a brick there.
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 4.5f, 0.1f)), 1);
+}
+
+TEST(Patterns, GradientFrequencyPhaseAndWaves) {
+    Pattern p = make(PatternKind::Gradient);
+    p.vector = Vec3(1, 0, 0);
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 7, 7)), 0.25f, 1e-6);
+    EXPECT_NEAR(pattern_value_at(p, Vec3(2.25f, 0, 0)), 0.25f, 1e-5); // repeats every unit
+    EXPECT_NEAR(pattern_value_at(p, Vec3(-0.25f, 0, 0)), 0.75f, 1e-5);
+    p.frequency = 2;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 0, 0)), 0.5f, 1e-5);
+    p.frequency = 1, p.phase = 0.5f;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 0, 0)), 0.75f, 1e-5);
+    p.phase = 0, p.wave = Wave::Triangle;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 0, 0)), 0.5f, 1e-5);
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.75f, 0, 0)), 0.5f, 1e-5);
+    p.wave = Wave::Poly, p.wave_exponent = 2;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.5f, 0, 0)), 0.25f, 1e-5);
+}
+
+TEST(Patterns, ContinuousPatternsStayInTheUnitInterval) {
+    std::mt19937 g(7);
+    std::uniform_real_distribution<float> u(-2, 2); // the bounded patterns vary within 1
+    for (int k = int(PatternKind::Gradient); k < int(PatternKind::Image); ++k) {
+        Pattern p = make(PatternKind(k));
+        p.param[0] = 3;
+        float lo = 1, hi = 0;
+        for (int i = 0; i < 2000; ++i) {
+            const float v = pattern_value_at(p, Vec3(u(g), u(g), u(g)));
+            ASSERT_TRUE(v >= 0 && v <= 1) << "pattern " << k << " gave " << v;
+            lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+        EXPECT_GT(hi - lo, 0.2f) << "pattern " << k << " hardly varies";
+    }
+}
+
+TEST(Noise, DeterministicSmoothAndZeroOnTheLattice) {
+    EXPECT_EQ(gradient_noise(Vec3(3, -2, 5)), 0.0f);
+    EXPECT_EQ(gradient_noise(Vec3(0.3f, 0.4f, 0.5f)), gradient_noise(Vec3(0.3f, 0.4f, 0.5f)));
+    std::mt19937 g(1);
+    std::uniform_real_distribution<float> u(-50, 50);
+    double sum = 0, sum2 = 0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 p(u(g), u(g), u(g));
+        const float a = gradient_noise(p), b = gradient_noise(p + Vec3(1e-3f, 0, 0));
+        EXPECT_LT(std::fabs(a - b), 0.01f); // smooth
+        ASSERT_LE(std::fabs(a), 1.1f);
+        sum += a, sum2 += double(a) * a;
+    }
+    EXPECT_NEAR(sum / n, 0.0, 0.02);        // centred
+    EXPECT_GT(std::sqrt(sum2 / n), 0.1);     // and not flat
+}
+
+TEST(Noise, TurbulenceMovesPointsByAboutItsAmount) {
+    Pattern p = make(PatternKind::Gradient);
+    p.turbulence = Vec3(0.5f);
+    p.has_turbulence = true;
+    std::mt19937 g(5);
+    std::uniform_real_distribution<float> u(-10, 10);
+    double moved = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3 q(u(g), u(g), u(g));
+        moved += length(pattern_point(p, q) - q);
+    }
+    moved /= 1000;
+    EXPECT_GT(moved, 0.05);
+    EXPECT_LT(moved, 1.5);
+    p.has_turbulence = false;
+    EXPECT_EQ(length(pattern_point(p, Vec3(1, 2, 3)) - Vec3(1, 2, 3)), 0.0f);
+}
+
+TEST(Noise, CellDistancesAreOrdered) {
+    std::mt19937 g(9);
+    std::uniform_real_distribution<float> u(-10, 10);
+    for (int i = 0; i < 1000; ++i) {
+        float f1, f2;
+        uint32_t id;
+        cell_distances(Vec3(u(g), u(g), u(g)), f1, f2, id);
+        EXPECT_LE(f1, f2);
+        EXPECT_LT(f1, 1.8f); // the own cell's point is within its diagonal
+    }
+}
+
+} // namespace
+} // namespace sheaf

@@ -1,0 +1,195 @@
+// Procedural textures, object flags, fog and sky through the whole pipeline: the exact accel
+// modes still agree byte for byte, no_shadow objects cast no shadow, no_image objects are not
+// seen but still shade, fog and sky colour what they should.
+#include "core/render/renderer.h"
+
+#include "core/scenes/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+namespace sheaf {
+namespace {
+
+Frame render(const PreparedScene& scene,
+             std::initializer_list<std::pair<const char*, const char*>> kv) {
+    Settings s;
+    s.set("width", "40"), s.set("height", "32");
+    for (auto& [k, v] : kv) s.set(k, v);
+    return render_frame(scene, RenderSettings::resolve(s, scene.settings));
+}
+
+double mean(const Frame& f) {
+    double m = 0;
+    for (size_t i = 0; i < f.rgba.size(); i += 4) m += f.rgba[i] + f.rgba[i + 1] + f.rgba[i + 2];
+    return m / double(f.rgba.size());
+}
+
+bool same_image(const Frame& a, const Frame& b) {
+    return a.rgba.size() == b.rgba.size() &&
+           std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * 4) == 0;
+}
+
+Vec3 pixel(const Frame& f, int x, int y) {
+    const float* p = &f.rgba[4 * (size_t(y) * f.width + x)];
+    return Vec3(p[0], p[1], p[2]);
+}
+
+PigmentEntry entry(float value, Vec3 c, float transmit = 0) {
+    PigmentEntry e;
+    e.value = value;
+    e.color[0] = c.x, e.color[1] = c.y, e.color[2] = c.z, e.color[4] = transmit;
+    return e;
+}
+
+int32_t pigment(Scene& s, PatternKind kind, std::vector<PigmentEntry> entries, float scale = 1) {
+    Pigment pg;
+    pg.solid = false;
+    pg.pattern.kind = kind;
+    pg.pattern.to_pattern = Affine::scale(Vec3(1.0f / scale));
+    pg.first = uint32_t(s.pigment_entries.size());
+    pg.count = uint32_t(entries.size());
+    s.pigment_entries.insert(s.pigment_entries.end(), entries.begin(), entries.end());
+    s.pigments.push_back(pg);
+    return int32_t(s.pigments.size() - 1);
+}
+
+// Every procedural feature at once: patterned pigments, a transmitting pigment, layers, a
+// normal, variable and Fresnel reflection, a texture map, flags, fog and sky.
+Scene textured_scene() {
+    Scene s;
+    Material floor;
+    floor.pigment = pigment(s, PatternKind::Checker, {entry(0, Vec3(0.9f)), entry(0, Vec3(0.2f))}, 0.5f);
+    floor.mirror = 0.5f, floor.mirror_min = 0.05f, floor.mirror_falloff = 2;
+    Material marble;
+    marble.pigment = pigment(s, PatternKind::Marble, {entry(0, Vec3(0.9f, 0.8f, 0.7f)), entry(1, Vec3(0.2f, 0.1f, 0.1f))});
+    Pattern bumps;
+    bumps.kind = PatternKind::Bozo;
+    bumps.to_pattern = Affine::scale(Vec3(5));
+    s.normal_patterns.push_back({bumps, 0.6f});
+    marble.normal = 0;
+    marble.blinn = 0.5f, marble.blinn_exponent = 30, marble.metallic = 0.5f;
+    Material glass;
+    glass.pigment = pigment(s, PatternKind::Gradient, {entry(0, Vec3(1), 0.9f), entry(1, Vec3(0.8f, 1, 0.8f), 0.6f)});
+    glass.ior = 1.5f, glass.fresnel_split = false, glass.mirror = 1, glass.mirror_min = 0,
+    glass.mirror_fresnel = true, glass.fade_distance = 1, glass.fade_power = 2;
+    Material a, b, picked;
+    a.color = Vec3(1, 0.2f, 0.2f), b.color = Vec3(0.2f, 0.2f, 1);
+    const uint32_t ma = s.add_material(a), mb = s.add_material(b);
+    MaterialSwitch sw;
+    sw.pattern.kind = PatternKind::Gradient;
+    sw.pattern.to_pattern = Affine::scale(Vec3(2));
+    sw.first = 0, sw.count = 2;
+    s.material_switches.push_back(sw);
+    s.material_entries = {{0.0f, ma}, {1.0f, mb}};
+    picked.select = 0;
+    const uint32_t mf = s.add_material(floor), mm = s.add_material(marble),
+                   mg = s.add_material(glass), mp = s.add_material(picked);
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+    s.add_shape("marble", Shape{ShapeKind::Sphere}, mm, Affine::translate(Vec3(-1.2f, 0, 0)));
+    s.add_shape("glass", Shape{ShapeKind::Sphere}, mg,
+                Affine::translate(Vec3(1.2f, 0, 0.5f)) * Affine::scale(Vec3(0.8f)));
+    const uint32_t box = s.add_mesh_object("picked", make_box(Vec3(-0.5f, -1, -2), Vec3(0.5f, 0, -1.5f)), mp);
+    s.objects[box].flags = kNoShadow;
+    const uint32_t ghost = s.add_shape("ghost", Shape{ShapeKind::Sphere}, ma,
+                                       Affine::translate(Vec3(0, 2, -1)) * Affine::scale(Vec3(0.5f)));
+    s.shape_objects[ghost].flags = kNoImage | kNoReflection;
+    s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 1.5f, 5);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.fog.distance = 20, s.fog.color = Vec3(0.5f, 0.5f, 0.6f), s.fog.transmit = 0.2f;
+    Pattern sky;
+    sky.kind = PatternKind::Gradient;
+    s.sky = pigment(s, PatternKind::Gradient, {entry(0, Vec3(1)), entry(1, Vec3(0.1f, 0.2f, 0.8f))});
+    s.settings["trace.depth"] = "3";
+    return s;
+}
+
+TEST(ProceduralRender, AccelModesStayIdentical) {
+    const PreparedScene scene = prepare_scene(textured_scene());
+    const Frame brute = render(scene, {{"accel", "brute"}, {"ao.samples", "2"}});
+    EXPECT_GT(brute.stats.get("rays.refraction"), 0);
+    EXPECT_GT(brute.stats.get("rays.reflection"), 0);
+    for (const auto& v : std::vector<std::pair<const char*, const char*>>{
+             {"accel", "rah"}, {"accel", "crsh"}, {"hash.mode", "hash192"}}) {
+        Settings s;
+        s.set("width", "40"), s.set("height", "32"), s.set("ao.samples", "2");
+        s.set(v.first, v.second);
+        const Frame f = render_frame(scene, RenderSettings::resolve(s, scene.settings));
+        EXPECT_TRUE(same_image(brute, f)) << v.first << "=" << v.second;
+    }
+}
+
+// A floor under a light with a box between them, seen from above at a slant: the box's
+// shadow darkens the picture unless the box has no_shadow.
+double shadow_scene_mean(uint8_t flags) {
+    Scene s;
+    Material m;
+    const uint32_t mat = s.add_material(m);
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mat);
+    const uint32_t box =
+        s.add_mesh_object("box", make_box(Vec3(-0.5f, 1, -0.5f), Vec3(0.5f, 1.2f, 0.5f)), mat);
+    s.objects[box].flags = flags;
+    s.add_light(Light{Vec3(0, 5, 0), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 4, 6);
+    s.camera.look_at = Vec3(0, -1, 0);
+    return mean(render(prepare_scene(s), {}));
+}
+
+TEST(ProceduralRender, NoShadowObjectsCastNoShadow) {
+    const double shadowed = shadow_scene_mean(0), lit = shadow_scene_mean(kNoShadow);
+    EXPECT_GT(lit, shadowed * 1.02) << lit << " vs " << shadowed;
+    EXPECT_EQ(shadow_scene_mean(kNoReflection), shadowed); // no mirrors here: no change
+}
+
+TEST(ProceduralRender, NoImageObjectsAreNotSeenButShadow) {
+    auto scene = [](bool ball) {
+        Scene s;
+        Material m;
+        const uint32_t mat = s.add_material(m);
+        s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mat);
+        if (ball) {
+            const uint32_t id = s.add_shape("ball", Shape{ShapeKind::Sphere}, mat);
+            s.shape_objects[id].flags = kNoImage;
+        }
+        s.add_light(Light{Vec3(0, 5, 0), Vec3(1.0f)});
+        s.camera.position = Vec3(0, 4, 6);
+        s.camera.look_at = Vec3(0, -1, 0);
+        return prepare_scene(s);
+    };
+    const Frame with = render(scene(true), {}), without = render(scene(false), {});
+    for (uint32_t id : with.object_id) EXPECT_NE(id, 1u) << "the no_image ball is seen";
+    EXPECT_LT(mean(with), mean(without) * 0.99); // but its shadow is on the floor
+}
+
+TEST(ProceduralRender, FogAndSkyColourWhatTheyShould) {
+    Scene s;
+    Material m;
+    m.color = Vec3(1, 0, 0);
+    const uint32_t mat = s.add_material(m);
+    s.add_shape("ball", Shape{ShapeKind::Sphere}, mat);
+    s.add_light(Light{Vec3(0, 5, 5), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 0, 6);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.background = Vec3(0, 1, 0);
+    const Vec3 clear_ball = pixel(render(prepare_scene(s), {}), 20, 16);
+    const Vec3 clear_sky = pixel(render(prepare_scene(s), {}), 1, 1);
+    EXPECT_NEAR(clear_sky.y, 1.0f, 1e-6);
+    s.fog.distance = 5, s.fog.color = Vec3(0, 0, 1);
+    const Frame fog = render(prepare_scene(s), {});
+    const Vec3 ball = pixel(fog, 20, 16), sky = pixel(fog, 1, 1);
+    EXPECT_LT(ball.x, clear_ball.x * 0.5f); // 5 units of fog keep exp(-1) of the surface
+    EXPECT_GT(ball.z, 0.5f);
+    EXPECT_NEAR(sky.z, 1.0f, 1e-5); // infinitely far: all fog
+    EXPECT_NEAR(sky.y, 0.0f, 1e-5);
+    s.fog.distance = 0;
+    Pigment sky_pigment;
+    sky_pigment.color[0] = 0.3f; // solid
+    s.pigments.push_back(sky_pigment);
+    s.sky = 0;
+    EXPECT_NEAR(pixel(render(prepare_scene(s), {}), 1, 1).x, 0.3f, 1e-6);
+}
+
+} // namespace
+} // namespace sheaf

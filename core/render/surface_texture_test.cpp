@@ -1,0 +1,146 @@
+// Procedural textures at surface points: colour maps blend between entries, list patterns pick
+// entries, pigment maps nest, layers compose by filter and transmit, texture maps pick
+// materials, normals tilt by the pattern's slope, and the sky follows the ray's direction.
+#include "core/render/surface_texture.h"
+
+#include <gtest/gtest.h>
+
+namespace sheaf {
+namespace {
+
+PigmentEntry color_entry(float value, Vec3 c, float filter = 0, float transmit = 0) {
+    PigmentEntry e;
+    e.value = value;
+    e.color[0] = c.x, e.color[1] = c.y, e.color[2] = c.z, e.color[3] = filter,
+    e.color[4] = transmit;
+    return e;
+}
+
+// A pigment over the given entries, appended to p.
+int32_t add_pigment(PreparedScene& p, Pattern pattern, std::vector<PigmentEntry> entries,
+                    bool layers = false, bool average = false) {
+    Pigment pg;
+    pg.solid = false;
+    pg.layers = layers;
+    pg.average = average;
+    pg.pattern = pattern;
+    pg.first = uint32_t(p.pigment_entries.size());
+    pg.count = uint32_t(entries.size());
+    p.pigment_entries.insert(p.pigment_entries.end(), entries.begin(), entries.end());
+    p.pigments.push_back(pg);
+    return int32_t(p.pigments.size() - 1);
+}
+
+Pattern gradient_x() {
+    Pattern g;
+    g.kind = PatternKind::Gradient;
+    g.vector = Vec3(1, 0, 0);
+    return g;
+}
+
+SurfaceColor as_color(Vec3 c) {
+    return {c, 0, 0};
+}
+
+void expect_color(const SurfaceColor& c, Vec3 want, float tol = 1e-5f) {
+    EXPECT_NEAR(c.rgb.x, want.x, tol);
+    EXPECT_NEAR(c.rgb.y, want.y, tol);
+    EXPECT_NEAR(c.rgb.z, want.z, tol);
+}
+
+TEST(SurfaceTexture, ColourMapsBlendBetweenEntries) {
+    PreparedScene p;
+    const int32_t pg = add_pigment(p, gradient_x(),
+                                   {color_entry(0.2f, Vec3(1, 0, 0)), color_entry(0.6f, Vec3(0, 0, 1))});
+    expect_color(evaluate_pigment(p, uint32_t(pg), Vec3(0.1f, 0, 0), 0, 0), Vec3(1, 0, 0));
+    expect_color(evaluate_pigment(p, uint32_t(pg), Vec3(0.4f, 0, 0), 0, 0), Vec3(0.5f, 0, 0.5f));
+    expect_color(evaluate_pigment(p, uint32_t(pg), Vec3(0.9f, 0, 0), 0, 0), Vec3(0, 0, 1));
+}
+
+TEST(SurfaceTexture, PatternsLiveInTheirOwnSpace) {
+    PreparedScene p;
+    Pattern g = gradient_x();
+    g.to_pattern = Affine::scale(Vec3(0.5f)); // the pattern scaled by 2 in the world
+    const int32_t pg = add_pigment(p, g, {color_entry(0, Vec3(0)), color_entry(1, Vec3(1))});
+    EXPECT_NEAR(evaluate_pigment(p, uint32_t(pg), Vec3(0.5f, 0, 0), 0, 0).rgb.x, 0.25f, 1e-5);
+}
+
+TEST(SurfaceTexture, ListsAndNestedPigments) {
+    PreparedScene p;
+    const int32_t inner = add_pigment(p, gradient_x(), {color_entry(0, Vec3(0)), color_entry(1, Vec3(1))});
+    Pattern checker;
+    checker.kind = PatternKind::Checker;
+    PigmentEntry nested = color_entry(0, Vec3(0));
+    nested.pigment = inner;
+    const int32_t pg = add_pigment(p, checker, {color_entry(0, Vec3(0, 1, 0)), nested});
+    expect_color(evaluate_pigment(p, uint32_t(pg), Vec3(0.5f, 0.5f, 0.5f), 0, 0), Vec3(0, 1, 0));
+    expect_color(evaluate_pigment(p, uint32_t(pg), Vec3(1.25f, 0.5f, 0.5f), 0, 0), Vec3(0.25f));
+}
+
+TEST(SurfaceTexture, LayersComposeByFilterAndTransmit) {
+    PreparedScene p;
+    const int32_t pg = add_pigment(p, Pattern{},
+                                   {color_entry(0, Vec3(0.2f, 0.4f, 0.6f)),
+                                    color_entry(0, Vec3(1, 0, 0), 0.0f, 0.75f)},
+                                   true);
+    // 25% of the red top, 75% of what is under it.
+    expect_color(evaluate_pigment(p, uint32_t(pg), Vec3(0), 0, 0),
+                 Vec3(0.25f + 0.15f, 0.3f, 0.45f));
+    const int32_t filtered = add_pigment(p, Pattern{},
+                                         {color_entry(0, Vec3(0.5f)),
+                                          color_entry(0, Vec3(1, 0.5f, 0), 1.0f, 0.0f)},
+                                         true);
+    // A filtering top layer tints what is under it by its colour.
+    expect_color(evaluate_pigment(p, uint32_t(filtered), Vec3(0), 0, 0), Vec3(0.5f, 0.25f, 0));
+}
+
+TEST(SurfaceTexture, AverageIsTheMeanOfTheEntries) {
+    PreparedScene p;
+    const int32_t pg = add_pigment(p, Pattern{}, {color_entry(0, Vec3(1, 0, 0)), color_entry(0, Vec3(0, 0, 1))},
+                                   false, true);
+    expect_color(evaluate_pigment(p, uint32_t(pg), Vec3(3), 0, 0), Vec3(0.5f, 0, 0.5f));
+}
+
+TEST(SurfaceTexture, TextureMapsPickTheNearerMaterial) {
+    PreparedScene p;
+    p.materials.resize(4);
+    p.materials[0].select = 0;
+    MaterialSwitch sw;
+    sw.pattern = gradient_x();
+    sw.first = 0, sw.count = 3;
+    p.material_switches.push_back(sw);
+    p.material_entries = {{0.0f, 1}, {0.5f, 2}, {1.0f, 3}};
+    EXPECT_EQ(resolve_material(p, 0, Vec3(0.1f, 0, 0)), 1u);
+    EXPECT_EQ(resolve_material(p, 0, Vec3(0.3f, 0, 0)), 2u);
+    EXPECT_EQ(resolve_material(p, 0, Vec3(0.9f, 0, 0)), 3u);
+    EXPECT_EQ(resolve_material(p, 2, Vec3(0.9f, 0, 0)), 2u); // a plain material stays
+}
+
+TEST(SurfaceTexture, NormalsTiltAlongTheSlope) {
+    PreparedScene p;
+    NormalPattern np;
+    np.pattern = gradient_x(); // value rises along +x with slope 1
+    np.amount = 0.5f;
+    p.normal_patterns.push_back(np);
+    const Vec3 n = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
+    EXPECT_NEAR(length(n), 1.0f, 1e-5);
+    EXPECT_LT(n.x, -0.3f); // tilted against the rising value
+    EXPECT_NEAR(n.z, 0.0f, 1e-5);
+    // A slope along the normal itself tilts nothing.
+    const Vec3 m = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(1, 0, 0));
+    EXPECT_NEAR(m.x, 1.0f, 1e-5);
+}
+
+TEST(SurfaceTexture, SkyFollowsTheDirection) {
+    PreparedScene p;
+    p.background = Vec3(0.1f);
+    EXPECT_EQ(sky_color(p, Vec3(0, 1, 0)).x, 0.1f);
+    Pattern g;
+    g.kind = PatternKind::Gradient; // along y
+    p.sky = add_pigment(p, g, {color_entry(0, Vec3(1, 1, 1)), color_entry(1, Vec3(0, 0, 1))});
+    expect_color(as_color(sky_color(p, Vec3(0, 1, 0))), Vec3(0, 0, 1));
+    expect_color(as_color(sky_color(p, Vec3(1, 0, 0))), Vec3(1, 1, 1));
+}
+
+} // namespace
+} // namespace sheaf

@@ -1,0 +1,117 @@
+// Procedural textures in the scene model: patterns (a value or a list index at every point of
+// space), pigments (a pattern with a colour map, a pigment map or a list, layered or solid),
+// normal perturbations, material selection by pattern (texture maps), sky and fog. Plain data
+// in flat arrays that index each other, so both backends can evaluate them
+// (core/render/pattern_eval.h, core/render/pigment_eval.h).
+#pragma once
+
+#include "core/math/affine.h"
+
+#include <cstdint>
+
+namespace sheaf {
+
+enum class PatternKind : uint8_t {
+    // Continuous patterns: a value in [0, 1], then frequency, phase and the wave.
+    Gradient,    // frac(p . vector)
+    Marble,      // p.x with a triangle wave (turbulence makes the veins)
+    Wood,        // distance from the z axis, triangle wave
+    Onion,       // distance from the origin
+    Radial,      // angle around the y axis
+    Spherical,   // 1 at the origin to 0 at distance 1
+    Cylindrical, // 1 on the y axis to 0 at distance 1
+    Planar,      // 1 on the x-z plane to 0 at distance 1
+    Boxed,       // 1 at the origin to 0 on the unit cube
+    Leopard,     // ((sin x + sin y + sin z) / 3)^2
+    Bozo,        // smooth noise (also spotted, bumps)
+    Granite,     // fractal sum of |noise|
+    Agate,       // noise-bent bands
+    Wrinkles,    // fractal sum of noise
+    Dents,       // noise cubed
+    Crackle,     // cells of random points: second nearest minus nearest distance
+    Cells,       // a random value per unit cube
+    Ripples,     // concentric waves from fixed random centres
+    Waves,       // like ripples, with amplitude falling with distance
+    Spiral1,     // spiral bands (param[0] arms) around the z axis
+    Spiral2,     // two spirals crossing
+    Quilted,     // cushion-shaped cells
+    Image,       // an image's colour (Pigment only): `image` in Scene::textures
+    // Discrete patterns: an index into the list of their entries.
+    Checker,    // 2 entries
+    Hexagon,    // 3 entries, tiles in the x-z plane
+    Brick,      // 2 entries: mortar, brick; param = size x, y, z and mortar width
+    Square,     // 4 entries, tiles in the x-z plane
+    Triangular, // 6 entries, tiles in the x-z plane
+};
+
+/// Discrete patterns choose an entry; continuous ones give a value.
+SHEAF_HD_INLINE bool pattern_is_list(PatternKind k) {
+    return k == PatternKind::Checker || k == PatternKind::Hexagon || k == PatternKind::Brick ||
+           k == PatternKind::Square || k == PatternKind::Triangular;
+}
+
+enum class Wave : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+struct Pattern {
+    PatternKind kind = PatternKind::Gradient;
+    Wave wave = Wave::Ramp;
+    int8_t octaves = 6; // turbulence
+    bool has_turbulence = false;
+    Affine to_pattern;    // world -> pattern space
+    Vec3 turbulence{0, 0, 0};
+    float omega = 0.5f, lambda = 2.0f;
+    float frequency = 1.0f, phase = 0.0f;
+    float wave_exponent = 1.0f; // Wave::Poly
+    Vec3 vector{0, 1, 0};       // Gradient: the direction
+    float param[4] = {0, 0, 0, 0};
+    int32_t image = -1; // Image: index into Scene::textures
+};
+
+/// A pigment: a solid colour, or a pattern whose value picks (continuous) or indexes (list
+/// patterns) entries [first, first + count) of Scene::pigment_entries. With `layers`, the
+/// entries are layers, bottom first, composed by each layer's filter and transmit.
+struct Pigment {
+    Pattern pattern;
+    bool solid = true;
+    bool layers = false;
+    bool average = false; // the mean of the entries (POV-Ray's `average`)
+    float color[5] = {0, 0, 0, 0, 0}; // solid: red, green, blue, filter, transmit
+    uint32_t first = 0, count = 0;
+};
+
+/// A map entry: at pattern value `value`, a colour (pigment < 0) or another pigment.
+struct PigmentEntry {
+    float value = 0;
+    float color[5] = {0, 0, 0, 0, 0};
+    int32_t pigment = -1;
+};
+
+/// A normal perturbation: the shading normal tilts along the pattern's gradient, `amount`
+/// (POV-Ray's bump size) times its slope.
+struct NormalPattern {
+    Pattern pattern;
+    float amount = 0.5f;
+};
+
+/// A material chosen by pattern (POV-Ray's texture_map and texture lists): entries
+/// [first, first + count) of Scene::material_entries. Continuous patterns take the entry whose
+/// value is nearest below the pattern's value (no blending between materials).
+struct MaterialSwitch {
+    Pattern pattern;
+    uint32_t first = 0, count = 0;
+};
+
+struct MaterialEntry {
+    float value = 0;
+    uint32_t material = 0;
+};
+
+/// Constant fog (POV-Ray fog_type 1): a surface at distance d keeps exp(-d / distance) of its
+/// colour; the rest becomes the fog's colour, of which `transmit` lets the background through.
+struct Fog {
+    float distance = 0; // 0: no fog
+    Vec3 color{0, 0, 0};
+    float transmit = 0;
+};
+
+} // namespace sheaf

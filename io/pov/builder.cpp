@@ -1,6 +1,8 @@
 // PovModel -> sheaf::Scene (see builder.h).
 #include "io/pov/builder.h"
 
+#include "io/pov/materials.h"
+
 #include "core/base/error.h"
 #include "core/scenes/shapes.h"
 
@@ -22,46 +24,16 @@ namespace {
 struct Builder {
     Parser& p;
     Scene& scene;
-    double gamma = 1;
+    MaterialBuilder materials;
     Affine flip = pov_to_sheaf();
-    std::map<std::vector<float>, uint32_t> materials;
     std::map<uint32_t, Mesh> loose; // single triangles by material, in Sheaf world space
     size_t names = 0;
 
-    double decode(double c) const { return gamma == 1 || c <= 0 ? c : std::pow(c, gamma); }
-    Vec3 decode(const Color5& c) const {
-        return Vec3(float(decode(c[0])), float(decode(c[1])), float(decode(c[2])));
-    }
+    Vec3 decode(const Color5& c) const { return materials.decode(c); }
+    double decode(double c) const { return materials.decode(Color5{c, c, c, 0, 0}).x; }
 
-    uint32_t material(const PovTexture& t, double ior) {
-        Material m;
-        const PovFinish& f = t.finish;
-        m.color = decode(t.pigment);
-        m.transmission = float(std::clamp(t.pigment[3] + t.pigment[4], 0.0, 1.0));
-        const auto& al = p.model.ambient_light;
-        m.ambient =
-            float((f.ambient[0] + f.ambient[1] + f.ambient[2]) / 3 * (al[0] + al[1] + al[2]) / 3);
-        m.diffuse = float(f.diffuse);
-        if (f.phong > 0) {
-            m.specular = float(f.phong);
-            m.phong_exponent = float(std::max(1.0, f.phong_size));
-        } else if (f.specular > 0) {
-            m.specular = float(f.specular);
-            m.phong_exponent = float(std::clamp(1.0 / std::max(f.roughness, 1e-4), 1.0, 10000.0));
-        }
-        m.mirror = float(
-            std::clamp(std::max({f.reflection[0], f.reflection[1], f.reflection[2]}), 0.0, 1.0));
-        m.emission =
-            m.color * Vec3(float(f.emission[0]), float(f.emission[1]), float(f.emission[2]));
-        m.ior = float(ior > 0 ? ior : 1.0);
-        const std::vector<float> key = {m.color.x,    m.color.y,        m.color.z, m.emission.x,
-                                        m.emission.y, m.emission.z,     m.ambient, m.diffuse,
-                                        m.specular,   m.phong_exponent, m.mirror,  m.transmission,
-                                        m.ior};
-        if (auto it = materials.find(key); it != materials.end()) return it->second;
-        const uint32_t id = scene.add_material(m);
-        materials.emplace(key, id);
-        return id;
+    uint32_t material(const PovTexture& t, const PovInterior* in) {
+        return materials.material(t, in);
     }
 
     std::string name(const PovObject& o) {
@@ -97,21 +69,23 @@ struct Builder {
             }
     }
 
-    void mesh(const PovObject& o, const PovTexture& tex, double ior) {
-        const uint32_t mat = material(tex, ior);
+    void mesh(const PovObject& o, const PovTexture& tex, const PovInterior* in, uint8_t flags) {
+        const uint32_t mat = material(tex, in);
         const Affine t = flip * o.local;
-        if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty()) {
+        if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty() && flags == 0) {
             append_mesh(loose[mat], *o.mesh, t);
             return;
         }
-        scene.add_mesh_object(name(o), *o.mesh, mat, t);
+        const uint32_t id = scene.add_mesh_object(name(o), *o.mesh, mat, t);
+        scene.objects[id].flags = flags;
     }
 
     /// Adds the CSG node for `o` to `so`; -1 when nothing of it can be shown analytically.
-    int node(const PovObject& o, const PovTexture& parent, double parent_ior, ShapeObject& so,
-             bool in_union) {
+    int node(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
+             uint8_t parent_flags, ShapeObject& so, bool in_union) {
         const PovTexture& tex = o.texture ? *o.texture : parent;
-        const double ior = o.ior > 0 ? o.ior : parent_ior;
+        const PovInterior* in = o.interior ? o.interior.get() : parent_in;
+        const uint8_t flags = uint8_t(o.flags | parent_flags);
         switch (o.kind) {
         case PovKind::Light:
             light(o);
@@ -119,7 +93,7 @@ struct Builder {
         case PovKind::Mesh:
             if (in_union) {
                 if (o.inverse) p.unsupported(o.where, "inverse of a mesh (ignored)");
-                mesh(o, tex, ior);
+                mesh(o, tex, in, flags);
             } else {
                 p.unsupported(o.where, "mesh inside intersection or difference (left out)");
             }
@@ -133,7 +107,7 @@ struct Builder {
             n.op = CsgOp::Leaf;
             n.shape = o.shape;
             n.transform = o.local;
-            n.material = material(tex, ior);
+            n.material = material(tex, in);
             n.inverse = o.inverse;
             so.nodes.push_back(n);
             return int(so.nodes.size() - 1);
@@ -150,7 +124,7 @@ struct Builder {
                 }
         std::vector<uint32_t> kids;
         for (size_t i = 0; i < o.children.size(); ++i) {
-            const int k = node(o.children[i], tex, ior, so, uni && in_union);
+            const int k = node(o.children[i], tex, in, flags, so, uni && in_union);
             if (k >= 0)
                 kids.push_back(uint32_t(k));
             else if (o.op == CsgOp::Difference && i == 0 && o.children[0].kind != PovKind::Light)
@@ -166,21 +140,23 @@ struct Builder {
         return int(so.nodes.size() - 1);
     }
 
-    void top(const PovObject& o, const PovTexture& parent, double parent_ior) {
+    void top(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
+             uint8_t parent_flags) {
         const PovTexture& tex = o.texture ? *o.texture : parent;
-        const double ior = o.ior > 0 ? o.ior : parent_ior;
+        const PovInterior* in = o.interior ? o.interior.get() : parent_in;
+        const uint8_t flags = uint8_t(o.flags | parent_flags);
         if (o.kind == PovKind::Light) return light(o);
         if (o.kind == PovKind::Mesh) {
             if (o.inverse) p.unsupported(o.where, "inverse of a mesh (ignored)");
-            return mesh(o, tex, ior);
+            return mesh(o, tex, in, flags);
         }
         if (o.kind == PovKind::Csg && o.op == CsgOp::Union && !o.inverse) {
             // A union of separate objects renders exactly as those objects.
-            for (const PovObject& c : o.children) top(c, tex, ior);
+            for (const PovObject& c : o.children) top(c, tex, in, flags);
             return;
         }
         ShapeObject built; // children before parents
-        const int root = node(o, parent, parent_ior, built, true);
+        const int root = node(o, parent, parent_in, parent_flags, built, true);
         if (root < 0) return;
         // The core wants parents before children: copy the tree in preorder from the root.
         ShapeObject so;
@@ -196,6 +172,7 @@ struct Builder {
             return at;
         };
         so.root = copy(uint32_t(root));
+        so.flags = flags;
         scene.add_shape_object(std::move(so));
     }
 
@@ -236,21 +213,27 @@ struct Builder {
 } // namespace
 
 double build_scene(Parser& p, Scene& scene) {
-    Builder b{p, scene, 1.0, pov_to_sheaf(), {}, {}, 0};
     const PovModel& m = p.model;
-    b.gamma = m.assumed_gamma > 0                    ? m.assumed_gamma
-              : (m.version_given && m.version < 3.7) ? 2.2
-                                                     : 1.0;
-    for (const PovObject& o : m.objects) b.top(o, m.default_texture, 0);
+    const double gamma = m.assumed_gamma > 0                    ? m.assumed_gamma
+                         : (m.version_given && m.version < 3.7) ? 2.2
+                                                                : 1.0;
+    Builder b{p, scene, MaterialBuilder(p, scene, gamma), pov_to_sheaf(), {}, 0};
+    for (const PovObject& o : m.objects) b.top(o, m.default_texture, nullptr, 0);
     for (auto& [mat, mesh] : b.loose) {
         mesh.normals.clear();
         scene.add_mesh_object("triangles#" + std::to_string(mat), std::move(mesh), mat, {});
     }
     b.camera();
     scene.background = b.decode(m.background);
+    scene.sky = b.materials.sky(m.sky, m.sky_local);
+    if (m.fog) {
+        scene.fog.distance = float(m.fog_distance);
+        scene.fog.color = b.decode(m.fog_color);
+        scene.fog.transmit = float(std::clamp(m.fog_color[4], 0.0, 1.0));
+    }
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));
-    return b.gamma;
+    return gamma;
 }
 
 } // namespace sheaf::io::pov

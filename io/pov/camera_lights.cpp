@@ -177,33 +177,59 @@ void Parser::parse_background() {
 
 void Parser::parse_atmospheric(const Token& kw) {
     if (kw.text == "sky_sphere") {
-        // Approximated by its average pigment as the background.
-        unsupported(kw, "sky_sphere (its average colour becomes the background)");
+        // Its pigments, layered (later ones on top), seen along each ray that leaves the scene.
         expect_sym("{");
-        std::vector<Color5> colors;
+        model.sky.clear();
+        model.sky_local = Affine();
+        for (;;) {
+            const Token t = peek();
+            if (accept_sym("}")) break;
+            Affine m;
+            if (parse_transform_item(m)) {
+                model.sky_local = m * model.sky_local;
+                continue;
+            }
+            if (accept_kw("pigment")) {
+                auto pg = std::make_shared<PovPigment>(*parse_pigment(PovPigment{}));
+                // Transforms before a pigment do not move it: it starts in the sky's space now.
+                if (std::fabs(model.sky_local.determinant()) > 1e-30f)
+                    pg->local = model.sky_local.inverse() * pg->local;
+                model.sky.push_back(pg);
+            } else if (accept_kw("emission")) {
+                parse_color();
+            } else {
+                error_expected(t, "pigment, emission, a transform or '}'");
+            }
+        }
+        return;
+    }
+    if (kw.text == "fog") {
+        expect_sym("{");
+        int type = 1;
         for (;;) {
             const Token t = peek();
             if (accept_sym("}")) break;
             Affine ignored;
             if (parse_transform_item(ignored)) continue;
-            if (accept_kw("pigment")) {
-                Color5 c{0, 0, 0, 0, 0};
-                parse_pigment(c);
-                colors.push_back(c);
-            } else if (accept_kw("emission")) {
-                parse_color();
-            } else if (t.kind == TokKind::Ident && lookup(t.text)) {
-                advance();
+            if (accept_kw("fog_type")) {
+                type = int(parse_float());
+            } else if (accept_kw("distance")) {
+                model.fog_distance = parse_float();
+            } else if (is_color_start(t)) {
+                model.fog_color = parse_color();
+            } else if (accept_kw("fog_offset") || accept_kw("fog_alt") || accept_kw("octaves") ||
+                       accept_kw("omega") || accept_kw("lambda") || accept_kw("turb_depth")) {
+                parse_float();
+            } else if (accept_kw("turbulence") || accept_kw("up")) {
+                parse_expr();
             } else {
-                error_expected(t, "pigment or '}'");
+                error_expected(t, "a fog item (distance, color, fog_type ...)");
             }
         }
-        if (!colors.empty()) {
-            Color5 avg{0, 0, 0, 0, 0};
-            for (const Color5& c : colors)
-                for (int i = 0; i < 5; ++i) avg[i] += c[i] / double(colors.size());
-            model.background = avg;
-        }
+        if (type != 1)
+            unsupported(kw, "ground fog (fog_type " + std::to_string(type) +
+                                "; constant fog is used)");
+        model.fog = model.fog_distance > 0;
         return;
     }
     unsupported(kw, kw.text);
@@ -226,13 +252,7 @@ Value Parser::parse_rvalue() {
         }
         if (k == "texture") {
             advance();
-            Value v = Value::boxed(VType::Texture, parse_texture(model.default_texture));
-            while (is_kw_tok(peek_cont(), "texture")) { // layers: the first one is kept
-                advance();
-                parse_texture(model.default_texture);
-                v.v[1] = 1;
-            }
-            return v;
+            return Value::boxed(VType::Texture, PovTexture(*parse_texture_layers(model.default_texture)));
         }
         if (k == "material") {
             advance();
@@ -243,18 +263,22 @@ Value Parser::parse_rvalue() {
             while (!accept_sym("}"))
                 if (!parse_modifier(holder, texture_here))
                     error_expected(peek(), "texture, interior or '}' in material");
-            Value v = Value::boxed(VType::Texture,
-                                   holder.texture ? *holder.texture : model.default_texture);
-            v.v[0] = holder.ior;
-            return v;
+            return Value::boxed(VType::Material, PovMaterial{holder.texture, holder.interior});
         }
         if (k == "pigment") {
             advance();
-            Color5 c = model.default_texture.pigment;
-            parse_pigment(c);
-            Value v = Value::color(c);
-            v.type = VType::Pigment;
-            return v;
+            return Value::boxed(VType::Pigment, PovPigment(*parse_pigment(PovPigment{})));
+        }
+        if (k == "normal") {
+            advance();
+            std::shared_ptr<const PovNormal> n = parse_normal(nullptr);
+            if (!n) { // a normal that changes nothing (unsupported pattern): declared as flat
+                Value v;
+                v.type = VType::Other;
+                v.str = "normal";
+                return v;
+            }
+            return Value::boxed(VType::Normal, PovNormal(*n));
         }
         if (k == "finish") {
             advance();
@@ -264,9 +288,22 @@ Value Parser::parse_rvalue() {
         }
         if (k == "interior") {
             advance();
-            Value v;
-            v.type = VType::Interior;
-            v.v[0] = parse_interior();
+            return Value::boxed(VType::Interior, parse_interior(PovInterior{}));
+        }
+        if (k == "color_map" || k == "colour_map") {
+            advance();
+            return Value::boxed(VType::ColorMap, parse_color_map());
+        }
+        if (k == "pigment_map") {
+            advance();
+            Value v = Value::boxed(VType::Other, parse_pigment_map());
+            v.str = k;
+            return v;
+        }
+        if (k == "texture_map") {
+            advance();
+            Value v = Value::boxed(VType::Other, parse_texture_map());
+            v.str = k;
             return v;
         }
         if (k == "camera") {
@@ -275,15 +312,9 @@ Value Parser::parse_rvalue() {
             parse_camera(c);
             return Value::boxed(VType::Camera, c);
         }
-        if (k == "color_map" || k == "colour_map") {
-            advance();
-            Value v = Value::color(parse_color_map());
-            v.type = VType::ColorMap;
-            return v;
-        }
-        if (k == "normal" || k == "fog" || k == "media" || k == "rainbow" || k == "sky_sphere" ||
-            k == "density" || k == "interior_texture" || k == "pigment_map" || k == "normal_map" ||
-            k == "slope_map" || k == "texture_map" || k == "spline" || k == "density_map" ||
+        if (k == "fog" || k == "media" || k == "rainbow" || k == "sky_sphere" ||
+            k == "density" || k == "interior_texture" || k == "normal_map" ||
+            k == "slope_map" || k == "spline" || k == "density_map" ||
             k == "photons" || k == "radiosity" || k == "material_map") {
             advance();
             Value v;

@@ -108,8 +108,13 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
     EXPECT_FLOAT_EQ(r.scene.background.z, 0.3f);
     EXPECT_EQ(r.scene.settings.at("trace.depth"), "2");
     EXPECT_FLOAT_EQ(r.scene.materials.back().ambient, 0.2f);
-    ASSERT_EQ(r.warnings.size(), 1u);
-    EXPECT_NE(r.warnings[0].find("scene.pov:3:1: warning: unsupported fog"), std::string::npos);
+    EXPECT_FLOAT_EQ(r.scene.fog.distance, 10);
+    EXPECT_FLOAT_EQ(r.scene.fog.color.y, 1);
+    EXPECT_TRUE(r.warnings.empty());
+    const PovResult g = load_text("fog { fog_type 2 distance 5 color rgb 1 fog_alt 1 }");
+    ASSERT_EQ(g.warnings.size(), 1u);
+    EXPECT_NE(g.warnings[0].find("scene.pov:1:1: warning: unsupported ground fog"),
+              std::string::npos);
 }
 
 } // namespace

@@ -409,19 +409,21 @@ void Parser::default_directive() {
     for (;;) {
         const Token t = peek();
         if (accept_sym("}")) return;
+        PovTexture& d = model.default_texture;
         if (accept_kw("texture")) {
-            model.default_texture = parse_texture(model.default_texture);
+            d = *parse_texture_layers(d);
         } else if (accept_kw("pigment")) {
-            parse_pigment(model.default_texture.pigment);
+            d.pigment = parse_pigment(d.pigment ? *d.pigment : PovPigment{});
         } else if (accept_kw("finish")) {
-            parse_finish(model.default_texture.finish);
-        } else if (t.kind == TokKind::Ident &&
-                   (t.text == "normal" || t.text == "interior" || t.text == "radiosity")) {
+            parse_finish(d.finish);
+        } else if (accept_kw("normal")) {
+            d.normal = parse_normal(d.normal.get());
+        } else if (t.kind == TokKind::Ident && (t.text == "interior" || t.text == "radiosity")) {
             advance();
             unsupported(t, "#default " + t.text);
             skip_block();
         } else {
-            error_expected(t, "texture, pigment or finish in #default");
+            error_expected(t, "texture, pigment, normal or finish in #default");
         }
     }
 }

@@ -36,6 +36,11 @@ std::string format_number(double d) {
 } // namespace
 
 std::string Parser::find_include(const std::string& name, const Token& where) const {
+    return find_file(name, where, "include file");
+}
+
+std::string Parser::find_file(const std::string& name, const Token& where,
+                              const std::string& what) const {
     std::vector<fs::path> dirs;
     dirs.push_back(fs::path(file_names_[where.file]).parent_path());
     for (const std::string& d : options_.include_paths) dirs.push_back(d);
@@ -51,7 +56,7 @@ std::string Parser::find_include(const std::string& name, const Token& where) co
     }
     std::string searched;
     for (const fs::path& d : dirs) searched += (searched.empty() ? "" : ", ") + d.string();
-    error_at(where, "cannot find include file '" + name + "' (searched " + searched + ")");
+    error_at(where, "cannot find " + what + " '" + name + "' (searched " + searched + ")");
 }
 
 void Parser::include_directive(const Token& where) {

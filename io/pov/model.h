@@ -1,6 +1,6 @@
 // The reader's intermediate scene, in POV-Ray's own (left-handed) coordinates: objects with
-// their shapes, meshes and CSG children, textures reduced to what the core Material can show,
-// lights and the camera. builder.cpp turns it into a sheaf::Scene.
+// their shapes, meshes and CSG children, textures (pigments, normals, finishes, maps and layers,
+// each with its own transform), lights and the camera. builder.cpp turns it into a sheaf::Scene.
 #pragma once
 
 #include "core/geometry/shape.h"
@@ -10,6 +10,8 @@
 
 #include <array>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace sheaf::io::pov {
@@ -20,15 +22,102 @@ using Color5 = std::array<double, 5>;
 struct PovFinish {
     std::array<double, 3> ambient{0.1, 0.1, 0.1};
     std::array<double, 3> emission{0, 0, 0};
-    std::array<double, 3> reflection{0, 0, 0};
-    double diffuse = 0.6;
+    double diffuse = 0.6, brilliance = 1;
     double specular = 0, roughness = 0.05;
     double phong = 0, phong_size = 40;
+    double metallic = 0;
+    // reflection { [min,] max [fresnel] [falloff F] [metallic] } or reflection COLOUR
+    std::array<double, 3> reflection{0, 0, 0};     // the maximum (or only) reflection
+    std::array<double, 3> reflection_min{0, 0, 0}; // with `variable`: at facing angles
+    bool reflection_variable = false;              // a min and a max were given
+    bool fresnel = false;
+    double reflection_falloff = 1;
+    bool reflection_metallic = false;
+    bool conserve_energy = false;
 };
 
+/// An image for image_map (and the image pattern): the file and how it is wrapped.
+struct PovImage {
+    std::string path;        // resolved against the scene's folder and the include paths
+    int map_type = 0;        // 0 planar, 1 spherical, 2 cylindrical
+    bool uv = false;         // uv_mapping: the surface's texture coordinates
+    double filter_all = 0, transmit_all = 0;
+    Token where;             // where the scene asked for it, for errors
+};
+
+/// A pattern as parsed: its kind and modifiers. It lives in the space of the pigment, normal or
+/// texture that holds it.
+struct PovPattern {
+    PatternKind kind = PatternKind::Gradient;
+    Wave wave = Wave::Ramp;
+    bool wave_given = false;
+    bool has_turbulence = false;
+    Vec3 turbulence{0, 0, 0};
+    int octaves = 6;
+    double omega = 0.5, lambda = 2;
+    double frequency = 1, phase = 0, wave_exponent = 1;
+    Vec3 vector{0, 1, 0}; // gradient
+    double param[4] = {0, 0, 0, 0};
+    std::shared_ptr<const PovImage> image;
+};
+
+struct PovPigment;
+
+/// An entry of a colour map, pigment map or list: a colour, or a pigment.
+struct PovMapEntry {
+    double value = 0;
+    Color5 color{0, 0, 0, 0, 0};
+    std::shared_ptr<const PovPigment> pigment; // null: `color`
+};
+
+/// A pigment: a solid colour, or a pattern with its entries. `local` maps the pigment's space
+/// to the space of what holds it (transforms inside the pigment and after it).
+struct PovPigment {
+    bool patterned = false;
+    bool average = false; // POV-Ray's average: the mean of the entries
+    Color5 color{0, 0, 0, 0, 0};
+    PovPattern pattern;
+    std::vector<PovMapEntry> entries;
+    Affine local;
+};
+
+/// A normal: a pattern and its bump size.
+struct PovNormal {
+    PovPattern pattern;
+    double amount = 0.5;
+    Affine local;
+};
+
+struct PovTexture;
+using PovTextureRef = std::shared_ptr<const PovTexture>;
+
+/// A texture: pigment, normal and finish, or a choice between textures by pattern (texture_map,
+/// checker texture ...). Layered textures are a top layer with the layers below it.
 struct PovTexture {
-    Color5 pigment{0, 0, 0, 0, 0}; // solid colour (patterns: the average of their map)
+    std::shared_ptr<const PovPigment> pigment; // null: black
+    std::shared_ptr<const PovNormal> normal;   // null: none
     PovFinish finish;
+    Affine local; // texture space -> the space of what holds it
+    std::vector<PovTextureRef> below; // layered: the layers under this one, bottom first
+    bool is_map = false;              // chosen by `map_pattern` among `map_entries`
+    PovPattern map_pattern;
+    std::vector<std::pair<double, PovTextureRef>> map_entries;
+};
+
+/// A texture moved by a transform applied after it (the object's, or the texture's own).
+PovTextureRef transformed(const PovTextureRef& t, const Affine& m);
+
+/// interior { ior fade_distance fade_power fade_color }.
+struct PovInterior {
+    double ior = 0; // 0: not set (1)
+    double fade_distance = 0, fade_power = 0;
+    std::array<double, 3> fade_color{0, 0, 0};
+};
+
+/// material { texture interior }: what a declared material carries.
+struct PovMaterial {
+    PovTextureRef texture;
+    std::shared_ptr<const PovInterior> interior;
 };
 
 /// A light source (POV-Ray coordinates). Area lights become jittered samples in the builder.
@@ -51,9 +140,10 @@ struct PovObject {
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;
     Affine local;
-    std::shared_ptr<const PovTexture> texture; // null: inherited (or the default texture)
-    double ior = 0;                            // 0: not set
+    PovTextureRef texture;                     // null: inherited (or the default texture)
+    std::shared_ptr<const PovInterior> interior; // null: inherited (or none)
     bool inverse = false;
+    uint8_t flags = 0; // ObjectFlag bits: no_shadow, no_reflection, no_image
     PovLight light;
     Token where; // the keyword that started it, for warnings
 };
@@ -79,6 +169,13 @@ struct PovModel {
     std::array<double, 3> ambient_light{1, 1, 1};
     int max_trace_level = -1;
     PovTexture default_texture;
+    /// sky_sphere: its pigments, bottom first (layered like a texture's), in the sky's space.
+    std::vector<std::shared_ptr<const PovPigment>> sky;
+    Affine sky_local;
+    /// Constant fog (fog_type 1).
+    bool fog = false;
+    double fog_distance = 0;
+    Color5 fog_color{0, 0, 0, 0, 0};
 };
 
 } // namespace sheaf::io::pov

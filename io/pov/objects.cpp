@@ -244,29 +244,42 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
     const Token t = peek();
     if (t.kind != TokKind::Ident) return false;
     const std::string& k = t.text;
-    auto base = [&]() { return o.texture ? *o.texture : model.default_texture; };
+    // Pigments, normals and finishes given after a texture change that texture, in its space.
+    auto current = [&]() { return o.texture ? *o.texture : model.default_texture; };
     if (k == "texture") {
         advance();
-        PovTexture tex = parse_texture(model.default_texture);
-        if (texture_here) {
-            unsupported(t, "layered texture (the first layer is used)");
-        } else {
-            o.texture = std::make_shared<PovTexture>(tex);
-            texture_here = true;
+        PovTextureRef tex = parse_texture_layers(model.default_texture);
+        if (texture_here && o.texture) { // another texture in the same block: a layer on top
+            auto layered = std::make_shared<PovTexture>(*tex);
+            std::vector<PovTextureRef> below = o.texture->below;
+            auto lower = std::make_shared<PovTexture>(*o.texture);
+            lower->below.clear();
+            below.push_back(lower);
+            below.insert(below.end(), tex->below.begin(), tex->below.end());
+            layered->below = std::move(below);
+            tex = layered;
         }
+        o.texture = tex;
+        texture_here = true;
     } else if (k == "pigment") {
         advance();
-        PovTexture tex = base();
-        parse_pigment(tex.pigment);
-        o.texture = std::make_shared<PovTexture>(tex);
+        PovTexture tex = current();
+        tex.pigment = parse_pigment(tex.pigment ? *tex.pigment : PovPigment{});
+        o.texture = std::make_shared<const PovTexture>(std::move(tex));
+    } else if (k == "normal") {
+        advance();
+        PovTexture tex = current();
+        tex.normal = parse_normal(tex.normal.get());
+        o.texture = std::make_shared<const PovTexture>(std::move(tex));
     } else if (k == "finish") {
         advance();
-        PovTexture tex = base();
+        PovTexture tex = current();
         parse_finish(tex.finish);
-        o.texture = std::make_shared<PovTexture>(tex);
+        o.texture = std::make_shared<const PovTexture>(std::move(tex));
     } else if (k == "interior") {
         advance();
-        o.ior = parse_interior();
+        o.interior = std::make_shared<const PovInterior>(
+            parse_interior(o.interior ? *o.interior : PovInterior{}));
     } else if (k == "material") {
         advance();
         expect_sym("{");
@@ -274,17 +287,17 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
             const Token& i = peek();
             if (accept_sym("}")) break;
             Value mat;
-            if (accept_declared(VType::Texture, mat, "a material")) {
-                o.texture = std::make_shared<PovTexture>(mat.as<PovTexture>());
-                if (mat.v[0] > 0) o.ior = mat.v[0];
-                texture_here = true;
+            if (accept_declared(VType::Material, mat, "a material")) {
+                const PovMaterial& m = mat.as<PovMaterial>();
+                if (m.texture) o.texture = m.texture, texture_here = true;
+                if (m.interior) o.interior = m.interior;
             } else if (!parse_modifier(o, texture_here)) {
                 error_expected(i, "texture, interior or '}' in material");
             }
         }
-    } else if (k == "normal" || k == "interior_texture" || k == "photons") {
+    } else if (k == "interior_texture" || k == "photons") {
         advance();
-        unsupported(t, k);
+        if (k == "interior_texture") unsupported(t, k + " (ignored)");
         if (is_sym_tok(peek(), "{"))
             skip_block();
         else
@@ -305,7 +318,12 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
         parse_bool_opt(true);
     } else if (k == "no_shadow" || k == "no_reflection" || k == "no_image") {
         advance();
-        if (parse_bool_opt(true)) unsupported(t, k + " (the object is rendered normally)");
+        const uint8_t flag = k == "no_shadow" ? kNoShadow : k == "no_reflection" ? kNoReflection
+                                                                                  : kNoImage;
+        if (parse_bool_opt(true))
+            o.flags |= flag;
+        else
+            o.flags &= uint8_t(~flag);
     } else if (k == "inside_vector") {
         advance();
         parse_vector();
@@ -356,7 +374,8 @@ void Parser::parse_clipped_by(const Token& kw, PovObject& o) {
     group.op = CsgOp::Intersection;
     group.where = o.where;
     group.texture = o.texture;
-    group.ior = o.ior;
+    group.interior = o.interior;
+    group.flags = o.flags;
     for (PovObject& c : clips) {
         if (!c.texture) c.texture = o.texture;
         c.inverse = c.inverse; // clips keep their own inside
@@ -438,6 +457,7 @@ Affine Parser::parse_transform_block() {
 }
 
 void Parser::apply_transform(PovObject& o, const Affine& m) {
+    o.texture = transformed(o.texture, m);
     switch (o.kind) {
     case PovKind::Shape:
     case PovKind::Mesh:

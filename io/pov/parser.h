@@ -120,6 +120,10 @@ class Parser {
     void ifdef_directive(bool want_defined);
     void include_directive(const Token& where);
     std::string find_include(const std::string& name, const Token& where) const;
+    /// A file the scene names (include, image): its folder, the include paths, then POV-Ray's
+    /// standard include folder; an error naming `what` when it is nowhere.
+    std::string find_file(const std::string& name, const Token& where,
+                          const std::string& what) const;
     void fopen_directive(const Token& where);
     void read_directive(const Token& where);
     void write_directive(const Token& where);
@@ -188,17 +192,31 @@ class Parser {
     void parse_polygon(const Token& kw, PovObject& o);
     size_t objects_made_ = 0;
 
-    // ---- textures (textures.cpp) ----
-    PovTexture parse_texture(const PovTexture& base);
+    // ---- textures (textures.cpp, pigments.cpp, normals.cpp, patterns.cpp) ----
+    /// After 'texture': one { ... } block, on top of `base`.
+    PovTextureRef parse_texture_block(const PovTexture& base);
+    /// After 'texture': the block and any further 'texture' blocks, layered (later ones on top).
+    PovTextureRef parse_texture_layers(const PovTexture& base);
     PovTexture parse_texture_body(const PovTexture& base, const char* close);
-    void parse_pigment(Color5& c);
-    void parse_pigment_body(Color5& c, const char* close);
-    void parse_pattern_tail(const Token& pattern, Color5& c, bool have_entries,
-                            std::vector<Color5>& entries);
-    Color5 parse_color_map();
+    std::vector<std::pair<double, PovTextureRef>> parse_texture_map();
+    /// After 'pigment': { ... } on top of `base`.
+    std::shared_ptr<const PovPigment> parse_pigment(const PovPigment& base);
+    void parse_pigment_body(PovPigment& p, const char* close);
+    std::vector<PovMapEntry> parse_color_map();
+    std::vector<PovMapEntry> parse_pigment_map();
+    void parse_image_map(const Token& kw, PovPigment& p);
+    /// After 'normal': { ... } on top of `base` (may be null); null when it changes nothing.
+    std::shared_ptr<const PovNormal> parse_normal(const PovNormal* base);
+    bool is_pattern_name(const Token& t) const;
+    /// A pattern keyword and its arguments; `list` gets the entries a list pattern takes and
+    /// `supported` whether Sheaf can show it. False (nothing read) when no pattern is next.
+    bool parse_pattern_name(PovPattern& pt, int& list, bool& supported);
+    /// A pattern modifier (turbulence, frequency, waves, warp ...) or a transform (into local).
+    bool parse_pattern_modifier(PovPattern& pt, Affine& local);
+    void skip_to_block_end(); // after '{' was read: up to and including its '}'
+    bool is_color_start(const Token& t);
     void parse_finish(PovFinish& f);
-    double parse_interior();
-    void skip_pattern_modifier(const Token& t);
+    PovInterior parse_interior(const PovInterior& base);
     PovTexture current_default() const { return model.default_texture; }
 
     // ---- camera, lights, settings (camera_lights.cpp) ----

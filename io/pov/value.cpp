@@ -25,8 +25,12 @@ const char* type_name(VType t) {
         return "an object";
     case VType::Texture:
         return "a texture";
+    case VType::Material:
+        return "a material";
     case VType::Pigment:
         return "a pigment";
+    case VType::Normal:
+        return "a normal";
     case VType::Finish:
         return "a finish";
     case VType::Interior:
@@ -53,7 +57,7 @@ Color5 to_color(const Value& v) {
     Color5 c{0, 0, 0, 0, 0};
     if (v.type == VType::Float) {
         c[0] = c[1] = c[2] = v.v[0];
-    } else if (v.type == VType::Color || v.type == VType::Pigment || v.type == VType::ColorMap) {
+    } else if (v.type == VType::Color) {
         for (int i = 0; i < 5; ++i) c[i] = v.v[i];
     } else if (v.type == VType::Vector) {
         for (int i = 0; i < v.dim && i < 5; ++i) c[i] = v.v[i];

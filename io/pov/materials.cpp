@@ -1,0 +1,267 @@
+// PovTexture -> Material, Pigment, NormalPattern, MaterialSwitch (see materials.h).
+#include "io/pov/materials.h"
+
+#include "io/pov/builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace sheaf::io::pov {
+
+namespace {
+
+constexpr int kMaxDepth = 12; // nested texture maps; deeper ones use their first entry
+
+std::string key_of(const Material& m) {
+    std::ostringstream k;
+    k.precision(9);
+    const float* f[] = {&m.color.x,       &m.color.y,          &m.color.z,
+                        &m.emission.x,    &m.emission.y,       &m.emission.z,
+                        &m.ambient,       &m.diffuse,          &m.specular,
+                        &m.phong_exponent, &m.mirror,          &m.transmission,
+                        &m.ior,           &m.brilliance,       &m.blinn,
+                        &m.blinn_exponent, &m.metallic,        &m.mirror_color.x,
+                        &m.mirror_color.y, &m.mirror_color.z,  &m.mirror_min,
+                        &m.mirror_falloff, &m.fade_color.x,    &m.fade_color.y,
+                        &m.fade_color.z,  &m.fade_distance,    &m.fade_power};
+    for (const float* v : f) k << *v << ',';
+    k << m.mirror_fresnel << m.mirror_metallic << m.conserve_energy << m.fresnel_split;
+    return k.str();
+}
+
+double max3(const std::array<double, 3>& a) {
+    return std::max({a[0], a[1], a[2]});
+}
+
+} // namespace
+
+double MaterialBuilder::decode(double c) const {
+    return gamma_ == 1 || c <= 0 ? c : std::pow(c, gamma_);
+}
+
+Vec3 MaterialBuilder::decode(const Color5& c) const {
+    return Vec3(float(decode(c[0])), float(decode(c[1])), float(decode(c[2])));
+}
+
+Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
+    Pattern p;
+    p.kind = pt.kind;
+    p.wave = pt.wave;
+    p.octaves = int8_t(std::clamp(pt.octaves, 1, 10));
+    p.has_turbulence = pt.has_turbulence;
+    p.turbulence = pt.turbulence;
+    p.omega = float(pt.omega), p.lambda = float(pt.lambda);
+    p.frequency = float(pt.frequency), p.phase = float(pt.phase);
+    p.wave_exponent = float(pt.wave_exponent);
+    p.vector = pt.vector;
+    for (int i = 0; i < 4; ++i) p.param[i] = float(pt.param[i]);
+    // Sheaf world -> POV-Ray world (the z mirror) -> the pattern's own space.
+    if (std::fabs(eff.determinant()) > 1e-30f) p.to_pattern = eff.inverse() * pov_to_sheaf();
+    return p;
+}
+
+int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern) {
+    std::ostringstream k;
+    k.precision(9);
+    k << img.path << '|' << img.map_type << img.uv;
+    for (auto& row : to_pattern.m)
+        for (float v : row) k << ',' << v;
+    if (auto it = images_.find(k.str()); it != images_.end()) return it->second;
+    Texture t;
+    t.path = img.path;
+    t.mapping = img.uv                ? TextureMapping::Uv
+                : img.map_type == 1   ? TextureMapping::Spherical
+                : img.map_type == 2   ? TextureMapping::Cylindrical
+                                      : TextureMapping::Planar;
+    t.transform = to_pattern;
+    t.origin = p_.where(img.where);
+    scene_.textures.push_back(t);
+    const int32_t id = int32_t(scene_.textures.size() - 1);
+    images_.emplace(k.str(), id);
+    return id;
+}
+
+PigmentEntry MaterialBuilder::entry(const PovMapEntry& e, const Affine& eff) {
+    PigmentEntry out;
+    out.value = float(e.value);
+    const Color5& c = e.pigment ? e.pigment->color : e.color;
+    const Vec3 rgb = decode(c);
+    out.color[0] = rgb.x, out.color[1] = rgb.y, out.color[2] = rgb.z;
+    out.color[3] = float(c[3]), out.color[4] = float(c[4]);
+    if (e.pigment && e.pigment->patterned) out.pigment = pigment(*e.pigment, eff);
+    return out;
+}
+
+int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
+    const Affine eff = outer * pg.local;
+    Pigment out;
+    if (!pg.patterned) {
+        const Vec3 rgb = decode(pg.color);
+        out.color[0] = rgb.x, out.color[1] = rgb.y, out.color[2] = rgb.z;
+        out.color[3] = float(pg.color[3]), out.color[4] = float(pg.color[4]);
+        scene_.pigments.push_back(out);
+        return int32_t(scene_.pigments.size() - 1);
+    }
+    // Entries first: a pigment names only earlier pigments.
+    std::vector<PigmentEntry> entries;
+    entries.reserve(pg.entries.size());
+    for (const PovMapEntry& e : pg.entries) entries.push_back(entry(e, eff));
+    out.solid = false;
+    out.average = pg.average;
+    out.pattern = pattern(pg.pattern, eff);
+    if (pg.pattern.kind == PatternKind::Image && pg.pattern.image)
+        out.pattern.image = image(*pg.pattern.image, out.pattern.to_pattern);
+    out.first = uint32_t(scene_.pigment_entries.size());
+    out.count = uint32_t(entries.size());
+    scene_.pigment_entries.insert(scene_.pigment_entries.end(), entries.begin(), entries.end());
+    scene_.pigments.push_back(out);
+    return int32_t(scene_.pigments.size() - 1);
+}
+
+uint32_t MaterialBuilder::material(const PovTexture& t, const PovInterior* in) {
+    return material_in(t, in, Affine(), 0);
+}
+
+uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in,
+                                      const Affine& outer, int depth) {
+    const Affine eff = outer * t.local;
+    if (t.is_map && !t.map_entries.empty()) {
+        if (depth >= kMaxDepth) return material_in(*t.map_entries.front().second, in, eff, depth);
+        std::vector<MaterialEntry> entries;
+        for (const auto& [value, sub] : t.map_entries)
+            entries.push_back({float(value), material_in(*sub, in, eff, depth + 1)});
+        MaterialSwitch sw;
+        sw.pattern = pattern(t.map_pattern, eff);
+        sw.first = uint32_t(scene_.material_entries.size());
+        sw.count = uint32_t(entries.size());
+        scene_.material_entries.insert(scene_.material_entries.end(), entries.begin(),
+                                       entries.end());
+        scene_.material_switches.push_back(sw);
+        Material m;
+        m.select = int32_t(scene_.material_switches.size() - 1);
+        return scene_.add_material(m);
+    }
+
+    const PovFinish& f = t.finish;
+    Material m;
+    m.fresnel_split = false; // POV-Ray: reflection comes from the finish only
+    const auto& al = p_.model.ambient_light;
+    m.ambient =
+        float((f.ambient[0] + f.ambient[1] + f.ambient[2]) / 3 * (al[0] + al[1] + al[2]) / 3);
+    m.diffuse = float(f.diffuse);
+    m.brilliance = float(f.brilliance);
+    if (f.phong > 0) {
+        m.specular = float(f.phong);
+        m.phong_exponent = float(std::max(1.0, f.phong_size));
+    }
+    if (f.specular > 0) {
+        m.blinn = float(f.specular);
+        m.blinn_exponent = float(std::clamp(1.0 / std::max(f.roughness, 1e-4), 1.0, 10000.0));
+    }
+    m.metallic = float(std::clamp(f.metallic, 0.0, 1.0));
+    const double rmax = max3(f.reflection);
+    m.mirror = float(std::clamp(rmax, 0.0, 1.0));
+    if (rmax > 0)
+        m.mirror_color = Vec3(float(f.reflection[0] / rmax), float(f.reflection[1] / rmax),
+                              float(f.reflection[2] / rmax));
+    if (f.reflection_variable) {
+        m.mirror_min = float(std::clamp(max3(f.reflection_min), 0.0, 1.0));
+        m.mirror_falloff = float(std::max(f.reflection_falloff, 0.0));
+        m.mirror_fresnel = f.fresnel;
+    }
+    m.mirror_metallic = f.reflection_metallic;
+    m.conserve_energy = f.conserve_energy;
+    if (in) {
+        m.ior = float(in->ior > 0 ? in->ior : 1.0);
+        m.fade_distance = float(std::max(in->fade_distance, 0.0));
+        m.fade_power = float(std::max(in->fade_power, 0.0));
+        m.fade_color = Vec3(float(in->fade_color[0]), float(in->fade_color[1]),
+                            float(in->fade_color[2]));
+    } else {
+        m.ior = 1.0f;
+    }
+
+    // The pigment: layers (bottom first, this texture on top), a pattern, or a solid colour.
+    const PovPigment black;
+    const PovPigment& top = t.pigment ? *t.pigment : black;
+    const bool layered = !t.below.empty();
+    Color5 base_color = top.color;
+    if (layered) {
+        std::vector<PigmentEntry> layers;
+        for (const PovTextureRef& l : t.below) {
+            const PovPigment& lp = l->pigment ? *l->pigment : black;
+            layers.push_back(entry({0, lp.color, std::make_shared<PovPigment>(lp)},
+                                   outer * l->local));
+        }
+        layers.push_back(entry({0, top.color, std::make_shared<PovPigment>(top)}, eff));
+        Pigment lp;
+        lp.solid = false;
+        lp.layers = true;
+        lp.first = uint32_t(scene_.pigment_entries.size());
+        lp.count = uint32_t(layers.size());
+        scene_.pigment_entries.insert(scene_.pigment_entries.end(), layers.begin(), layers.end());
+        scene_.pigments.push_back(lp);
+        m.pigment = int32_t(scene_.pigments.size() - 1);
+        // The normal of the top-most layer that has one.
+        const PovNormal* n = t.normal.get();
+        Affine n_eff = eff;
+        for (auto it = t.below.rbegin(); !n && it != t.below.rend(); ++it)
+            if ((*it)->normal) n = (*it)->normal.get(), n_eff = outer * (*it)->local;
+        if (n) {
+            NormalPattern np{pattern(n->pattern, n_eff * n->local), float(n->amount)};
+            scene_.normal_patterns.push_back(np);
+            m.normal = int32_t(scene_.normal_patterns.size() - 1);
+        }
+    } else {
+        if (top.patterned) {
+            m.pigment = pigment(top, eff);
+        } else {
+            m.color = decode(top.color);
+            m.transmission = float(std::clamp(top.color[3], 0.0, 1.0));
+            if (top.color[4] > 0) m.pigment = pigment(top, eff); // transmit needs a pigment
+        }
+        if (t.normal) {
+            NormalPattern np{pattern(t.normal->pattern, eff * t.normal->local),
+                             float(t.normal->amount)};
+            scene_.normal_patterns.push_back(np);
+            m.normal = int32_t(scene_.normal_patterns.size() - 1);
+        }
+    }
+    // Emission scales the surface colour; patterned surfaces glow with their mean colour.
+    Vec3 mean = decode(base_color);
+    if (top.patterned && !top.entries.empty()) {
+        mean = Vec3(0.0f);
+        for (const PovMapEntry& e : top.entries)
+            mean += decode(e.pigment ? e.pigment->color : e.color);
+        mean = mean / float(top.entries.size());
+    }
+    m.emission = mean * Vec3(float(f.emission[0]), float(f.emission[1]), float(f.emission[2]));
+
+    if (m.pigment < 0 && m.normal < 0) { // plain materials are shared
+        const std::string key = key_of(m);
+        if (auto it = plain_.find(key); it != plain_.end()) return it->second;
+        const uint32_t id = scene_.add_material(m);
+        plain_.emplace(key, id);
+        return id;
+    }
+    return scene_.add_material(m);
+}
+
+int32_t MaterialBuilder::sky(const std::vector<std::shared_ptr<const PovPigment>>& layers,
+                             const Affine& local) {
+    if (layers.empty()) return -1;
+    if (layers.size() == 1) return pigment(*layers[0], local);
+    std::vector<PigmentEntry> entries;
+    for (const auto& l : layers) entries.push_back(entry({0, l->color, l}, local));
+    Pigment lp;
+    lp.solid = false;
+    lp.layers = true;
+    lp.first = uint32_t(scene_.pigment_entries.size());
+    lp.count = uint32_t(entries.size());
+    scene_.pigment_entries.insert(scene_.pigment_entries.end(), entries.begin(), entries.end());
+    scene_.pigments.push_back(lp);
+    return int32_t(scene_.pigments.size() - 1);
+}
+
+} // namespace sheaf::io::pov

@@ -1,0 +1,44 @@
+// PovTexture -> core materials: pigments, colour and pigment maps, normals, texture maps and
+// layers become the core's procedural textures (core/scene/pattern.h), the finish and the
+// interior the Material's terms. Colours are decoded with the scene's gamma; patterns get the
+// transform from Sheaf's world to their own space (through POV-Ray's mirrored z).
+#pragma once
+
+#include "io/pov/parser.h"
+
+#include <map>
+#include <string>
+
+namespace sheaf::io::pov {
+
+class MaterialBuilder {
+  public:
+    MaterialBuilder(Parser& p, Scene& scene, double gamma)
+        : p_(p), scene_(scene), gamma_(gamma) {}
+
+    /// The material of texture `t` (its own transforms included) with interior `in` (may be
+    /// null).
+    uint32_t material(const PovTexture& t, const PovInterior* in);
+    /// The sky_sphere's pigments as one (layered) pigment; -1 when there are none.
+    int32_t sky(const std::vector<std::shared_ptr<const PovPigment>>& layers, const Affine& local);
+
+    double gamma() const { return gamma_; }
+    Vec3 decode(const Color5& c) const;
+
+  private:
+    uint32_t material_in(const PovTexture& t, const PovInterior* in, const Affine& outer,
+                         int depth);
+    int32_t pigment(const PovPigment& pg, const Affine& eff);
+    PigmentEntry entry(const PovMapEntry& e, const Affine& eff);
+    Pattern pattern(const PovPattern& pt, const Affine& eff);
+    int32_t image(const PovImage& img, const Affine& to_pattern);
+    double decode(double c) const;
+
+    Parser& p_;
+    Scene& scene_;
+    double gamma_;
+    std::map<std::string, uint32_t> plain_; // materials without patterns, by their values
+    std::map<std::string, int32_t> images_; // image textures by file and transform
+};
+
+} // namespace sheaf::io::pov

@@ -1,0 +1,218 @@
+// Patterns: the pattern keywords of pigments, normals and textures with their arguments, and
+// the modifiers every pattern takes (turbulence, octaves, omega, lambda, frequency, phase, the
+// waves, warp { turbulence }, transforms).
+#include "io/pov/parser.h"
+
+#include "core/base/error.h"
+
+#include <algorithm>
+#include <map>
+
+namespace sheaf::io::pov {
+
+namespace {
+
+struct PatternInfo {
+    PatternKind kind;
+    int list = 0; // entries a list pattern takes (checker 2, hexagon 3 ...); 0: continuous
+};
+
+const std::map<std::string, PatternInfo>& supported_patterns() {
+    static const std::map<std::string, PatternInfo> m = {
+        {"agate", {PatternKind::Agate}},
+        {"boxed", {PatternKind::Boxed}},
+        {"bozo", {PatternKind::Bozo}},
+        {"spotted", {PatternKind::Bozo}},
+        {"bumps", {PatternKind::Bozo}},
+        {"brick", {PatternKind::Brick, 2}},
+        {"cells", {PatternKind::Cells}},
+        {"checker", {PatternKind::Checker, 2}},
+        {"crackle", {PatternKind::Crackle}},
+        {"cylindrical", {PatternKind::Cylindrical}},
+        {"dents", {PatternKind::Dents}},
+        {"gradient", {PatternKind::Gradient}},
+        {"granite", {PatternKind::Granite}},
+        {"hexagon", {PatternKind::Hexagon, 3}},
+        {"leopard", {PatternKind::Leopard}},
+        {"marble", {PatternKind::Marble}},
+        {"onion", {PatternKind::Onion}},
+        {"planar", {PatternKind::Planar}},
+        {"quilted", {PatternKind::Quilted}},
+        {"radial", {PatternKind::Radial}},
+        {"ripples", {PatternKind::Ripples}},
+        {"spherical", {PatternKind::Spherical}},
+        {"spiral1", {PatternKind::Spiral1}},
+        {"spiral2", {PatternKind::Spiral2}},
+        {"square", {PatternKind::Square, 4}},
+        {"triangular", {PatternKind::Triangular, 6}},
+        {"waves", {PatternKind::Waves}},
+        {"wood", {PatternKind::Wood}},
+        {"wrinkles", {PatternKind::Wrinkles}},
+    };
+    return m;
+}
+
+// Patterns Sheaf reads but cannot show; the number of list entries they take.
+const std::map<std::string, int>& unsupported_patterns() {
+    static const std::map<std::string, int> m = {
+        {"aoi", 0},       {"cubic", 6},    {"density_file", 0}, {"facets", 0},
+        {"function", 0},  {"image_pattern", 0}, {"julia", 0},   {"magnet", 0},
+        {"mandel", 0},    {"object", 2},   {"pavement", 0},     {"pigment_pattern", 0},
+        {"slope", 0},     {"tiling", 0},   {"fractal", 0},
+    };
+    return m;
+}
+
+} // namespace
+
+bool Parser::is_pattern_name(const Token& t) const {
+    return t.kind == TokKind::Ident &&
+           (supported_patterns().count(t.text) || unsupported_patterns().count(t.text));
+}
+
+bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
+    const Token t = peek();
+    if (!is_pattern_name(t)) return false;
+    advance();
+    const std::string& k = t.text;
+    if (auto it = supported_patterns().find(k); it != supported_patterns().end()) {
+        supported = true;
+        pt.kind = it->second.kind;
+        list = it->second.list;
+        // Marble and wood are triangle-waved unless the scene says otherwise.
+        if (!pt.wave_given)
+            pt.wave = (pt.kind == PatternKind::Marble || pt.kind == PatternKind::Wood)
+                          ? Wave::Triangle
+                          : Wave::Ramp;
+        if (k == "gradient") pt.vector = parse_vector();
+        if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
+        if (k == "quilted") { // control0 and control1 follow as modifiers
+        }
+        return true;
+    }
+    supported = false;
+    list = unsupported_patterns().at(k);
+    // Their arguments: a block (function, object, pigment_pattern ...) or numbers.
+    if (is_sym_tok(peek(), "{")) {
+        skip_block();
+    } else if (k == "julia") {
+        parse_vector();
+        accept_sym(",");
+        parse_float();
+    } else if (k == "mandel" || k == "magnet" || k == "tiling" || k == "pavement") {
+        if (k == "magnet") parse_float();
+        if (starts_expression(peek())) parse_float();
+    } else if (k == "slope" || k == "aoi") {
+        if (is_sym_tok(peek(), "<") || (peek().kind == TokKind::Ident && lookup(peek().text)))
+            parse_vector();
+    }
+    if (k == "object" && is_sym_tok(peek(), "{")) skip_block();
+    return true;
+}
+
+bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
+    Affine m;
+    if (parse_transform_item(m)) {
+        local = m * local;
+        return true;
+    }
+    const Token t = peek();
+    if (t.kind != TokKind::Ident) return false;
+    const std::string& k = t.text;
+    auto turbulence = [&]() {
+        const Value v = parse_expr();
+        pt.turbulence = v.type == VType::Float
+                            ? Vec3(float(v.v[0]))
+                            : Vec3(float(v.v[0]), float(v.v[1]), float(v.v[2]));
+        pt.has_turbulence = pt.turbulence.x != 0 || pt.turbulence.y != 0 || pt.turbulence.z != 0;
+    };
+    if (k == "turbulence") {
+        advance();
+        turbulence();
+    } else if (k == "octaves") {
+        advance();
+        pt.octaves = std::clamp(int(parse_float()), 1, 10);
+    } else if (k == "omega") {
+        advance();
+        pt.omega = parse_float();
+    } else if (k == "lambda") {
+        advance();
+        pt.lambda = parse_float();
+    } else if (k == "frequency") {
+        advance();
+        pt.frequency = parse_float();
+    } else if (k == "phase") {
+        advance();
+        pt.phase = parse_float();
+    } else if (k == "ramp_wave" || k == "triangle_wave" || k == "sine_wave" ||
+               k == "scallop_wave" || k == "cubic_wave" || k == "poly_wave") {
+        advance();
+        pt.wave_given = true;
+        pt.wave = k == "ramp_wave"       ? Wave::Ramp
+                  : k == "triangle_wave" ? Wave::Triangle
+                  : k == "sine_wave"     ? Wave::Sine
+                  : k == "scallop_wave"  ? Wave::Scallop
+                  : k == "cubic_wave"    ? Wave::Cubic
+                                         : Wave::Poly;
+        if (pt.wave == Wave::Poly && starts_expression(peek())) pt.wave_exponent = parse_float();
+    } else if (k == "agate_turb") {
+        advance();
+        pt.param[0] = parse_float();
+    } else if (k == "brick_size") {
+        advance();
+        const Vec3 s = parse_vector();
+        pt.param[0] = s.x, pt.param[1] = s.y, pt.param[2] = s.z;
+    } else if (k == "mortar") {
+        advance();
+        pt.param[3] = parse_float();
+    } else if (k == "warp") {
+        advance();
+        expect_sym("{");
+        for (;;) {
+            const Token w = peek();
+            if (accept_sym("}")) break;
+            if (accept_kw("turbulence")) {
+                turbulence();
+            } else if (accept_kw("octaves")) {
+                pt.octaves = std::clamp(int(parse_float()), 1, 10);
+            } else if (accept_kw("omega")) {
+                pt.omega = parse_float();
+            } else if (accept_kw("lambda")) {
+                pt.lambda = parse_float();
+            } else {
+                unsupported(w, "warp '" + w.text + "' (ignored)");
+                skip_to_block_end();
+                break;
+            }
+        }
+    } else if (k == "noise_generator" || k == "form" || k == "metric" || k == "offset" ||
+               k == "control0" || k == "control1" || k == "orientation" || k == "dist_exp" ||
+               k == "accuracy" || k == "max_iteration" || k == "exponent" ||
+               k == "interior" || k == "exterior") {
+        // Shape details of patterns Sheaf draws its own way: read and not used.
+        advance();
+        if (starts_expression(peek())) parse_expr();
+        if (k == "interior" || k == "exterior") {
+            accept_sym(",");
+            if (starts_expression(peek())) parse_expr();
+        }
+    } else if (k == "solid") {
+        advance();
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void Parser::skip_to_block_end() {
+    int depth = 1;
+    for (;;) {
+        const Token t = peek();
+        if (t.kind == TokKind::End) error_expected(t, "'}'");
+        advance();
+        if (is_sym_tok(t, "{")) ++depth;
+        if (is_sym_tok(t, "}") && --depth == 0) return;
+    }
+}
+
+} // namespace sheaf::io::pov

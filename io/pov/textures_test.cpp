@@ -1,0 +1,220 @@
+// POV-Ray textures into the core's procedural textures: patterns with their maps and
+// transforms, lists, pigment maps, layers, texture maps, normals, finishes, interiors, image
+// maps, sky_sphere; what is not supported warns and falls back to an average.
+#include "io/pov/pov_test_util.h"
+
+#include "core/render/surface_texture.h"
+#include "core/scene/prepared_scene.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::error_of;
+using test::load_text;
+
+const Material& shape_material(const PovResult& r, size_t object = 0) {
+    return r.scene.materials[r.scene.shape_objects[object].nodes[0].material];
+}
+
+TEST(PovTextures, PatternsBecomePigmentsInTheirOwnSpace) {
+    const PovResult r = load_text(
+        "sphere { 0, 1 pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] }\n"
+        "  scale 2 } translate <3, 0, 0> }\n");
+    EXPECT_TRUE(r.warnings.empty());
+    const Material& m = shape_material(r);
+    ASSERT_GE(m.pigment, 0);
+    const Pigment& pg = r.scene.pigments[size_t(m.pigment)];
+    EXPECT_FALSE(pg.solid);
+    EXPECT_EQ(pg.pattern.kind, PatternKind::Gradient);
+    ASSERT_EQ(pg.count, 2u);
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[pg.first + 1].color[1], 0.5f);
+    // World point x = 4 is pattern point (4 - 3) / 2 = 0.5: the object's translate moved the
+    // pigment with it, the pigment's own scale stretched it. z is mirrored (POV-Ray is
+    // left-handed): the Sheaf point z = -0.25 is POV-Ray's z = 0.25, invisible to gradient x.
+    const Vec3 q = pg.pattern.to_pattern.point(Vec3(4, 0, -0.25f));
+    EXPECT_NEAR(q.x, 0.5f, 1e-5);
+    EXPECT_NEAR(q.z, 0.125f, 1e-5);
+    const PreparedScene p = prepare_scene(r.scene);
+    EXPECT_NEAR(evaluate_pigment(p, uint32_t(m.pigment), Vec3(4, 0, 0), 0, 0).rgb.x, 0.5f, 1e-5);
+}
+
+TEST(PovTextures, ListsDefaultsAndPigmentMaps) {
+    const PovResult r = load_text(
+        "sphere { 0, 1 pigment { checker rgb 1, rgb 0 } }\n"
+        "sphere { 0, 1 pigment { hexagon } }\n"
+        "sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] [1 checker rgb x, rgb y] } } }\n"
+        "sphere { 0, 1 pigment { brick pigment { rgb 0.5 }, pigment { marble } } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Pigment& checker = r.scene.pigments[size_t(shape_material(r, 0).pigment)];
+    EXPECT_EQ(checker.pattern.kind, PatternKind::Checker);
+    EXPECT_EQ(checker.count, 2u);
+    const Pigment& hexagon = r.scene.pigments[size_t(shape_material(r, 1).pigment)];
+    ASSERT_EQ(hexagon.count, 3u); // POV-Ray's blue, green, red
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[hexagon.first].color[2], 1);
+    const Pigment& bozo = r.scene.pigments[size_t(shape_material(r, 2).pigment)];
+    ASSERT_EQ(bozo.count, 2u);
+    EXPECT_LT(r.scene.pigment_entries[bozo.first].pigment, 0); // a plain colour stays a colour
+    const int32_t nested = r.scene.pigment_entries[bozo.first + 1].pigment;
+    ASSERT_GE(nested, 0);
+    EXPECT_EQ(r.scene.pigments[size_t(nested)].pattern.kind, PatternKind::Checker);
+    const Pigment& brick = r.scene.pigments[size_t(shape_material(r, 3).pigment)];
+    EXPECT_EQ(brick.pattern.kind, PatternKind::Brick);
+    EXPECT_GE(r.scene.pigment_entries[brick.first + 1].pigment, 0);
+    EXPECT_NO_THROW(r.scene.validate());
+}
+
+TEST(PovTextures, TurbulenceWavesAndModifiers) {
+    const PovResult r = load_text("sphere { 0, 1 pigment { wood turbulence 0.3 octaves 4 "
+                                  "omega 0.7 lambda 3 frequency 2 phase 0.1 sine_wave } }\n"
+                                  "sphere { 0, 1 pigment { marble } }\n");
+    const Pattern& wood = r.scene.pigments[size_t(shape_material(r, 0).pigment)].pattern;
+    EXPECT_EQ(wood.kind, PatternKind::Wood);
+    EXPECT_TRUE(wood.has_turbulence);
+    EXPECT_FLOAT_EQ(wood.turbulence.y, 0.3f);
+    EXPECT_EQ(wood.octaves, 4);
+    EXPECT_FLOAT_EQ(wood.omega, 0.7f);
+    EXPECT_FLOAT_EQ(wood.lambda, 3);
+    EXPECT_FLOAT_EQ(wood.frequency, 2);
+    EXPECT_FLOAT_EQ(wood.phase, 0.1f);
+    EXPECT_EQ(wood.wave, Wave::Sine);
+    // Marble is triangle-waved unless told otherwise.
+    EXPECT_EQ(r.scene.pigments[size_t(shape_material(r, 1).pigment)].pattern.wave, Wave::Triangle);
+}
+
+TEST(PovTextures, LayersTextureMapsAndNormals) {
+    const PovResult r = load_text(
+        "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { bozo color_map {\n"
+        "  [0 rgbt <1, 0, 0, 1>] [1 rgb 0] } } normal { bumps 0.4 scale 0.2 } } }\n"
+        "sphere { 0, 1 texture { gradient y texture_map { [0 pigment { rgb 1 }]\n"
+        "  [1 pigment { rgb 0 } finish { phong 1 }] } } }\n"
+        "sphere { 0, 1 texture { checker texture { pigment { rgb x } } texture { pigment { rgb y } } } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Material& layered = shape_material(r, 0);
+    ASSERT_GE(layered.pigment, 0);
+    const Pigment& layers = r.scene.pigments[size_t(layered.pigment)];
+    EXPECT_TRUE(layers.layers);
+    EXPECT_EQ(layers.count, 2u);
+    ASSERT_GE(layered.normal, 0);
+    EXPECT_FLOAT_EQ(r.scene.normal_patterns[size_t(layered.normal)].amount, 0.4f);
+    const Material& mapped = shape_material(r, 1);
+    ASSERT_GE(mapped.select, 0);
+    const MaterialSwitch& sw = r.scene.material_switches[size_t(mapped.select)];
+    ASSERT_EQ(sw.count, 2u);
+    EXPECT_FLOAT_EQ(r.scene.materials[r.scene.material_entries[sw.first + 1].material].specular, 1);
+    const Material& list = shape_material(r, 2);
+    ASSERT_GE(list.select, 0);
+    EXPECT_EQ(r.scene.material_switches[size_t(list.select)].pattern.kind, PatternKind::Checker);
+    EXPECT_NO_THROW(r.scene.validate());
+}
+
+TEST(PovTextures, FinishAndInterior) {
+    const PovResult r = load_text(
+        "sphere { 0, 1 pigment { rgbf <1, 1, 1, 0.9> } finish { specular 0.6 roughness 0.01\n"
+        "  phong 0.3 phong_size 80 brilliance 2 metallic reflection { 0.1, 0.8 fresnel\n"
+        "  falloff 3 metallic } conserve_energy } interior { ior 1.33 fade_distance 2\n"
+        "  fade_power 1 fade_color rgb <0, 0.5, 0> } }\n");
+    EXPECT_TRUE(r.warnings.empty());
+    const Material& m = shape_material(r);
+    EXPECT_FLOAT_EQ(m.blinn, 0.6f);
+    EXPECT_FLOAT_EQ(m.blinn_exponent, 100);
+    EXPECT_FLOAT_EQ(m.specular, 0.3f);
+    EXPECT_FLOAT_EQ(m.phong_exponent, 80);
+    EXPECT_FLOAT_EQ(m.brilliance, 2);
+    EXPECT_FLOAT_EQ(m.metallic, 1);
+    EXPECT_FLOAT_EQ(m.mirror, 0.8f);
+    EXPECT_FLOAT_EQ(m.mirror_min, 0.1f);
+    EXPECT_TRUE(m.mirror_fresnel);
+    EXPECT_TRUE(m.mirror_metallic);
+    EXPECT_FLOAT_EQ(m.mirror_falloff, 3);
+    EXPECT_TRUE(m.conserve_energy);
+    EXPECT_FALSE(m.fresnel_split);
+    EXPECT_FLOAT_EQ(m.ior, 1.33f);
+    EXPECT_FLOAT_EQ(m.fade_distance, 2);
+    EXPECT_FLOAT_EQ(m.fade_color.y, 0.5f);
+    EXPECT_FLOAT_EQ(m.transmission, 0.9f); // filter, with a solid colour
+}
+
+TEST(PovTextures, SkySphereFogAndFlags) {
+    const PovResult r = load_text(
+        "sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 rgb z] } } rotate x * 10 }\n"
+        "fog { distance 30 color rgbt <0.5, 0.5, 0.5, 0.25> }\n"
+        "sphere { 0, 1 no_shadow no_reflection }\nbox { 0, 1 no_image }\n");
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_GE(r.scene.sky, 0);
+    EXPECT_EQ(r.scene.pigments[size_t(r.scene.sky)].pattern.kind, PatternKind::Gradient);
+    EXPECT_FLOAT_EQ(r.scene.fog.distance, 30);
+    EXPECT_FLOAT_EQ(r.scene.fog.transmit, 0.25f);
+    EXPECT_EQ(r.scene.shape_objects[0].flags, kNoShadow | kNoReflection);
+    EXPECT_EQ(r.scene.shape_objects[1].flags, kNoImage);
+}
+
+TEST(PovTextures, ImageMapsAreTextures) {
+    test::TempDir d;
+    // A 2 x 2 image: red, green / blue, white.
+    const std::string png = d.path() + "/tiles.png";
+    const float px[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    auto out = OIIO::ImageOutput::create(png);
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
+    ASSERT_TRUE(out->open(png, spec));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
+    out->close();
+    const std::string scene = d.write(
+        "scene.pov", "plane { z, 0 pigment { image_map { png \"tiles.png\" map_type 0 "
+                     "interpolate 2 transmit all 0.25 } scale 2 } }\n");
+    const PovResult r = load_pov_scene(scene);
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_EQ(r.scene.textures.size(), 1u);
+    EXPECT_EQ(r.scene.textures[0].path, png);
+    EXPECT_EQ(r.scene.textures[0].mapping, TextureMapping::Planar);
+    EXPECT_NE(r.scene.textures[0].origin.find("scene.pov:1:24"), std::string::npos);
+    const Pigment& pg = r.scene.pigments[size_t(shape_material(r).pigment)];
+    EXPECT_EQ(pg.pattern.kind, PatternKind::Image);
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[pg.first].color[4], 0.25f);
+    EXPECT_NE(error_of("plane { z, 0 pigment { image_map { png \"missing.png\" } } }")
+                  .find("scene.pov:1:40: error: cannot find image file 'missing.png'"),
+              std::string::npos);
+}
+
+TEST(PovTextures, UnsupportedPatternsAndWarpsWarn) {
+    const PovResult r = load_text(
+        "sphere { 0, 1 pigment { function { x } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+        "sphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n"
+        "sphere { 0, 1 normal { bump_map { png \"x.png\" } } }\n");
+    ASSERT_EQ(r.warnings.size(), 3u);
+    EXPECT_NE(r.warnings[0].find("unsupported pigment pattern 'function'"), std::string::npos);
+    EXPECT_NE(r.warnings[1].find("unsupported warp 'black_hole'"), std::string::npos);
+    EXPECT_NE(r.warnings[2].find("unsupported bump_map"), std::string::npos);
+    EXPECT_FLOAT_EQ(shape_material(r, 0).color.x, 0.5f); // the map's average
+}
+
+TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
+    const PovResult r = load_text(
+        "#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }\n"
+        "#declare N = normal { ripples 0.7 }\n"
+        "#declare F = finish { phong 0.9 }\n"
+        "#declare CM = color_map { [0 rgb x] [1 rgb y] }\n"
+        "#declare T = texture { pigment { P scale 2 } normal { N } finish { F } }\n"
+        "#declare L = texture { T } texture { pigment { rgbt 1 } }\n"
+        "#declare M = material { texture { T } interior { ior 1.2 } }\n"
+        "sphere { 0, 1 texture { T } }\n"
+        "sphere { 0, 1 texture { L } }\n"
+        "sphere { 0, 1 material { M } }\n"
+        "sphere { 0, 1 pigment { onion color_map { CM } } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Material& t = shape_material(r, 0);
+    EXPECT_EQ(r.scene.pigments[size_t(t.pigment)].pattern.kind, PatternKind::Granite);
+    EXPECT_EQ(r.scene.normal_patterns[size_t(t.normal)].pattern.kind, PatternKind::Ripples);
+    EXPECT_FLOAT_EQ(t.specular, 0.9f);
+    EXPECT_TRUE(r.scene.pigments[size_t(shape_material(r, 1).pigment)].layers);
+    EXPECT_FLOAT_EQ(shape_material(r, 2).ior, 1.2f);
+    const Pigment& onion = r.scene.pigments[size_t(shape_material(r, 3).pigment)];
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[onion.first + 1].color[1], 1);
+}
+
+} // namespace
+} // namespace sheaf::io::pov

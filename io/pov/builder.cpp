@@ -99,7 +99,7 @@ struct Builder {
             }
             return -1;
         case PovKind::Shape: {
-            if (std::fabs(o.local.determinant()) < 1e-30f) {
+            if (std::fabs(o.local.determinant()) < 1e-20f) { // as Scene::validate
                 p.unsupported(o.where, "degenerate shape (a zero scale; left out)");
                 return -1;
             }
@@ -225,7 +225,7 @@ double build_scene(Parser& p, Scene& scene) {
     }
     b.camera();
     scene.background = b.decode(m.background);
-    scene.sky = b.materials.sky(m.sky, m.sky_local);
+    scene.sky = b.materials.sky(m.sky.pigments, m.sky.local);
     if (m.fog) {
         scene.fog.distance = float(m.fog_distance);
         scene.fog.color = b.decode(m.fog_color);

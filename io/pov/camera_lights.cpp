@@ -175,32 +175,41 @@ void Parser::parse_background() {
     expect_sym("}");
 }
 
+PovSky Parser::parse_sky_sphere() {
+    // Its pigments, layered (later ones on top), seen along each ray that leaves the scene.
+    expect_sym("{");
+    PovSky sky;
+    Value declared;
+    if (accept_declared(VType::Other, declared, "a sky_sphere")) {
+        if (declared.str != "sky_sphere") error_expected(peek(), "a sky_sphere identifier");
+        sky = declared.as<PovSky>();
+    }
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) break;
+        Affine m;
+        if (parse_transform_item(m)) {
+            sky.local = m * sky.local;
+            continue;
+        }
+        if (accept_kw("pigment")) {
+            auto pg = std::make_shared<PovPigment>(*parse_pigment(PovPigment{}));
+            // Transforms before a pigment do not move it: it starts in the sky's space now.
+            if (std::fabs(sky.local.determinant()) > 1e-30f)
+                pg->local = sky.local.inverse() * pg->local;
+            sky.pigments.push_back(pg);
+        } else if (accept_kw("emission")) {
+            parse_color();
+        } else {
+            error_expected(t, "pigment, emission, a transform or '}'");
+        }
+    }
+    return sky;
+}
+
 void Parser::parse_atmospheric(const Token& kw) {
     if (kw.text == "sky_sphere") {
-        // Its pigments, layered (later ones on top), seen along each ray that leaves the scene.
-        expect_sym("{");
-        model.sky.clear();
-        model.sky_local = Affine();
-        for (;;) {
-            const Token t = peek();
-            if (accept_sym("}")) break;
-            Affine m;
-            if (parse_transform_item(m)) {
-                model.sky_local = m * model.sky_local;
-                continue;
-            }
-            if (accept_kw("pigment")) {
-                auto pg = std::make_shared<PovPigment>(*parse_pigment(PovPigment{}));
-                // Transforms before a pigment do not move it: it starts in the sky's space now.
-                if (std::fabs(model.sky_local.determinant()) > 1e-30f)
-                    pg->local = model.sky_local.inverse() * pg->local;
-                model.sky.push_back(pg);
-            } else if (accept_kw("emission")) {
-                parse_color();
-            } else {
-                error_expected(t, "pigment, emission, a transform or '}'");
-            }
-        }
+        model.sky = parse_sky_sphere();
         return;
     }
     if (kw.text == "fog") {
@@ -312,7 +321,13 @@ Value Parser::parse_rvalue() {
             parse_camera(c);
             return Value::boxed(VType::Camera, c);
         }
-        if (k == "fog" || k == "media" || k == "rainbow" || k == "sky_sphere" ||
+        if (k == "sky_sphere") {
+            advance();
+            Value v = Value::boxed(VType::Other, parse_sky_sphere());
+            v.str = k;
+            return v;
+        }
+        if (k == "fog" || k == "media" || k == "rainbow" ||
             k == "density" || k == "interior_texture" || k == "normal_map" ||
             k == "slope_map" || k == "spline" || k == "density_map" ||
             k == "photons" || k == "radiosity" || k == "material_map") {

@@ -157,6 +157,12 @@ struct PovCamera {
     Affine transform; // applied after everything else
 };
 
+/// sky_sphere { pigments transforms }: its pigments bottom first, in the sky's space.
+struct PovSky {
+    std::vector<std::shared_ptr<const PovPigment>> pigments;
+    Affine local;
+};
+
 /// Everything the parser collected.
 struct PovModel {
     std::vector<PovObject> objects;
@@ -169,9 +175,7 @@ struct PovModel {
     std::array<double, 3> ambient_light{1, 1, 1};
     int max_trace_level = -1;
     PovTexture default_texture;
-    /// sky_sphere: its pigments, bottom first (layered like a texture's), in the sky's space.
-    std::vector<std::shared_ptr<const PovPigment>> sky;
-    Affine sky_local;
+    PovSky sky; // no pigments: no sky_sphere
     /// Constant fog (fog_type 1).
     bool fog = false;
     double fog_distance = 0;

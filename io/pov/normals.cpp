@@ -26,14 +26,18 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
         if (parse_pattern_name(n.pattern, list, supported)) {
             if (!supported) unsupported(t, "normal pattern '" + t.text + "' (no normal change)");
             have = supported;
-            // The bump size may follow the pattern (and its own arguments).
-            if (starts_expression(peek()) && !is_sym_tok(peek(), "<")) n.amount = parse_float();
+            // The bump size may follow the pattern (and its own arguments), after a comma too.
+            if (accept_sym(",") || (starts_expression(peek()) && !is_sym_tok(peek(), "<")))
+                n.amount = parse_float();
             continue;
         }
         const std::string& k = t.text;
         advance();
         if (k == "bump_size") {
             n.amount = parse_float();
+        } else if (k == "average") {
+            unsupported(t, "normal average (no normal change)");
+            have = false;
         } else if (k == "slope_map" || k == "normal_map") {
             unsupported(t, k + " (the pattern's own slope is used)");
             skip_block();

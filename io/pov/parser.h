@@ -225,6 +225,7 @@ class Parser {
     void parse_global_settings();
     void parse_background();
     void parse_atmospheric(const Token& kw);
+    PovSky parse_sky_sphere(); // after the keyword sky_sphere
     bool parse_statement(); // one top-level item; false at the end of the scene
 
     // ---- files and random streams ----

@@ -58,7 +58,7 @@ const std::map<std::string, int>& unsupported_patterns() {
         {"aoi", 0},       {"cubic", 6},    {"density_file", 0}, {"facets", 0},
         {"function", 0},  {"image_pattern", 0}, {"julia", 0},   {"magnet", 0},
         {"mandel", 0},    {"object", 2},   {"pavement", 0},     {"pigment_pattern", 0},
-        {"slope", 0},     {"tiling", 0},   {"fractal", 0},
+        {"slope", 0},     {"tiling", 0},   {"fractal", 0},      {"tiles", 2},
     };
     return m;
 }
@@ -103,8 +103,19 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (k == "magnet") parse_float();
         if (starts_expression(peek())) parse_float();
     } else if (k == "slope" || k == "aoi") {
-        if (is_sym_tok(peek(), "<") || (peek().kind == TokKind::Ident && lookup(peek().text)))
-            parse_vector();
+        if (starts_expression(peek())) {
+            parse_expr(); // the direction, then optionally the range: slope y, 0, 1
+            if (accept_sym(",")) {
+                parse_float();
+                accept_sym(",");
+                parse_float();
+            }
+        }
+    } else if (k == "facets") {
+        while (accept_kw("coords") || accept_kw("size")) parse_float();
+    } else if (k == "density_file") {
+        accept_kw("df3");
+        parse_string();
     }
     if (k == "object" && is_sym_tok(peek(), "{")) skip_block();
     return true;
@@ -187,7 +198,7 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         }
     } else if (k == "noise_generator" || k == "form" || k == "metric" || k == "offset" ||
                k == "control0" || k == "control1" || k == "orientation" || k == "dist_exp" ||
-               k == "accuracy" || k == "max_iteration" || k == "exponent" ||
+               k == "accuracy" || k == "max_iteration" || k == "exponent" || k == "interpolate" ||
                k == "interior" || k == "exterior") {
         // Shape details of patterns Sheaf draws its own way: read and not used.
         advance();

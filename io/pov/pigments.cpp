@@ -47,6 +47,10 @@ bool Parser::is_color_start(const Token& t) {
     static const std::set<std::string> k = {"color", "colour", "rgb",   "rgbf",  "rgbt",
                                             "rgbft", "srgb",   "srgbf", "srgbt", "srgbft"};
     if (t.kind == TokKind::Ident && k.count(t.text)) return true;
+    // Components alone: `red 1 green 0.5`.
+    if (is_kw_tok(t, "red") || is_kw_tok(t, "green") || is_kw_tok(t, "blue") ||
+        is_kw_tok(t, "filter") || is_kw_tok(t, "transmit"))
+        return !lookup(t.text);
     if (t.kind != TokKind::Ident) return starts_expression(t);
     const Value* v = lookup(t.text);
     return v && v->numeric();
@@ -199,7 +203,9 @@ std::vector<PovMapEntry> Parser::parse_pigment_map() {
         const Token e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
         PovMapEntry entry;
-        entry.value = parse_float();
+        entry.value = 1; // average maps may leave the weight out
+        if (peek().kind == TokKind::Number || (starts_expression(peek()) && !is_color_start(peek())))
+            entry.value = parse_float();
         accept_sym(",");
         PovPigment p;
         if (accept_kw("pigment")) {

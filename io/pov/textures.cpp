@@ -103,6 +103,11 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
             if (!list_given) tx.map_entries.clear(), list_given = true;
             tx.map_entries.push_back({0.0, parse_texture_block(PovTexture{})});
             accept_sym(",");
+        } else if (k == "average") { // of a texture_map: not supported, the first texture is used
+            pattern_at = t;
+            tx = PovTexture{};
+            tx.is_map = true;
+            unsupported_pattern = true;
         } else if (k == "material_map") {
             unsupported(t, "material_map (ignored)");
             skip_block();
@@ -116,8 +121,10 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
     if (tx.is_map) {
         if (unsupported_pattern || tx.map_entries.empty()) {
             if (unsupported_pattern)
-                unsupported(pattern_at,
-                            "texture pattern '" + pattern_at.text + "' (its first texture is used)");
+                unsupported(pattern_at, "texture pattern '" + pattern_at.text + "' (" +
+                                            (tx.map_entries.empty() ? "the default texture"
+                                                                    : "its first texture") +
+                                            " is used)");
             PovTextureRef first =
                 tx.map_entries.empty() ? nullptr : tx.map_entries.front().second;
             const Affine local = tx.local;
@@ -145,7 +152,9 @@ std::vector<std::pair<double, PovTextureRef>> Parser::parse_texture_map() {
     while (!accept_sym("}")) {
         const Token e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
-        const double v = parse_float();
+        double v = 1; // average maps may leave the weight out
+        if (peek().kind == TokKind::Number || (starts_expression(peek()) && !is_color_start(peek())))
+            v = parse_float();
         accept_sym(",");
         PovTextureRef tex;
         if (accept_kw("texture")) {

@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""POV-Ray 3.7's example scenes through `render --check`.
+
+Copies the examples (Debian's povray-examples) to a writable folder, checks every scene from
+its own folder (scenes #write files and #include their neighbours), and prints the counts:
+scenes, parsed, usable with no unsupported feature; then the unsupported features by the
+number of scenes they keep from being clean, and every scene that fails with its error.
+
+Exits 77 (skipped) when the examples are not installed, 1 when fewer than --min-parsed of
+the scenes parse or fewer than --min-clean are clean, 0 otherwise.
+
+Usage: corpus_check.py RENDER WORKDIR [--examples DIR] [--jobs N] [--timeout S]
+"""
+import argparse
+import collections
+import concurrent.futures
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+
+def check(render, root, scene, timeout):
+    """(scene, 'ok'|'error'|'timeout', warnings, message)."""
+    folder = os.path.join(root, os.path.dirname(scene))
+    try:
+        p = subprocess.run([render, "--check", os.path.basename(scene)], cwd=folder,
+                           capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return scene, "timeout", [], f"no answer in {timeout} s"
+    warnings = [l for l in p.stderr.splitlines() if ": warning: unsupported " in l]
+    if p.returncode == 0 and "usable" in p.stdout:
+        return scene, "ok", warnings, ""
+    errors = [l for l in p.stderr.splitlines() if "error" in l]
+    if p.returncode not in (1, 2):  # a crash, never acceptable
+        return scene, "crash", warnings, f"exit code {p.returncode}: {p.stderr[-300:]}"
+    return scene, "error", warnings, errors[-1] if errors else p.stderr.strip()[-300:]
+
+
+def feature(warning):
+    """The unsupported feature a warning names, without the position and the remark."""
+    text = warning.split(": warning: unsupported ", 1)[1]
+    text = re.sub(r"\s*\(.*", "", text)
+    return re.sub(r"layered texture '.*", "layered texture", text)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("render")
+    ap.add_argument("workdir")
+    ap.add_argument("--examples", default="/usr/share/povray-3.7/scenes")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--timeout", type=float, default=300)
+    ap.add_argument("--min-parsed", type=float, default=0.90)
+    ap.add_argument("--min-clean", type=float, default=0.25)
+    a = ap.parse_args()
+    a.render = os.path.abspath(a.render)
+    if not os.path.isdir(a.examples):
+        print(f"skipped: {a.examples} is not installed (apt-get install povray-examples)")
+        return 77
+    root = os.path.join(os.path.abspath(a.workdir), "scenes")
+    shutil.rmtree(root, ignore_errors=True)
+    shutil.copytree(a.examples, root, symlinks=False)
+    scenes = sorted(os.path.relpath(os.path.join(d, f), root)
+                    for d, _, files in os.walk(root) for f in files if f.endswith(".pov"))
+    with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
+        results = list(pool.map(lambda s: check(a.render, root, s, a.timeout), scenes))
+
+    parsed = [r for r in results if r[1] == "ok"]
+    clean = [r for r in parsed if not r[2]]
+    blockers = collections.Counter()
+    for _, _, warnings, _ in parsed:
+        for f in {feature(w) for w in warnings}:
+            blockers[f] += 1
+    n = len(scenes)
+    print(f"POV-Ray 3.7 examples: {n} scenes, {len(parsed)} parsed ({len(parsed) / n:.1%}), "
+          f"{len(clean)} usable with no unsupported feature ({len(clean) / n:.1%})")
+    print("\nUnsupported features, by the number of parsed scenes that use them:")
+    for f, count in blockers.most_common():
+        print(f"  {count:4d}  {f}")
+    print("\nScenes that do not parse:")
+    for scene, status, _, message in results:
+        if status != "ok":
+            print(f"  {scene}: {status}: {message}")
+    crashes = [r for r in results if r[1] in ("crash", "timeout")]
+    ok = len(parsed) >= a.min_parsed * n and len(clean) >= a.min_clean * n and not crashes
+    if not ok:
+        print(f"\nFAILED: need {a.min_parsed:.0%} parsed, {a.min_clean:.0%} clean, "
+              f"no crash or timeout ({len(crashes)})")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,6 +1,7 @@
 // <material> and <texture>. A material's attributes are the fields of sheaf::Material, listed
-// once in kMaterialFields: a new numeric or colour field is one line there (and one row in
-// docs/xml-scene.md).
+// once in kMaterialFields: a new number, colour or flag field is one line there (and one row in
+// docs/xml-scene.md). The procedural pigments, normals and material switches (Material::pigment,
+// normal, select) have no XML form yet.
 #include "io/xml/xml_reader.h"
 
 #include <cmath>
@@ -9,24 +10,50 @@
 namespace sheaf::io::xml {
 namespace {
 
-/// One attribute of <material>: a number or a colour field of Material.
+/// One attribute of <material>: a number, colour or flag field of Material.
 struct MaterialField {
     const char* attribute;
-    float Material::*number;
-    Vec3 Material::*colour;
-    bool positive; // numbers: > 0 (else >= 0)
+    float Material::*number = nullptr;
+    Vec3 Material::*colour = nullptr;
+    bool Material::*flag = nullptr;
+    bool positive = false; // numbers: > 0 (else >= 0)
 };
 
-constexpr MaterialField kMaterialFields[] = {
-    {"color", nullptr, &Material::color, false},
-    {"emission", nullptr, &Material::emission, false},
-    {"ambient", &Material::ambient, nullptr, false},
-    {"diffuse", &Material::diffuse, nullptr, false},
-    {"specular", &Material::specular, nullptr, false},
-    {"phong_exponent", &Material::phong_exponent, nullptr, false},
-    {"mirror", &Material::mirror, nullptr, false},
-    {"transmission", &Material::transmission, nullptr, false},
-    {"ior", &Material::ior, nullptr, true},
+constexpr MaterialField number(const char* a, float Material::*f, bool positive = false) {
+    return {a, f, nullptr, nullptr, positive};
+}
+constexpr MaterialField colour(const char* a, Vec3 Material::*f) {
+    return {a, nullptr, f, nullptr, false};
+}
+constexpr MaterialField flag(const char* a, bool Material::*f) {
+    return {a, nullptr, nullptr, f, false};
+}
+
+const MaterialField kMaterialFields[] = {
+    colour("color", &Material::color),
+    colour("emission", &Material::emission),
+    number("ambient", &Material::ambient),
+    number("diffuse", &Material::diffuse),
+    number("specular", &Material::specular),
+    number("phong_exponent", &Material::phong_exponent),
+    number("mirror", &Material::mirror),
+    number("transmission", &Material::transmission),
+    number("ior", &Material::ior, true),
+    // POV-Ray's finish and interior terms (core/scene/scene.h).
+    number("brilliance", &Material::brilliance),
+    number("blinn", &Material::blinn),
+    number("blinn_exponent", &Material::blinn_exponent),
+    number("metallic", &Material::metallic),
+    colour("mirror_color", &Material::mirror_color),
+    number("mirror_min", &Material::mirror_min),
+    number("mirror_falloff", &Material::mirror_falloff),
+    flag("mirror_fresnel", &Material::mirror_fresnel),
+    flag("mirror_metallic", &Material::mirror_metallic),
+    flag("conserve_energy", &Material::conserve_energy),
+    flag("fresnel_split", &Material::fresnel_split),
+    colour("fade_color", &Material::fade_color),
+    number("fade_distance", &Material::fade_distance),
+    number("fade_power", &Material::fade_power),
 };
 
 } // namespace
@@ -43,6 +70,10 @@ void SceneReader::read_material(const pugi::xml_node& node) {
     for (const MaterialField& f : kMaterialFields) {
         if (f.colour) {
             a.get(f.attribute, m.*f.colour, true);
+            continue;
+        }
+        if (f.flag) {
+            a.get(f.attribute, m.*f.flag);
             continue;
         }
         float v = 0;

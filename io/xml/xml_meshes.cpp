@@ -190,6 +190,7 @@ void SceneReader::read_object(const pugi::xml_node& node) {
     a.get("name", o.name);
     const bool named_mesh = a.get("mesh", mesh);
     o.material = material_of(a, std::nullopt);
+    o.flags = object_flags(a);
     a.finish();
     bool has_mesh = false;
     if (named_mesh) {

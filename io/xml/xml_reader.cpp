@@ -43,6 +43,15 @@ uint32_t SceneReader::material_of(Attributes& a, std::optional<uint32_t> fallbac
     return *default_material_;
 }
 
+uint8_t SceneReader::object_flags(Attributes& a) {
+    bool no_shadow = false, no_reflection = false, no_image = false;
+    a.get("no_shadow", no_shadow);
+    a.get("no_reflection", no_reflection);
+    a.get("no_image", no_image);
+    return uint8_t((no_shadow ? kNoShadow : 0) | (no_reflection ? kNoReflection : 0) |
+                   (no_image ? kNoImage : 0));
+}
+
 void SceneReader::read_scene(const pugi::xml_node& root) {
     Attributes a(ctx_, root);
     int version = 1;

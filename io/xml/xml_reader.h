@@ -37,6 +37,8 @@ class SceneReader {
     /// The material an element names in its 'material' attribute, else `fallback`, else the
     /// scene's default material (added when first needed).
     uint32_t material_of(Attributes& a, std::optional<uint32_t> fallback);
+    /// ObjectFlag bits from the attributes no_shadow, no_reflection and no_image.
+    static uint8_t object_flags(Attributes& a);
 
     // xml_transform.cpp: whether `child` is a transform element; if so, applies it after `t`.
     bool apply_transform(const pugi::xml_node& child, Affine& t) const;

@@ -36,7 +36,8 @@ const char* kFullScene = R"(<?xml version="1.0"?>
             phong_exponent="40"/>
   <material name="green" base="red" color="0 1 0"/>
   <material name="grey" color="0.5" ambient="1" diffuse="0"/>
-  <material name="glass" color="1" transmission="0.9" ior="1.5" mirror="0.05"/>
+  <material name="glass" color="1" transmission="0.9" ior="1.5" mirror="0.05"
+            fade_color="0.2 0.4 0.6" fade_distance="2" fade_power="1" fresnel_split="false"/>
   <material name="glow" color="0" emission="1 1 0" ambient="0" diffuse="0"/>
   <mesh name="quad">
     <positions>-1 -1 0  1 -1 0  1 1 0  -1 1 0</positions>
@@ -44,7 +45,7 @@ const char* kFullScene = R"(<?xml version="1.0"?>
     <uvs>0 0  1 0  1 1  0 1</uvs>
     <triangles>0 1 2  0 2 3</triangles>
   </mesh>
-  <object name="left quad" mesh="quad" material="red">
+  <object name="left quad" mesh="quad" material="red" no_image="false" no_shadow="true">
     <scale value="0.8"/>
     <translate value="-2.5 2 0"/>
   </object>
@@ -84,7 +85,11 @@ const char* kFullScene = R"(<?xml version="1.0"?>
       <translate value="0 0 0.5"/>
     </merge>
   </union>
-  <box name="matrix box" min="-0.2 -0.2 -0.2" max="0.2 0.2 0.2" material="grey">
+  <material name="finish" brilliance="2" blinn="0.5" blinn_exponent="30" metallic="0.5"
+            mirror="0.3" mirror_color="1 0.5 0.25" mirror_min="0.1" mirror_falloff="2"
+            mirror_fresnel="true" mirror_metallic="true" conserve_energy="true"/>
+  <box name="matrix box" min="-0.2 -0.2 -0.2" max="0.2 0.2 0.2" material="finish"
+       no_shadow="true" no_reflection="true">
     <matrix value="1 0 0 3.5  0 1 0 0  0 0 1 0"/>
   </box>
 </scene>
@@ -113,11 +118,24 @@ TEST(XmlScene, AFullSceneLoadsAsWritten) {
     EXPECT_EQ(s.lights[2].type, LightType::Spot);
     EXPECT_FLOAT_EQ(s.lights[2].spot_falloff, 30.0f);
     EXPECT_LT(s.lights[2].direction.z, 0.0f); // towards look_at
-    ASSERT_GE(s.materials.size(), 5u);
+    ASSERT_GE(s.materials.size(), 6u);
     EXPECT_FLOAT_EQ(s.materials[1].color.y, 1.0f); // green, based on red
     EXPECT_FLOAT_EQ(s.materials[1].ambient, 0.2f);
     EXPECT_FLOAT_EQ(s.materials[3].transmission, 0.9f);
     EXPECT_FLOAT_EQ(s.materials[4].emission.x, 1.0f);
+    EXPECT_FLOAT_EQ(s.materials[3].fade_color.y, 0.4f);
+    EXPECT_FLOAT_EQ(s.materials[3].fade_distance, 2.0f);
+    EXPECT_FALSE(s.materials[3].fresnel_split);
+    const Material& finish = s.materials[5];
+    EXPECT_FLOAT_EQ(finish.brilliance, 2.0f);
+    EXPECT_FLOAT_EQ(finish.blinn_exponent, 30.0f);
+    EXPECT_FLOAT_EQ(finish.metallic, 0.5f);
+    EXPECT_FLOAT_EQ(finish.mirror_color.z, 0.25f);
+    EXPECT_FLOAT_EQ(finish.mirror_min, 0.1f);
+    EXPECT_FLOAT_EQ(finish.mirror_falloff, 2.0f);
+    EXPECT_TRUE(finish.mirror_fresnel && finish.mirror_metallic && finish.conserve_energy);
+    EXPECT_EQ(s.objects[0].flags, kNoShadow);
+    EXPECT_EQ(s.shape_objects[5].flags, kNoShadow | kNoReflection);
     ASSERT_EQ(s.objects.size(), 3u);
     EXPECT_EQ(s.objects[0].name, "left quad");
     EXPECT_NEAR(s.objects[0].transform.m[0][3], -2.5f, 1e-6f);

@@ -53,7 +53,10 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
         ctx_.fail(node, "CSG nested deeper than " + std::to_string(kMaxCsgDepth) + " levels");
     const std::string_view kind = node.name();
     Attributes a(ctx_, node);
-    if (top_level) a.get("name", o.name);
+    if (top_level) {
+        a.get("name", o.name);
+        o.flags = object_flags(a);
+    }
     CsgNode n;
     a.get("inverse", n.inverse);
     const uint32_t index = uint32_t(o.nodes.size());

@@ -159,11 +159,16 @@ SHEAF_HD_INLINE float shape_value(const Pattern& pt, float raw) {
 
 } // namespace pattern_detail
 
+/// Turbulence displaces by its amount times this and the fractal vector noise.
+constexpr float kTurbulenceScale = 4.0f;
+
 /// The pattern-space point of world point `p`, turbulence applied.
 SHEAF_HD_INLINE Vec3 pattern_point(const Pattern& pt, Vec3 world) {
     Vec3 p = pt.to_pattern.point(world);
+    // The factor makes `turbulence 0.1` move points about as far as it does in POV-Ray.
     if (pt.has_turbulence)
-        p += pt.turbulence * vector_turbulence(p, pt.octaves, pt.omega, pt.lambda);
+        p += pt.turbulence * vector_turbulence(p, pt.octaves, pt.omega, pt.lambda) *
+             kTurbulenceScale;
     return p;
 }
 

@@ -193,3 +193,49 @@ TEST(ProceduralRender, FogAndSkyColourWhatTheyShould) {
 
 } // namespace
 } // namespace sheaf
+
+namespace sheaf {
+namespace {
+
+// A sphere between a light and a floor: opaque, it casts a full shadow; with a pigment that
+// transmits half the light, the shadow keeps half of it for each surface the shadow ray
+// crosses (POV-Ray's filtered shadows: two surfaces, a quarter).
+TEST(ProceduralRender, TransparentSurfacesFilterShadows) {
+    auto floor_under_ball = [](float transmit, float filter) {
+        Scene s;
+        Material floor, ball;
+        ball.color = Vec3(1, 0.5f, 0.25f);
+        Pigment pg;
+        pg.color[0] = 1, pg.color[1] = 0.5f, pg.color[2] = 0.25f, pg.color[3] = filter,
+        pg.color[4] = transmit;
+        s.pigments.push_back(pg);
+        ball.pigment = 0;
+        ball.fresnel_split = false;
+        const uint32_t mf = s.add_material(floor), mb = s.add_material(ball);
+        s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+        s.add_shape("ball", Shape{ShapeKind::Sphere}, mb, Affine::translate(Vec3(0, 1, 0)));
+        s.add_light(Light{Vec3(0, 6, 0), Vec3(1.0f)});
+        s.camera.position = Vec3(0, 0, 6); // below the ball's height: it hides little floor
+        s.camera.look_at = Vec3(0, -1, 0);
+        s.settings["trace.depth"] = "0";
+        const PreparedScene p = prepare_scene(s);
+        const Frame f = render(p, {{"width", "41"}, {"height", "31"}});
+        Frame brute = render(p, {{"width", "41"}, {"height", "31"}, {"accel", "brute"}});
+        EXPECT_TRUE(same_image(f, brute));
+        return pixel(f, 20, 15); // the look_at point, right under the ball
+    };
+    const Vec3 opaque = floor_under_ball(0, 0), half = floor_under_ball(0.5f, 0);
+    const Vec3 filtered = floor_under_ball(0, 1);
+    const Vec3 clear = floor_under_ball(1, 0);
+    EXPECT_GT(half.x, opaque.x);
+    EXPECT_GT(clear.x, half.x);
+    // Direct light on the floor scales by 0.25 (two crossings at 0.5); the ambient term stays.
+    const float ambient = opaque.x;
+    EXPECT_NEAR((half.x - ambient) / (clear.x - ambient), 0.25f, 0.01f);
+    // A filter tints by the colour at each crossing: green 0.5^2, blue 0.25^2 of the light.
+    EXPECT_NEAR((filtered.y - ambient) / (clear.y - ambient), 0.25f, 0.01f);
+    EXPECT_NEAR((filtered.z - ambient) / (clear.z - ambient), 0.0625f, 0.01f);
+}
+
+} // namespace
+} // namespace sheaf

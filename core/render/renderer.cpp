@@ -191,8 +191,10 @@ class FramePipeline {
 
     void accumulate(const RayBatch& batch, const TraceResult& r) {
         // In ray order, one thread: the sums, and so the image, are the same on every accel.
+        const bool filtered = !r.pass_log.empty();
         for (size_t i = 0; i < batch.size(); ++i)
-            if (!r.occluded[i]) radiance_[batch.pixel[i]] += batch.weight[i];
+            if (!r.occluded[i])
+                radiance_[batch.pixel[i]] += filtered ? batch.weight[i] * r.pass(i) : batch.weight[i];
     }
 
     void count_tests(const RayBatch& batch, const TraceResult& r) {

@@ -4,6 +4,7 @@
 #include "core/base/timer.h"
 #include "core/geometry/ray_triangle.h"
 #include "core/hash/ray_hash.h"
+#include "core/render/shadow_pass.h"
 #include "core/rsh/hierarchy.h"
 #include "core/scene/prim_intersect.h"
 #include "core/sort/ray_order.h"
@@ -42,14 +43,35 @@ void record_hit(TraceResult& out, bool any, uint32_t ray, float t, uint32_t prim
     }
 }
 
+// A shadow ray's hit on a primitive that may let light through: what it keeps multiplies in
+// (as a sum of logs, in any order); an opaque crossing occludes. False when it occluded.
+bool record_pass(const PreparedScene& scene, TraceResult& out, uint32_t ray, const Ray& r,
+                 float t, uint32_t prim) {
+    const Vec3 pass = shadow_pass(scene, prim, r, t);
+    if (max_component(pass) <= 0.0f) {
+        std::atomic_ref<uint8_t>(out.occluded[ray]).store(1, std::memory_order_relaxed);
+        return false;
+    }
+    for (int c = 0; c < 3; ++c)
+        if (const uint64_t q = pass_to_log(pass[c]))
+            std::atomic_ref<uint64_t>(out.pass_log[3 * size_t(ray) + c])
+                .fetch_add(q, std::memory_order_relaxed);
+    return true;
+}
+
+// Shadow rays pass transparent primitives; every other any-hit query stops at them.
+bool passes(const PreparedScene& scene, bool shadow, uint32_t prim) {
+    return shadow && scene.prim_flag(prim, kPrimMayPass);
+}
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // ---------------------------------------------------------------------------------------------
 // brute: every ray against every primitive. Any-hit queries stop at the first hit.
-void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, uint8_t skip,
-                 Counter& final, TraceResult& out) {
+void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, bool shadow,
+                 uint8_t skip, Counter& final, TraceResult& out) {
     const size_t prims = scene.prim_count();
     parallel_for_range(
         "brute.trace", batch.size(),
@@ -65,6 +87,10 @@ void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, ui
                     float t;
                     if (!intersect_prim(scene, uint32_t(p), r, t)) continue;
                     ++hits;
+                    if (any && passes(scene, shadow, uint32_t(p))) {
+                        if (!record_pass(scene, out, uint32_t(i), r, t, uint32_t(p))) break;
+                        continue;
+                    }
                     if (any) {
                         out.occluded[i] = 1;
                         break;
@@ -84,10 +110,10 @@ void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, ui
 class Traversal {
   public:
     Traversal(const PreparedScene& scene, const RayHierarchy& h, const TrackedVector<Ray>& rays,
-              const std::vector<uint32_t>& perm, bool any, uint8_t skip, size_t batch,
-              MemoryTracker& memory, TraceResult& out)
+              const std::vector<uint32_t>& perm, bool any, bool shadow, uint8_t skip,
+              size_t batch, MemoryTracker& memory, TraceResult& out)
         : levels_(size_t(h.depth) + 1), scene_(scene), h_(h), rays_(rays), perm_(perm), any_(any),
-          skip_(skip), batch_(batch), out_(out),
+          shadow_(shadow), skip_(skip), batch_(batch), out_(out),
           local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
         for (int k = 0; k <= h.depth; ++k) buffers_.push_back(tracked_vector<Pair>(memory));
         leaf_pairs_.assign(h.node_count(1), 0);
@@ -207,18 +233,26 @@ class Traversal {
                     t += last - first;
                     if (scene_.is_triangle(pr.prim)) { // the hot path, inline
                         const TriangleVerts& tri = scene_.tris[pr.prim];
+                        const bool pass = any_ && passes(scene_, shadow_, pr.prim);
                         for (size_t j = first; j < last; ++j) {
                             TriangleHit hit;
                             if (!intersect_triangle(rays_[j], tri.a, tri.b, tri.c, hit)) continue;
                             ++hcount;
-                            record_hit(out_, any_, perm_[j], hit.t, pr.prim);
+                            if (pass)
+                                record_pass(scene_, out_, perm_[j], rays_[j], hit.t, pr.prim);
+                            else
+                                record_hit(out_, any_, perm_[j], hit.t, pr.prim);
                         }
                     } else {
+                        const bool pass = any_ && passes(scene_, shadow_, pr.prim);
                         for (size_t j = first; j < last; ++j) {
                             float th;
                             if (!intersect_prim(scene_, pr.prim, rays_[j], th)) continue;
                             ++hcount;
-                            record_hit(out_, any_, perm_[j], th, pr.prim);
+                            if (pass)
+                                record_pass(scene_, out_, perm_[j], rays_[j], th, pr.prim);
+                            else
+                                record_hit(out_, any_, perm_[j], th, pr.prim);
                         }
                     }
                 }
@@ -233,6 +267,7 @@ class Traversal {
     const TrackedVector<Ray>& rays_;
     const std::vector<uint32_t>& perm_;
     bool any_;
+    bool shadow_; // shadow rays pass transparent primitives (record_pass)
     uint8_t skip_; // primitives whose objects have these flags are not candidates
     size_t batch_;
     TraceResult& out_;
@@ -283,6 +318,12 @@ int hash_rays(const PreparedScene& scene, const RayBatch& batch, HashMode mode,
 
 } // namespace
 
+Vec3 TraceResult::pass(size_t i) const {
+    if (pass_log.empty()) return Vec3(1.0f);
+    return Vec3(log_to_pass(pass_log[3 * i]), log_to_pass(pass_log[3 * i + 1]),
+                log_to_pass(pass_log[3 * i + 2]));
+}
+
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
                  Stats& stats, MemoryTracker& memory, TraceResult& out) {
     const size_t n = batch.size();
@@ -299,6 +340,12 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
         out.occluded.assign(n, 0);
     else
         out.closest.assign(n, kNoHit);
+    out.pass_log.clear();
+    if (batch.type == RayType::Shadow) {
+        bool transparent = false;
+        for (uint8_t f : scene.prim_flags) transparent = transparent || (f & kPrimMayPass);
+        if (transparent) out.pass_log.assign(3 * n, 0);
+    }
     out.tests.assign(n, 0);
     if (n == 0 || scene.prim_count() == 0) return;
 
@@ -306,7 +353,7 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
         Counter final;
         {
             PhaseTimer t(stats, "time_ms.final_tests");
-            trace_brute(scene, batch, any, skip, final, out);
+            trace_brute(scene, batch, any, batch.type == RayType::Shadow, skip, final, out);
         }
         stats.add(p + "final.tests", double(final.tests));
         stats.add(p + "final.hits", double(final.hits));
@@ -343,7 +390,8 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
               double(h.node_count(s.hierarchy_depth)));
 
     const auto t0 = std::chrono::steady_clock::now();
-    Traversal trav(scene, h, sorted, order.perm, any, skip, size_t(s.batch_pairs), memory, out);
+    Traversal trav(scene, h, sorted, order.perm, any, batch.type == RayType::Shadow, skip,
+                   size_t(s.batch_pairs), memory, out);
     trav.run(s.cull_objects);
     const double total_ms = ms_since(t0);
     parallel_for(

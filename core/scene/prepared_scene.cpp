@@ -7,6 +7,36 @@
 
 namespace sheaf {
 
+namespace {
+
+// Whether a pigment has filter or transmit anywhere (entries and nested pigments included).
+bool pigment_may_pass(const Scene& s, int32_t index, int depth = 0) {
+    if (index < 0 || depth > 16) return false;
+    const Pigment& pg = s.pigments[size_t(index)];
+    if (pg.solid) return pg.color[3] > 0 || pg.color[4] > 0;
+    for (uint32_t e = pg.first; e < pg.first + pg.count; ++e) {
+        const PigmentEntry& en = s.pigment_entries[e];
+        if (en.pigment >= 0 ? pigment_may_pass(s, en.pigment, depth + 1)
+                            : en.color[3] > 0 || en.color[4] > 0)
+            return true;
+    }
+    return false;
+}
+
+bool material_may_pass(const Scene& s, uint32_t m, int depth = 0) {
+    const Material& mt = s.materials[m];
+    if (depth > 16) return false;
+    if (mt.select >= 0) {
+        const MaterialSwitch& sw = s.material_switches[size_t(mt.select)];
+        for (uint32_t e = sw.first; e < sw.first + sw.count; ++e)
+            if (material_may_pass(s, s.material_entries[e].material, depth + 1)) return true;
+        return false;
+    }
+    return mt.pigment >= 0 ? pigment_may_pass(s, mt.pigment) : mt.transmission > 0;
+}
+
+} // namespace
+
 PreparedScene prepare_scene(const Scene& scene) {
     scene.validate();
     PreparedScene p;
@@ -95,11 +125,19 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
     p.prim_flags.resize(p.prim_count());
-    for (size_t o = 0; o < scene.objects.size(); ++o)
-        for (uint32_t i = p.object_begin[o]; i < p.object_begin[o + 1]; ++i)
-            p.prim_flags[i] = scene.objects[o].flags;
-    for (size_t so = 0; so < scene.shape_objects.size(); ++so)
-        p.prim_flags[p.tris.size() + so] = scene.shape_objects[so].flags;
+    std::vector<char> passes(scene.materials.size());
+    for (size_t m = 0; m < passes.size(); ++m) passes[m] = material_may_pass(scene, uint32_t(m));
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const uint8_t f =
+            uint8_t(scene.objects[o].flags | (passes[scene.objects[o].material] ? kPrimMayPass : 0));
+        for (uint32_t i = p.object_begin[o]; i < p.object_begin[o + 1]; ++i) p.prim_flags[i] = f;
+    }
+    for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
+        uint8_t f = scene.shape_objects[so].flags;
+        for (const CsgNode& n : scene.shape_objects[so].nodes)
+            if (n.op == CsgOp::Leaf && passes[n.material]) f |= kPrimMayPass;
+        p.prim_flags[p.tris.size() + so] = f;
+    }
     p.materials = scene.materials;
     p.pigments = scene.pigments;
     p.pigment_entries = scene.pigment_entries;

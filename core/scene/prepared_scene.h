@@ -33,6 +33,10 @@ struct PreparedCsgNode {
     uint32_t first = 0, count = 0;
 };
 
+/// A prim_flags bit beside the ObjectFlag ones: a material of the primitive may let light
+/// through somewhere (filter, transmit), so shadow rays evaluate it where they cross it.
+constexpr uint8_t kPrimMayPass = 0x80;
+
 struct PreparedScene {
     // Primitives (triangles for now), object by object: object o owns
     // [object_begin[o], object_begin[o + 1]).
@@ -55,7 +59,8 @@ struct PreparedScene {
     std::vector<uint32_t> csg_children;
     std::vector<uint32_t> analytic_root; // per analytic primitive: its root node in csg
 
-    std::vector<uint8_t> prim_flags; // ObjectFlag bits of each primitive's object
+    std::vector<uint8_t> prim_flags; // ObjectFlag bits of each primitive's object, and
+                                     // kPrimMayPass
 
     std::vector<Material> materials;
     std::vector<Pigment> pigments;

@@ -34,6 +34,26 @@ double max3(const std::array<double, 3>& a) {
     return std::max({a[0], a[1], a[2]});
 }
 
+// The share of light a pigment lets through, averaged over its colours.
+double mean_pass(const PovPigment* pg) {
+    if (!pg) return 0;
+    if (!pg->patterned || pg->entries.empty()) return pg->color[3] + pg->color[4];
+    double sum = 0;
+    for (const PovMapEntry& e : pg->entries)
+        sum += e.pigment ? mean_pass(e.pigment.get()) : e.color[3] + e.color[4];
+    return sum / double(pg->entries.size());
+}
+
+// One finish for a layered texture: POV-Ray lights each layer with its own and weighs them by
+// what the layers above let through; Sheaf takes the finish of the top-most layer that is
+// mostly opaque (the bottom one when none is), which carries most of the weight.
+const PovFinish& layer_finish(const PovTexture& t) {
+    if (t.below.empty() || mean_pass(t.pigment.get()) < 0.5) return t.finish;
+    for (auto it = t.below.rbegin(); it != t.below.rend(); ++it)
+        if (mean_pass((*it)->pigment.get()) < 0.5) return (*it)->finish;
+    return t.below.front()->finish;
+}
+
 } // namespace
 
 double MaterialBuilder::decode(double c) const {
@@ -143,7 +163,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         return scene_.add_material(m);
     }
 
-    const PovFinish& f = t.finish;
+    const PovFinish& f = layer_finish(t);
     Material m;
     m.fresnel_split = false; // POV-Ray: reflection comes from the finish only
     const auto& al = p_.model.ambient_light;

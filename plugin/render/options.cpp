@@ -65,7 +65,7 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     std::string input;
     int width = 0, height = 0, threads = 0;
     CLI::Option* scene = app.add_option("scene", o.scene,
-                                        "builtin:NAME or a scene file: .pov (default: the built-in " +
+                                        "builtin:NAME or a scene file: .pov .xml .obj .ply .gltf .glb (default: the built-in " +
                                             std::string(sheafGetDefaultSceneName()) + " scene)");
     CLI::Option* input_opt =
         app.add_option("-i,--input", input, "the scene, as the positional argument (+IFILE)")

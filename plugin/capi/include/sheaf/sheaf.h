@@ -89,7 +89,8 @@ SHEAF_API SheafError sheafSceneRelease(SheafScene scene);
 
 /* Replaces the content with a built-in scene ("cornell", ...). */
 SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name);
-/* Replaces the content with a scene file (.pov, .inc: POV-Ray 3.7's scene language), or a
+/* Replaces the content with a scene file (.pov, .inc: POV-Ray 3.7's scene language; .xml: Sheaf's
+ * XML scenes; .obj .ply .gltf .glb: a mesh with a default camera and light), or a
  * built-in scene for "builtin:NAME". Errors name the file, line and column. What the file asks
  * for and the engine cannot show is kept as warnings (sheafSceneGetWarning). */
 SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);

@@ -13,9 +13,10 @@ namespace sheaf {
 /// grazes an edge still gets a normal from the triangle.
 SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim, float t);
 
-/// The share of a surface that is opaque: what filter and transmit do not let through.
+/// The share of a surface that is opaque: what filter and transmit do not let through. Not
+/// clamped, as in POV-Ray: scenes use filter + transmit > 1 to amplify what is behind.
 SHEAF_HD_INLINE float opacity(const SurfaceHit& h) {
-    return fmaxf(0.0f, 1.0f - h.filter - h.transmit);
+    return 1.0f - h.filter - h.transmit;
 }
 
 /// Fresnel reflectance of a dielectric for unpolarised light; eta = n_incident / n_transmitted.

@@ -199,9 +199,13 @@ struct Builder {
         if (c.orthographic) {
             out.projection = Projection::Orthographic;
             out.ortho_height = length(up) > 0 ? length(up) : 1.0f;
-            if (c.angle > 0) // POV-Ray: the angle sets the width seen at the look_at distance
-                out.ortho_height = 2 * length(dir) * std::tan(float(c.angle * M_PI / 360)) *
-                                   length(up) / std::max(length(right), 1e-6f);
+            if (c.angle > 0 && c.angle < 180) {
+                // POV-Ray: the angle sets the width seen at the look_at distance (the
+                // direction's length when there is no look_at).
+                const float d = c.has_look_at ? length(c.look_at - c.location) : length(dir);
+                out.ortho_height = 2 * d * std::tan(float(c.angle * M_PI / 360)) * length(up) /
+                                   std::max(length(right), 1e-6f);
+            }
         } else {
             out.projection = Projection::Perspective;
             out.fov_y_degrees =

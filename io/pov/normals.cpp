@@ -45,6 +45,9 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
             unsupported(t, "bump_map (no normal change)");
             skip_block();
             have = false;
+        } else if (k == "uv_mapping") {
+            unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is "
+                           "evaluated in space)");
         } else if (k == "accuracy" || k == "no_bump_scale") {
             if (starts_expression(peek())) parse_expr();
         } else if (k == "normal" ) { // a list entry of a list pattern: the first is kept

@@ -312,10 +312,13 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
         advance();
         if (o.kind == PovKind::Shape) o.shape.open = parse_bool_opt(true);
     } else if (k == "hollow" || k == "sturm" || k == "no_radiosity" || k == "double_illuminate" ||
-               k == "split_union" || k == "cutaway_textures" || k == "uv_mapping" ||
+               k == "split_union" || k == "cutaway_textures" ||
                k == "hierarchy" || k == "smooth" || k == "global_lights") {
         advance();
         parse_bool_opt(true);
+    } else if (k == "uv_mapping") {
+        advance();
+        unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is evaluated in space)");
     } else if (k == "no_shadow" || k == "no_reflection" || k == "no_image") {
         advance();
         const uint8_t flag = k == "no_shadow" ? kNoShadow : k == "no_reflection" ? kNoReflection

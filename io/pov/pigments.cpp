@@ -123,11 +123,7 @@ void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
         } else if (k == "quick_color" || k == "quick_colour") {
             parse_color();
         } else if (k == "uv_mapping") {
-            if (pg.pattern.image) {
-                auto img = std::make_shared<PovImage>(*pg.pattern.image);
-                img->uv = true;
-                pg.pattern.image = img;
-            }
+            unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is evaluated in space)");
         } else if (k == "color" || k == "colour") {
             error_expected(t, "a colour");
         } else {

@@ -112,6 +112,7 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
             unsupported(t, "material_map (ignored)");
             skip_block();
         } else if (k == "uv_mapping") {
+            unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is evaluated in space)");
         } else if (k == "quick_color" || k == "quick_colour") {
             parse_color();
         } else {

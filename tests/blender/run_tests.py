@@ -18,6 +18,7 @@ import shutil
 import sys
 import tempfile
 import traceback
+import types
 
 import bpy
 import numpy as np
@@ -235,8 +236,7 @@ class MockLayout:
 def draw_panel(name):
     panel = getattr(bpy.types, name)
     log = []
-    attrs = {k: v for k, v in vars(panel).items() if not k.startswith("__")}
-    fake = type("FakePanel", (), dict(attrs, layout=MockLayout(log)))()
+    fake = types.SimpleNamespace(layout=MockLayout(log), ROWS=getattr(panel, "ROWS", ()))
     check(panel.poll(bpy.context), "%s does not show for the Sheaf engine" % name)
     panel.draw(fake, bpy.context)
     return log
@@ -643,22 +643,23 @@ def test_cancel():
     """test_break() is polled through the progress callback: a cancelled render reports no
     error and stores no statistics."""
     scene = bpy.data.scenes["Scene"]
-    cls = ADDON.engine.SheafRenderEngine
+    setup_render(scene, 64, 48)
     # Cancelled during the export (the first poll), then during Sheaf's render (the third: the
     # export's, the one after commit, then the progress callback's).
     for polls_before_cancel in (0, 2):
         polls = []
 
-        def cancel_requested(self):
+        def poll_cancel(engine):
             polls.append(1)
             return len(polls) > polls_before_cancel
 
         ADDON.engine.LAST_STATS.pop(scene.name, None)
-        cls.cancel_requested = cancel_requested
+        real_poll = ADDON.engine.poll_cancel
+        ADDON.engine.poll_cancel = poll_cancel
         try:
             bpy.ops.render.render(scene=scene.name)
         finally:
-            del cls.cancel_requested
+            ADDON.engine.poll_cancel = real_poll
         check(len(polls) == polls_before_cancel + 1, "polled %d times" % len(polls))
         check(ADDON.engine.last_stats(scene.name) is None, "a cancelled render stored statistics")
     # The progress callback itself: returning 0 cancels with SHEAF_ERROR_CANCELLED.
@@ -707,7 +708,8 @@ def main():
     finally:
         if OPTS["out"] is None:
             print("pictures in", OUT)
-        shutil.rmtree(os.path.join(WORK, "scripts"), ignore_errors=True)
+        for folder in ("scripts", "config", "passes"):
+            shutil.rmtree(os.path.join(WORK, folder), ignore_errors=True)
     if failures:
         print("%d Blender test(s) failed:\n  %s" % (len(failures), "\n  ".join(failures)))
         sys.exit(1)

@@ -395,6 +395,10 @@ class _Handle:
             pass
 
 
+# Scenes deliberately never released (Scene.abandon); their handles stay referenced here.
+_abandoned = []
+
+
 class Scene(_Handle):
     _release = "sheafSceneRelease"
 
@@ -402,6 +406,13 @@ class Scene(_Handle):
         h = SheafScene()
         lib.check(lib.sheafSceneNew(byref(h)))
         super().__init__(lib, h)
+        self.texture_count = 0
+
+    def abandon(self):
+        """Gives up the reference without releasing it: the scene lives until the process ends."""
+        if self.handle:
+            _abandoned.append(self.handle)
+            self.handle = None
 
     def add_material(self, desc):
         out = c_uint32()
@@ -472,6 +483,7 @@ class Scene(_Handle):
                 self.handle, _bytes(path), mapping, t, _bytes(colorspace), byref(out)
             )
         )
+        self.texture_count += 1
         return out.value
 
     def add_light(self, desc):

@@ -23,6 +23,12 @@ def last_stats(scene_name):
     return LAST_STATS.get(scene_name)
 
 
+def poll_cancel(engine):
+    """Blender's test_break() of a running engine (a module function, so that tests can stand
+    in for the Esc key, which a headless Blender has not)."""
+    return engine.test_break()
+
+
 class RenderError(Exception):
     pass
 
@@ -82,13 +88,10 @@ class SheafRenderEngine(bpy.types.RenderEngine):
         self._error = None
         self._cancelled = False
 
-    def __del__(self):
-        self._release()
-
     def cancel_requested(self):
         """Whether the user asked to stop (Esc): polled between export steps and by Sheaf's
         progress callback."""
-        return self.test_break()
+        return poll_cancel(self)
 
     def _release(self):
         exported = getattr(self, "_exported", None)

@@ -23,6 +23,8 @@ from . import capi
 from .materials import MaterialExporter, ambient_from_world, world_color
 
 GEOMETRY_TYPES = {'MESH', 'CURVE', 'SURFACE', 'FONT', 'META'}
+# Renderable kinds Sheaf has no geometry for (reported once per object).
+UNSUPPORTED_TYPES = {'CURVES', 'POINTCLOUD', 'VOLUME', 'GPENCIL'}
 
 # Blender's Depth pass is 1e10 where nothing was hit (Sheaf's depth is +inf there).
 BACKGROUND_DEPTH = 1.0e10
@@ -81,7 +83,15 @@ class Exported:
 
     def release(self):
         if self.scene is not None:
-            self.scene.release()
+            if self.scene.texture_count:
+                # Releasing a scene with image textures frees libsheaf's OpenImageIO
+                # TextureSystem, and OpenImageIO 2.4's TextureSystem::destroy deletes it with a
+                # wrong size; Blender links jemalloc, which trusts sized deletes, so its heap is
+                # corrupted and Blender crashes later. Until libsheaf keeps one TextureSystem
+                # for the process, such scenes are kept (a leak per textured render).
+                self.scene.abandon()
+            else:
+                self.scene.release()
             self.scene = None
         if self.tempdir is not None:
             self.tempdir.cleanup()
@@ -136,6 +146,7 @@ class _Exporter:
         self.meshes = {}  # geometry key -> [(material slot, sheaf mesh id, textured uvs)]
         self.tempdir = tempdir
         self.materials = None
+        self.skipped = set()
 
     # ---- camera ----
 
@@ -206,6 +217,9 @@ class _Exporter:
                 self.light(obj, inst.matrix_world.copy())
             elif obj.type in GEOMETRY_TYPES and inst.show_self:
                 self.geometry(inst, obj)
+            elif obj.type in UNSUPPORTED_TYPES and obj.name not in self.skipped:
+                self.skipped.add(obj.name)
+                self.warn("object '%s': %s objects are not exported" % (obj.name, obj.type.lower()))
 
     def geometry(self, inst, obj):
         # Evaluated meshes are shared by linked duplicates without modifiers and by every
@@ -217,10 +231,8 @@ class _Exporter:
         if not parts:
             return
         transform = matrix_3x4(inst.matrix_world)
-        slots = obj.material_slots
         for slot, mesh_id in parts:
-            mat = slots[slot].material if slot < len(slots) else None
-            material_id = self.materials.material(mat)
+            material_id = self.materials.material(slot_material(obj, slot))
             self.scene.add_object(mesh_id, material_id, transform, obj.name)
 
     def upload(self, obj):
@@ -253,7 +265,7 @@ class _Exporter:
                 self.scene.set_mesh_uvs(mesh_id, uvs)
             self.name_mesh(mesh_id, "object '%s' (material slot %d)" % (obj.name, slot + 1))
             parts.append((slot, mesh_id))
-            mat = obj.material_slots[slot].material if slot < len(obj.material_slots) else None
+            mat = slot_material(obj, slot)
             if uvs is None and mat is not None:
                 self.materials.material(mat)
                 if self.materials.is_textured(mat):
@@ -290,6 +302,10 @@ class _Exporter:
     def upload_subdivision(self, obj, mod, level):
         """Sends the cage and level to sheafSceneAddSubdivisionMesh. Returns None to let
         Blender's own subdivision be used instead."""
+        if getattr(mod, "boundary_smooth", 'ALL') != 'ALL':
+            # Sheaf's refinement smooths boundaries with OpenSubdiv's edge-only rule.
+            self.note_fallback(obj, "its boundary smoothing keeps corners")
+            return None
         mesh = cage_mesh(obj, mod, self.depsgraph)
         if mesh is None:
             return None
@@ -303,7 +319,7 @@ class _Exporter:
         if slot < 0:
             self.note_fallback(obj, "its faces use several materials")
             return None
-        mat = obj.material_slots[slot].material if slot < len(obj.material_slots) else None
+        mat = slot_material(obj, slot)
         uvs = None
         self.materials.material(mat)
         if self.materials.is_textured(mat) and loop_uvs is not None:
@@ -398,6 +414,17 @@ class _Exporter:
             d.fade_power = 2.0
             d.shadowless = shadowless
             self.scene.add_light(d)
+
+
+def slot_material(obj, slot):
+    """The material of obj's slot (object- or data-linked), else the mesh's own list (objects
+    that geometry nodes make carry no slots), else None."""
+    if slot < len(obj.material_slots):
+        return obj.material_slots[slot].material
+    materials = getattr(obj.data, "materials", None)
+    if materials is not None and slot < len(materials):
+        return materials[slot]
+    return None
 
 
 def _vec(t):

@@ -137,7 +137,10 @@ class MaterialExporter:
     def texture(self, image):
         """The Sheaf texture id of a bpy.types.Image: its file when it is one on disk, else its
         pixels written to a temporary OpenEXR file through sheafWriteImage."""
-        key = image.original.name_full if image.original else image.name_full
+        # Path, colour space and pixels come from the user's image, not the depsgraph's copy.
+        if image.original is not None:
+            image = image.original
+        key = image.name_full
         if key in self.textures:
             return self.textures[key]
         import bpy

@@ -117,15 +117,19 @@ def preset_names():
     return names
 
 
-_preset_items = []  # Blender needs the enum strings kept alive
+# Blender keeps pointers into the strings an enum callback returns: every list handed out stays
+# alive for the session (one per distinct set of preset names), or Blender reads freed memory.
+_preset_items = {}
 
 
 def _preset_enum(self, context):
-    _preset_items.clear()
-    _preset_items.append(('NONE', "None", "No preset: the library's defaults and the values below"))
-    for name in preset_names():
-        _preset_items.append((name, name, "Apply presets/%s.xml, then the values below" % name))
-    return _preset_items
+    names = tuple(preset_names())
+    items = _preset_items.get(names)
+    if items is None:
+        items = [('NONE', "None", "No preset: the library's defaults and the values below")]
+        items += [(n, n, "Apply presets/%s.xml, then the values below" % n) for n in names]
+        _preset_items[names] = items
+    return items
 
 
 def _preset_update(self, context):

@@ -276,10 +276,35 @@ class Traversal {
 };
 
 // Keys of the batch under hash.mode (rah: none). Returns the number of 32-bit words per key.
-int hash_rays(const PreparedScene& scene, const RayBatch& batch, HashMode mode,
-              std::vector<uint32_t>& keys) {
+// Paper 003's static 3D order: 8 x 16-pixel tiles of the sample grid, one sample index (AO) or
+// light (shadow rays) at a time; a 64-bit key as two words.
+int static3d_keys(const RayBatch& batch, const RenderSettings& s, std::vector<uint32_t>& keys) {
     const size_t n = batch.size();
-    if (mode == HashMode::None) return 0;
+    const uint64_t grid_w = uint64_t(s.width) * uint64_t(s.aa_samples);
+    const uint64_t grid_h = uint64_t(s.height) * uint64_t(s.aa_samples);
+    const uint64_t tiles_x = (grid_w + 7) / 8, tiles = tiles_x * ((grid_h + 15) / 16);
+    const uint64_t per_pixel = batch.type == RayType::Ao ? uint64_t(std::max(1, s.ao_samples)) : 1;
+    keys.resize(n * 2);
+    parallel_for(
+        "hash.static3d", n,
+        [&](size_t i) {
+            const uint64_t p = batch.pixel[i], x = p % grid_w, y = p / grid_w;
+            const uint64_t sample = batch.type == RayType::Shadow ? batch.light[i]
+                                                                  : uint64_t(i) % per_pixel;
+            const uint64_t tile = (y / 16) * tiles_x + x / 8;
+            const uint64_t key = ((sample * tiles + tile) << 7) | ((y % 16) * 8 + x % 8);
+            keys[2 * i] = uint32_t(key), keys[2 * i + 1] = uint32_t(key >> 32);
+        },
+        4096);
+    return 2;
+}
+
+int hash_rays(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
+              HashMode mode, std::vector<uint32_t>& keys) {
+    const size_t n = batch.size();
+    // static1d is the generation order: a pixel's rays together (paper 003's 1D work groups).
+    if (mode == HashMode::None || mode == HashMode::Static1d) return 0;
+    if (mode == HashMode::Static3d) return static3d_keys(batch, s, keys);
     Aabb box{Vec3(FLT_MAX), Vec3(-FLT_MAX)};
     for (const Ray& r : batch.rays)
         box.lo = vmin(box.lo, r.origin), box.hi = vmax(box.hi, r.origin);
@@ -368,10 +393,12 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
     int words = 0;
     {
         PhaseTimer t(stats, "time_ms.hashing");
-        words = hash_rays(scene, batch, hash, keys);
+        words = hash_rays(scene, batch, s, hash, keys);
     }
     const SortMode sort = words == 0 ? SortMode::None : s.sort;
-    OrderResult order = order_rays(keys, words, n, sort, stats);
+    // The static 3D order is a fixed permutation, whatever sort.mode says: every key sorted.
+    const SortMode mode = hash == HashMode::Static3d ? SortMode::Full : sort;
+    OrderResult order = order_rays(keys, words, n, mode, stats, s.sort_algorithm);
     memory.add(int64_t(keys.capacity() + order.perm.capacity()) * 4);
     if (sort == SortMode::Csd)
         stats.add(std::string("sort.") + ray_type_name(batch.type) + ".chunks",

@@ -29,8 +29,10 @@ const std::vector<SettingSpec>& setting_specs() {
          "crsh",
          0,
          0,
-         {"none", "crsh", "hash32", "hash192"},
-         "ray hash: per ray type (crsh, paper 000) or the 32/192-bit keys of paper 003"},
+         {"none", "crsh", "hash32", "hash192", "static1d", "static3d"},
+         "ray hash: per ray type (crsh, paper 000), the 32/192-bit keys of paper 003, or "
+         "paper 003's fixed orders: static1d (generation order: a pixel's rays together), "
+         "static3d (8x16-pixel tiles, one sample or light at a time)"},
         {"sort.mode",
          K::Choice,
          "csd",
@@ -39,6 +41,14 @@ const std::vector<SettingSpec>& setting_specs() {
          {"none", "full", "csd"},
          "ray order before the hierarchy is built: unsorted, every ray sorted by key, or "
          "compress-sort-decompress"},
+        {"sort.algorithm",
+         K::Choice,
+         "radix",
+         0,
+         0,
+         {"radix", "bitonic"},
+         "how keys are sorted: LSD radix sort, or a bitonic network (paper 003's comparison); "
+         "both give the same order"},
         {"cull.objects",
          K::Bool,
          "true",
@@ -277,10 +287,14 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     const std::string hash = choice("hash.mode");
     r.hash = hash == "none"      ? HashMode::None
              : hash == "hash32"  ? HashMode::Hash32
-             : hash == "hash192" ? HashMode::Hash192
-                                 : HashMode::Crsh;
+             : hash == "hash192"  ? HashMode::Hash192
+             : hash == "static1d" ? HashMode::Static1d
+             : hash == "static3d" ? HashMode::Static3d
+                                  : HashMode::Crsh;
     const std::string sort = choice("sort.mode");
     r.sort = sort == "none" ? SortMode::None : sort == "full" ? SortMode::Full : SortMode::Csd;
+    r.sort_algorithm =
+        choice("sort.algorithm") == "bitonic" ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
     r.cull_objects = v.at("cull.objects") == "true";
     r.trace_depth = i("trace.depth");
     const std::string backend = choice("backend");
@@ -308,8 +322,15 @@ const char* to_string(HashMode h) {
         return "hash32";
     case HashMode::Hash192:
         return "hash192";
+    case HashMode::Static1d:
+        return "static1d";
+    case HashMode::Static3d:
+        return "static3d";
     }
     return "?";
+}
+const char* to_string(SortAlgorithm a) {
+    return a == SortAlgorithm::Radix ? "radix" : "bitonic";
 }
 const char* to_string(SortMode s) {
     return s == SortMode::None ? "none" : s == SortMode::Full ? "full" : "csd";

@@ -47,8 +47,9 @@ class Settings {
 };
 
 enum class Accel { Brute, Rah, Crsh };
-enum class HashMode { None, Crsh, Hash32, Hash192 };
+enum class HashMode { None, Crsh, Hash32, Hash192, Static1d, Static3d };
 enum class SortMode { None, Full, Csd };
+enum class SortAlgorithm { Radix, Bitonic };
 enum class Backend { Auto, Cpu, Cuda };
 
 /// The typed, resolved settings the pipeline runs with.
@@ -58,6 +59,7 @@ struct RenderSettings {
     int hierarchy_arity = 8;
     HashMode hash = HashMode::Crsh;
     SortMode sort = SortMode::Csd;
+    SortAlgorithm sort_algorithm = SortAlgorithm::Radix;
     bool cull_objects = true;
     int trace_depth = 5;
     Backend backend = Backend::Auto;
@@ -80,6 +82,7 @@ struct RenderSettings {
 const char* to_string(Accel a);
 const char* to_string(HashMode h);
 const char* to_string(SortMode s);
+const char* to_string(SortAlgorithm a);
 const char* to_string(Backend b);
 
 } // namespace sheaf

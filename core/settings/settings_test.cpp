@@ -85,7 +85,7 @@ TEST(Settings, DescribeAllowedPrintsExactBounds) {
     EXPECT_EQ(describe_allowed(*find_setting("traversal.batch")), "an integer in 1024..1073741824");
     const std::string m = error_of("traversal.batch", "5");
     EXPECT_TRUE(contains(m, "1024..1073741824")) << m;
-    EXPECT_EQ(describe_allowed(*find_setting("hash.mode")), "one of none, crsh, hash32, hash192");
+    EXPECT_EQ(describe_allowed(*find_setting("hash.mode")), "one of none, crsh, hash32, hash192, static1d, static3d");
 }
 
 TEST(Settings, RejectsMalformedValues) {

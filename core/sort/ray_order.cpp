@@ -2,14 +2,27 @@
 
 #include "core/base/parallel.h"
 #include "core/base/timer.h"
+#include "core/sort/bitonic_sort.h"
 #include "core/sort/radix_sort.h"
 
 #include <numeric>
 
 namespace sheaf {
 
+namespace {
+
+void sort_pairs(std::vector<uint32_t>& keys, int words, std::vector<uint32_t>& values,
+                SortAlgorithm algorithm) {
+    if (algorithm == SortAlgorithm::Bitonic)
+        bitonic_sort_pairs(keys, words, values);
+    else
+        radix_sort_pairs(keys, words, values);
+}
+
+} // namespace
+
 OrderResult order_rays(const std::vector<uint32_t>& keys, int words, size_t n, SortMode mode,
-                       Stats& stats) {
+                       Stats& stats, SortAlgorithm algorithm) {
     OrderResult r;
     if (mode == SortMode::None || n == 0) {
         r.perm.resize(n);
@@ -21,7 +34,7 @@ OrderResult order_rays(const std::vector<uint32_t>& keys, int words, size_t n, S
         std::vector<uint32_t> k = keys;
         r.perm.resize(n);
         std::iota(r.perm.begin(), r.perm.end(), 0u);
-        radix_sort_pairs(k, words, r.perm);
+        sort_pairs(k, words, r.perm, algorithm);
         r.chunks = n;
         return r;
     }
@@ -71,7 +84,7 @@ OrderResult order_rays(const std::vector<uint32_t>& keys, int words, size_t n, S
     }
     {
         PhaseTimer t(stats, "time_ms.sorting");
-        radix_sort_pairs(chunk_keys, words, chunk_ids);
+        sort_pairs(chunk_keys, words, chunk_ids, algorithm);
     }
     {
         // Decompression: the sizes in sorted order, scanned, give each chunk's place.

@@ -1,6 +1,7 @@
 // The order rays enter the hierarchy in (sort.mode): unsorted, every ray sorted by its key,
-// or compress-sort-decompress (paper 000 sections 3.3.3-3.3.5). Sorting is stable, so `full`
-// and `csd` give the same permutation; `csd` sorts one entry per run of equal adjacent keys.
+// or compress-sort-decompress (paper 000 sections 3.3.3-3.3.5). Sorting is stable (the bitonic
+// sort breaks ties by index), so `full` and `csd`, radix and bitonic, give the same
+// permutation; `csd` sorts one entry per run of equal adjacent keys.
 #pragma once
 
 #include "core/settings/settings.h"
@@ -20,6 +21,6 @@ struct OrderResult {
 /// keys: n * words entries, word 0 least significant. Adds time_ms.compression,
 /// time_ms.sorting and time_ms.decompression to `stats`.
 OrderResult order_rays(const std::vector<uint32_t>& keys, int words, size_t n, SortMode mode,
-                       Stats& stats);
+                       Stats& stats, SortAlgorithm algorithm = SortAlgorithm::Radix);
 
 } // namespace sheaf

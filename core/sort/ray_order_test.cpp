@@ -1,4 +1,5 @@
 // Radix sort and ray ordering: permutations, stability, and full == csd.
+#include "core/sort/bitonic_sort.h"
 #include "core/sort/radix_sort.h"
 #include "core/sort/ray_order.h"
 
@@ -79,6 +80,29 @@ TEST_P(Sorting, FullAndCsdGiveTheSameSortedPermutation) {
     EXPECT_GT(csd.chunks, n / 10);
     EXPECT_TRUE(st.has("time_ms.compression"));
     EXPECT_TRUE(st.has("time_ms.decompression"));
+}
+
+TEST_P(Sorting, BitonicSortGivesTheStablePermutation) {
+    const int words = GetParam();
+    for (size_t n : {size_t(0), size_t(1), size_t(2), size_t(7), size_t(1000), size_t(33333)}) {
+        const std::vector<uint32_t> keys = runny_keys(n, words, 11 + uint32_t(n));
+        std::vector<uint32_t> rk = keys, rv(n), bk = keys, bv(n);
+        std::iota(rv.begin(), rv.end(), 0u);
+        std::iota(bv.begin(), bv.end(), 0u);
+        radix_sort_pairs(rk, words, rv);
+        bitonic_sort_pairs(bk, words, bv);
+        EXPECT_EQ(bv, rv) << "n=" << n;
+        EXPECT_EQ(bk, rk) << "n=" << n;
+    }
+    // Through order_rays: both algorithms, full and csd, the same permutation.
+    const size_t n = 20000;
+    const std::vector<uint32_t> keys = runny_keys(n, words, 3);
+    Stats st;
+    const OrderResult radix = order_rays(keys, words, n, SortMode::Csd, st, SortAlgorithm::Radix);
+    EXPECT_EQ(order_rays(keys, words, n, SortMode::Csd, st, SortAlgorithm::Bitonic).perm,
+              radix.perm);
+    EXPECT_EQ(order_rays(keys, words, n, SortMode::Full, st, SortAlgorithm::Bitonic).perm,
+              radix.perm);
 }
 
 INSTANTIATE_TEST_SUITE_P(KeyWords, Sorting, ::testing::Values(1, 6));

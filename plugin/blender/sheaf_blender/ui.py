@@ -11,19 +11,15 @@ ENGINE = engine.SheafRenderEngine.bl_idname
 # the engine adds itself to their COMPAT_ENGINES. Names missing in a Blender version are skipped.
 BLENDER_PANELS = (
     "DATA_PT_context_light",
-    "DATA_PT_light",
-    "DATA_PT_EEVEE_light",
-    "DATA_PT_EEVEE_light_distance",
-    "DATA_PT_spot",
-    "DATA_PT_area",
-    "DATA_PT_preview",
+    "DATA_PT_EEVEE_light",  # type, colour, power, radius, area shape and size
+    "DATA_PT_spot",  # spot size and blend
     "EEVEE_MATERIAL_PT_context_material",
-    "EEVEE_MATERIAL_PT_surface",
+    "EEVEE_MATERIAL_PT_surface",  # the node surface (Principled BSDF inputs)
     "EEVEE_MATERIAL_PT_viewport_settings",
-    "MATERIAL_PT_viewport",
+    "MATERIAL_PT_custom_props",
     "WORLD_PT_context_world",
-    "EEVEE_WORLD_PT_surface",
-    "WORLD_PT_viewport_display",
+    "EEVEE_WORLD_PT_surface",  # the Background colour and strength
+    "WORLD_PT_custom_props",
 )
 
 

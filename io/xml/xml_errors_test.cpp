@@ -115,6 +115,88 @@ TEST(XmlErrors, BadGeometryIsAnErrorAtItsElement) {
                  "texture file 'nothere.png' does not exist");
 }
 
+TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
+    // The four the schema must catch: an unknown pattern, an entry naming a later (or its own,
+    // or no) pigment, a switch without entries, a bad wave.
+    EXPECT_ERROR("<scene>\n  <pigment name=\"p\" pattern=\"marbel\"/>\n</scene>", "2:30",
+                 "unknown pattern 'marbel' on <pigment>; expected one of gradient, marble,");
+    EXPECT_ERROR(
+        "<scene>\n<pigment name=\"a\" pattern=\"checker\">\n  <entry color=\"1\"/>\n"
+        "  <entry pigment=\"b\"/>\n</pigment>\n<pigment name=\"b\" color=\"0\"/>\n</scene>",
+        "4:19", "unknown pigment 'b'; none is defined before this point");
+    EXPECT_ERROR("<scene>\n<pigment name=\"a\" pattern=\"bozo\">\n  <entry value=\"0\" "
+                 "pigment=\"a\"/>\n</pigment></scene>",
+                 "3:29", "unknown pigment 'a'");
+    EXPECT_ERROR("<scene><material name=\"r\"/>\n<switch name=\"s\" pattern=\"checker\">\n"
+                 "  <scale value=\"2\"/>\n</switch></scene>",
+                 "2:1", "the checker pattern picks from 2 entries; <switch> has 0");
+    EXPECT_ERROR("<scene><material name=\"r\"/><switch name=\"s\" pattern=\"bozo\"/></scene>",
+                 "1:28", "<switch> needs <entry> elements");
+    EXPECT_ERROR("<scene>\n<normal name=\"n\" pattern=\"ripples\" wave=\"sawtooth\"/></scene>",
+                 "2:42", "'sawtooth' is not one of ramp, triangle, sine, scallop, cubic, poly");
+
+    // Entries: counts, values, colours or pigments.
+    EXPECT_ERROR("<scene><pigment name=\"c\" pattern=\"checker\"><entry color=\"1\"/></pigment>"
+                 "</scene>",
+                 "1:8", "the checker pattern picks from 2 entries; <pigment> has 1 <entry>");
+    EXPECT_ERROR("<scene><pigment name=\"g\" pattern=\"gradient\">\n<entry value=\"0.5\" "
+                 "color=\"1\"/>\n<entry value=\"0.25\" color=\"0\"/></pigment></scene>",
+                 "3:15", "entry values must not decrease");
+    EXPECT_ERROR("<scene><pigment name=\"g\" pattern=\"gradient\"><entry color=\"1\"/></pigment>"
+                 "</scene>",
+                 "1:45", "an <entry> of a continuous pattern needs the attribute 'value'");
+    EXPECT_ERROR("<scene><pigment name=\"c\" pattern=\"checker\"><entry value=\"0\" color=\"1\"/>"
+                 "<entry color=\"0\"/></pigment></scene>",
+                 "1:58", "an <entry> of a list pattern takes no 'value'");
+    EXPECT_ERROR("<scene><pigment name=\"p\" color=\"1\"/><pigment name=\"q\" pattern=\"bozo\">"
+                 "<entry value=\"0\" pigment=\"p\" transmit=\"1\"/></pigment></scene>",
+                 "1:109", "'transmit' goes with 'color'");
+    EXPECT_ERROR("<scene><pigment name=\"p\" color=\"1\" filter=\"2\"/></scene>", "1:44",
+                 "attribute 'filter' of <pigment>: expected a number in 0..1");
+
+    // Pattern attributes belong to some patterns only.
+    EXPECT_ERROR("<scene><pigment name=\"m\" pattern=\"marble\" octaves=\"3\"><entry value=\"0\" "
+                 "color=\"1\"/></pigment></scene>",
+                 "1:52",
+                 "attribute 'octaves' of <pigment> shapes the turbulence; give 'turbulence' too");
+    EXPECT_ERROR(
+        "<scene><pigment name=\"m\" pattern=\"marble\" vector=\"0 1 0\"><entry value=\"0\" "
+        "color=\"1\"/></pigment></scene>",
+        "1:51", "belongs to the gradient pattern; this pattern is 'marble'");
+    EXPECT_ERROR("<scene><pigment name=\"m\" pattern=\"checker\" wave=\"sine\"><entry color=\"1\"/>"
+                 "<entry color=\"0\"/></pigment></scene>",
+                 "1:50", "attribute 'wave' of <pigment> belongs to continuous patterns");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"image\"/></scene>", "1:34",
+                 "only a <pigment> takes it");
+
+    // What a pigment is, and what uses pigments, normals and switches.
+    EXPECT_ERROR("<scene><pigment name=\"p\"/></scene>", "1:8",
+                 "a solid <pigment> needs the attribute 'color'");
+    EXPECT_ERROR("<scene><pigment name=\"p\" pattern=\"bozo\" layers=\"true\"/></scene>", "1:8",
+                 "this one has more than one");
+    EXPECT_ERROR("<scene><pigment name=\"p\" layers=\"true\"><entry color=\"1\"/><scale "
+                 "value=\"2\"/></pigment></scene>",
+                 "1:58", "layers and averages have no pattern to place");
+    EXPECT_ERROR("<scene><pigment name=\"p\" pattern=\"image\" texture=\"t\"/></scene>", "1:51",
+                 "unknown texture 't'");
+    EXPECT_ERROR("<scene><pigment name=\"p\" color=\"1\"/><material name=\"m\" pigment=\"p\" "
+                 "color=\"1 0 0\"/></scene>",
+                 "1:75", "'color' of <material> is not used with a pigment");
+    EXPECT_ERROR("<scene><material name=\"a\"/><switch name=\"s\" pattern=\"checker\"><entry "
+                 "material=\"a\"/><entry material=\"a\"/></switch><material name=\"m\" "
+                 "switch=\"s\" diffuse=\"1\"/></scene>",
+                 "1:153", "'diffuse' of <material> is not used with a switch");
+    EXPECT_ERROR("<scene><material name=\"m\" normal=\"n\"/></scene>", "1:35",
+                 "unknown normal 'n'");
+    EXPECT_ERROR("<scene><sky pigment=\"nope\"/></scene>", "1:22", "unknown pigment 'nope'");
+    EXPECT_ERROR("<scene><background color=\"0\"/><pigment name=\"p\" color=\"1\"/><sky "
+                 "pigment=\"p\"/></scene>",
+                 "1:60", "a <background> or a <sky>, not both");
+    EXPECT_ERROR("<scene><fog distance=\"0\" color=\"1\"/></scene>", "1:23",
+                 "the fog's distance must be > 0");
+    EXPECT_ERROR("<scene><fog distance=\"10\"/></scene>", "1:8", "needs the attribute 'color'");
+}
+
 TEST(XmlErrors, DeepNestingIsBounded) {
     std::string deep = "<scene>";
     for (int i = 0; i < 200; ++i) deep += "<union>";

@@ -1,7 +1,7 @@
 // <material> and <texture>. A material's attributes are the fields of sheaf::Material, listed
 // once in kMaterialFields: a new number, colour or flag field is one line there (and one row in
-// docs/xml-scene.md). The procedural pigments, normals and material switches (Material::pigment,
-// normal, select) have no XML form yet.
+// docs/xml-scene.md). The procedural textures are named: 'pigment', 'normal' and 'switch' refer to
+// <pigment>, <normal> and <switch> elements defined before (xml_pigments.cpp).
 #include "io/xml/xml_reader.h"
 
 #include <cmath>
@@ -62,11 +62,31 @@ void SceneReader::read_material(const pugi::xml_node& node) {
     const std::vector<pugi::xml_node> children = child_elements(ctx_, node);
     if (!children.empty()) unknown_element(ctx_, children[0], node, {});
     Attributes a(ctx_, node);
-    std::string name, base, texture;
+    std::string name, base;
     a.get("name", name);
     Material m;
     if (a.get("base", base))
         m = scene_.materials[lookup(materials_, "material", base, node, node.attribute("base"))];
+    // A reference to a named thing, or "" for none (dropping the base's).
+    auto reference = [&](const char* attribute, const NameTable& table, const char* kind,
+                         int32_t& out) {
+        std::string ref;
+        if (a.get(attribute, ref))
+            out = ref.empty() ? -1
+                              : int32_t(lookup(table, kind, ref, node, node.attribute(attribute)));
+    };
+    reference("switch", switches_, "switch", m.select);
+    if (m.select >= 0) {
+        // The switch picks another material at every point: nothing of this one is seen.
+        for (pugi::xml_attribute at = node.first_attribute(); at; at = at.next_attribute()) {
+            const std::string_view n = at.name();
+            if (n != "name" && n != "base" && n != "switch")
+                ctx_.fail(node, at,
+                          "attribute '" + std::string(n) +
+                              "' of <material> is not used with a switch (the switch's materials "
+                              "are seen); a material with a switch takes name, base and switch");
+        }
+    }
     for (const MaterialField& f : kMaterialFields) {
         if (f.colour) {
             a.get(f.attribute, m.*f.colour, true);
@@ -85,13 +105,18 @@ void SceneReader::read_material(const pugi::xml_node& node) {
                           " is not allowed; expected a number " + (f.positive ? "> 0" : ">= 0"));
         m.*f.number = v;
     }
-    if (a.get("texture", texture))
-        m.texture =
-            texture.empty()
-                ? -1
-                : int32_t(lookup(textures_, "texture", texture, node, node.attribute("texture")));
+    reference("texture", textures_, "texture", m.texture);
+    reference("pigment", pigments_, "pigment", m.pigment);
+    reference("normal", normals_, "normal", m.normal);
     a.finish();
     a.require("name");
+    if (m.pigment >= 0)
+        for (const char* replaced : {"color", "texture", "transmission"})
+            if (node.attribute(replaced))
+                ctx_.fail(node, node.attribute(replaced),
+                          "attribute '" + std::string(replaced) +
+                              "' of <material> is not used with a pigment (the pigment gives "
+                              "the colour, filter and transmit)");
     define(materials_, "material", name, node, 0);
     materials_[name].id = scene_.add_material(m);
 }

@@ -1,5 +1,5 @@
 // The XML scene reader: the document, the <scene> element and its dispatch, and the tables of
-// names (materials, textures, meshes) that later elements refer to.
+// names (materials, textures, meshes, pigments, normals, switches) that later elements refer to.
 #include "io/xml/xml_reader.h"
 
 #include "core/base/error.h"
@@ -71,6 +71,16 @@ void SceneReader::read_scene(const pugi::xml_node& root) {
             read_texture(n);
         else if (name == "material")
             read_material(n);
+        else if (name == "pigment")
+            read_pigment(n);
+        else if (name == "normal")
+            read_normal(n);
+        else if (name == "switch")
+            read_switch(n);
+        else if (name == "sky")
+            read_sky(n);
+        else if (name == "fog")
+            read_fog(n);
         else if (name == "mesh")
             read_mesh(n, true);
         else if (name == "subdivision")
@@ -81,7 +91,8 @@ void SceneReader::read_scene(const pugi::xml_node& root) {
             read_shape_object(n);
         else
             unknown_element(ctx_, n, root,
-                            {"settings", "camera",   "background",  "light",        "texture",
+                            {"settings", "camera",   "background",  "sky",          "fog",
+                             "light",    "texture",  "pigment",     "normal",       "switch",
                              "material", "mesh",     "subdivision", "object",       "sphere",
                              "box",      "cylinder", "cone",        "disc",         "plane",
                              "torus",    "union",    "merge",       "intersection", "difference"});

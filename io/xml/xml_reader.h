@@ -1,7 +1,9 @@
 // The XML scene reader's state and its element handlers, shared by the files that implement
 // them: xml_reader.cpp (the document, <scene>, names), xml_transform.cpp, xml_material.cpp
 // (<material>, <texture>), xml_meshes.cpp (<mesh>, <subdivision>, <object>), xml_shapes.cpp
-// (analytic shapes and CSG), xml_view.cpp (<camera>, <light>, <background>, <settings>).
+// (analytic shapes and CSG), xml_view.cpp (<camera>, <light>, <background>, <sky>, <fog>,
+// <settings>), xml_patterns.cpp (the pattern attributes, placement and map entries that
+// procedural textures share), xml_pigments.cpp (<pigment>, <normal>, <switch>).
 #pragma once
 
 #include "core/math/affine.h"
@@ -47,6 +49,34 @@ class SceneReader {
     void read_material(const pugi::xml_node& node);
     void read_texture(const pugi::xml_node& node);
 
+    // xml_patterns.cpp
+    /// What a pattern is read for: only pigments may show an image.
+    enum class PatternUse { Pigment, Normal, Switch };
+    /// The kind named by the required 'pattern' attribute (PatternKind in lower case, and
+    /// POV-Ray's aliases bumps and spotted for bozo).
+    PatternKind pattern_kind(Attributes& a, PatternUse use) const;
+    /// A pattern of `kind` from its attributes: turbulence, octaves, omega, lambda, frequency,
+    /// phase, wave, wave_exponent and the kind's own (vector, arms, agate_turb, brick_size,
+    /// mortar). An attribute of another kind is an error naming the kind it belongs to.
+    Pattern read_pattern(Attributes& a, PatternKind kind) const;
+    /// Sets pattern.to_pattern from the placement (pattern space -> world) the transform
+    /// children gave; a singular placement is an error at `node`.
+    void place_pattern(const pugi::xml_node& node, const Affine& placement, Pattern& pattern) const;
+    /// How the <entry> elements of a pattern are told apart: by value (continuous patterns:
+    /// values in [0, 1], none below the one before) or by position (list patterns, layers,
+    /// averages: no values). `previous` carries the last value between calls.
+    float entry_value(Attributes& e, const char* ordered_by, float& previous) const;
+    /// Fails unless a list pattern has exactly the entries it picks from (checker 2 ...) and
+    /// any other has at least one.
+    void check_entry_count(const pugi::xml_node& node, PatternKind kind, size_t count) const;
+
+    // xml_pigments.cpp
+    void read_pigment(const pugi::xml_node& node);
+    PigmentEntry read_pigment_entry(const pugi::xml_node& node, const char* ordered_by,
+                                    float& previous);
+    void read_normal(const pugi::xml_node& node);
+    void read_switch(const pugi::xml_node& node);
+
     // xml_meshes.cpp
     uint32_t read_mesh(const pugi::xml_node& node, bool top_level);
     uint32_t read_subdivision(const pugi::xml_node& node, bool top_level);
@@ -64,13 +94,15 @@ class SceneReader {
     void read_camera(const pugi::xml_node& node);
     void read_light(const pugi::xml_node& node);
     void read_background(const pugi::xml_node& node);
+    void read_sky(const pugi::xml_node& node);
+    void read_fog(const pugi::xml_node& node);
     void read_settings(const pugi::xml_node& node);
 
     const XmlContext& ctx_;
     Scene scene_;
-    NameTable materials_, textures_, meshes_;
+    NameTable materials_, textures_, meshes_, pigments_, normals_, switches_;
     std::optional<uint32_t> default_material_;
-    bool camera_seen_ = false, background_seen_ = false;
+    bool camera_seen_ = false, background_seen_ = false, sky_seen_ = false, fog_seen_ = false;
 };
 
 } // namespace sheaf::io::xml

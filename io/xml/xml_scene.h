@@ -1,6 +1,7 @@
 // XML scene files (.xml, docs/xml-scene.md): every part of the core Scene — meshes inline or
 // from mesh files, subdivision surfaces, analytic shapes and CSG, materials, image textures,
-// lights, the camera, the background and the scene's settings — read with pugixml and checked
+// procedural textures (pigments, normals, material switches), lights, the camera, the
+// background or sky, fog and the scene's settings — read with pugixml and checked
 // element by element. Errors are SceneError "FILE:LINE:COL: error: ..." naming what was found
 // and what was expected; unknown elements and attributes are errors.
 #pragma once

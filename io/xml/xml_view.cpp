@@ -1,4 +1,4 @@
-// <camera>, <light>, <background> and <settings>: what the scene is seen with.
+// <camera>, <light>, <background>, <sky>, <fog> and <settings>: what the scene is seen with.
 #include "io/xml/xml_reader.h"
 
 #include "core/base/error.h"
@@ -92,12 +92,49 @@ void SceneReader::read_light(const pugi::xml_node& node) {
 
 void SceneReader::read_background(const pugi::xml_node& node) {
     if (background_seen_) ctx_.fail(node, "a scene has one <background>; this is the second");
+    if (sky_seen_)
+        ctx_.fail(node, "a scene has a <background> or a <sky>, not both: rays that leave the "
+                        "scene see the sky's pigment instead of the background colour");
     background_seen_ = true;
     no_children(ctx_, node);
     Attributes a(ctx_, node);
     a.get("color", scene_.background, true);
     a.finish();
     a.require("color");
+}
+
+void SceneReader::read_sky(const pugi::xml_node& node) {
+    if (sky_seen_) ctx_.fail(node, "a scene has one <sky>; this is the second");
+    if (background_seen_)
+        ctx_.fail(node, "a scene has a <background> or a <sky>, not both: rays that leave the "
+                        "scene see the sky's pigment instead of the background colour");
+    sky_seen_ = true;
+    no_children(ctx_, node);
+    Attributes a(ctx_, node);
+    std::string pigment;
+    a.get("pigment", pigment);
+    a.finish();
+    a.require("pigment");
+    scene_.sky = int32_t(lookup(pigments_, "pigment", pigment, node, node.attribute("pigment")));
+}
+
+void SceneReader::read_fog(const pugi::xml_node& node) {
+    if (fog_seen_) ctx_.fail(node, "a scene has one <fog>; this is the second");
+    fog_seen_ = true;
+    no_children(ctx_, node);
+    Attributes a(ctx_, node);
+    Fog f;
+    a.get("distance", f.distance);
+    a.get("color", f.color, true);
+    a.get("transmit", f.transmit);
+    a.finish();
+    a.require("distance");
+    a.require("color");
+    if (!(f.distance > 0))
+        ctx_.fail(node, node.attribute("distance"), "the fog's distance must be > 0");
+    if (!(f.transmit >= 0 && f.transmit <= 1))
+        ctx_.fail(node, node.attribute("transmit"), "the fog's transmit must lie in 0..1");
+    scene_.fog = f;
 }
 
 void SceneReader::read_settings(const pugi::xml_node& node) {

@@ -1,0 +1,226 @@
+// What <pigment>, <normal> and <switch> share: the pattern named by the 'pattern' attribute
+// with its modifiers (core/scene/pattern.h, evaluated by core/render/pattern_eval.h), the
+// transform children that place it, and the values and count of its <entry> elements.
+#include "io/xml/xml_reader.h"
+
+#include <cmath>
+
+namespace sheaf::io::xml {
+namespace {
+
+struct PatternName {
+    const char* name;
+    PatternKind kind;
+};
+
+// POV-Ray's spelling of every PatternKind; bumps and spotted are POV-Ray's names for bozo.
+const PatternName kPatterns[] = {
+    {"gradient", PatternKind::Gradient},
+    {"marble", PatternKind::Marble},
+    {"wood", PatternKind::Wood},
+    {"onion", PatternKind::Onion},
+    {"radial", PatternKind::Radial},
+    {"spherical", PatternKind::Spherical},
+    {"cylindrical", PatternKind::Cylindrical},
+    {"planar", PatternKind::Planar},
+    {"boxed", PatternKind::Boxed},
+    {"leopard", PatternKind::Leopard},
+    {"bozo", PatternKind::Bozo},
+    {"bumps", PatternKind::Bozo},
+    {"spotted", PatternKind::Bozo},
+    {"granite", PatternKind::Granite},
+    {"agate", PatternKind::Agate},
+    {"wrinkles", PatternKind::Wrinkles},
+    {"dents", PatternKind::Dents},
+    {"crackle", PatternKind::Crackle},
+    {"cells", PatternKind::Cells},
+    {"ripples", PatternKind::Ripples},
+    {"waves", PatternKind::Waves},
+    {"spiral1", PatternKind::Spiral1},
+    {"spiral2", PatternKind::Spiral2},
+    {"quilted", PatternKind::Quilted},
+    {"checker", PatternKind::Checker},
+    {"hexagon", PatternKind::Hexagon},
+    {"brick", PatternKind::Brick},
+    {"square", PatternKind::Square},
+    {"triangular", PatternKind::Triangular},
+    {"image", PatternKind::Image},
+};
+
+const char* name_of(PatternKind k) {
+    for (const PatternName& p : kPatterns)
+        if (p.kind == k) return p.name;
+    return "?";
+}
+
+// The entries a list pattern picks from; 0 for continuous patterns.
+size_t list_size(PatternKind k) {
+    switch (k) {
+    case PatternKind::Checker:
+    case PatternKind::Brick:
+        return 2;
+    case PatternKind::Hexagon:
+        return 3;
+    case PatternKind::Square:
+        return 4;
+    case PatternKind::Triangular:
+        return 6;
+    default:
+        return 0;
+    }
+}
+
+std::string quote(const std::string& s) {
+    return "'" + s + "'";
+}
+
+} // namespace
+
+PatternKind SceneReader::pattern_kind(Attributes& a, PatternUse use) const {
+    const pugi::xml_node& node = a.node();
+    std::string name;
+    if (!a.get("pattern", name)) a.require("pattern");
+    for (const PatternName& p : kPatterns) {
+        if (name != p.name) continue;
+        if (p.kind == PatternKind::Image && use != PatternUse::Pigment)
+            ctx_.fail(node, node.attribute("pattern"),
+                      "the image pattern gives colours, so only a <pigment> takes it");
+        return p.kind;
+    }
+    std::vector<std::string> names;
+    for (const PatternName& p : kPatterns)
+        if (p.kind != PatternKind::Image || use == PatternUse::Pigment) names.push_back(p.name);
+    ctx_.fail(node, node.attribute("pattern"),
+              "unknown pattern " + quote(name) + " on " + tag(node) + "; expected one of " +
+                  join(names));
+}
+
+Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
+    const pugi::xml_node& node = a.node();
+    const std::string kind_name = name_of(kind);
+    const bool list = pattern_is_list(kind);
+    // Attributes that only some patterns take: an error naming what they belong to.
+    auto only_for = [&](const char* attribute, bool applies, const std::string& owner) {
+        if (!applies && node.attribute(attribute))
+            ctx_.fail(node, node.attribute(attribute),
+                      "attribute '" + std::string(attribute) + "' of " + tag(node) +
+                          " belongs to " + owner + "; this pattern is " + quote(kind_name));
+    };
+    auto fail_value = [&](const char* attribute, const std::string& why) {
+        ctx_.fail(node, node.attribute(attribute),
+                  "attribute '" + std::string(attribute) + "' of " + tag(node) + ": " + why);
+    };
+
+    Pattern pt;
+    pt.kind = kind;
+    // Marble and wood are triangle-waved unless the scene says otherwise, as in POV-Ray.
+    pt.wave =
+        kind == PatternKind::Marble || kind == PatternKind::Wood ? Wave::Triangle : Wave::Ramp;
+
+    std::vector<float> turbulence;
+    if (a.get_numbers("turbulence", turbulence)) {
+        if (turbulence.size() == 1)
+            pt.turbulence = Vec3(turbulence[0]);
+        else if (turbulence.size() == 3)
+            pt.turbulence = Vec3(turbulence[0], turbulence[1], turbulence[2]);
+        else
+            fail_value("turbulence",
+                       "expected one or three numbers, found " + std::to_string(turbulence.size()));
+        pt.has_turbulence = pt.turbulence.x != 0 || pt.turbulence.y != 0 || pt.turbulence.z != 0;
+    }
+    for (const char* t : {"octaves", "omega", "lambda"})
+        if (turbulence.empty() && node.attribute(t))
+            ctx_.fail(node, node.attribute(t),
+                      "attribute '" + std::string(t) + "' of " + tag(node) +
+                          " shapes the turbulence; give 'turbulence' too");
+    int octaves = pt.octaves;
+    a.get("octaves", octaves, 1, 10);
+    pt.octaves = int8_t(octaves);
+    a.get("omega", pt.omega);
+    a.get("lambda", pt.lambda);
+
+    // Continuous patterns: frequency, phase and the wave shape the value.
+    const std::string continuous = "continuous patterns (a list pattern picks its entries by tile)";
+    for (const char* t : {"frequency", "phase", "wave"}) only_for(t, !list, continuous);
+    a.get("frequency", pt.frequency);
+    a.get("phase", pt.phase);
+    int wave = -1;
+    if (a.get("wave", wave, {"ramp", "triangle", "sine", "scallop", "cubic", "poly"}))
+        pt.wave = Wave(wave);
+    only_for("wave_exponent", pt.wave == Wave::Poly, "wave=\"poly\"");
+    if (a.get("wave_exponent", pt.wave_exponent) && !(pt.wave_exponent > 0))
+        fail_value("wave_exponent", "the exponent must be > 0");
+
+    // The patterns' own parameters.
+    only_for("vector", kind == PatternKind::Gradient, "the gradient pattern");
+    if (a.get("vector", pt.vector) && !(length(pt.vector) > 0))
+        fail_value("vector", "the gradient's direction must not be zero");
+    const bool spiral = kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2;
+    only_for("arms", spiral, "the spiral1 and spiral2 patterns");
+    if (spiral) {
+        pt.param[0] = 1;
+        if (a.get("arms", pt.param[0]) && pt.param[0] == 0)
+            fail_value("arms", "a spiral needs a number of arms other than 0");
+    }
+    only_for("agate_turb", kind == PatternKind::Agate, "the agate pattern");
+    if (kind == PatternKind::Agate) {
+        pt.param[0] = 1;
+        if (a.get("agate_turb", pt.param[0]) && !(pt.param[0] > 0))
+            fail_value("agate_turb", "expected a number > 0");
+    }
+    only_for("brick_size", kind == PatternKind::Brick, "the brick pattern");
+    only_for("mortar", kind == PatternKind::Brick, "the brick pattern");
+    if (kind == PatternKind::Brick) {
+        Vec3 size(8, 3, 4.5f);
+        float mortar = 0.5f;
+        if (a.get("brick_size", size, true) && !(size.x > 0 && size.y > 0 && size.z > 0))
+            fail_value("brick_size", "a brick's size must be > 0 in x, y and z");
+        if (a.get("mortar", mortar) && !(mortar > 0))
+            fail_value("mortar", "the mortar's width must be > 0");
+        pt.param[0] = size.x, pt.param[1] = size.y, pt.param[2] = size.z, pt.param[3] = mortar;
+    }
+    return pt;
+}
+
+void SceneReader::place_pattern(const pugi::xml_node& node, const Affine& placement,
+                                Pattern& pattern) const {
+    if (std::fabs(placement.determinant()) < 1e-20f)
+        ctx_.fail(node, "the transform of " + tag(node) + " is singular");
+    pattern.to_pattern = placement.inverse();
+}
+
+float SceneReader::entry_value(Attributes& e, const char* ordered_by, float& previous) const {
+    const pugi::xml_node& node = e.node();
+    if (ordered_by) {
+        if (node.attribute("value"))
+            ctx_.fail(node, node.attribute("value"),
+                      "an <entry> of " + std::string(ordered_by) +
+                          " takes no 'value': the entries count in order");
+        return 0;
+    }
+    float v = 0;
+    if (!e.get("value", v))
+        ctx_.fail(node, "an <entry> of a continuous pattern needs the attribute 'value' (where "
+                        "in 0..1 of the pattern it stands)");
+    if (!(v >= 0 && v <= 1))
+        ctx_.fail(node, node.attribute("value"), "an entry's value must lie in 0..1");
+    if (v < previous)
+        ctx_.fail(node, node.attribute("value"),
+                  "entry values must not decrease; " + std::to_string(v) + " follows " +
+                      std::to_string(previous));
+    previous = v;
+    return v;
+}
+
+void SceneReader::check_entry_count(const pugi::xml_node& node, PatternKind kind,
+                                    size_t count) const {
+    const size_t list = list_size(kind);
+    if (list > 0 && count != list)
+        ctx_.fail(node, "the " + std::string(name_of(kind)) + " pattern picks from " +
+                            std::to_string(list) + " entries; " + tag(node) + " has " +
+                            std::to_string(count) +
+                            (count == 1 ? " <entry>" : " <entry> elements"));
+    if (count == 0) ctx_.fail(node, tag(node) + " needs <entry> elements");
+}
+
+} // namespace sheaf::io::xml

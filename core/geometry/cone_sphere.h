@@ -16,6 +16,9 @@ struct RayNode {
     float angle = 0;
     float tan_angle = 0;
     float inv_cos_angle = 1;
+    /// How far from `center` any point of the node's rays lies (origins plus lengths); +inf
+    /// for rays without an end, or when the hierarchy does not bound distances.
+    float reach = INFINITY;
 };
 
 SHEAF_HD_INLINE RayNode make_ray_node(const Sphere& s, const Cone& c) {
@@ -41,6 +44,9 @@ SHEAF_HD_INLINE bool node_hits_sphere(const RayNode& node, const Sphere& prim) {
     const Vec3 v = prim.center - node.center;
     const float dist2 = dot(v, v);
     if (dist2 <= R * R) return true;   // the apex region touches the sphere
+    // Beyond every ray's end (padded for rounding; an infinite reach never culls).
+    const float far = (node.reach + prim.radius) * (1.0f + 1e-5f);
+    if (dist2 > far * far) return false;
     const float h = dot(v, node.axis); // |C - H|, signed along the axis
     if (node.angle < 1.5f) {
         if (h < -R) return false; // wholly behind the apex: a cone under 90 degrees looks forward

@@ -87,6 +87,7 @@ TEST(Renderer, HashSortDepthAndArityNeverChangeThePicture) {
         {{"hash.mode", "hash192"}, {"sort.mode", "csd"}},
         {{"hash.mode", "hash32"}, {"sort.algorithm", "bitonic"}},
         {{"hash.mode", "static1d"}},
+        {{"cull.distance", "false"}},
         {{"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
         {{"hash.mode", "none"}, {"sort.mode", "none"}},
         {{"hierarchy.depth", "1"}, {"hierarchy.arity", "2"}},

@@ -29,7 +29,9 @@ struct RayHierarchy {
     }
 };
 
+/// `bound_reach`: nodes also bound how far their rays go (RayNode::reach; setting
+/// cull.distance), so primitives beyond every ray's end are culled.
 RayHierarchy build_hierarchy(const TrackedVector<Ray>& rays, int depth, int arity,
-                             MemoryTracker& memory);
+                             MemoryTracker& memory, bool bound_reach = false);
 
 } // namespace sheaf

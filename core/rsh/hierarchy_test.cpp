@@ -69,3 +69,38 @@ TEST(Hierarchy, EveryRayLiesInsideEveryAncestor) {
 
 } // namespace
 } // namespace sheaf
+
+namespace sheaf {
+namespace {
+
+// A node's reach holds every point of its rays: origin + t dir for t up to tmax.
+TEST(Hierarchy, ReachBoundsEveryRayPoint) {
+    std::mt19937 g(21);
+    std::uniform_real_distribution<float> u(-5, 5), len(0.1f, 3.0f);
+    TrackedVector<Ray> rays;
+    for (int i = 0; i < 4000; ++i) {
+        Ray r;
+        r.origin = Vec3(u(g), u(g), u(g));
+        r.dir = normalize(Vec3(u(g), u(g), u(g)));
+        r.tmax = len(g);
+        rays.push_back(r);
+    }
+    MemoryTracker m;
+    const RayHierarchy h = build_hierarchy(rays, 3, 4, m, true);
+    for (int level = 1; level <= 3; ++level)
+        for (size_t i = 0; i < h.node_count(level); ++i) {
+            const RayNode& n = h.levels[size_t(level) - 1][i];
+            ASSERT_LT(n.reach, INFINITY);
+            // The rays under node i of this level.
+            size_t first = i, last = i + 1;
+            for (int l = level; l >= 1; --l) first *= 4, last = std::min(last * 4, h.node_count(l - 1));
+            for (size_t j = first; j < last; ++j)
+                for (float t : {0.0f, rays[j].tmax * 0.5f, rays[j].tmax})
+                    ASSERT_LE(length(rays[j].origin + rays[j].dir * t - n.center), n.reach);
+        }
+    // Rays without an end, or reach not bounded: infinite.
+    EXPECT_EQ(build_hierarchy(rays, 2, 4, m, false).levels[1][0].reach, INFINITY);
+}
+
+} // namespace
+} // namespace sheaf

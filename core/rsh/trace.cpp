@@ -411,7 +411,8 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
         PhaseTimer t(stats, "time_ms.hierarchy");
         parallel_for(
             "rsh.gather", n, [&](size_t j) { sorted[j] = batch.rays[order.perm[j]]; }, 4096);
-        h = build_hierarchy(sorted, s.hierarchy_depth, s.hierarchy_arity, memory);
+        h = build_hierarchy(sorted, s.hierarchy_depth, s.hierarchy_arity, memory,
+                            s.cull_distance);
     }
     stats.add(std::string("hierarchy.") + ray_type_name(batch.type) + ".top_nodes",
               double(h.node_count(s.hierarchy_depth)));

@@ -56,6 +56,15 @@ const std::vector<SettingSpec>& setting_specs() {
          0,
          {},
          "test top hierarchy nodes against object bounding spheres first"},
+        {"cull.distance",
+         K::Bool,
+         "true",
+         0,
+         0,
+         {},
+         "hierarchy nodes also bound how far their rays reach (shadow rays end at the surface, "
+         "AO rays at ao.distance): primitives beyond every ray's end are not candidates; false "
+         "keeps the papers' unbounded cones"},
         {"trace.depth",
          K::Int,
          "5",
@@ -296,6 +305,7 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.sort_algorithm =
         choice("sort.algorithm") == "bitonic" ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
     r.cull_objects = v.at("cull.objects") == "true";
+    r.cull_distance = v.at("cull.distance") == "true";
     r.trace_depth = i("trace.depth");
     const std::string backend = choice("backend");
     r.backend = backend == "cpu" ? Backend::Cpu : backend == "cuda" ? Backend::Cuda : Backend::Auto;

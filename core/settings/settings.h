@@ -61,6 +61,7 @@ struct RenderSettings {
     SortMode sort = SortMode::Csd;
     SortAlgorithm sort_algorithm = SortAlgorithm::Radix;
     bool cull_objects = true;
+    bool cull_distance = true;
     int trace_depth = 5;
     Backend backend = Backend::Auto;
     int width = 512, height = 512;

@@ -213,11 +213,13 @@ SHEAF_HD_INLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
         const Vec3 size(pt.param[0] > 0 ? pt.param[0] : 8.0f, pt.param[1] > 0 ? pt.param[1] : 3.0f,
                         pt.param[2] > 0 ? pt.param[2] : 4.5f);
         const float mortar = pt.param[3] > 0 ? pt.param[3] : 0.5f;
-        const int course = floor_int(p.y / size.y);
+        // Nudged as checker is, so a face lying on a course boundary takes one side.
+        const Vec3 q = p + Vec3(e);
+        const int course = floor_int(q.y / size.y);
         const float shift = (course & 1) ? 0.5f : 0.0f;
-        const float fx = frac(p.x / size.x + shift) * size.x;
-        const float fy = frac(p.y / size.y) * size.y;
-        const float fz = frac(p.z / size.z + shift) * size.z;
+        const float fx = frac(q.x / size.x + shift) * size.x;
+        const float fy = frac(q.y / size.y) * size.y;
+        const float fz = frac(q.z / size.z + shift) * size.z;
         const float m = 0.5f * mortar;
         const bool in_mortar = fx < m || fx > size.x - m || fy < m || fy > size.y - m ||
                                fz < m || fz > size.z - m;

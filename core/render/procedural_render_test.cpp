@@ -239,3 +239,32 @@ TEST(ProceduralRender, TransparentSurfacesFilterShadows) {
 
 } // namespace
 } // namespace sheaf
+
+#include "core/render/shade.h"
+
+namespace sheaf {
+namespace {
+
+TEST(ProceduralShading, FogAndFadeFollowPovRay) {
+    Fog f;
+    f.distance = 10, f.color = Vec3(1), f.transmit = 0.5f;
+    float keep;
+    Vec3 add;
+    fog_over(f, 10, keep, add); // exp(-1) = 0.37 < transmit: the surface keeps half
+    EXPECT_FLOAT_EQ(keep, 0.5f);
+    EXPECT_FLOAT_EQ(add.x, 0.5f);
+    fog_over(f, 1, keep, add);
+    EXPECT_NEAR(keep, std::exp(-0.1f), 1e-6);
+    Material m;
+    m.fade_distance = 2, m.fade_power = 2, m.fade_color = Vec3(0.5f, 0, 0);
+    EXPECT_NEAR(interior_fade(m, 2).y, 0.5f, 1e-6); // 1 / (1 + 1)
+    EXPECT_NEAR(interior_fade(m, 2).x, 0.75f, 1e-6); // towards the fade colour
+    m.fade_power = 1001; // exponential absorption
+    EXPECT_NEAR(interior_fade(m, 2).y, std::exp(-1.0f), 1e-6);
+    EXPECT_NEAR(interior_fade(m, 2).x, std::exp(-0.5f), 1e-6);
+    m.fade_distance = 0;
+    EXPECT_EQ(interior_fade(m, 5).x, 1.0f);
+}
+
+} // namespace
+} // namespace sheaf

@@ -124,23 +124,31 @@ SHEAF_HD_INLINE Vec3 ambient_light(const Material& m, const SurfaceHit& h) {
 
 /// What light keeps after travelling d inside a material that fades it (POV-Ray's interior
 /// fade_distance, fade_power, fade_color).
+/// A fade_power of 1000 or more is POV-Ray's exponential absorption instead:
+/// exp(-(1 - fade_color) d / fade_distance) per channel.
 SHEAF_HD_INLINE Vec3 interior_fade(const Material& m, float d) {
     if (!(m.fade_distance > 0) || !(m.fade_power > 0)) return Vec3(1.0f);
+    if (m.fade_power >= 1000.0f) {
+        const float k = d / m.fade_distance;
+        return Vec3(expf(-(1.0f - m.fade_color.x) * k), expf(-(1.0f - m.fade_color.y) * k),
+                    expf(-(1.0f - m.fade_color.z) * k));
+    }
     const float a = 1.0f / (1.0f + powf(d / m.fade_distance, m.fade_power));
     return Vec3(a) + m.fade_color * (1.0f - a);
 }
 
 /// Constant fog along a ray segment of length d (infinite for rays that leave the scene): the
 /// far colour keeps `keep` of itself and the fog adds `add`.
+/// As POV-Ray: the far colour keeps max(exp(-d / distance), transmit), the fog's colour fills
+/// the rest.
 SHEAF_HD_INLINE void fog_over(const Fog& f, float d, float& keep, Vec3& add) {
     if (!(f.distance > 0)) {
         keep = 1.0f, add = Vec3(0.0f);
         return;
     }
     const float a = d < 3.0e38f ? expf(-d / f.distance) : 0.0f;
-    const float amount = (1.0f - a) * (1.0f - f.transmit);
-    keep = 1.0f - amount;
-    add = f.color * amount;
+    keep = fmaxf(a, f.transmit);
+    add = f.color * (1.0f - keep);
 }
 
 /// Snell refraction of unit d through unit n (facing d's origin side); false on total

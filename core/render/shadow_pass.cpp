@@ -30,13 +30,19 @@ Vec3 shadow_pass(const PreparedScene& scene, uint32_t prim, const Ray& ray, floa
     const uint32_t index = prim - uint32_t(scene.tris.size());
     const SpanList spans = csg_spans(scene, scene.analytic_root[index], ray);
     Vec3 pass(1.0f);
-    for (int i = 0; i < spans.n; ++i)
-        for (const CsgEnd* e : {&spans.s[i].a, &spans.s[i].b}) {
+    for (int i = 0; i < spans.n; ++i) {
+        const CsgSpan& span = spans.s[i];
+        for (const CsgEnd* e : {&span.a, &span.b}) {
             if (!(e->t > ray.tmin && e->t < ray.tmax)) continue;
             const Vec3 p = ray_at(ray, e->t);
             pass = pass * surface_pass(scene, scene.shape_material[e->leaf], p, p.x, p.y);
             if (max_component(pass) <= 0.0f) return Vec3(0.0f);
         }
+        // The stretch inside the solid fades as its interior does (the entering surface's).
+        const float inside = fminf(span.b.t, ray.tmax) - fmaxf(span.a.t, ray.tmin);
+        if (inside > 0)
+            pass = pass * interior_fade(scene.materials[scene.shape_material[span.a.leaf]], inside);
+    }
     return pass;
 }
 

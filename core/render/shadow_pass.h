@@ -13,7 +13,8 @@ namespace sheaf {
 
 /// Light a shadow ray keeps (per channel) crossing primitive `prim`, whose exact test found
 /// it at distance t: the product over every surface of the primitive it crosses inside the
-/// ray's (tmin, tmax). Zero where a crossed surface is opaque.
+/// ray's (tmin, tmax), and for analytic solids the interior fade over the stretch inside.
+/// Zero where a crossed surface is opaque.
 Vec3 shadow_pass(const PreparedScene& scene, uint32_t prim, const Ray& ray, float t);
 
 /// Fixed point for the products: -log2(factor) * 2^16; factors at or below 2^-256 count as 0.

@@ -94,8 +94,8 @@ struct NormalPattern {
 };
 
 /// A material chosen by pattern (POV-Ray's texture_map and texture lists): entries
-/// [first, first + count) of Scene::material_entries. Continuous patterns take the entry whose
-/// value is nearest below the pattern's value (no blending between materials).
+/// [first, first + count) of Scene::material_entries. Continuous patterns take the nearer of
+/// the two entries around the pattern's value (no blending between materials).
 struct MaterialSwitch {
     Pattern pattern;
     uint32_t first = 0, count = 0;
@@ -106,8 +106,8 @@ struct MaterialEntry {
     uint32_t material = 0;
 };
 
-/// Constant fog (POV-Ray fog_type 1): a surface at distance d keeps exp(-d / distance) of its
-/// colour; the rest becomes the fog's colour, of which `transmit` lets the background through.
+/// Constant fog (POV-Ray fog_type 1): a surface at distance d keeps max(exp(-d / distance),
+/// transmit) of its colour; the fog's colour fills the rest.
 struct Fog {
     float distance = 0; // 0: no fog
     Vec3 color{0, 0, 0};

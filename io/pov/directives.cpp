@@ -96,7 +96,9 @@ bool Parser::directive(bool continuation) {
         if (accept_sym(",")) c.step = parse_float();
         expect_sym(")");
         if (c.step == 0) error_at(name, "#for with a step of 0 never ends");
-        declare(c.var, Value::number(start), false);
+        // As POV-Ray: the loop variable is #local, so a loop inside a macro never changes the
+        // caller's variable of the same name.
+        declare(c.var, Value::number(start), true);
         c.pos = frames_.back().pos;
         if (c.step > 0 ? start <= c.end : start >= c.end)
             frames_.back().conds.push_back(c);
@@ -373,12 +375,11 @@ void Parser::end_directive(const Token& where) {
     // #for
     Value* v = lookup_mut(c.var);
     const double next = (v && v->type == VType::Float ? v->v[0] : c.end) + c.step;
-    if (c.step > 0 ? next <= c.end + 1e-10 : next >= c.end - 1e-10) {
-        declare(c.var, Value::number(next), false);
+    declare(c.var, Value::number(next), true); // after the loop it holds End + Step
+    if (c.step > 0 ? next <= c.end + 1e-10 : next >= c.end - 1e-10)
         f.pos = c.pos;
-    } else {
+    else
         f.conds.pop_back();
-    }
 }
 
 void Parser::break_directive(const Token& where) {

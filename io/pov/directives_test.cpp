@@ -69,6 +69,14 @@ TEST(PovDirectives, WhileAndFor) {
                               "S")
                          .v[0],
                      9);
+    // The loop variable is local: a loop inside a macro leaves the caller's loop alone (this
+    // hung when it was not), and after a loop it holds End + Step.
+    EXPECT_DOUBLE_EQ(declared("#macro M() #for (I, 0, 5) #end #end\n#declare S = 0;"
+                              " #for (I, 1, 3) M() #declare S = S + 1; #end",
+                              "S")
+                         .v[0],
+                     3);
+    EXPECT_DOUBLE_EQ(declared("#for (I, 1, 5) #end #declare E = I;", "E").v[0], 6);
     EXPECT_DOUBLE_EQ(declared("#declare S = 0; #while (1) #declare S = S + 1;"
                               " #if (S = 4) #break #end #end",
                               "S")

@@ -15,12 +15,23 @@ float srgb_to_linear(float v) {
     return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
+// One texture system for the process, never destroyed. OpenImageIO 2.4's
+// TextureSystem::destroy frees the object with a size that does not match its allocation;
+// hosts whose allocator trusts sized frees (Blender's jemalloc) had their heap corrupted each
+// time a textured scene was released.
+OIIO::TextureSystem* texture_system() {
+    static OIIO::TextureSystem* ts = [] {
+        OIIO::TextureSystem* t = OIIO::TextureSystem::create(false);
+        // Keep the cache modest: textures are read on demand, tile by tile.
+        t->attribute("max_memory_MB", 512.0f);
+        return t;
+    }();
+    return ts;
+}
+
 class OiioSampler final : public TextureSampler {
   public:
-    OiioSampler() : ts_(OIIO::TextureSystem::create(false)) {
-        // Keep the cache modest: textures are read on demand, tile by tile.
-        ts_->attribute("max_memory_MB", 512.0f);
-    }
+    OiioSampler() : ts_(texture_system()) {}
 
     void add(const Texture& tex) {
         const std::string where = tex.origin.empty() ? "" : " (asked for at " + tex.origin + ")";
@@ -42,8 +53,9 @@ class OiioSampler final : public TextureSampler {
                 srgb = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
                        spec.format.basetype == OIIO::TypeDesc::UINT16;
         }
-        entries_.push_back(
-            {OIIO::ustring(tex.path), srgb, std::max(1, std::min(3, spec.nchannels))});
+        const OIIO::ustring file(tex.path);
+        ts_->invalidate(file); // a file changed since another scene read it is read anew
+        entries_.push_back({file, srgb, std::max(1, std::min(3, spec.nchannels))});
     }
 
     Vec3 sample(uint32_t index, float s, float t) const override {
@@ -69,10 +81,7 @@ class OiioSampler final : public TextureSampler {
         bool srgb;
         int channels;
     };
-    struct Destroy {
-        void operator()(OIIO::TextureSystem* ts) const { OIIO::TextureSystem::destroy(ts); }
-    };
-    std::unique_ptr<OIIO::TextureSystem, Destroy> ts_;
+    OIIO::TextureSystem* ts_;
     std::vector<Entry> entries_;
 };
 

@@ -395,10 +395,6 @@ class _Handle:
             pass
 
 
-# Scenes deliberately never released (Scene.abandon); their handles stay referenced here.
-_abandoned = []
-
-
 class Scene(_Handle):
     _release = "sheafSceneRelease"
 
@@ -407,12 +403,6 @@ class Scene(_Handle):
         lib.check(lib.sheafSceneNew(byref(h)))
         super().__init__(lib, h)
         self.texture_count = 0
-
-    def abandon(self):
-        """Gives up the reference without releasing it: the scene lives until the process ends."""
-        if self.handle:
-            _abandoned.append(self.handle)
-            self.handle = None
 
     def add_material(self, desc):
         out = c_uint32()

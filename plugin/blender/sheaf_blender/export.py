@@ -83,15 +83,7 @@ class Exported:
 
     def release(self):
         if self.scene is not None:
-            if self.scene.texture_count:
-                # Releasing a scene with image textures frees libsheaf's OpenImageIO
-                # TextureSystem, and OpenImageIO 2.4's TextureSystem::destroy deletes it with a
-                # wrong size; Blender links jemalloc, which trusts sized deletes, so its heap is
-                # corrupted and Blender crashes later. Until libsheaf keeps one TextureSystem
-                # for the process, such scenes are kept (a leak per textured render).
-                self.scene.abandon()
-            else:
-                self.scene.release()
+            self.scene.release()
             self.scene = None
         if self.tempdir is not None:
             self.tempdir.cleanup()

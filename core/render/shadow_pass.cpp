@@ -33,7 +33,7 @@ Vec3 shadow_pass(const PreparedScene& scene, uint32_t prim, const Ray& ray, floa
     for (int i = 0; i < spans.n; ++i) {
         const CsgSpan& span = spans.s[i];
         for (const CsgEnd* e : {&span.a, &span.b}) {
-            if (!(e->t > ray.tmin && e->t < ray.tmax)) continue;
+            if (!(e->t > ray.tmin && e->t < ray.tmax) || e->leaf == 0xFFFFFFFFu) continue;
             const Vec3 p = ray_at(ray, e->t);
             pass = pass * surface_pass(scene, scene.shape_material[e->leaf], p, p.x, p.y);
             if (max_component(pass) <= 0.0f) return Vec3(0.0f);

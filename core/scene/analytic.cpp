@@ -12,9 +12,37 @@ PlacedShape place_shape(const Shape& shape, const Affine& local_to_world) {
     return p;
 }
 
+namespace {
+
+bool inside(const SpanList& spans, float t) {
+    for (int i = 0; i < spans.n; ++i)
+        if (spans.s[i].a.t <= t && t <= spans.s[i].b.t) return true;
+    return false;
+}
+
+// The surface of `base` inside `clip`: each boundary that survives becomes a span of zero
+// length whose far end is no surface (leaf ~0), so it is hit, and crossed, once.
+SpanList clip_spans(const SpanList& base, const SpanList& clip) {
+    SpanList out;
+    for (int i = 0; i < base.n; ++i)
+        for (const CsgEnd* e : {&base.s[i].a, &base.s[i].b})
+            if (e->leaf != 0xFFFFFFFFu && inside(clip, e->t))
+                out.push({*e, CsgEnd{e->t, 0xFFFFFFFFu, e->n_local, e->flip}});
+    return out;
+}
+
+} // namespace
+
 SpanList csg_spans(const PreparedScene& scene, uint32_t node, const Ray& ray) {
     const PreparedCsgNode& n = scene.csg[node];
     SpanList out;
+    if (n.op == CsgOp::Clip) {
+        SpanList clip = csg_spans(scene, scene.csg_children[n.first + 1], ray);
+        for (uint32_t c = 2; c < n.count; ++c)
+            clip = span_intersection(clip, csg_spans(scene, scene.csg_children[n.first + c], ray));
+        out = clip_spans(csg_spans(scene, scene.csg_children[n.first], ray), clip);
+        return n.inverse ? span_complement(out) : out;
+    }
     if (n.op == CsgOp::Leaf) {
         const PlacedShape& ps = scene.shapes[n.first];
         Span spans[kMaxShapeSpans];
@@ -38,6 +66,7 @@ SpanList csg_spans(const PreparedScene& scene, uint32_t node, const Ray& ray) {
                 out = span_difference(out, next);
                 break;
             case CsgOp::Leaf:
+            case CsgOp::Clip:
                 break;
             }
         }
@@ -101,7 +130,7 @@ Sphere csg_bound(const PreparedScene& scene, uint32_t node) {
     for (uint32_t c = 0; c < n.count; ++c)
         kids.push_back(csg_bound(scene, scene.csg_children[n.first + c]));
     if (n.op == CsgOp::Difference) return kids[0]; // inside the first child
-    if (n.op == CsgOp::Intersection) {
+    if (n.op == CsgOp::Intersection || n.op == CsgOp::Clip) {
         Sphere best = kids[0]; // inside every child: the smallest one bounds it
         for (const Sphere& k : kids)
             if (k.radius < best.radius) best = k;

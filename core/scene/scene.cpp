@@ -129,6 +129,8 @@ void Scene::validate() const {
             } else {
                 if (node.children.empty())
                     throw SceneError(name + ": a CSG operation without children");
+                if (node.op == CsgOp::Clip && node.children.size() < 2)
+                    throw SceneError(name + ": a clip needs the clipped node and a clipping one");
                 for (uint32_t c : node.children)
                     if (c >= so.nodes.size() || c <= n)
                         throw SceneError(name + ": CSG child " + std::to_string(c) +

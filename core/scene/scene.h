@@ -116,7 +116,9 @@ struct Object {
     uint8_t flags = 0; // ObjectFlag bits
 };
 
-enum class CsgOp : uint8_t { Leaf, Union, Merge, Intersection, Difference };
+/// Clip: the surface of the first child where it lies inside all the others (POV-Ray's
+/// clipped_by): an open surface, the clipping objects' own surfaces are not seen.
+enum class CsgOp : uint8_t { Leaf, Union, Merge, Intersection, Difference, Clip };
 
 /// A node of an analytic object: a shape (leaf) or a CSG operation over other nodes of the
 /// same object. `inverse` swaps inside and outside (POV-Ray's `inverse`).

@@ -127,10 +127,12 @@ struct Builder {
             const int k = node(o.children[i], tex, in, flags, so, uni && in_union);
             if (k >= 0)
                 kids.push_back(uint32_t(k));
-            else if (o.op == CsgOp::Difference && i == 0 && o.children[0].kind != PovKind::Light)
+            else if ((o.op == CsgOp::Difference || o.op == CsgOp::Clip) && i == 0 &&
+                     o.children[0].kind != PovKind::Light)
                 return -1; // nothing to cut from
         }
         if (kids.empty()) return -1;
+        if (o.op == CsgOp::Clip && kids.size() < 2) return int(kids[0]); // nothing clips it
         if (kids.size() == 1 && uni && !o.inverse) return int(kids[0]);
         CsgNode n;
         n.op = o.op;

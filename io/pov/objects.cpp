@@ -374,7 +374,7 @@ void Parser::parse_clipped_by(const Token& kw, PovObject& o) {
     }
     PovObject group;
     group.kind = PovKind::Csg;
-    group.op = CsgOp::Intersection;
+    group.op = CsgOp::Clip;
     group.where = o.where;
     group.texture = o.texture;
     group.interior = o.interior;

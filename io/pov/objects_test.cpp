@@ -4,6 +4,9 @@
 #include "io/pov/builder.h"
 #include "io/pov/pov_test_util.h"
 
+#include "core/scene/analytic.h"
+#include "core/scene/prepared_scene.h"
+
 #include <cmath>
 
 namespace sheaf::io::pov {
@@ -224,13 +227,26 @@ TEST(PovObjects, MeshesInsideCsg) {
               std::string::npos);
 }
 
-TEST(PovObjects, ClippedByIsAnIntersection) {
+TEST(PovObjects, ClippedByIsAnOpenSurface) {
     const PovResult r =
         load_text("sphere { 0, 1 clipped_by { plane { y, 0 } } bounded_by { box { -1, 1 } } }");
     ASSERT_EQ(r.scene.shape_objects.size(), 1u);
     const ShapeObject& o = r.scene.shape_objects[0];
-    EXPECT_EQ(o.nodes[o.root].op, CsgOp::Intersection);
+    EXPECT_EQ(o.nodes[o.root].op, CsgOp::Clip);
     EXPECT_EQ(o.nodes[o.root].children.size(), 2u);
+    // The lower half of the sphere, open at the top: a ray down the y axis from above passes
+    // the cut (no cap) and meets the inside of the bowl at y = -1.
+    const PreparedScene p = prepare_scene(r.scene);
+    Ray down;
+    down.origin = Vec3(0, 3, 0), down.dir = Vec3(0, -1, 0), down.tmin = 0, down.tmax = 100;
+    AnalyticHit h;
+    ASSERT_TRUE(analytic_first_hit(p, 0, down, h));
+    EXPECT_NEAR(h.t, 4.0f, 1e-5);
+    // A ray through the upper half misses the clipped sphere entirely.
+    Ray across;
+    across.origin = Vec3(-3, 0.5f, 0), across.dir = Vec3(1, 0, 0), across.tmin = 0;
+    across.tmax = 100;
+    EXPECT_FALSE(analytic_first_hit(p, 0, across, h));
 }
 
 TEST(PovObjects, UnsupportedIsAWarningOrStrictError) {

@@ -229,7 +229,8 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         for (auto it = t.below.rbegin(); !n && it != t.below.rend(); ++it)
             if ((*it)->normal) n = (*it)->normal.get(), n_eff = outer * (*it)->local;
         if (n) {
-            NormalPattern np{pattern(n->pattern, n_eff * n->local), float(n->amount)};
+            NormalPattern np{pattern(n->pattern, n_eff * n->local),
+                             float(n->amount * n->slope_scale)};
             scene_.normal_patterns.push_back(np);
             m.normal = int32_t(scene_.normal_patterns.size() - 1);
         }
@@ -243,7 +244,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         }
         if (t.normal) {
             NormalPattern np{pattern(t.normal->pattern, eff * t.normal->local),
-                             float(t.normal->amount)};
+                             float(t.normal->amount * t.normal->slope_scale)};
             scene_.normal_patterns.push_back(np);
             m.normal = int32_t(scene_.normal_patterns.size() - 1);
         }

@@ -85,6 +85,10 @@ struct PovPigment {
 struct PovNormal {
     PovPattern pattern;
     double amount = 0.5;
+    /// POV-Ray draws bumps, dents, ripples, waves and wrinkles with normal functions of their
+    /// own and every other pattern by its slope, much flatter; Sheaf tilts every normal by the
+    /// pattern's slope, scaled by this to look as strong (calibrated against povray).
+    double slope_scale = 0.15;
     Affine local;
 };
 

@@ -6,6 +6,21 @@
 
 namespace sheaf::io::pov {
 
+namespace {
+
+// How strongly a normal pattern tilts, relative to its slope: measured as the spread of a lit
+// plane's shading against povray's (normal { NAME 0.5 }, 128x128, tests in docs/pov.md).
+double normal_slope_scale(const std::string& name) {
+    if (name == "bumps") return 1.0;
+    if (name == "waves") return 0.8;
+    if (name == "ripples") return 0.35;
+    if (name == "wrinkles") return 0.28;
+    if (name == "dents") return 0.3;
+    return 0.15; // every other pattern: POV-Ray's generic slope normal
+}
+
+} // namespace
+
 std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
     const Token at = peek();
     expect_sym("{");
@@ -26,6 +41,7 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
         if (parse_pattern_name(n.pattern, list, supported)) {
             if (!supported) unsupported(t, "normal pattern '" + t.text + "' (no normal change)");
             have = supported;
+            n.slope_scale = normal_slope_scale(t.text);
             // The bump size may follow the pattern (and its own arguments), after a comma too.
             if (accept_sym(",") || (starts_expression(peek()) && !is_sym_tok(peek(), "<")))
                 n.amount = parse_float();

@@ -1,0 +1,106 @@
+// Frame benchmark per backend: the built-in scenes at 512x512 and 1024x1024 with the default
+// settings (crsh), the time per phase, the frame time and rays per second, on the CPU and, when
+// a CUDA device is usable, the GPU of the same machine.
+//
+// Usage: sheaf_frame_bench [--sizes 512,1024] [--frames K] [--backends cpu,cuda]
+//                          [--set KEY=VALUE ...] [scene ...]
+// Times are the median of K frames (default 3). Rays per second counts every ray the frame
+// traced: primary (one per sample) and secondary (shadow, reflection, refraction, AO).
+#include "core/render/renderer.h"
+#include "core/scenes/builtin.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace sheaf;
+
+namespace {
+
+std::vector<std::string> split(const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+const char* const kPhases[] = {"raster",        "gbuffer",   "ray_creation", "hashing",
+                               "compression",   "sorting",   "decompression", "hierarchy",
+                               "traversal",     "final_tests", "shading"};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<int> sizes = {512, 1024};
+    int frames = 3;
+    std::vector<std::string> backends = {"cpu", "cuda"}, scenes, sets;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
+        if (a == "--sizes") {
+            sizes.clear();
+            for (const std::string& s : split(next())) sizes.push_back(std::max(8, std::stoi(s)));
+        } else if (a == "--frames") {
+            frames = std::max(1, std::stoi(next()));
+        } else if (a == "--backends") {
+            backends = split(next());
+        } else if (a == "--set") {
+            sets.push_back(next());
+        } else if (a == "--help" || a == "-h") {
+            std::printf("usage: sheaf_frame_bench [--sizes 512,1024] [--frames K] "
+                        "[--backends cpu,cuda] [--set KEY=VALUE ...] [scene ...]\n");
+            return 0;
+        } else {
+            scenes.push_back(a);
+        }
+    }
+    if (scenes.empty()) scenes = builtin_scene_names();
+
+    std::printf("## Frames per backend (median of %d; ms; share of the frame)\n\n", frames);
+    std::printf("| scene | size | backend | frame ms | rays | Mrays/s |");
+    for (const char* p : kPhases) std::printf(" %s |", p);
+    std::printf("\n|---|---:|---|---:|---:|---:|");
+    for (size_t i = 0; i < std::size(kPhases); ++i) std::printf("---:|");
+    std::printf("\n");
+    for (const std::string& name : scenes) {
+        const PreparedScene scene = prepare_scene(make_builtin_scene(name));
+        for (int size : sizes)
+            for (const std::string& backend : backends) {
+                Settings s;
+                s.set("width", std::to_string(size));
+                s.set("height", std::to_string(size));
+                s.set("backend", backend);
+                for (const std::string& kv : sets) {
+                    const size_t eq = kv.find('=');
+                    if (eq != std::string::npos) s.set(kv.substr(0, eq), kv.substr(eq + 1));
+                }
+                std::vector<Frame> runs;
+                try {
+                    const RenderSettings rs = RenderSettings::resolve(s, scene.settings);
+                    for (int f = 0; f < frames; ++f) runs.push_back(render_frame(scene, rs));
+                } catch (const std::exception& e) {
+                    std::printf("| %s | %d | %s | unavailable: %s |\n", name.c_str(), size,
+                                backend.c_str(), e.what());
+                    continue;
+                }
+                std::sort(runs.begin(), runs.end(), [](const Frame& a, const Frame& b) {
+                    return a.stats.get("time_ms.frame") < b.stats.get("time_ms.frame");
+                });
+                const Stats& st = runs[runs.size() / 2].stats;
+                const double ms = st.get("time_ms.frame");
+                const double rays = st.get("rays.primary") + st.get("rays.secondary");
+                std::printf("| %s | %d | %s | %.2f | %.0f | %.2f |", name.c_str(), size,
+                            backend.c_str(), ms, rays, rays / (ms * 1e3));
+                for (const char* p : kPhases) {
+                    const double t = st.get(std::string("time_ms.") + p);
+                    std::printf(" %.2f (%.0f%%) |", t, ms > 0 ? 100 * t / ms : 0.0);
+                }
+                std::printf("\n");
+                std::fflush(stdout);
+            }
+    }
+    return 0;
+}

@@ -71,6 +71,8 @@ struct SheafSceneT : SheafRefCounted {
     /// How sheafSceneLoadFile reads files (sheafSceneSetLoadOption), and what the last load
     /// warned about.
     sheaf::io::SceneFileOptions load_options;
+    bool subdivision_limit = false;
+    int subdivision_boundary = 0; // sheaf::io::SubdivBoundary
     std::vector<std::string> warnings;
     /// The committed scene; null when never committed or changed since.
     std::shared_ptr<const sheaf::PreparedScene> prepared;

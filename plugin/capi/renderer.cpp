@@ -130,6 +130,25 @@ SHEAF_API SheafError sheafRendererLoadPreset(SheafRenderer renderer, const char*
     });
 }
 
+SHEAF_API SheafError sheafGetPresetList(char* buf, size_t size, size_t* needed) {
+    return barrier([&] {
+        const std::vector<std::string> dirs = preset_dirs();
+        std::string text;
+        for (const std::string& name : sheaf::list_presets(dirs)) {
+            std::string description;
+            try {
+                description = sheaf::load_preset(sheaf::find_preset(name, dirs)).description;
+            } catch (const std::exception& e) {
+                description = std::string("(unreadable: ") + e.what() + ")";
+            }
+            for (char& c : description)
+                if (c == '\n' || c == '\t') c = ' ';
+            text += name + "\t" + description + "\n";
+        }
+        copy_text(text, buf, size, needed);
+    });
+}
+
 SHEAF_API SheafError sheafRendererSetProgressCallback(SheafRenderer renderer,
                                                       SheafProgressCallback callback, void* user) {
     return barrier([&] {

@@ -142,10 +142,25 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
                                       "' is not allowed; expected an integer in 1..16384");
             (k == "image_width" ? s.load_options.image_width : s.load_options.image_height) =
                 int(n);
+        } else if (k == "subdivision.limit") {
+            if (v != "0" && v != "1")
+                throw InvalidArgument("option 'subdivision.limit': '" + v +
+                                      "' is not allowed; expected 0 or 1");
+            s.subdivision_limit = v == "1";
+        } else if (k == "subdivision.boundary") {
+            static const char* const kRules[] = {"edge_only", "edge_and_corner", "none"};
+            int rule = -1;
+            for (int i = 0; i < 3; ++i)
+                if (v == kRules[i]) rule = i;
+            if (rule < 0)
+                throw InvalidArgument("option 'subdivision.boundary': '" + v +
+                                      "' is not allowed; expected edge_only, edge_and_corner or "
+                                      "none");
+            s.subdivision_boundary = rule;
         } else {
             throw InvalidArgument("unknown load option '" + k +
                                   "'; known options: include_path, strict, image_width, "
-                                  "image_height");
+                                  "image_height, subdivision.limit, subdivision.boundary");
         }
     });
 }
@@ -242,6 +257,26 @@ SHEAF_API SheafError sheafSceneAddObject(SheafScene scene, uint32_t mesh_id, uin
             id = s.add_object(std::move(o));
         });
         if (out_object_id) *out_object_id = id;
+    });
+}
+
+SHEAF_API SheafError sheafSceneSetObjectFlags(SheafScene scene, uint32_t object_id,
+                                              uint32_t flags) {
+    return barrier([&] {
+        require(scene, "scene");
+        constexpr uint32_t kKnown =
+            SHEAF_OBJECT_NO_SHADOW | SHEAF_OBJECT_NO_REFLECTION | SHEAF_OBJECT_NO_IMAGE;
+        if (flags & ~kKnown)
+            throw InvalidArgument("object flags " + std::to_string(flags) +
+                                  " name unknown bits; known: SHEAF_OBJECT_NO_SHADOW, "
+                                  "SHEAF_OBJECT_NO_REFLECTION, SHEAF_OBJECT_NO_IMAGE");
+        modify(scene, [&](sheaf::Scene& s) {
+            if (object_id >= s.objects.size())
+                throw InvalidArgument("object " + std::to_string(object_id) +
+                                      " does not exist (the scene has " +
+                                      std::to_string(s.objects.size()) + " objects)");
+            s.objects[object_id].flags = uint8_t(flags);
+        });
     });
 }
 

@@ -61,6 +61,11 @@ SHEAF_API SheafError sheafSceneAddSubdivisionMesh(
         cage.crease_sharpness.assign(crease_sharpness, crease_sharpness + crease_count);
         if (uvs) cage.uvs.assign(uvs, uvs + 2 * size_t(vertex_count));
 
+        {
+            std::lock_guard<std::mutex> lock(s.mutex); // sheafSceneSetLoadOption's
+            options.limit = s.subdivision_limit && level >= 1;
+            options.boundary = sheaf::io::SubdivBoundary(s.subdivision_boundary);
+        }
         sheaf::Mesh mesh = sheaf::io::subdivide(cage, options);
         uint32_t id = 0;
         {

@@ -579,6 +579,61 @@ static void test_scene_files(void) {
     OK(sheafSceneRelease(s));
 }
 
+/* ---- Object flags and the preset list ---- */
+
+static void test_flags_and_presets(void) {
+    SheafScene s = build_scene();
+    SheafRenderer r = NULL;
+    SheafFrame plain = NULL, ghost = NULL;
+    double a = 0, b = 0;
+    size_t needed = 0;
+    char* list;
+
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererSetInt(r, "width", 32));
+    OK(sheafRendererSetInt(r, "height", 24));
+    OK(sheafRender(r, s, &plain));
+    /* Object 1 no longer seen by the camera: fewer primary hits on it, the same ray tests. */
+    OK(sheafSceneSetObjectFlags(s, 1, SHEAF_OBJECT_NO_IMAGE));
+    OK(sheafRender(r, s, &ghost));
+    OK(sheafFrameGetStatByName(plain, "rays.primary", &a));
+    OK(sheafFrameGetStatByName(ghost, "rays.primary", &b));
+    CHECK(a == b, "primary rays %g vs %g", a, b);
+    {
+        float ids_plain[32 * 24], ids_ghost[32 * 24];
+        int i, seen_plain = 0, seen_ghost = 0;
+        OK(sheafFrameGetPass(plain, "object_id", ids_plain, 32 * 24));
+        OK(sheafFrameGetPass(ghost, "object_id", ids_ghost, 32 * 24));
+        for (i = 0; i < 32 * 24; ++i) {
+            seen_plain += ids_plain[i] == 1.0f;
+            seen_ghost += ids_ghost[i] == 1.0f;
+        }
+        CHECK(seen_plain > 0 && seen_ghost == 0, "object 1 seen on %d then %d pixels",
+              seen_plain, seen_ghost);
+    }
+    expect_error(sheafSceneSetObjectFlags(s, 99, 0), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "flags of a missing object", "object 99", NULL);
+    expect_error(sheafSceneSetObjectFlags(s, 0, 64), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "unknown flag bits", "64", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "subdivision.boundary", "round"),
+                 SHEAF_ERROR_INVALID_ARGUMENT, "bad boundary rule", "round", NULL);
+    OK(sheafSceneSetLoadOption(s, "subdivision.limit", "1"));
+
+    OK(sheafGetPresetList(NULL, 0, &needed));
+    CHECK(needed > 1, "the preset list is empty");
+    list = (char*)malloc(needed);
+    OK(sheafGetPresetList(list, needed, &needed));
+    CHECK(strstr(list, "crsh\t") != NULL && strstr(list, "rah\t") != NULL &&
+              strstr(list, "brute\t") != NULL,
+          "the preset list lacks the papers' presets: %s", list);
+    free(list);
+
+    OK(sheafFrameRelease(plain));
+    OK(sheafFrameRelease(ghost));
+    OK(sheafRendererRelease(r));
+    OK(sheafSceneRelease(s));
+}
+
 int main(void) {
     sheafSetErrorCallback(on_error, &g_callback_calls);
     test_version();
@@ -589,6 +644,7 @@ int main(void) {
     test_crsh_matches_brute();
     test_write_image();
     test_scene_files();
+    test_flags_and_presets();
     CHECK(g_callback_calls == g_expected_errors, "error callback called %d times for %d errors",
           g_callback_calls, g_expected_errors);
     sheafSetErrorCallback(NULL, NULL);

@@ -94,11 +94,14 @@ SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name);
  * built-in scene for "builtin:NAME". Errors name the file, line and column. What the file asks
  * for and the engine cannot show is kept as warnings (sheafSceneGetWarning). */
 SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);
-/* How the next sheafSceneLoadFile reads files, by name:
+/* Options for what builds the scene, by name. For sheafSceneLoadFile:
  *   "include_path"  a folder searched for #include after the scene's own (appends; "" clears)
  *   "strict"        "1": an unsupported feature is an error (SHEAF_ERROR_SCENE); "0": a warning
  *   "image_width", "image_height"  the size the scene will be rendered at, for scenes that ask
- *                   (POV-Ray's image_width and image_height); 512 when not set */
+ *                   (POV-Ray's image_width and image_height); 512 when not set
+ * For sheafSceneAddSubdivisionMesh:
+ *   "subdivision.limit"     "1": every refined vertex moves onto the limit surface; "0" (default)
+ *   "subdivision.boundary"  "edge_only" (default), "edge_and_corner" or "none" */
 SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key, const char* value);
 /* The warnings of the last sheafSceneLoadFile ("FILE:LINE:COL: warning: unsupported ..."), in
  * order; *message stays valid until the scene is loaded again or released. */
@@ -119,6 +122,15 @@ SHEAF_API SheafError sheafSceneAddMesh(SheafScene scene, const float* positions,
 SHEAF_API SheafError sheafSceneAddObject(SheafScene scene, uint32_t mesh_id, uint32_t material_id,
                                          const float* transform_3x4, const char* name,
                                          uint32_t* out_object_id);
+
+/* What an object takes part in (bits; 0 for everything). */
+enum {
+    SHEAF_OBJECT_NO_SHADOW = 1,     /* casts no shadow (shadow and AO rays pass it) */
+    SHEAF_OBJECT_NO_REFLECTION = 2, /* not seen in reflections */
+    SHEAF_OBJECT_NO_IMAGE = 4       /* not seen by the camera (still shadows and reflects) */
+};
+/* Sets the flags of an object from sheafSceneAddObject. */
+SHEAF_API SheafError sheafSceneSetObjectFlags(SheafScene scene, uint32_t object_id, uint32_t flags);
 SHEAF_API SheafError sheafSceneAddPointLight(SheafScene scene, const float position[3],
                                              const float color[3]);
 SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[3],
@@ -209,6 +221,9 @@ SHEAF_API SheafError sheafRendererGetString(SheafRenderer renderer, const char* 
 /* Applies every value of a preset: a name (NAME.xml in $SHEAF_PRESET_PATH, ':'-separated, then
  * <libdir>/../share/sheaf/presets) or a path (containing '/' or ending in .xml). */
 SHEAF_API SheafError sheafRendererLoadPreset(SheafRenderer renderer, const char* name_or_path);
+/* The presets sheafRendererLoadPreset finds by name, one line each: "NAME\tDESCRIPTION\n",
+ * sorted by name. snprintf-style, as sheafRendererGetString. Needs no handle. */
+SHEAF_API SheafError sheafGetPresetList(char* buf, size_t size, size_t* needed);
 /* Called between stages with the share done (0..1); return 0 to cancel the render, which then
  * fails with SHEAF_ERROR_CANCELLED. NULL removes it. */
 typedef int (*SheafProgressCallback)(void* user, float done);

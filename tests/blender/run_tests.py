@@ -346,6 +346,27 @@ def test_default_cube():
     check("prop:use_pass_tests" in log and "prop:use_pass_z" in log, "passes panel: %s" % log)
 
 
+def test_ray_visibility():
+    """Blender's ray visibility reaches Sheaf as object flags: a cube hidden from the camera is
+    not in the picture but still casts its shadow; the library lists the presets."""
+    scene = bpy.data.scenes["Scene"]
+    setup_render(scene, 80, 60)
+    cam = scene.camera
+    cube = bpy.data.objects["Cube"]
+    r, c = pixel_of(scene, cam, (0, 0, 0))
+    seen = render(scene, "visible")["Depth"][:, :, 0]
+    cube.visible_camera = False
+    try:
+        hidden = render(scene, "camera_hidden")["Depth"][:, :, 0]
+    finally:
+        cube.visible_camera = True
+    check(seen[r, c] < 1e9 and hidden[r, c] >= 1e9,
+          "the cube hidden from the camera is still seen (depth %g)" % hidden[r, c])
+    names = [n for n, _ in ADDON.capi.library().preset_list()]
+    check("crsh" in names and "rah" in names, "the library's preset list: %s" % names)
+    check(ADDON.properties.preset_names() == names, "the panel's presets are not the library's")
+
+
 def build_spheres_scene():
     scene = new_scene("Spheres", 160, 120, world_rgb=(0.2, 0.3, 0.6))
     coll = scene.collection
@@ -685,6 +706,7 @@ TESTS = [
     test_camera_projection,
     test_instances_texture_and_lights,
     test_subdivision,
+    test_ray_visibility,
     test_errors,
     test_cancel,
 ]

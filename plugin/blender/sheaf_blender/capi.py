@@ -207,7 +207,14 @@ _OPTIONAL_PROTOTYPES = {
             _u32,  # out_mesh_id
         ],
     ),
+    "sheafSceneSetObjectFlags": (c_enum, [SheafScene, c_uint32, c_uint32]),
+    "sheafGetPresetList": (c_enum, [c_char_p, c_size_t, POINTER(c_size_t)]),
 }
+
+# Object flags (sheafSceneSetObjectFlags).
+SHEAF_OBJECT_NO_SHADOW = 1
+SHEAF_OBJECT_NO_REFLECTION = 2
+SHEAF_OBJECT_NO_IMAGE = 4
 
 
 class SheafError(Exception):
@@ -330,6 +337,26 @@ class Library:
     @property
     def has_subdivision(self):
         return "sheafSceneAddSubdivisionMesh" in self.optional
+
+    @property
+    def has_object_flags(self):
+        return "sheafSceneSetObjectFlags" in self.optional
+
+    def preset_list(self):
+        """[(name, description)] of the presets the library finds, or None when the library is
+        too old to say."""
+        if "sheafGetPresetList" not in self.optional:
+            return None
+        needed = c_size_t()
+        self.check(self.sheafGetPresetList(None, 0, byref(needed)))
+        buf = ctypes.create_string_buffer(needed.value)
+        self.check(self.sheafGetPresetList(buf, needed.value, byref(needed)))
+        out = []
+        for line in buf.value.decode("utf-8", "replace").splitlines():
+            name, _, description = line.partition("\t")
+            if name:
+                out.append((name, description))
+        return out
 
     def settings(self):
         """Every setting as (key, default, allowed, help), from the library itself."""
@@ -454,6 +481,13 @@ class Scene(_Handle):
         self.lib.check(
             self.lib.sheafSceneSetMeshUvs(self.handle, mesh_id, _as_float_ptr(uvs), len(uvs))
         )
+
+    def set_option(self, key, value):
+        """sheafSceneSetLoadOption: options for loading files and subdividing."""
+        self.lib.check(self.lib.sheafSceneSetLoadOption(self.handle, _bytes(key), _bytes(value)))
+
+    def set_object_flags(self, object_id, flags):
+        self.lib.check(self.lib.sheafSceneSetObjectFlags(self.handle, object_id, int(flags)))
 
     def add_object(self, mesh_id, material_id, transform_3x4=None, name=None):
         t = None if transform_3x4 is None else _floats(transform_3x4, 12)

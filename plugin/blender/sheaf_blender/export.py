@@ -33,6 +33,18 @@ BACKGROUND_DEPTH = 1.0e10
 AREA_GRID = 3
 
 
+def object_flags(obj):
+    """Blender's ray visibility as Sheaf's object flags."""
+    flags = 0
+    if not getattr(obj, "visible_camera", True):
+        flags |= capi.SHEAF_OBJECT_NO_IMAGE
+    if not getattr(obj, "visible_shadow", True):
+        flags |= capi.SHEAF_OBJECT_NO_SHADOW
+    if not getattr(obj, "visible_glossy", True):
+        flags |= capi.SHEAF_OBJECT_NO_REFLECTION
+    return flags
+
+
 class ExportError(Exception):
     pass
 
@@ -223,9 +235,12 @@ class _Exporter:
         if not parts:
             return
         transform = matrix_3x4(inst.matrix_world)
+        flags = object_flags(obj) if self.lib.has_object_flags else 0
         for slot, mesh_id in parts:
             material_id = self.materials.material(slot_material(obj, slot))
-            self.scene.add_object(mesh_id, material_id, transform, obj.name)
+            object_id = self.scene.add_object(mesh_id, material_id, transform, obj.name)
+            if flags:
+                self.scene.set_object_flags(object_id, flags)
 
     def upload(self, obj):
         """Adds obj's evaluated geometry; returns [(material slot, mesh id)]."""
@@ -294,10 +309,12 @@ class _Exporter:
     def upload_subdivision(self, obj, mod, level):
         """Sends the cage and level to sheafSceneAddSubdivisionMesh. Returns None to let
         Blender's own subdivision be used instead."""
-        if getattr(mod, "boundary_smooth", 'ALL') != 'ALL':
-            # Sheaf's refinement smooths boundaries with OpenSubdiv's edge-only rule.
-            self.note_fallback(obj, "its boundary smoothing keeps corners")
-            return None
+        # Blender's boundary smoothing and limit surface as OpenSubdiv's rules (scene options).
+        self.scene.set_option(
+            "subdivision.boundary",
+            "edge_only" if getattr(mod, "boundary_smooth", 'ALL') == 'ALL' else "edge_and_corner")
+        self.scene.set_option("subdivision.limit",
+                              "1" if getattr(mod, "use_limit_surface", False) else "0")
         mesh = cage_mesh(obj, mod, self.depsgraph)
         if mesh is None:
             return None

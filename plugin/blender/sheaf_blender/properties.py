@@ -105,6 +105,10 @@ def preset_dirs():
 
 
 def preset_names():
+    lib = capi._library
+    listed = lib.preset_list() if lib is not None else None
+    if listed is not None:  # the library says which presets it finds
+        return [name for name, _ in listed]
     names = []
     for d in preset_dirs():
         try:

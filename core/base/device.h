@@ -5,7 +5,19 @@
 #if defined(__CUDACC__)
 #define SHEAF_HD __host__ __device__
 #define SHEAF_HD_INLINE __host__ __device__ __forceinline__
+// The bodies of the wavefront pipeline's launches: extended lambdas (nvcc --extended-lambda).
+#define SHEAF_HD_LAMBDA __host__ __device__
 #else
 #define SHEAF_HD
 #define SHEAF_HD_INLINE inline
+#define SHEAF_HD_LAMBDA
+#endif
+
+// 1 while nvcc compiles device code, 0 for host code (g++, or nvcc's host pass): the few
+// host-only branches of shared code (image textures through OpenImageIO, std::atomic_ref)
+// test this and nothing else.
+#if defined(__CUDA_ARCH__)
+#define SHEAF_DEVICE_PASS 1
+#else
+#define SHEAF_DEVICE_PASS 0
 #endif

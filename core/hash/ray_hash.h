@@ -138,4 +138,13 @@ SHEAF_HD_INLINE void hash192_key(const Aabb& box, Vec3 origin, Vec3 dir, uint32_
     collect_bits(out6, 5, q(d.z, 21));
 }
 
+/// Paper 003's static 3D order: 8 x 16-pixel tiles of the sample grid (grid_w wide, tiles_x
+/// tiles across, `tiles` in all), one sample index (AO) or light (shadow rays) at a time.
+SHEAF_HD_INLINE uint64_t static3d_key(uint64_t pixel, uint64_t sample, uint64_t grid_w,
+                                      uint64_t tiles_x, uint64_t tiles) {
+    const uint64_t x = pixel % grid_w, y = pixel / grid_w;
+    const uint64_t tile = (y / 16) * tiles_x + x / 8;
+    return ((sample * tiles + tile) << 7) | ((y % 16) * 8 + x % 8);
+}
+
 } // namespace sheaf

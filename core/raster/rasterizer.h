@@ -17,6 +17,10 @@ SHEAF_HD_INLINE uint32_t vis_prim(uint64_t v) {
     return uint32_t(v & 0xFFFFFFFFu);
 }
 
+/// The near clipping distance of the set-up (core/raster/raster_tri.h): just in front of the
+/// eye, relative to the scene's extent; 0 for orthographic views.
+double raster_near(const PreparedScene& scene, const CameraFrame& camera);
+
 /// Fills `vis` (width * height entries, top row first). Triangles are clipped against a near
 /// plane, covered at pixel centres with the top-left fill rule, and depth-tested on the
 /// perspective-correct camera-space depth. Multithreaded over screen tiles.

@@ -1,17 +1,14 @@
-// Per-element shading: surface reconstruction at a hit, local lighting, Fresnel and Snell.
+// Per-element shading: local lighting, Fresnel and Snell (surface reconstruction at a hit is
+// surface_hit.h).
 // Host-and-device functions; the CPU and CUDA backends share them.
 #pragma once
 
 #include "core/geometry/ray.h"
 #include "core/render/surface.h"
+#include "core/render/surface_hit.h"
 #include "core/scene/prepared_scene.h"
 
 namespace sheaf {
-
-/// Rebuilds the surface at the intersection of `ray` with primitive `prim` at distance t.
-/// Barycentrics come from the triangle's plane, clamped inside it, so a pixel whose centre
-/// grazes an edge still gets a normal from the triangle.
-SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim, float t);
 
 /// The share of a surface that is opaque: what filter and transmit do not let through. Not
 /// clamped, as in POV-Ray: scenes use filter + transmit > 1 to amplify what is behind.

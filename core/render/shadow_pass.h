@@ -5,17 +5,61 @@
 #pragma once
 
 #include "core/geometry/ray.h"
-#include "core/scene/prepared_scene.h"
+#include "core/render/shade.h"
+#include "core/render/surface_hit.h"
+#include "core/scene/analytic.h"
+#include "core/scene/scene_view.h"
 
 #include <cstdint>
 
 namespace sheaf {
 
+namespace shadow_detail {
+
+// albedo * filter + transmit of material `material` at world point p.
+SHEAF_HD_INLINE Vec3 surface_pass(const SceneView& scene, uint32_t material, Vec3 p, float s,
+                                  float t) {
+    const uint32_t m = resolve_material(scene, material, p);
+    const Material& mt = scene.materials[m];
+    if (mt.pigment >= 0) {
+        const SurfaceColor c = evaluate_pigment(scene, uint32_t(mt.pigment), p, s, t);
+        return c.rgb * c.filter + Vec3(c.transmit);
+    }
+    return mt.color * mt.transmission;
+}
+
+} // namespace shadow_detail
+
 /// Light a shadow ray keeps (per channel) crossing primitive `prim`, whose exact test found
 /// it at distance t: the product over every surface of the primitive it crosses inside the
 /// ray's (tmin, tmax), and for analytic solids the interior fade over the stretch inside.
 /// Zero where a crossed surface is opaque.
-Vec3 shadow_pass(const PreparedScene& scene, uint32_t prim, const Ray& ray, float t);
+SHEAF_HD_INLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const Ray& ray, float t) {
+    if (scene.is_triangle(prim)) {
+        const SurfaceHit h = make_surface_hit(scene, ray, prim, t);
+        return h.albedo * h.filter + Vec3(h.transmit);
+    }
+    // Every boundary of the primitive's spans inside the ray is a surface it crosses.
+    const uint32_t index = prim - scene.tri_count;
+    const SpanList spans = csg_spans(scene, scene.analytic_root[index], ray);
+    Vec3 pass(1.0f);
+    for (int i = 0; i < spans.n; ++i) {
+        const CsgSpan& span = spans.s[i];
+        const CsgEnd* ends[2] = {&span.a, &span.b};
+        for (const CsgEnd* e : ends) {
+            if (!(e->t > ray.tmin && e->t < ray.tmax) || e->leaf == 0xFFFFFFFFu) continue;
+            const Vec3 p = ray_at(ray, e->t);
+            pass = pass * shadow_detail::surface_pass(scene, scene.shape_material[e->leaf], p,
+                                                      p.x, p.y);
+            if (max_component(pass) <= 0.0f) return Vec3(0.0f);
+        }
+        // The stretch inside the solid fades as its interior does (the entering surface's).
+        const float inside = fminf(span.b.t, ray.tmax) - fmaxf(span.a.t, ray.tmin);
+        if (inside > 0)
+            pass = pass * interior_fade(scene.materials[scene.shape_material[span.a.leaf]], inside);
+    }
+    return pass;
+}
 
 /// Fixed point for the products: -log2(factor) * 2^16; factors at or below 2^-256 count as 0.
 constexpr uint64_t kPassLogOne = 1u << 16;

@@ -1,8 +1,14 @@
 // Procedural textures at surface points: the material a texture map picks, the pigment's
 // colour, filter and transmit, the tilted shading normal, and the sky seen along a direction.
+// Host-and-device: image pigments are the one host-only branch (OpenImageIO), and scenes with
+// image textures never reach the device.
 #pragma once
 
-#include "core/scene/prepared_scene.h"
+#include "core/render/pattern_eval.h"
+#include "core/render/texture.h"
+#include "core/scene/scene_view.h"
+
+#include <cfloat>
 
 namespace sheaf {
 
@@ -12,18 +18,179 @@ struct SurfaceColor {
     float filter = 0, transmit = 0;
 };
 
+namespace texture_detail {
+
+// Texture maps and pigment maps may nest; scenes do not go deeper than a few levels, and the
+// scene's validation forbids cycles, so this only bounds the work.
+constexpr int kMaxDepth = 16;
+
+SHEAF_HD_INLINE SurfaceColor entry_color(const PigmentEntry& e) {
+    return {Vec3(e.color[0], e.color[1], e.color[2]), e.color[3], e.color[4]};
+}
+
+SHEAF_HD_INLINE SurfaceColor mix(const SurfaceColor& a, const SurfaceColor& b, float t) {
+    return {a.rgb * (1.0f - t) + b.rgb * t, a.filter * (1.0f - t) + b.filter * t,
+            a.transmit * (1.0f - t) + b.transmit * t};
+}
+
+/// Image texture `image` at world point p: the colour from the host's sampler (grey without
+/// one). The device never gets here.
+SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p, float uv_s,
+                                  float uv_t) {
+#if SHEAF_DEVICE_PASS
+    return Vec3(0.5f);
+#else
+    float s, t;
+    texture_coordinates(scene.textures[size_t(image)], p, uv_s, uv_t, s, t);
+    return scene.sampler->sample(uint32_t(image), s, t);
+#endif
+}
+
+struct Evaluator {
+    const SceneView& scene;
+    float uv_s, uv_t;
+
+    SHEAF_HD SurfaceColor entry(const PigmentEntry& e, Vec3 p, int depth) const {
+        if (e.pigment < 0) return entry_color(e);
+        return pigment(uint32_t(e.pigment), p, depth + 1);
+    }
+
+    SHEAF_HD SurfaceColor pigment(uint32_t index, Vec3 p, int depth) const {
+        const Pigment& pg = scene.pigments[index];
+        if (pg.solid || depth > kMaxDepth || pg.count == 0)
+            return {Vec3(pg.color[0], pg.color[1], pg.color[2]), pg.color[3], pg.color[4]};
+        const PigmentEntry* entries = &scene.pigment_entries[pg.first];
+        if (pg.layers) { // bottom first; each layer shows what is below by filter and transmit
+            SurfaceColor c = entry(entries[0], p, depth);
+            for (uint32_t i = 1; i < pg.count; ++i) {
+                const SurfaceColor top = entry(entries[i], p, depth);
+                const float pass = top.filter + top.transmit;
+                SurfaceColor out;
+                out.rgb = top.rgb * fmaxf(0.0f, 1.0f - pass) +
+                          c.rgb * (top.rgb * top.filter + Vec3(top.transmit));
+                out.filter = c.filter * pass;
+                out.transmit = c.transmit * pass;
+                c = out;
+            }
+            return c;
+        }
+        if (pg.average) {
+            SurfaceColor sum{Vec3(0.0f), 0, 0};
+            for (uint32_t i = 0; i < pg.count; ++i) {
+                const SurfaceColor c = entry(entries[i], p, depth);
+                sum.rgb += c.rgb, sum.filter += c.filter, sum.transmit += c.transmit;
+            }
+            const float inv = 1.0f / float(pg.count);
+            return {sum.rgb * inv, sum.filter * inv, sum.transmit * inv};
+        }
+        const Pattern& pt = pg.pattern;
+        if (pt.kind == PatternKind::Image) {
+            if (!scene.sampler) return {Vec3(0.5f), 0, 0};
+            const Vec3 c = sample_image(scene, pt.image, p, uv_s, uv_t);
+            const SurfaceColor tint = entry_color(entries[0]); // filter and transmit of the map
+            return {c, tint.filter, tint.transmit};
+        }
+        const Vec3 q = pattern_point(pt, p);
+        if (pattern_is_list(pt.kind)) {
+            const int i = pattern_index_at(pt, q);
+            return entry(entries[uint32_t(i) < pg.count ? uint32_t(i) : pg.count - 1], p, depth);
+        }
+        const float v = pattern_value_at(pt, q);
+        // The map: below the first entry its colour, above the last the last's, between two
+        // entries the blend.
+        if (v <= entries[0].value) return entry(entries[0], p, depth);
+        for (uint32_t i = 1; i < pg.count; ++i) {
+            if (v > entries[i].value) continue;
+            const float span = entries[i].value - entries[i - 1].value;
+            const float t = span > 0 ? (v - entries[i - 1].value) / span : 1.0f;
+            if (t <= 0) return entry(entries[i - 1], p, depth);
+            if (t >= 1) return entry(entries[i], p, depth);
+            return mix(entry(entries[i - 1], p, depth), entry(entries[i], p, depth), t);
+        }
+        return entry(entries[pg.count - 1], p, depth);
+    }
+};
+
+// The value a pattern gives at a pattern-space point, for slopes: list patterns give their
+// index spread over [0, 1].
+SHEAF_HD_INLINE float slope_value(const Pattern& pt, Vec3 q) {
+    if (pattern_is_list(pt.kind)) return float(pattern_index_at(pt, q)) * 0.5f;
+    return pattern_value_at(pt, q);
+}
+
+} // namespace texture_detail
+
 /// Follows material switches (texture maps) from `material` at world point p.
-uint32_t resolve_material(const PreparedScene& scene, uint32_t material, Vec3 p);
+SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t material, Vec3 p) {
+    using namespace texture_detail;
+    for (int depth = 0; depth < kMaxDepth; ++depth) {
+        const int32_t sw = scene.materials[material].select;
+        if (sw < 0) return material;
+        const MaterialSwitch& ms = scene.material_switches[size_t(sw)];
+        const MaterialEntry* entries = &scene.material_entries[ms.first];
+        const Vec3 q = pattern_point(ms.pattern, p);
+        if (pattern_is_list(ms.pattern.kind)) {
+            const uint32_t i = uint32_t(pattern_index_at(ms.pattern, q));
+            material = entries[i < ms.count ? i : ms.count - 1].material;
+            continue;
+        }
+        const float v = pattern_value_at(ms.pattern, q);
+        uint32_t pick = 0;
+        for (uint32_t i = 1; i < ms.count; ++i) {
+            // The nearer of the two entries around v.
+            if (entries[i].value <= v) {
+                pick = i;
+            } else {
+                if (v - entries[i - 1].value > entries[i].value - v) pick = i;
+                break;
+            }
+        }
+        material = entries[pick].material;
+    }
+    return material;
+}
 
 /// Pigment `pigment` at world point p; (uv_s, uv_t) are the surface's texture coordinates,
 /// used by image pigments with uv mapping.
-SurfaceColor evaluate_pigment(const PreparedScene& scene, uint32_t pigment, Vec3 p, float uv_s,
-                              float uv_t);
+SHEAF_HD_INLINE SurfaceColor evaluate_pigment(const SceneView& scene, uint32_t pigment, Vec3 p,
+                                              float uv_s, float uv_t) {
+    return texture_detail::Evaluator{scene, uv_s, uv_t}.pigment(pigment, p, 0);
+}
 
 /// The unit shading normal n tilted by normal pattern `normal` at world point p.
-Vec3 perturb_normal(const PreparedScene& scene, uint32_t normal, Vec3 p, Vec3 n);
+SHEAF_HD_INLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec3 p, Vec3 n) {
+    using texture_detail::slope_value;
+    const NormalPattern& np = scene.normal_patterns[normal];
+    const Pattern& pt = np.pattern;
+    const Vec3 q = pattern_point(pt, p);
+    // The slope of the pattern in pattern space, by central differences.
+    const float h = 1e-3f;
+    const Vec3 g((slope_value(pt, q + Vec3(h, 0, 0)) - slope_value(pt, q - Vec3(h, 0, 0))) /
+                     (2 * h),
+                 (slope_value(pt, q + Vec3(0, h, 0)) - slope_value(pt, q - Vec3(0, h, 0))) /
+                     (2 * h),
+                 (slope_value(pt, q + Vec3(0, 0, h)) - slope_value(pt, q - Vec3(0, 0, h))) /
+                     (2 * h));
+    const float slope = length(g);
+    if (!(slope > 0) || !(slope <= FLT_MAX)) return n; // zero, NaN or infinite
+    // Its direction in the world (gradients transform by the transpose of world -> pattern),
+    // its size as in pattern space, so a scaled pattern is finer, not steeper.
+    const Affine& m = pt.to_pattern;
+    const Vec3 gw(m.m[0][0] * g.x + m.m[1][0] * g.y + m.m[2][0] * g.z,
+                  m.m[0][1] * g.x + m.m[1][1] * g.y + m.m[2][1] * g.z,
+                  m.m[0][2] * g.x + m.m[1][2] * g.y + m.m[2][2] * g.z);
+    Vec3 tangent = gw - n * dot(gw, n);
+    const float tl = length(tangent);
+    if (!(tl > 0)) return n;
+    tangent = tangent * (slope / tl);
+    const Vec3 out = normalize(n - tangent * np.amount);
+    return length_squared(out) > 0 ? out : n;
+}
 
 /// What a ray leaving the scene along unit `dir` sees: the sky pigment or the background.
-Vec3 sky_color(const PreparedScene& scene, Vec3 dir);
+SHEAF_HD_INLINE Vec3 sky_color(const SceneView& scene, Vec3 dir) {
+    if (scene.sky < 0) return scene.background;
+    return evaluate_pigment(scene, uint32_t(scene.sky), dir, 0, 0).rgb;
+}
 
 } // namespace sheaf

@@ -4,9 +4,8 @@
 #include "core/base/timer.h"
 #include "core/geometry/ray_triangle.h"
 #include "core/hash/ray_hash.h"
-#include "core/render/shadow_pass.h"
 #include "core/rsh/hierarchy.h"
-#include "core/scene/prim_intersect.h"
+#include "core/rsh/trace_kernels.h"
 #include "core/sort/ray_order.h"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -31,37 +30,8 @@ struct Counter {
     }
 };
 
-void record_hit(TraceResult& out, bool any, uint32_t ray, float t, uint32_t prim) {
-    if (any) {
-        std::atomic_ref<uint8_t>(out.occluded[ray]).store(1, std::memory_order_relaxed);
-        return;
-    }
-    const uint64_t h = pack_hit(t, prim);
-    std::atomic_ref<uint64_t> slot(out.closest[ray]);
-    uint64_t cur = slot.load(std::memory_order_relaxed);
-    while (h < cur && !slot.compare_exchange_weak(cur, h, std::memory_order_relaxed)) {
-    }
-}
-
-// A shadow ray's hit on a primitive that may let light through: what it keeps multiplies in
-// (as a sum of logs, in any order); an opaque crossing occludes. False when it occluded.
-bool record_pass(const PreparedScene& scene, TraceResult& out, uint32_t ray, const Ray& r,
-                 float t, uint32_t prim) {
-    const Vec3 pass = shadow_pass(scene, prim, r, t);
-    if (max_component(pass) <= 0.0f) {
-        std::atomic_ref<uint8_t>(out.occluded[ray]).store(1, std::memory_order_relaxed);
-        return false;
-    }
-    for (int c = 0; c < 3; ++c)
-        if (const uint64_t q = pass_to_log(pass[c]))
-            std::atomic_ref<uint64_t>(out.pass_log[3 * size_t(ray) + c])
-                .fetch_add(q, std::memory_order_relaxed);
-    return true;
-}
-
-// Shadow rays pass transparent primitives; every other any-hit query stops at them.
-bool passes(const PreparedScene& scene, bool shadow, uint32_t prim) {
-    return shadow && scene.prim_flag(prim, kPrimMayPass);
+HitSinks sinks(TraceResult& out) {
+    return {out.closest.data(), out.occluded.data(), out.pass_log.empty() ? nullptr : out.pass_log.data()};
 }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -70,35 +40,18 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 // ---------------------------------------------------------------------------------------------
 // brute: every ray against every primitive. Any-hit queries stop at the first hit.
-void trace_brute(const PreparedScene& scene, const RayBatch& batch, bool any, bool shadow,
+void trace_brute(const SceneView& scene, const RayBatch& batch, bool any, bool shadow,
                  uint8_t skip, Counter& final, TraceResult& out) {
-    const size_t prims = scene.prim_count();
+    const HitSinks sink = sinks(out);
     parallel_for_range(
         "brute.trace", batch.size(),
         [&](size_t b, size_t e) {
             uint64_t tests = 0, hits = 0;
             for (size_t i = b; i < e; ++i) {
-                const Ray& r = batch.rays[i];
-                const uint64_t before = tests;
-                uint64_t best = kNoHit;
-                for (size_t p = 0; p < prims; ++p) {
-                    if (skip && scene.prim_flag(uint32_t(p), skip)) continue;
-                    ++tests;
-                    float t;
-                    if (!intersect_prim(scene, uint32_t(p), r, t)) continue;
-                    ++hits;
-                    if (any && passes(scene, shadow, uint32_t(p))) {
-                        if (!record_pass(scene, out, uint32_t(i), r, t, uint32_t(p))) break;
-                        continue;
-                    }
-                    if (any) {
-                        out.occluded[i] = 1;
-                        break;
-                    }
-                    best = std::min(best, pack_hit(t, uint32_t(p)));
-                }
-                if (!any) out.closest[i] = best;
-                out.tests[i] = uint32_t(std::min<uint64_t>(tests - before, 0xFFFFFFFFu));
+                const TestCount c =
+                    brute_trace_ray(scene, batch.rays[i], uint32_t(i), any, shadow, skip, sink);
+                tests += c.tests, hits += c.hits;
+                out.tests[i] = uint32_t(std::min<uint64_t>(c.tests, 0xFFFFFFFFu));
             }
             final.add(tests, hits);
         },
@@ -112,7 +65,7 @@ class Traversal {
     Traversal(const PreparedScene& scene, const RayHierarchy& h, const TrackedVector<Ray>& rays,
               const std::vector<uint32_t>& perm, bool any, bool shadow, uint8_t skip,
               size_t batch, MemoryTracker& memory, TraceResult& out)
-        : levels_(size_t(h.depth) + 1), scene_(scene), h_(h), rays_(rays), perm_(perm), any_(any),
+        : levels_(size_t(h.depth) + 1), scene_(scene), view_(scene), sinks_(sinks(out)), h_(h), rays_(rays), perm_(perm), any_(any),
           shadow_(shadow), skip_(skip), batch_(batch), out_(out),
           local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
         for (int k = 0; k <= h.depth; ++k) buffers_.push_back(tracked_vector<Pair>(memory));
@@ -231,30 +184,8 @@ class Traversal {
                         .fetch_add(1, std::memory_order_relaxed);
                     const size_t first = h_.first_child(pr.node), last = h_.last_child(1, pr.node);
                     t += last - first;
-                    if (scene_.is_triangle(pr.prim)) { // the hot path, inline
-                        const TriangleVerts& tri = scene_.tris[pr.prim];
-                        const bool pass = any_ && passes(scene_, shadow_, pr.prim);
-                        for (size_t j = first; j < last; ++j) {
-                            TriangleHit hit;
-                            if (!intersect_triangle(rays_[j], tri.a, tri.b, tri.c, hit)) continue;
-                            ++hcount;
-                            if (pass)
-                                record_pass(scene_, out_, perm_[j], rays_[j], hit.t, pr.prim);
-                            else
-                                record_hit(out_, any_, perm_[j], hit.t, pr.prim);
-                        }
-                    } else {
-                        const bool pass = any_ && passes(scene_, shadow_, pr.prim);
-                        for (size_t j = first; j < last; ++j) {
-                            float th;
-                            if (!intersect_prim(scene_, pr.prim, rays_[j], th)) continue;
-                            ++hcount;
-                            if (pass)
-                                record_pass(scene_, out_, perm_[j], rays_[j], th, pr.prim);
-                            else
-                                record_hit(out_, any_, perm_[j], th, pr.prim);
-                        }
-                    }
+                    hcount += final_tests(view_, rays_.data(), perm_.data(), first, last,
+                                          pr.prim, any_, shadow_, sinks_);
                 }
                 final_.add(t, hcount);
             },
@@ -263,6 +194,8 @@ class Traversal {
     }
 
     const PreparedScene& scene_;
+    SceneView view_;
+    HitSinks sinks_;
     const RayHierarchy& h_;
     const TrackedVector<Ray>& rays_;
     const std::vector<uint32_t>& perm_;
@@ -288,11 +221,9 @@ int static3d_keys(const RayBatch& batch, const RenderSettings& s, std::vector<ui
     parallel_for(
         "hash.static3d", n,
         [&](size_t i) {
-            const uint64_t p = batch.pixel[i], x = p % grid_w, y = p / grid_w;
             const uint64_t sample = batch.type == RayType::Shadow ? batch.light[i]
                                                                   : uint64_t(i) % per_pixel;
-            const uint64_t tile = (y / 16) * tiles_x + x / 8;
-            const uint64_t key = ((sample * tiles + tile) << 7) | ((y % 16) * 8 + x % 8);
+            const uint64_t key = static3d_key(batch.pixel[i], sample, grid_w, tiles_x, tiles);
             keys[2 * i] = uint32_t(key), keys[2 * i + 1] = uint32_t(key >> 32);
         },
         4096);
@@ -355,9 +286,7 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
     const bool any = any_hit_query(batch.type);
     // Objects without shadows let shadow and AO rays pass; objects without reflections are
     // not seen by reflection rays.
-    const uint8_t skip = any                                ? uint8_t(kNoShadow)
-                         : batch.type == RayType::Reflection ? uint8_t(kNoReflection)
-                                                             : uint8_t(0);
+    const uint8_t skip = skip_flags(batch.type);
     const std::string p = std::string("tests.") + ray_type_name(batch.type) + ".";
     stats.add(std::string("rays.") + ray_type_name(batch.type), double(n));
     stats.add(p + "brute_force", double(n) * double(scene.prim_count()));
@@ -378,7 +307,8 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
         Counter final;
         {
             PhaseTimer t(stats, "time_ms.final_tests");
-            trace_brute(scene, batch, any, batch.type == RayType::Shadow, skip, final, out);
+            trace_brute(SceneView(scene), batch, any, batch.type == RayType::Shadow, skip, final,
+                        out);
         }
         stats.add(p + "final.tests", double(final.tests));
         stats.add(p + "final.hits", double(final.hits));

@@ -1,9 +1,10 @@
 // Exact ray tests of analytic primitives (a shape or a CSG tree) of a prepared scene.
+// Host-and-device: the CPU renderer and the wavefront pipeline share them.
 #pragma once
 
 #include "core/geometry/csg.h"
 #include "core/geometry/sphere.h"
-#include "core/scene/prepared_scene.h"
+#include "core/scene/scene_view.h"
 
 namespace sheaf {
 
@@ -13,16 +14,93 @@ struct AnalyticHit {
     Vec3 normal;       // world-space, pointing out of the solid
 };
 
+namespace analytic_detail {
+
+SHEAF_HD_INLINE bool inside(const SpanList& spans, float t) {
+    for (int i = 0; i < spans.n; ++i)
+        if (spans.s[i].a.t <= t && t <= spans.s[i].b.t) return true;
+    return false;
+}
+
+// The surface of `base` inside `clip`: each boundary that survives becomes a span of zero
+// length whose far end is no surface (leaf ~0), so it is hit, and crossed, once.
+SHEAF_HD_INLINE SpanList clip_spans(const SpanList& base, const SpanList& clip) {
+    SpanList out;
+    for (int i = 0; i < base.n; ++i) {
+        const CsgEnd* ends[2] = {&base.s[i].a, &base.s[i].b};
+        for (const CsgEnd* e : ends)
+            if (e->leaf != 0xFFFFFFFFu && inside(clip, e->t))
+                out.push({*e, CsgEnd{e->t, 0xFFFFFFFFu, e->n_local, e->flip}});
+    }
+    return out;
+}
+
+} // namespace analytic_detail
+
+/// The spans of the ray inside CSG node `node` (recursive over the node's children).
+SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const Ray& ray) {
+    using namespace analytic_detail;
+    const PreparedCsgNode& n = scene.csg[node];
+    SpanList out;
+    if (n.op == CsgOp::Clip) {
+        SpanList clip = csg_spans(scene, scene.csg_children[n.first + 1], ray);
+        for (uint32_t c = 2; c < n.count; ++c)
+            clip = span_intersection(clip, csg_spans(scene, scene.csg_children[n.first + c], ray));
+        out = clip_spans(csg_spans(scene, scene.csg_children[n.first], ray), clip);
+        return n.inverse ? span_complement(out) : out;
+    }
+    if (n.op == CsgOp::Leaf) {
+        const PlacedShape& ps = scene.shapes[n.first];
+        Span spans[kMaxShapeSpans];
+        const int count = shape_spans(ps.shape, to_local_ray(ps, ray), spans);
+        for (int i = 0; i < count; ++i)
+            out.push({CsgEnd{spans[i].t0, n.first, spans[i].n0, false},
+                      CsgEnd{spans[i].t1, n.first, spans[i].n1, false}});
+    } else {
+        out = csg_spans(scene, scene.csg_children[n.first], ray);
+        for (uint32_t c = 1; c < n.count; ++c) {
+            const SpanList next = csg_spans(scene, scene.csg_children[n.first + c], ray);
+            switch (n.op) {
+            case CsgOp::Union:
+            case CsgOp::Merge:
+                out = span_union(out, next);
+                break;
+            case CsgOp::Intersection:
+                out = span_intersection(out, next);
+                break;
+            case CsgOp::Difference:
+                out = span_difference(out, next);
+                break;
+            case CsgOp::Leaf:
+            case CsgOp::Clip:
+                break;
+            }
+        }
+    }
+    return n.inverse ? span_complement(out) : out;
+}
+
 /// The first surface of analytic primitive `index` (0-based among the analytic ones) along the
 /// ray inside (tmin, tmax). Deterministic: the same ray gives the same t on every accel mode.
-bool analytic_first_hit(const PreparedScene& scene, uint32_t index, const Ray& ray,
-                        AnalyticHit& hit);
-
-/// The spans of the ray inside CSG node `node`.
-SpanList csg_spans(const PreparedScene& scene, uint32_t node, const Ray& ray);
+SHEAF_HD inline bool analytic_first_hit(const SceneView& scene, uint32_t index, const Ray& ray,
+                                        AnalyticHit& hit) {
+    const SpanList spans = csg_spans(scene, scene.analytic_root[index], ray);
+    for (int i = 0; i < spans.n; ++i) {
+        const CsgEnd* ends[2] = {&spans.s[i].a, &spans.s[i].b};
+        for (const CsgEnd* e : ends) {
+            if (!(e->t > ray.tmin && e->t < ray.tmax) || e->leaf == 0xFFFFFFFFu) continue;
+            hit.t = e->t;
+            hit.leaf = e->leaf;
+            const Vec3 n = normal_to_world(scene.shapes[e->leaf], e->n_local);
+            hit.normal = e->flip ? -n : n;
+            return true;
+        }
+    }
+    return false;
+}
 
 /// A world-space sphere holding the node's solid; radius +inf when unbounded (planes,
-/// `inverse`), so the node is a candidate for every ray.
+/// `inverse`), so the node is a candidate for every ray. Host only (scene preparation).
 Sphere csg_bound(const PreparedScene& scene, uint32_t node);
 
 /// Placed shape of a leaf: world <-> local transforms from the leaf's world transform.

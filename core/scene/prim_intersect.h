@@ -7,7 +7,8 @@
 namespace sheaf {
 
 /// Distance of the first hit of `ray` with primitive `prim` inside (tmin, tmax).
-inline bool intersect_prim(const PreparedScene& scene, uint32_t prim, const Ray& ray, float& t) {
+SHEAF_HD_INLINE bool intersect_prim(const SceneView& scene, uint32_t prim, const Ray& ray,
+                                    float& t) {
     if (scene.is_triangle(prim)) {
         const TriangleVerts& tv = scene.tris[prim];
         TriangleHit h;
@@ -16,7 +17,7 @@ inline bool intersect_prim(const PreparedScene& scene, uint32_t prim, const Ray&
         return true;
     }
     AnalyticHit h;
-    if (!analytic_first_hit(scene, prim - uint32_t(scene.tris.size()), ray, h)) return false;
+    if (!analytic_first_hit(scene, prim - scene.tri_count, ray, h)) return false;
     t = h.t;
     return true;
 }

@@ -1,18 +1,20 @@
-#include "core/render/shade.h"
+// The surface at a hit: position, normals, material (texture maps resolved), colour, filter,
+// transmit and the shading normal a normal pattern tilts. Host-and-device: the CPU renderer
+// and the wavefront pipeline rebuild every primary and bounce hit with it.
+#pragma once
 
+#include "core/geometry/ray.h"
+#include "core/render/surface.h"
 #include "core/render/surface_texture.h"
-#include "core/render/texture.h"
 #include "core/scene/analytic.h"
-
-#include <cmath>
 
 namespace sheaf {
 
-namespace {
+namespace surface_detail {
 
 // The surface's material (texture maps resolved), colour, filter, transmit and shading normal
 // at h.position; (uv_s, uv_t) are its texture coordinates.
-void finish_surface(const PreparedScene& scene, SurfaceHit& h, float uv_s, float uv_t) {
+SHEAF_HD_INLINE void finish_surface(const SceneView& scene, SurfaceHit& h, float uv_s, float uv_t) {
     h.material = resolve_material(scene, h.material, h.position);
     const Material& m = scene.materials[h.material];
     if (m.pigment >= 0) {
@@ -24,11 +26,9 @@ void finish_surface(const PreparedScene& scene, SurfaceHit& h, float uv_s, float
         h.albedo = m.color;
         h.filter = m.transmission;
         h.transmit = 0;
-        if (m.texture >= 0 && scene.sampler) {
-            float s, t;
-            texture_coordinates(scene.textures[size_t(m.texture)], h.position, uv_s, uv_t, s, t);
-            h.albedo = m.color * scene.sampler->sample(uint32_t(m.texture), s, t);
-        }
+        if (m.texture >= 0 && scene.sampler)
+            h.albedo = m.color * texture_detail::sample_image(scene, m.texture, h.position, uv_s,
+                                                              uv_t);
     }
     if (m.normal >= 0) {
         Vec3 n = perturb_normal(scene, uint32_t(m.normal), h.position, h.normal);
@@ -40,8 +40,8 @@ void finish_surface(const PreparedScene& scene, SurfaceHit& h, float uv_s, float
 
 // An analytic primitive's surface: the exact test again gives the normal and the leaf (and so
 // the material) of the surface at t.
-SurfaceHit analytic_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim,
-                                float t) {
+SHEAF_HD_INLINE SurfaceHit analytic_surface_hit(const SceneView& scene, const Ray& ray,
+                                                uint32_t prim, float t) {
     SurfaceHit h;
     h.prim = prim;
     h.t = t;
@@ -49,9 +49,9 @@ SurfaceHit analytic_surface_hit(const PreparedScene& scene, const Ray& ray, uint
     h.position = ray_at(ray, t);
     AnalyticHit a;
     Ray r = ray;
-    r.tmax = std::nextafter(t, INFINITY);
+    r.tmax = nextafterf(t, INFINITY);
     Vec3 n(0, 0, 1);
-    if (analytic_first_hit(scene, prim - uint32_t(scene.tris.size()), r, a)) {
+    if (analytic_first_hit(scene, prim - scene.tri_count, r, a)) {
         n = a.normal;
         h.material = scene.shape_material[a.leaf];
     } else {
@@ -65,10 +65,14 @@ SurfaceHit analytic_surface_hit(const PreparedScene& scene, const Ray& ray, uint
     return h;
 }
 
-} // namespace
+} // namespace surface_detail
 
-SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t prim, float t) {
-    if (!scene.is_triangle(prim)) return analytic_surface_hit(scene, ray, prim, t);
+/// Rebuilds the surface at the intersection of `ray` with primitive `prim` at distance t.
+/// Barycentrics come from the triangle's plane, clamped inside it, so a pixel whose centre
+/// grazes an edge still gets a normal from the triangle.
+SHEAF_HD_INLINE SurfaceHit make_surface_hit(const SceneView& scene, const Ray& ray, uint32_t prim,
+                                            float t) {
+    if (!scene.is_triangle(prim)) return surface_detail::analytic_surface_hit(scene, ray, prim, t);
     const TriangleVerts& tv = scene.tris[prim];
     const Vec3 e1 = tv.b - tv.a, e2 = tv.c - tv.a;
     Vec3 gn = normalize(cross(e1, e2));
@@ -102,8 +106,8 @@ SurfaceHit make_surface_hit(const PreparedScene& scene, const Ray& ray, uint32_t
     h.normal = n;
     const TriangleUvs& tu = scene.uvs[prim];
     const float w = 1.0f - u - v;
-    finish_surface(scene, h, w * tu.s[0] + u * tu.s[1] + v * tu.s[2],
-                   w * tu.t[0] + u * tu.t[1] + v * tu.t[2]);
+    surface_detail::finish_surface(scene, h, w * tu.s[0] + u * tu.s[1] + v * tu.s[2],
+                                   w * tu.t[0] + u * tu.t[1] + v * tu.t[2]);
     return h;
 }
 

@@ -1,0 +1,189 @@
+// The per-pixel and per-hit steps of the frame pipeline, host-and-device: analytic primary
+// rays, the visibility-buffer resolve, what a ray leaving the scene brings, fog, the terms
+// that need no ray, a bounce ray's hit, and the box filter. The CPU renderer
+// (core/render/renderer.cpp) and the wavefront pipeline (core/wavefront) call the same ones.
+#pragma once
+
+#include "core/raster/camera.h"
+#include "core/raster/rasterizer.h"
+#include "core/rays/ray_gen.h"
+#include "core/render/shade.h"
+#include "core/render/surface_hit.h"
+#include "core/render/surface_texture.h"
+#include "core/rsh/trace.h"
+#include "core/scene/analytic.h"
+#include "core/scene/scene_view.h"
+
+#include <cstdint>
+#include <cstring>
+
+namespace sheaf {
+
+/// Analytic objects ray-cast at the centre of pixel (x, y), merged into the pixel's
+/// visibility key `vis` by the same depth key as the rasterised triangles.
+SHEAF_HD_INLINE uint64_t cast_analytic_pixel(const SceneView& scene, const CameraFrame& cam, int x,
+                                             int y, uint64_t vis) {
+    const uint32_t first = scene.tri_count;
+    const Ray ray = cam.pixel_ray(x, y);
+    const float depth_per_t = cam.ortho ? 1.0f : dot(ray.dir, cam.forward);
+    for (uint32_t a = 0; a < scene.analytic_count; ++a) {
+        if (scene.prim_flag(first + a, kNoImage)) continue;
+        const Sphere& s = scene.prim_sphere[first + a];
+        if (fabsf(s.radius) <= FLT_MAX) { // finite: the bounding sphere first
+            const Vec3 oc = s.center - ray.origin;
+            const float along = dot(oc, ray.dir);
+            if (length_squared(oc) - along * along > s.radius * s.radius ||
+                (along < -s.radius && length(oc) > s.radius))
+                continue;
+        }
+        AnalyticHit h;
+        if (!analytic_first_hit(scene, a, ray, h)) continue;
+        const float depth = h.t * depth_per_t;
+        uint32_t bits;
+        memcpy(&bits, &depth, 4);
+        const uint64_t key = (uint64_t(bits) << 32) | (first + a);
+        if (key < vis) vis = key;
+    }
+    return vis;
+}
+
+/// What a ray leaving the scene along `dir` brings with weight w: the sky, through the fog.
+SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 dir, Vec3 w) {
+    float keep;
+    Vec3 add;
+    fog_over(scene.fog, INFINITY, keep, add);
+    return w * (sky_color(scene, dir) * keep + add);
+}
+
+/// The fog between the ray's origin and the hit: scales the hit's throughput, and returns
+/// the fog's own colour the ray brings.
+SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h) {
+    float keep;
+    Vec3 add;
+    fog_over(scene.fog, h.t, keep, add);
+    const Vec3 fog = h.throughput * add;
+    h.throughput = h.throughput * keep;
+    return fog;
+}
+
+/// One sample of the visibility buffer resolved: its surface (when something was hit), the
+/// radiance it starts with (background or fog) and the primary passes.
+struct PrimarySample {
+    bool hit = false;
+    SurfaceHit h;
+    Vec3 radiance;
+    float depth = INFINITY;
+    Vec3 normal, albedo;
+    uint32_t object = 0xFFFFFFFFu;
+};
+
+/// Sample i (x = i % W, y = i / W) with visibility key `vis`: the pixel's camera ray meets the
+/// visible triangle's plane (or the analytic primitive) at the exact position.
+SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const CameraFrame& cam, int W,
+                                             size_t i, uint64_t vis) {
+    PrimarySample out;
+    const Ray ray = cam.pixel_ray(int(i % size_t(W)), int(i / size_t(W)));
+    if (vis == kEmptyPixel) {
+        out.radiance = leave_scene(scene, ray.dir, Vec3(1.0f));
+        return out;
+    }
+    const uint32_t prim = vis_prim(vis);
+    float t = 0;
+    if (scene.is_triangle(prim)) {
+        // The exact hit of the pixel's ray with the visible triangle's plane.
+        const TriangleVerts& tv = scene.tris[prim];
+        const Vec3 n = cross(tv.b - tv.a, tv.c - tv.a);
+        const float dn = dot(ray.dir, n);
+        t = dn != 0 ? dot(tv.a - ray.origin, n) / dn : 0.0f;
+    } else {
+        AnalyticHit a;
+        if (analytic_first_hit(scene, prim - scene.tri_count, ray, a)) t = a.t;
+    }
+    if (!(t > 0) || !(t <= FLT_MAX)) t = 0; // not positive, NaN or infinite
+    SurfaceHit h = make_surface_hit(scene, ray, prim, t);
+    h.pixel = uint32_t(i);
+    h.throughput = Vec3(1.0f);
+    out.radiance = through_fog(scene, h);
+    out.hit = true;
+    out.h = h;
+    out.depth = t;
+    out.normal = h.normal;
+    out.albedo = h.albedo;
+    out.object = scene.prim_object[prim];
+    return out;
+}
+
+/// The terms of hit h that need no ray: emission, ambient (unless AO traces it), shadowless
+/// lights; weighted by the hit's throughput.
+SHEAF_HD_INLINE Vec3 unshadowed_terms(const SceneView& scene, const SurfaceHit& h, bool trace_ao,
+                                      const RayGenParams& p) {
+    const Material& m = scene.materials[h.material];
+    Vec3 c = m.emission;
+    if (!trace_ao) c += ambient_light(m, h);
+    for (uint32_t li = 0; li < scene.light_count; ++li) {
+        const Light& l = scene.lights[li];
+        if (!l.shadowless || !lights_point(l, h, p)) continue;
+        const LightSample ls = sample_light(l, h.position, p.far);
+        c += direct_light(m, h, ls.to_light, ls.radiance);
+    }
+    return h.throughput * c;
+}
+
+/// The surface a reflection or refraction ray found (closest != kNoHit), carrying the ray's
+/// weight; light leaving an object through its far side fades by its interior, then the fog
+/// on the way scales it. `fog` receives the fog's colour the ray brings.
+SHEAF_HD_INLINE SurfaceHit bounce_hit(const SceneView& scene, const Ray& ray, uint64_t closest,
+                                      uint32_t pixel, Vec3 weight, Vec3& fog) {
+    SurfaceHit h = make_surface_hit(scene, ray, hit_prim(closest), hit_t(closest));
+    h.pixel = pixel;
+    h.throughput = weight;
+    // Leaving an object through its far side: what its interior faded.
+    if (!h.front) h.throughput = h.throughput * interior_fade(scene.materials[h.material], h.t);
+    fog = through_fog(scene, h);
+    return h;
+}
+
+/// The per-sample buffers a frame resolves from (W x H samples, aa x aa per pixel).
+struct SampleBuffers {
+    const Vec3* radiance;
+    const uint32_t* tests;
+    const float* depth;
+    const Vec3* normal;
+    const Vec3* albedo;
+    const uint32_t* object;
+};
+
+/// The frame's per-pixel outputs (w x h).
+struct PixelBuffers {
+    float* rgba;
+    float* depth;
+    Vec3* normal;
+    Vec3* albedo;
+    uint32_t* object;
+    uint32_t* tests;
+};
+
+/// Box filter of the aa x aa samples of pixel p; passes from the centre sample.
+SHEAF_HD_INLINE void resolve_pixel(size_t p, int w, int aa, int W, const SampleBuffers& in,
+                                   const PixelBuffers& out) {
+    const int x = int(p % size_t(w)), y = int(p / size_t(w));
+    const float inv = 1.0f / float(aa * aa);
+    Vec3 sum(0.0f);
+    uint64_t tests = 0;
+    for (int sy = 0; sy < aa; ++sy)
+        for (int sx = 0; sx < aa; ++sx) {
+            sum += in.radiance[size_t(y * aa + sy) * W + (x * aa + sx)];
+            tests += in.tests[size_t(y * aa + sy) * W + (x * aa + sx)];
+        }
+    out.tests[p] = uint32_t(tests < 0xFFFFFFFFu ? tests : 0xFFFFFFFFu);
+    sum = sum * inv;
+    out.rgba[4 * p + 0] = sum.x, out.rgba[4 * p + 1] = sum.y, out.rgba[4 * p + 2] = sum.z,
+                     out.rgba[4 * p + 3] = 1;
+    const size_t c = size_t(y * aa + aa / 2) * W + (x * aa + aa / 2);
+    out.depth[p] = in.depth[c];
+    out.normal[p] = in.normal[c];
+    out.albedo[p] = in.albedo[c];
+    out.object[p] = in.object[c];
+}
+
+} // namespace sheaf

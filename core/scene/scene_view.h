@@ -1,0 +1,81 @@
+// A flat view of a prepared scene: raw pointers and counts, no containers, so the same
+// per-element functions read it on the host (pointers into PreparedScene's vectors) and on the
+// device (pointers into device memory, filled by the wavefront pipeline's upload). Trivially
+// copyable: kernels take it by value.
+#pragma once
+
+#include "core/scene/prepared_scene.h"
+
+#include <cstdint>
+
+namespace sheaf {
+
+struct SceneView {
+    // Primitives: triangles [0, tri_count), then one per analytic object.
+    const TriangleVerts* tris = nullptr;
+    const TriangleNormals* normals = nullptr;
+    const TriangleUvs* uvs = nullptr;
+    uint32_t tri_count = 0;
+    uint32_t analytic_count = 0;
+    const uint32_t* prim_object = nullptr;
+    const Sphere* prim_sphere = nullptr;
+    const uint8_t* prim_flags = nullptr;
+    uint32_t prim_flag_count = 0;
+
+    const uint32_t* object_begin = nullptr; // object_count + 1 entries
+    const Sphere* object_sphere = nullptr;
+    const uint32_t* object_material = nullptr;
+    uint32_t object_count = 0;
+
+    const PlacedShape* shapes = nullptr;
+    const uint32_t* shape_material = nullptr;
+    const PreparedCsgNode* csg = nullptr;
+    const uint32_t* csg_children = nullptr;
+    const uint32_t* analytic_root = nullptr;
+
+    const Material* materials = nullptr;
+    const Pigment* pigments = nullptr;
+    const PigmentEntry* pigment_entries = nullptr;
+    const NormalPattern* normal_patterns = nullptr;
+    const MaterialSwitch* material_switches = nullptr;
+    const MaterialEntry* material_entries = nullptr;
+    int32_t sky = -1;
+    Fog fog;
+    const Light* lights = nullptr;
+    uint32_t light_count = 0;
+    Vec3 background;
+
+    // Image textures: host only (OpenImageIO); a device view has none (the backend choice
+    // keeps scenes with image textures on the CPU).
+    const Texture* textures = nullptr;
+    const TextureSampler* sampler = nullptr;
+
+    SceneView() = default;
+    /// A view of `p` (host pointers). Implicit, so host code may pass a PreparedScene where a
+    /// view is expected; hot loops build one view and pass it on.
+    SceneView(const PreparedScene& p) // NOLINT(google-explicit-constructor)
+        : tris(p.tris.data()), normals(p.normals.data()), uvs(p.uvs.data()),
+          tri_count(uint32_t(p.tris.size())), analytic_count(uint32_t(p.analytic_root.size())),
+          prim_object(p.prim_object.data()), prim_sphere(p.prim_sphere.data()),
+          prim_flags(p.prim_flags.data()), prim_flag_count(uint32_t(p.prim_flags.size())),
+          object_begin(p.object_begin.data()), object_sphere(p.object_sphere.data()),
+          object_material(p.object_material.data()),
+          object_count(uint32_t(p.object_sphere.size())), shapes(p.shapes.data()),
+          shape_material(p.shape_material.data()), csg(p.csg.data()),
+          csg_children(p.csg_children.data()), analytic_root(p.analytic_root.data()),
+          materials(p.materials.data()), pigments(p.pigments.data()),
+          pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
+          material_switches(p.material_switches.data()),
+          material_entries(p.material_entries.data()), sky(p.sky), fog(p.fog),
+          lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
+          background(p.background), textures(p.textures.data()), sampler(p.sampler.get()) {}
+
+    SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
+    SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }
+    /// Whether primitive `prim`'s object has ObjectFlag `flag` (or kPrimMayPass).
+    SHEAF_HD bool prim_flag(uint32_t prim, uint8_t flag) const {
+        return prim < prim_flag_count && (prim_flags[prim] & flag) != 0;
+    }
+};
+
+} // namespace sheaf

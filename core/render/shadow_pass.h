@@ -76,4 +76,9 @@ SHEAF_HD_INLINE float log_to_pass(uint64_t q) {
     return q >= kPassLogZero ? 0.0f : float(exp2(-double(q) / double(kPassLogOne)));
 }
 
+/// The light a shadow ray keeps per channel from its three fixed-point log sums.
+SHEAF_HD_INLINE Vec3 pass_from_logs(const uint64_t* logs) {
+    return Vec3(log_to_pass(logs[0]), log_to_pass(logs[1]), log_to_pass(logs[2]));
+}
+
 } // namespace sheaf

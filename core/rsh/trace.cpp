@@ -276,8 +276,7 @@ int hash_rays(const PreparedScene& scene, const RayBatch& batch, const RenderSet
 
 Vec3 TraceResult::pass(size_t i) const {
     if (pass_log.empty()) return Vec3(1.0f);
-    return Vec3(log_to_pass(pass_log[3 * i]), log_to_pass(pass_log[3 * i + 1]),
-                log_to_pass(pass_log[3 * i + 2]));
+    return pass_from_logs(&pass_log[3 * i]);
 }
 
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,

@@ -25,13 +25,13 @@ template <class T> T exclusive_scan_inplace(std::vector<T>& v) {
 /// Sorts `values` (n entries) by `keys` (n * words entries; element i's key is
 /// keys[i * words ... i * words + words), word 0 least significant), stably, on all bits.
 /// Both arrays are permuted. Passes whose 8-bit digit is the same for every key are skipped.
-inline void radix_sort_pairs(std::vector<uint32_t>& keys, int words,
-                             std::vector<uint32_t>& values) {
-    const size_t n = values.size();
+inline void radix_sort_pairs(uint32_t* keys_in, int words, uint32_t* values_in, size_t n) {
     if (n < 2) return;
     const size_t blocks = std::min<size_t>(64, n / 8192 + 1);
     const size_t per = (n + blocks - 1) / blocks;
-    std::vector<uint32_t> keys2(keys.size()), values2(n);
+    std::vector<uint32_t> keys_tmp(n * size_t(words)), values_tmp(n);
+    uint32_t *keys = keys_in, *values = values_in;
+    uint32_t *keys2 = keys_tmp.data(), *values2 = values_tmp.data();
     std::vector<size_t> hist(blocks * 256);
 
     for (int pass = 0; pass < 4 * words; ++pass) {
@@ -72,9 +72,18 @@ inline void radix_sort_pairs(std::vector<uint32_t>& keys, int words,
                 }
             },
             1);
-        keys.swap(keys2);
-        values.swap(values2);
+        std::swap(keys, keys2);
+        std::swap(values, values2);
     }
+    if (keys != keys_in) { // an odd number of passes ran: the result is in the scratch arrays
+        std::copy(keys, keys + n * size_t(words), keys_in);
+        std::copy(values, values + n, values_in);
+    }
+}
+
+inline void radix_sort_pairs(std::vector<uint32_t>& keys, int words,
+                             std::vector<uint32_t>& values) {
+    radix_sort_pairs(keys.data(), words, values.data(), values.size());
 }
 
 } // namespace sheaf

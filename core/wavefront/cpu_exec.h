@@ -1,0 +1,90 @@
+// The CPU execution policy of the wavefront pipeline: launches are oneTBB parallel loops,
+// memory is host memory, scans and reductions run here, sort_pairs is the CPU's stable LSD
+// radix sort. The pipeline compiled against it runs in libsheaf, so the unit tests check the
+// device pipeline's logic, stage by stage, against the CPU renderer on any machine.
+#pragma once
+
+#include "core/base/memory.h"
+#include "core/base/parallel.h"
+#include "core/sort/radix_sort.h"
+
+#include <tbb/parallel_reduce.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <new>
+
+namespace sheaf::wavefront {
+
+class CpuExec {
+  public:
+    static constexpr const char* kName = "cpu";
+
+    void* allocate(size_t bytes) {
+        memory_.add(int64_t(bytes));
+        return ::operator new(bytes);
+    }
+    void deallocate(void* p, size_t bytes) {
+        memory_.sub(int64_t(bytes));
+        ::operator delete(p);
+    }
+    void copy_to_device(void* dst, const void* src, size_t bytes) { std::memcpy(dst, src, bytes); }
+    void copy_to_host(void* dst, const void* src, size_t bytes) { std::memcpy(dst, src, bytes); }
+    void copy_on_device(void* dst, const void* src, size_t bytes) { std::memmove(dst, src, bytes); }
+
+    /// fn(i) for every i in [0, n), in any order.
+    template <class Fn> void launch(const char* name, size_t n, const Fn& fn) {
+        parallel_for(name, n, fn, 1024);
+    }
+
+    /// data[i] = sum of data[0..i) in place; returns the total.
+    uint32_t exclusive_scan(uint32_t* data, size_t n) {
+        uint32_t sum = 0;
+        for (size_t i = 0; i < n; ++i) {
+            const uint32_t t = data[i];
+            data[i] = sum;
+            sum += t;
+        }
+        return sum;
+    }
+
+    /// op over map(i) for i in [0, n), from init. op must be associative and commutative and
+    /// exact (integer sums, minima, maxima), so the result does not depend on the grouping.
+    template <class T, class Map, class Op>
+    T transform_reduce(const char* name, size_t n, T init, const Map& map, const Op& op) {
+        (void)name;
+        return tbb::parallel_reduce(
+            tbb::blocked_range<size_t>(0, n, 4096), init,
+            [&](const tbb::blocked_range<size_t>& r, T acc) {
+                for (size_t i = r.begin(); i != r.end(); ++i) acc = op(acc, map(i));
+                return acc;
+            },
+            op);
+    }
+
+    /// Sorts values by keys (n * words words, word 0 least significant), stably.
+    void sort_pairs(uint32_t* keys, int words, uint32_t* values, size_t n) {
+        radix_sort_pairs(keys, words, values, n);
+    }
+
+    /// Wall time of a phase.
+    class Timer {
+      public:
+        double stop_ms() const {
+            return std::chrono::duration<double, std::milli>(clock::now() - start_).count();
+        }
+
+      private:
+        using clock = std::chrono::steady_clock;
+        clock::time_point start_ = clock::now();
+    };
+    Timer timer() { return Timer(); }
+
+    int64_t peak_bytes() const { return memory_.peak(); }
+
+  private:
+    MemoryTracker memory_;
+};
+
+} // namespace sheaf::wavefront

@@ -1,0 +1,285 @@
+// Scenes and checks shared by the tests that compare the wavefront pipeline (CPU policy here,
+// CUDA in gpu/) with the CPU renderer: each scene exercises a part of the pipeline (glass,
+// mirrors and AO; every light kind; analytic shapes and CSG with transparent shadows;
+// procedural textures, flags, fog and sky), and frames are compared byte for byte. Test code.
+#pragma once
+
+#include "core/render/frame.h"
+#include "core/scene/prepared_scene.h"
+#include "core/scenes/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sheaf::test {
+
+using SettingList = std::vector<std::pair<std::string, std::string>>;
+
+/// A glass sphere and a mirror box over a floor: refraction, total internal reflection,
+/// reflection; AO when the settings ask.
+inline Scene glass_mirror_scene() {
+    Scene s;
+    Material floor;
+    floor.color = Vec3(0.8f, 0.7f, 0.5f);
+    Material glass;
+    glass.color = Vec3(0.9f, 1.0f, 0.9f);
+    glass.transmission = 0.9f, glass.ior = 1.5f, glass.specular = 0.5f, glass.diffuse = 0.1f;
+    Material mirror;
+    mirror.mirror = 0.8f;
+    const uint32_t mf = s.add_material(floor), mg = s.add_material(glass),
+                   mm = s.add_material(mirror);
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+    s.add_mesh_object("glass", make_uv_sphere(Vec3(0, 0, 0), 1.0f, 12, 24), mg);
+    s.add_mesh_object("mirror", make_box(Vec3(1.5f, -1, -2), Vec3(2.5f, 1, -1)), mm);
+    s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 1.5f, 5);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.background = Vec3(0.2f, 0.3f, 0.5f);
+    return s;
+}
+
+/// Point, spot (radius, falloff, tightness, fade), parallel and shadowless lights over a
+/// smooth-shaded torus and boxes, seen through an orthographic camera with lens shift.
+inline Scene lights_scene(bool orthographic) {
+    Scene s;
+    Material m;
+    m.specular = 0.4f, m.blinn = 0.3f, m.brilliance = 2.0f;
+    Material floor;
+    floor.color = Vec3(0.6f, 0.6f, 0.7f);
+    const uint32_t mm = s.add_material(m), mf = s.add_material(floor);
+    s.add_mesh_object("floor", make_box(Vec3(-5, -1.1f, -5), Vec3(5, -1, 5)), mf);
+    Mesh torus = make_torus(Vec3(0, 0, 0), Vec3(0, 1, 0.3f), 1.0f, 0.35f, 24, 12);
+    s.add_mesh_object("torus", torus, mm);
+    s.add_mesh_object("post", make_cylinder(Vec3(-2, -1, -1), Vec3(-2, 1.5f, -1), 0.3f, 16, true),
+                      mm);
+    Light spot{Vec3(0, 4, 2), Vec3(0.9f, 0.8f, 0.7f)};
+    spot.type = LightType::Spot, spot.direction = Vec3(0, -4, -2), spot.spot_radius = 15,
+    spot.spot_falloff = 30, spot.spot_tightness = 5, spot.fade_distance = 4, spot.fade_power = 2;
+    s.add_light(spot);
+    Light sun{Vec3(0, 0, 0), Vec3(0.3f, 0.3f, 0.35f)};
+    sun.type = LightType::Parallel, sun.direction = Vec3(-1, -2, -0.5f);
+    s.add_light(sun);
+    Light fill{Vec3(-3, 2, 4), Vec3(0.2f, 0.25f, 0.2f)};
+    fill.shadowless = true;
+    s.add_light(fill);
+    s.add_light(Light{Vec3(3, 3, 3), Vec3(0.4f)});
+    s.camera.position = Vec3(1, 3, 6);
+    s.camera.look_at = Vec3(0, 0, 0);
+    if (orthographic) {
+        s.camera.projection = Projection::Orthographic;
+        s.camera.ortho_height = 6;
+        s.camera.shift_x = 0.1f;
+    } else {
+        s.camera.shift_y = -0.05f;
+    }
+    return s;
+}
+
+/// Analytic shapes of every kind and a CSG tree (difference, intersection, merge, inverse,
+/// clip), one of them transparent with an interior fade (shadows through it), an unbounded
+/// plane as the floor, a mirror torus.
+inline Scene csg_scene() {
+    Scene s;
+    Material red, blue, glass, mirror, floor;
+    red.color = Vec3(0.9f, 0.2f, 0.2f), red.specular = 0.5f;
+    blue.color = Vec3(0.2f, 0.3f, 0.9f);
+    glass.color = Vec3(0.8f, 1.0f, 0.9f), glass.transmission = 0.7f, glass.ior = 1.4f,
+    glass.fade_distance = 1, glass.fade_power = 2, glass.fade_color = Vec3(0.2f, 0.6f, 0.2f);
+    mirror.mirror = 0.7f, mirror.color = Vec3(0.9f);
+    floor.color = Vec3(0.7f);
+    const uint32_t mr = s.add_material(red), mb = s.add_material(blue),
+                   mg = s.add_material(glass), mm = s.add_material(mirror),
+                   mf = s.add_material(floor);
+    s.add_shape("floor", Shape{ShapeKind::Plane}, mf,
+                Affine::translate(Vec3(0, -1, 0)) * Affine::rotate(Vec3(1, 0, 0), -kPi / 2));
+    ShapeObject o;
+    o.name = "csg";
+    o.nodes.resize(6);
+    o.nodes[0].op = CsgOp::Merge, o.nodes[0].children = {1, 5};
+    o.nodes[1].op = CsgOp::Difference, o.nodes[1].children = {2, 3, 4};
+    o.nodes[2].shape = {ShapeKind::Sphere}, o.nodes[2].material = mr;
+    o.nodes[3].shape = {ShapeKind::Box}, o.nodes[3].material = mb,
+    o.nodes[3].transform = Affine::translate(Vec3(0.6f)) * Affine::scale(Vec3(0.5f));
+    o.nodes[4].shape = {ShapeKind::Cylinder}, o.nodes[4].material = mb,
+    o.nodes[4].transform = Affine::translate(Vec3(0, 0, -2)) * Affine::scale(Vec3(0.3f, 0.3f, 4));
+    o.nodes[5].shape = {ShapeKind::Torus, 0.15f}, o.nodes[5].material = mr,
+    o.nodes[5].transform = Affine::rotate(Vec3(1, 0, 0), 0.5f) * Affine::scale(Vec3(1.4f));
+    o.transform = Affine::translate(Vec3(-1.5f, 0.2f, 0));
+    s.add_shape_object(o);
+    ShapeObject lens; // intersection of two spheres, transparent
+    lens.name = "lens";
+    lens.nodes.resize(3);
+    lens.nodes[0].op = CsgOp::Intersection, lens.nodes[0].children = {1, 2};
+    lens.nodes[1].shape = {ShapeKind::Sphere}, lens.nodes[1].material = mg,
+    lens.nodes[1].transform = Affine::translate(Vec3(0, 0, 0.5f));
+    lens.nodes[2].shape = {ShapeKind::Sphere}, lens.nodes[2].material = mg,
+    lens.nodes[2].transform = Affine::translate(Vec3(0, 0, -0.5f));
+    lens.transform = Affine::translate(Vec3(1.2f, 0.5f, 0.5f));
+    s.add_shape_object(lens);
+    ShapeObject clipped; // a cone clipped by an inverted box
+    clipped.name = "clipped";
+    clipped.nodes.resize(3);
+    clipped.nodes[0].op = CsgOp::Clip, clipped.nodes[0].children = {1, 2};
+    clipped.nodes[1].shape = {ShapeKind::Cone, 0.6f, 0.1f}, clipped.nodes[1].material = mb;
+    clipped.nodes[2].shape = {ShapeKind::Box}, clipped.nodes[2].material = mb,
+    clipped.nodes[2].inverse = true,
+    clipped.nodes[2].transform = Affine::translate(Vec3(0.5f, 0, 0.5f)) * Affine::scale(Vec3(0.4f));
+    clipped.transform = Affine::translate(Vec3(0, -1, -1.5f)) * Affine::rotate(Vec3(1, 0, 0), -kPi / 2) *
+                        Affine::scale(Vec3(1, 1, 1.5f));
+    s.add_shape_object(clipped);
+    s.add_shape("disc", Shape{ShapeKind::Disc, 0.3f}, mb,
+                Affine::translate(Vec3(2.5f, 0, -1.5f)) * Affine::rotate(Vec3(0, 1, 0), 0.7f));
+    s.add_shape("open cylinder", Shape{ShapeKind::Cylinder, 0, 0, true}, mr,
+                Affine::translate(Vec3(2.3f, -1, 1)) * Affine::rotate(Vec3(1, 0, 0), -kPi / 2) *
+                    Affine::scale(Vec3(0.3f, 0.3f, 0.8f)));
+    s.add_shape("mirror torus", Shape{ShapeKind::Torus, 0.2f}, mm,
+                Affine::translate(Vec3(0, 1.6f, -2)) * Affine::scale(Vec3(0.8f)));
+    s.add_light(Light{Vec3(2, 6, 4), Vec3(1.0f)});
+    s.add_light(Light{Vec3(-4, 3, 2), Vec3(0.4f, 0.4f, 0.5f)});
+    s.camera.position = Vec3(0, 2, 6);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.background = Vec3(0.1f, 0.1f, 0.2f);
+    s.settings["trace.depth"] = "3";
+    return s;
+}
+
+inline PigmentEntry pigment_entry(float value, Vec3 c, float filter = 0, float transmit = 0) {
+    PigmentEntry e;
+    e.value = value;
+    e.color[0] = c.x, e.color[1] = c.y, e.color[2] = c.z, e.color[3] = filter,
+    e.color[4] = transmit;
+    return e;
+}
+
+inline int32_t add_pigment(Scene& s, PatternKind kind, std::vector<PigmentEntry> entries,
+                           float scale = 1) {
+    Pigment pg;
+    pg.solid = false;
+    pg.pattern.kind = kind;
+    pg.pattern.to_pattern = Affine::scale(Vec3(1.0f / scale));
+    pg.first = uint32_t(s.pigment_entries.size());
+    pg.count = uint32_t(entries.size());
+    s.pigment_entries.insert(s.pigment_entries.end(), entries.begin(), entries.end());
+    s.pigments.push_back(pg);
+    return int32_t(s.pigments.size() - 1);
+}
+
+/// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
+/// normal pattern, variable, Fresnel and metallic reflection, conserve_energy, a texture map,
+/// no_shadow / no_image / no_reflection objects, fog and a sky pigment.
+inline Scene procedural_scene() {
+    Scene s;
+    Material floor;
+    floor.pigment = add_pigment(
+        s, PatternKind::Checker, {pigment_entry(0, Vec3(0.9f)), pigment_entry(0, Vec3(0.2f))}, 0.5f);
+    floor.mirror = 0.5f, floor.mirror_min = 0.05f, floor.mirror_falloff = 2;
+    Material marble;
+    marble.pigment = add_pigment(s, PatternKind::Marble,
+                                 {pigment_entry(0, Vec3(0.9f, 0.8f, 0.7f)),
+                                  pigment_entry(1, Vec3(0.2f, 0.1f, 0.1f))});
+    s.pigments.back().pattern.has_turbulence = true;
+    s.pigments.back().pattern.turbulence = Vec3(0.3f);
+    s.pigments.back().pattern.wave = Wave::Sine;
+    Pattern bumps;
+    bumps.kind = PatternKind::Bozo;
+    bumps.to_pattern = Affine::scale(Vec3(5));
+    s.normal_patterns.push_back({bumps, 0.6f});
+    marble.normal = 0;
+    marble.blinn = 0.5f, marble.blinn_exponent = 30, marble.metallic = 0.5f;
+    marble.mirror = 0.3f, marble.mirror_metallic = true, marble.conserve_energy = true;
+    Material glass;
+    glass.pigment = add_pigment(s, PatternKind::Gradient,
+                                {pigment_entry(0, Vec3(1), 0, 0.9f),
+                                 pigment_entry(1, Vec3(0.8f, 1, 0.8f), 0.3f, 0.3f)});
+    glass.ior = 1.5f, glass.fresnel_split = false, glass.mirror = 1, glass.mirror_min = 0,
+    glass.mirror_fresnel = true, glass.fade_distance = 1, glass.fade_power = 2;
+    Material layered;
+    const int32_t spots = add_pigment(s, PatternKind::Crackle,
+                                      {pigment_entry(0, Vec3(0.1f, 0.1f, 0.4f)),
+                                       pigment_entry(0.3f, Vec3(1.0f), 0, 1.0f)},
+                                      0.3f);
+    const int32_t base = add_pigment(s, PatternKind::Wood,
+                                     {pigment_entry(0, Vec3(0.6f, 0.4f, 0.2f)),
+                                      pigment_entry(1, Vec3(0.3f, 0.2f, 0.1f))},
+                                     0.2f);
+    Pigment layers;
+    layers.solid = false, layers.layers = true;
+    layers.first = uint32_t(s.pigment_entries.size()), layers.count = 2;
+    PigmentEntry bottom, top;
+    bottom.pigment = base, top.pigment = spots;
+    s.pigment_entries.push_back(bottom), s.pigment_entries.push_back(top);
+    s.pigments.push_back(layers);
+    layered.pigment = int32_t(s.pigments.size() - 1);
+    Material a, b, picked;
+    a.color = Vec3(1, 0.2f, 0.2f), b.color = Vec3(0.2f, 0.2f, 1);
+    const uint32_t ma = s.add_material(a), mb = s.add_material(b);
+    MaterialSwitch sw;
+    sw.pattern.kind = PatternKind::Gradient;
+    sw.pattern.to_pattern = Affine::scale(Vec3(2));
+    sw.first = 0, sw.count = 2;
+    s.material_switches.push_back(sw);
+    s.material_entries = {{0.0f, ma}, {1.0f, mb}};
+    picked.select = 0;
+    const uint32_t mf = s.add_material(floor), mm = s.add_material(marble),
+                   mg = s.add_material(glass), mp = s.add_material(picked),
+                   ml = s.add_material(layered);
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+    s.add_shape("marble", Shape{ShapeKind::Sphere}, mm, Affine::translate(Vec3(-1.2f, 0, 0)));
+    s.add_shape("glass", Shape{ShapeKind::Sphere}, mg,
+                Affine::translate(Vec3(1.2f, 0, 0.5f)) * Affine::scale(Vec3(0.8f)));
+    s.add_mesh_object("layered", make_box(Vec3(-0.4f, -1, 1.2f), Vec3(0.4f, -0.2f, 2.0f)), ml);
+    const uint32_t box =
+        s.add_mesh_object("picked", make_box(Vec3(-0.5f, -1, -2), Vec3(0.5f, 0, -1.5f)), mp);
+    s.objects[box].flags = kNoShadow;
+    const uint32_t ghost = s.add_shape("ghost", Shape{ShapeKind::Sphere}, ma,
+                                       Affine::translate(Vec3(0, 2, -1)) * Affine::scale(Vec3(0.5f)));
+    s.shape_objects[ghost].flags = kNoImage | kNoReflection;
+    s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 1.5f, 5);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.fog.distance = 20, s.fog.color = Vec3(0.5f, 0.5f, 0.6f), s.fog.transmit = 0.2f;
+    s.sky = add_pigment(s, PatternKind::Gradient,
+                        {pigment_entry(0, Vec3(1)), pigment_entry(1, Vec3(0.1f, 0.2f, 0.8f))});
+    s.settings["trace.depth"] = "3";
+    return s;
+}
+
+/// Byte-for-byte equality of two frames: image, passes, and every statistic in the same
+/// order with the same value, except measurements (time_ms.*, memory.*) and `ignore`.
+inline void expect_same_frame(const Frame& a, const Frame& b, const std::string& what,
+                              const std::vector<std::string>& ignore = {}) {
+    auto same = [](const auto& x, const auto& y) {
+        return x.size() == y.size() &&
+               (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
+    };
+    EXPECT_EQ(a.width, b.width) << what;
+    EXPECT_EQ(a.height, b.height) << what;
+    EXPECT_TRUE(same(a.rgba, b.rgba)) << what << ": the images differ";
+    EXPECT_TRUE(same(a.depth, b.depth)) << what << ": depth differs";
+    EXPECT_TRUE(same(a.normal, b.normal)) << what << ": normals differ";
+    EXPECT_TRUE(same(a.albedo, b.albedo)) << what << ": albedo differs";
+    EXPECT_TRUE(same(a.object_id, b.object_id)) << what << ": object ids differ";
+    EXPECT_TRUE(same(a.tests, b.tests)) << what << ": per-pixel tests differ";
+    auto measured = [&](const std::string& k) {
+        if (k.rfind("time_ms.", 0) == 0 || k.rfind("memory.", 0) == 0) return true;
+        for (const std::string& i : ignore)
+            if (k == i) return true;
+        return false;
+    };
+    std::vector<std::pair<std::string, double>> ka, kb;
+    for (const auto& e : a.stats.entries())
+        if (!measured(e.first)) ka.push_back(e);
+    for (const auto& e : b.stats.entries())
+        if (!measured(e.first)) kb.push_back(e);
+    EXPECT_EQ(ka.size(), kb.size()) << what << ": statistics keys differ";
+    for (size_t i = 0; i < ka.size() && i < kb.size(); ++i) {
+        EXPECT_EQ(ka[i].first, kb[i].first) << what << ": statistic " << i;
+        EXPECT_EQ(ka[i].second, kb[i].second) << what << ": " << ka[i].first;
+    }
+}
+
+} // namespace sheaf::test

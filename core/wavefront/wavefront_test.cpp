@@ -1,0 +1,212 @@
+// The wavefront (device) pipeline under the CPU execution policy against the CPU renderer:
+// identical images, passes and statistics on the built-in scenes and on scenes exercising
+// every part of the pipeline, under every accel, hash, sort, depth and arity. What the CUDA
+// backend runs is this code with another exec; this proves its logic on any machine.
+#include "core/wavefront/wavefront.h"
+
+#include "core/base/error.h"
+#include "core/scenes/builtin.h"
+#include "core/sort/ray_order.h"
+#include "core/wavefront/cpu_exec.h"
+#include "core/wavefront/test_scenes.h"
+#include "core/wavefront/wf_order.h"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <random>
+
+namespace sheaf {
+namespace {
+
+using test::SettingList;
+
+RenderSettings settings_for(const PreparedScene& scene, const SettingList& kv, int w = 40,
+                            int h = 32) {
+    Settings s;
+    s.set("width", std::to_string(w)), s.set("height", std::to_string(h));
+    for (const auto& [k, v] : kv) s.set(k, v);
+    return RenderSettings::resolve(s, scene.settings);
+}
+
+std::string label(const std::string& scene, const SettingList& kv) {
+    std::string l = scene;
+    for (const auto& [k, v] : kv) l += " " + k + "=" + v;
+    return l;
+}
+
+Frame expect_identical(const PreparedScene& scene, const std::string& name, const SettingList& kv,
+                       int w = 40, int h = 32) {
+    const RenderSettings s = settings_for(scene, kv, w, h);
+    const Frame cpu = render_frame(scene, s);
+    const Frame wave = render_frame_wavefront_cpu(scene, s);
+    test::expect_same_frame(cpu, wave, label(name, kv));
+    return cpu;
+}
+
+double mean(const Frame& f) {
+    double m = 0;
+    for (size_t i = 0; i < f.rgba.size(); i += 4) m += f.rgba[i] + f.rgba[i + 1] + f.rgba[i + 2];
+    return m / double(f.rgba.size());
+}
+
+const std::vector<SettingList>& variants() {
+    static const std::vector<SettingList> v = {
+        {{"accel", "brute"}},
+        {{"accel", "rah"}, {"cull.objects", "false"}},
+        {},
+        {{"hash.mode", "hash32"}, {"sort.mode", "full"}},
+        {{"hash.mode", "hash192"}, {"sort.mode", "csd"}},
+        {{"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
+        {{"hash.mode", "hash32"}, {"sort.algorithm", "bitonic"}, {"sort.mode", "csd"}},
+        {{"hash.mode", "static1d"}, {"cull.distance", "false"}},
+        {{"hierarchy.depth", "1"}, {"hierarchy.arity", "2"}},
+        {{"hierarchy.depth", "4"}, {"hierarchy.arity", "5"}, {"cull.objects", "false"}},
+        {{"hierarchy.arity", "64"}, {"hierarchy.depth", "3"}},
+        {{"traversal.batch", "1024"}},
+        {{"hash.mode", "none"}, {"sort.mode", "none"}},
+    };
+    return v;
+}
+
+TEST(Wavefront, BuiltinScenesAreIdentical) {
+    for (const std::string& name : builtin_scene_names()) {
+        const PreparedScene scene = prepare_scene(make_builtin_scene(name));
+        for (const SettingList& kv : {SettingList{}, SettingList{{"accel", "rah"}},
+                                      SettingList{{"hash.mode", "hash192"}, {"ao.samples", "2"}},
+                                      SettingList{{"aa.samples", "2"}, {"traversal.batch", "4096"}}})
+            expect_identical(scene, name, kv, 32, 24);
+    }
+    const PreparedScene cornell = prepare_scene(make_builtin_scene("cornell"));
+    expect_identical(cornell, "cornell", {{"accel", "brute"}}, 24, 20);
+}
+
+TEST(Wavefront, GlassMirrorsAndAmbientOcclusionAreIdentical) {
+    const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
+    for (SettingList kv : variants()) {
+        kv.push_back({"ao.samples", "3"});
+        expect_identical(scene, "glass", kv);
+    }
+    const Frame f = expect_identical(scene, "glass", {{"ao.samples", "3"}});
+    EXPECT_GT(f.stats.get("rays.refraction"), 0);
+    EXPECT_GT(f.stats.get("rays.reflection"), 0);
+    EXPECT_GT(f.stats.get("rays.ao"), 0);
+    EXPECT_GT(mean(f), 0.05);
+    expect_identical(scene, "glass", {{"aa.samples", "3"}, {"trace.depth", "7"}}, 24, 20);
+}
+
+TEST(Wavefront, EveryLightKindIsIdentical) {
+    for (bool ortho : {false, true}) {
+        const PreparedScene scene = prepare_scene(test::lights_scene(ortho));
+        for (const SettingList& kv : variants()) expect_identical(scene, ortho ? "ortho" : "lights", kv);
+        const Frame f = expect_identical(scene, "lights", {});
+        EXPECT_GT(f.stats.get("rays.shadow"), f.stats.get("rays.primary")); // several lights
+        EXPECT_GT(mean(f), 0.05);
+    }
+}
+
+TEST(Wavefront, AnalyticShapesCsgAndTransparentShadowsAreIdentical) {
+    const PreparedScene scene = prepare_scene(test::csg_scene());
+    for (const SettingList& kv : variants()) expect_identical(scene, "csg", kv);
+    const Frame f = expect_identical(scene, "csg", {{"ao.samples", "2"}, {"aa.samples", "2"}});
+    EXPECT_GT(f.stats.get("rays.refraction"), 0);
+    EXPECT_GT(f.stats.get("rays.reflection"), 0);
+    EXPECT_GT(mean(f), 0.05);
+}
+
+TEST(Wavefront, ProceduralTexturesFlagsFogAndSkyAreIdentical) {
+    const PreparedScene scene = prepare_scene(test::procedural_scene());
+    for (SettingList kv : variants()) {
+        kv.push_back({"ao.samples", "2"});
+        expect_identical(scene, "procedural", kv);
+    }
+    const Frame f = expect_identical(scene, "procedural", {});
+    EXPECT_GT(f.stats.get("rays.refraction"), 0);
+    EXPECT_GT(f.stats.get("rays.reflection"), 0);
+    EXPECT_GT(mean(f), 0.05);
+}
+
+TEST(Wavefront, EmptyAndDegenerateFramesAreIdentical) {
+    Scene s; // lights and no shadow casters in view, the camera inside the scene
+    Material m;
+    s.add_mesh_object("far", make_box(Vec3(10, 10, 10), Vec3(11, 11, 11)), s.add_material(m));
+    s.background = Vec3(0.3f, 0.2f, 0.1f);
+    expect_identical(prepare_scene(s), "empty", {});
+    Scene no_lights = test::glass_mirror_scene();
+    no_lights.lights.clear();
+    expect_identical(prepare_scene(no_lights), "no lights", {{"ao.samples", "1"}});
+    expect_identical(prepare_scene(test::glass_mirror_scene()), "1x1", {}, 1, 1);
+    expect_identical(prepare_scene(test::glass_mirror_scene()), "depth 0", {{"trace.depth", "0"}});
+}
+
+TEST(Wavefront, CancellingStopsTheFrame) {
+    const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
+    const RenderSettings s = settings_for(scene, {});
+    EXPECT_THROW(render_frame_wavefront_cpu(scene, s, [](float) { return false; }), RenderError);
+}
+
+// The seam's order stage against the CPU's for random keys: the same permutation and chunks
+// (the CUDA policy's radix sort must give this stable permutation too).
+TEST(Wavefront, OrderMatchesTheCpuOrder) {
+    std::mt19937 g(7);
+    for (int words : {1, 2, 6})
+        for (SortMode mode : {SortMode::Full, SortMode::Csd})
+            for (SortAlgorithm alg : {SortAlgorithm::Radix, SortAlgorithm::Bitonic}) {
+                const size_t n = 3001;
+                std::vector<uint32_t> keys(n * words);
+                for (size_t i = 0; i < n; ++i)
+                    for (int w = 0; w < words; ++w) // runs of equal keys, few distinct values
+                        keys[i * words + w] = (i / 3 % 5 == 0) && i > 0 ? keys[(i - 1) * words + w]
+                                                                         : uint32_t(g() % 97);
+                Stats a, b;
+                const OrderResult cpu = order_rays(keys, words, n, mode, a, alg);
+                wavefront::CpuExec ex;
+                wavefront::DeviceBuffer<uint32_t, wavefront::CpuExec> dk(ex, keys.size());
+                dk.upload(keys.data(), keys.size());
+                const auto dev = wavefront::order_rays(ex, dk.data(), words, n, mode, b, alg);
+                EXPECT_EQ(cpu.perm, dev.perm.download()) << words << " words";
+                EXPECT_EQ(cpu.chunks, dev.chunks) << words << " words";
+            }
+}
+
+TEST(Wavefront, AccumulationKeepsItemOrderPerSample) {
+    wavefront::CpuExec ex;
+    const size_t n = 5000, samples = 37;
+    std::mt19937 g(3);
+    std::vector<uint32_t> sample(n);
+    std::vector<Vec3> value(n);
+    for (size_t i = 0; i < n; ++i)
+        sample[i] = g() % samples, value[i] = Vec3(float(g() % 1000) * 1e-3f + 1e-7f * float(i));
+    std::vector<Vec3> expected(samples, Vec3(0.5f));
+    for (size_t i = 0; i < n; ++i)
+        if (i % 3) expected[sample[i]] += value[i];
+    wavefront::DeviceBuffer<uint32_t, wavefront::CpuExec> ds(ex, n);
+    wavefront::DeviceBuffer<Vec3, wavefront::CpuExec> dv(ex, n), dr(ex, samples);
+    ds.upload(sample.data(), n), dv.upload(value.data(), n);
+    wavefront::fill(ex, dr.data(), samples, Vec3(0.5f));
+    const uint32_t* ps = ds.data();
+    const Vec3* pv = dv.data();
+    wavefront::accumulate_in_order(
+        ex, n, dr.data(), [=](size_t i) { return ps[i]; },
+        [=](size_t i, Vec3& v) {
+            v = pv[i];
+            return i % 3 != 0;
+        });
+    const std::vector<Vec3> got = dr.download();
+    EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), samples * sizeof(Vec3)));
+}
+
+TEST(Wavefront, ImageTexturesAreNotForTheDevice) {
+    PreparedScene scene = prepare_scene(test::glass_mirror_scene());
+    EXPECT_EQ(wavefront_unsupported(scene), "");
+    struct Grey : TextureSampler {
+        Vec3 sample(uint32_t, float, float) const override { return Vec3(0.5f); }
+    };
+    scene.textures.push_back(Texture{});
+    scene.sampler = std::make_shared<Grey>();
+    EXPECT_NE(wavefront_unsupported(scene).find("image textures"), std::string::npos);
+    EXPECT_THROW(render_frame_wavefront_cpu(scene, settings_for(scene, {})), RenderError);
+}
+
+} // namespace
+} // namespace sheaf

@@ -1,0 +1,370 @@
+// The frame pipeline of core/render/renderer.cpp as a wavefront of launches over arrays, written
+// once against the exec seam: raster (one thread per set-up triangle over its pixel bounds, a
+// 64-bit atomic minimum of depth | primitive), analytic primary rays, the G-buffer resolve,
+// then per bounce: ray generation (count, scan, fill), tracing (wf_trace.h), shading whose
+// sums go into each sample in the CPU renderer's order (accumulate_in_order), the next wave's
+// hits; finally the box filter and the passes. Same images, same statistics.
+#pragma once
+
+#include "core/base/error.h"
+#include "core/render/frame.h"
+#include "core/render/frame_kernels.h"
+#include "core/render/frame_stats.h"
+#include "core/raster/raster_tri.h"
+#include "core/render/renderer.h"
+#include "core/wavefront/wf_scene.h"
+#include "core/wavefront/wf_trace.h"
+
+#include <chrono>
+
+namespace sheaf::wavefront {
+
+/// A wave of surface hits on the executing side.
+template <class Exec> struct DeviceHits {
+    DeviceBuffer<SurfaceHit, Exec> h;
+    size_t n = 0;
+};
+
+template <class Exec> class DeviceFrame {
+  public:
+    DeviceFrame(Exec& ex, const PreparedScene& scene, const RenderSettings& s,
+                const ProgressFn& progress, Frame& f)
+        : ex_(ex), host_(scene), s_(s), progress_(progress), f_(f), st_(f.stats) {}
+
+    void run() {
+        declare_frame_keys(st_);
+        const auto start = std::chrono::steady_clock::now();
+        const int aa = s_.aa_samples;
+        W_ = s_.width * aa, H_ = s_.height * aa;
+        const size_t samples = size_t(W_) * H_;
+        DeviceScene<Exec> uploaded(ex_, host_);
+        scene_ = uploaded.view;
+        radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
+        tests_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);
+        fill(ex_, radiance_.data(), samples, Vec3(0.0f));
+        fill(ex_, tests_.data(), samples, 0u);
+        params_ = frame_ray_params(host_, s_);
+        DeviceTracer<Exec> tracer(ex_, host_, scene_, s_, st_);
+        tracer_ = &tracer;
+
+        DeviceHits<Exec> hits = primary();
+        report(0.1f);
+        for (int bounce = 0; bounce <= s_.trace_depth && hits.n > 0; ++bounce) {
+            hits = shade_wave(hits, bounce);
+            report(0.1f + 0.9f * float(bounce + 1) / float(s_.trace_depth + 1));
+        }
+        resolve();
+        tracer_ = nullptr;
+        st_.add("time_ms.frame",
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
+        frame_totals(st_, host_, s_, ex_.peak_bytes());
+    }
+
+    // The stages below are public only because nvcc's extended lambdas may not live in private
+    // member functions.
+
+    void report(float done) {
+        if (progress_ && !progress_(done)) throw RenderError("cancelled");
+    }
+
+    // Rasterised primary visibility with the analytic objects merged in, resolved to surface
+    // hits and the primary passes.
+    DeviceHits<Exec> primary() {
+        const CameraFrame cam = make_camera_frame(host_.camera, W_, H_);
+        const size_t samples = size_t(W_) * H_;
+        const int W = W_;
+        const SceneView scene = scene_;
+        DeviceBuffer<uint64_t, Exec> vis_buf(ex_, samples);
+        uint64_t* vis = vis_buf.data();
+        {
+            auto t = ex_.timer();
+            fill(ex_, vis, samples, kEmptyPixel);
+            const size_t tris = host_.triangle_count();
+            if (tris > 0) {
+                const double near = raster_near(host_, cam);
+                DeviceBuffer<ScreenTri, Exec> screen_buf(ex_, 2 * tris);
+                ScreenTri* screen = screen_buf.data();
+                ex_.launch("raster.setup", tris, [=] SHEAF_HD_LAMBDA(size_t p) {
+                    setup_triangle(scene.tris[p], uint32_t(p),
+                                   scene.prim_flag(uint32_t(p), kNoImage), cam, near,
+                                   &screen[2 * p]);
+                });
+                ex_.launch("raster.cover", 2 * tris, [=] SHEAF_HD_LAMBDA(size_t k) {
+                    const ScreenTri& s = screen[k];
+                    for (int y = s.y0; y <= s.y1; ++y)
+                        for (int x = s.x0; x <= s.x1; ++x) {
+                            uint64_t key;
+                            if (cover_pixel(s, x, y, cam.ortho, key))
+                                atomic_min_u64(&vis[size_t(y) * W + x], key);
+                        }
+                });
+            }
+            if (scene.analytic_count > 0)
+                ex_.launch("raster.analytic", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
+                    vis[i] = cast_analytic_pixel(scene, cam, int(i % size_t(W)),
+                                                 int(i / size_t(W)), vis[i]);
+                });
+            st_.add("time_ms.raster", t.stop_ms());
+        }
+        st_.set("rays.primary", double(samples));
+
+        auto t = ex_.timer();
+        DeviceBuffer<uint32_t, Exec> slot_buf(ex_, samples);
+        uint32_t* slot = slot_buf.data();
+        const uint32_t count = count_and_scan(
+            ex_, "gbuffer.count", samples, slot,
+            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return vis[i] != kEmptyPixel ? 1u : 0u; });
+        DeviceHits<Exec> hits;
+        hits.h = DeviceBuffer<SurfaceHit, Exec>(ex_, count);
+        hits.n = count;
+        depth_ = DeviceBuffer<float, Exec>(ex_, samples);
+        normal_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
+        albedo_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
+        object_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);
+        SurfaceHit* out = hits.h.data();
+        Vec3* radiance = radiance_.data();
+        float* depth = depth_.data();
+        Vec3* normal = normal_.data();
+        Vec3* albedo = albedo_.data();
+        uint32_t* object = object_.data();
+        ex_.launch("gbuffer.resolve", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
+            const PrimarySample ps = primary_sample(scene, cam, W, i, vis[i]);
+            radiance[i] = ps.radiance;
+            depth[i] = ps.depth;
+            normal[i] = ps.normal;
+            albedo[i] = ps.albedo;
+            object[i] = ps.object;
+            if (ps.hit) out[slot[i]] = ps.h;
+        });
+        st_.add("time_ms.gbuffer", t.stop_ms());
+        return hits;
+    }
+
+    // Shadow and AO rays, traced and added; returns the hits of the reflection and refraction
+    // rays (reflections first, each in ray order).
+    DeviceHits<Exec> shade_wave(const DeviceHits<Exec>& hits, int bounce) {
+        const bool trace_ao = bounce == 0 && s_.ao_samples > 0;
+        const SceneView scene = scene_;
+        const RayGenParams params = params_;
+        const SurfaceHit* h = hits.h.data();
+        const size_t n = hits.n;
+        Vec3* radiance = radiance_.data();
+
+        DeviceBatch<Exec> shadow = shadow_rays(hits);
+        DeviceBatch<Exec> ao(ex_, RayType::Ao, 0);
+        if (trace_ao) ao = ao_rays(hits);
+        {
+            // Terms that need no ray: emission, ambient (unless AO traces it), shadowless lights.
+            auto t = ex_.timer();
+            accumulate_in_order(
+                ex_, n, radiance, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return h[i].pixel; },
+                [=] SHEAF_HD_LAMBDA(size_t i, Vec3& v) -> bool {
+                    v = unshadowed_terms(scene, h[i], trace_ao, params);
+                    return true;
+                });
+            st_.add("time_ms.shading", t.stop_ms());
+        }
+        DeviceTraceResult<Exec> r;
+        tracer_->trace(shadow, r);
+        add_unoccluded(shadow, r);
+        if (trace_ao) {
+            tracer_->trace(ao, r);
+            add_unoccluded(ao, r);
+        }
+        if (bounce >= s_.trace_depth) return DeviceHits<Exec>();
+
+        DeviceBuffer<BounceSplit, Exec> split_buf(ex_, n);
+        BounceSplit* split = split_buf.data();
+        DeviceBatch<Exec> refl(ex_, RayType::Reflection, 0), refr(ex_, RayType::Refraction, 0);
+        {
+            auto t = ex_.timer();
+            ex_.launch("raygen.split", n,
+                       [=] SHEAF_HD_LAMBDA(size_t i) { split[i] = bounce_split(scene, h[i]); });
+            refl = bounce_rays(hits, split, RayType::Reflection);
+            refr = bounce_rays(hits, split, RayType::Refraction);
+            st_.add("time_ms.ray_creation", t.stop_ms());
+        }
+        DeviceHits<Exec> next;
+        next.h = DeviceBuffer<SurfaceHit, Exec>(ex_, refl.n + refr.n);
+        next_hits(refl, next);
+        next_hits(refr, next);
+        return next;
+    }
+
+    DeviceBatch<Exec> shadow_rays(const DeviceHits<Exec>& hits) {
+        auto t = ex_.timer();
+        const SceneView scene = scene_;
+        const RayGenParams params = params_;
+        const SurfaceHit* h = hits.h.data();
+        const size_t n = hits.n, k = n * host_.lights.size();
+        DeviceBuffer<uint32_t, Exec> offset_buf(ex_, k);
+        uint32_t* offset = offset_buf.data();
+        const uint32_t total = count_and_scan(
+            ex_, "raygen.count", k, offset, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
+                return shadow_ray_count(scene, h, n, i, params);
+            });
+        DeviceBatch<Exec> out(ex_, RayType::Shadow, total);
+        const RaySlots slots = out.slots();
+        ex_.launch("raygen.fill", k, [=] SHEAF_HD_LAMBDA(size_t i) {
+            shadow_ray_fill(scene, h, n, i, offset[i], params, slots);
+        });
+        st_.add("time_ms.ray_creation", t.stop_ms());
+        return out;
+    }
+
+    DeviceBatch<Exec> ao_rays(const DeviceHits<Exec>& hits) {
+        auto t = ex_.timer();
+        const SceneView scene = scene_;
+        const RayGenParams params = params_;
+        const SurfaceHit* h = hits.h.data();
+        const uint32_t per = uint32_t(params_.ao_samples);
+        DeviceBatch<Exec> out(ex_, RayType::Ao, hits.n * per);
+        const RaySlots slots = out.slots();
+        ex_.launch("raygen.ao", hits.n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            ao_ray_fill(scene, h[i], uint32_t(i) * per, params, slots);
+        });
+        st_.add("time_ms.ray_creation", t.stop_ms());
+        return out;
+    }
+
+    DeviceBatch<Exec> bounce_rays(const DeviceHits<Exec>& hits, const BounceSplit* split,
+                                  RayType type) {
+        const RayGenParams params = params_;
+        const SurfaceHit* h = hits.h.data();
+        const bool reflection = type == RayType::Reflection;
+        DeviceBuffer<uint32_t, Exec> offset_buf(ex_, hits.n);
+        uint32_t* offset = offset_buf.data();
+        const uint32_t total = count_and_scan(
+            ex_, "raygen.count", hits.n, offset, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
+                return reflection ? reflect_ray_count(split[i], params)
+                                  : refract_ray_count(split[i], params);
+            });
+        DeviceBatch<Exec> out(ex_, type, total);
+        const RaySlots slots = out.slots();
+        ex_.launch("raygen.fill", hits.n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            if (reflection)
+                reflect_ray_fill(h[i], split[i], offset[i], params, slots);
+            else
+                refract_ray_fill(h[i], split[i], offset[i], params, slots);
+        });
+        return out;
+    }
+
+    // Shadow and AO rays that reach their end add their radiance (through what transparent
+    // surfaces let pass), in ray order per sample; every ray's tests go to its sample.
+    void add_unoccluded(const DeviceBatch<Exec>& b, const DeviceTraceResult<Exec>& r) {
+        auto t = ex_.timer();
+        const uint32_t* pixel = b.pixel.data();
+        const Vec3* weight = b.weight.data();
+        const uint8_t* occluded = r.occluded.data();
+        const uint64_t* pass_log = r.pass_log.data();
+        accumulate_in_order(
+            ex_, b.n, radiance_.data(),
+            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
+            [=] SHEAF_HD_LAMBDA(size_t i, Vec3& v) -> bool {
+                if (occluded[i]) return false;
+                v = pass_log ? weight[i] * pass_from_logs(&pass_log[3 * i]) : weight[i];
+                return true;
+            });
+        count_tests(b, r);
+        st_.add("time_ms.shading", t.stop_ms());
+    }
+
+    void count_tests(const DeviceBatch<Exec>& b, const DeviceTraceResult<Exec>& r) {
+        const uint32_t* pixel = b.pixel.data();
+        const uint32_t* tests = r.tests.data();
+        uint32_t* sample_tests = tests_.data();
+        ex_.launch("shade.tests", b.n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            atomic_add_u32(&sample_tests[pixel[i]], tests[i]);
+        });
+    }
+
+    // Traces a reflection or refraction batch: misses bring the sky, hits become surface
+    // points of the next wave, appended to `next` in ray order, with the fog on their way.
+    void next_hits(const DeviceBatch<Exec>& b, DeviceHits<Exec>& next) {
+        DeviceTraceResult<Exec> r;
+        tracer_->trace(b, r);
+        auto t = ex_.timer();
+        count_tests(b, r);
+        const SceneView scene = scene_;
+        const Ray* rays = b.rays.data();
+        const uint32_t* pixel = b.pixel.data();
+        const Vec3* weight = b.weight.data();
+        const uint64_t* closest = r.closest.data();
+        accumulate_in_order(
+            ex_, b.n, radiance_.data(),
+            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
+            [=] SHEAF_HD_LAMBDA(size_t i, Vec3& v) -> bool {
+                if (closest[i] != kNoHit) return false;
+                v = leave_scene(scene, rays[i].dir, weight[i]);
+                return true;
+            });
+        DeviceBuffer<uint32_t, Exec> slot_buf(ex_, b.n);
+        uint32_t* slot = slot_buf.data();
+        const uint32_t count = count_and_scan(
+            ex_, "shade.count", b.n, slot,
+            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return closest[i] != kNoHit ? 1u : 0u; });
+        DeviceBuffer<Vec3, Exec> fog_buf(ex_, count);
+        Vec3* fog = fog_buf.data();
+        SurfaceHit* out = next.h.data() + next.n;
+        ex_.launch("shade.next", b.n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            if (closest[i] == kNoHit) return;
+            out[slot[i]] = bounce_hit(scene, rays[i], closest[i], pixel[i], weight[i], fog[slot[i]]);
+        });
+        if (host_.fog.distance > 0) // in ray order: sums stay the same on every accel
+            accumulate_in_order(
+                ex_, count, radiance_.data(),
+                [=] SHEAF_HD_LAMBDA(size_t k) -> uint32_t { return out[k].pixel; },
+                [=] SHEAF_HD_LAMBDA(size_t k, Vec3& v) -> bool {
+                    v = fog[k];
+                    return true;
+                });
+        next.n += count;
+        st_.add("time_ms.shading", t.stop_ms());
+    }
+
+    // Box filter of the aa x aa samples of each pixel; passes from the centre sample; the
+    // results come back to the host.
+    void resolve() {
+        auto t = ex_.timer();
+        const int aa = s_.aa_samples, w = s_.width, h = s_.height, W = W_;
+        const size_t pixels = size_t(w) * h;
+        DeviceBuffer<float, Exec> rgba(ex_, 4 * pixels), depth(ex_, pixels);
+        DeviceBuffer<Vec3, Exec> normal(ex_, pixels), albedo(ex_, pixels);
+        DeviceBuffer<uint32_t, Exec> object(ex_, pixels), tests(ex_, pixels);
+        const SampleBuffers in{radiance_.data(), tests_.data(),  depth_.data(),
+                               normal_.data(),   albedo_.data(), object_.data()};
+        const PixelBuffers out{rgba.data(),   depth.data(),  normal.data(),
+                               albedo.data(), object.data(), tests.data()};
+        ex_.launch("resolve", pixels,
+                   [=] SHEAF_HD_LAMBDA(size_t p) { resolve_pixel(p, w, aa, W, in, out); });
+        f_.width = w, f_.height = h;
+        f_.rgba = rgba.download();
+        f_.depth = depth.download();
+        f_.normal = normal.download();
+        f_.albedo = albedo.download();
+        f_.object_id = object.download();
+        f_.tests = tests.download();
+        st_.add("time_ms.shading", t.stop_ms());
+    }
+
+  private:
+    Exec& ex_;
+    const PreparedScene& host_;
+    const RenderSettings& s_;
+    const ProgressFn& progress_;
+    Frame& f_;
+    Stats& st_;
+    SceneView scene_;
+    DeviceTracer<Exec>* tracer_ = nullptr;
+    RayGenParams params_;
+    int W_ = 0, H_ = 0;
+    DeviceBuffer<Vec3, Exec> radiance_;
+    DeviceBuffer<uint32_t, Exec> tests_;
+    DeviceBuffer<float, Exec> depth_;
+    DeviceBuffer<Vec3, Exec> normal_, albedo_;
+    DeviceBuffer<uint32_t, Exec> object_;
+};
+
+} // namespace sheaf::wavefront

@@ -1,0 +1,131 @@
+// Data-parallel building blocks of the wavefront pipeline, written once against the exec seam
+// (launch, exclusive_scan, transform_reduce, sort_pairs): filling, counting and scanning,
+// accumulation into samples in a fixed order, and the stable bitonic sort of paper 003.
+#pragma once
+
+#include "core/base/device.h"
+#include "core/math/vec3.h"
+#include "core/wavefront/buffer.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace sheaf::wavefront {
+
+struct SumU64 {
+    SHEAF_HD uint64_t operator()(uint64_t a, uint64_t b) const { return a + b; }
+};
+
+template <class Exec, class T> void fill(Exec& ex, T* p, size_t n, T value) {
+    ex.launch("fill", n, [=] SHEAF_HD_LAMBDA(size_t i) { p[i] = value; });
+}
+
+template <class Exec> void iota(Exec& ex, uint32_t* p, size_t n) {
+    ex.launch("iota", n, [=] SHEAF_HD_LAMBDA(size_t i) { p[i] = uint32_t(i); });
+}
+
+/// Sum of p[0, n) as 64 bits.
+template <class Exec, class T> uint64_t sum(Exec& ex, const T* p, size_t n) {
+    return ex.transform_reduce(
+        "sum", n, uint64_t(0), [=] SHEAF_HD_LAMBDA(size_t i) -> uint64_t { return uint64_t(p[i]); },
+        SumU64{});
+}
+
+/// offsets[i] = count(i), then scanned in place; returns the total. Count, scan, fill: the
+/// order of what a fill writes is the order of i, whatever the thread schedule.
+template <class Exec, class Count>
+uint32_t count_and_scan(Exec& ex, const char* name, size_t n, uint32_t* offsets, Count count) {
+    ex.launch(name, n, [=] SHEAF_HD_LAMBDA(size_t i) { offsets[i] = count(i); });
+    return ex.exclusive_scan(offsets, n);
+}
+
+/// Adds items [0, n) to samples: item i goes to sample `sample(i)` when `value(i, v)` gives
+/// it a contribution v. Per sample, items add in item order, so the sums are bitwise those of
+/// the CPU renderer's sequential loop: a stable sort of the items by sample, one thread per
+/// sample adding its run in order.
+template <class Exec, class Sample, class Value>
+void accumulate_in_order(Exec& ex, size_t n, Vec3* radiance, Sample sample, Value value) {
+    if (n == 0) return;
+    DeviceBuffer<uint32_t, Exec> keys(ex, n), items(ex, n), heads(ex, n);
+    uint32_t* k = keys.data();
+    uint32_t* it = items.data();
+    uint32_t* h = heads.data();
+    ex.launch("accumulate.keys", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+        k[i] = sample(i);
+        it[i] = uint32_t(i);
+    });
+    ex.sort_pairs(k, 1, it, n);
+    ex.launch("accumulate.heads", n,
+              [=] SHEAF_HD_LAMBDA(size_t j) { h[j] = j == 0 || k[j] != k[j - 1] ? 1u : 0u; });
+    const uint32_t runs = ex.exclusive_scan(h, n);
+    DeviceBuffer<uint32_t, Exec> starts(ex, size_t(runs) + 1);
+    uint32_t* st = starts.data();
+    ex.launch("accumulate.starts", n, [=] SHEAF_HD_LAMBDA(size_t j) {
+        if (j == 0 || k[j] != k[j - 1]) st[h[j]] = uint32_t(j);
+    });
+    const uint32_t end = uint32_t(n);
+    starts.upload(&end, 1, runs);
+    ex.launch("accumulate.add", runs, [=] SHEAF_HD_LAMBDA(size_t r) {
+        const uint32_t b = st[r], e = st[r + 1];
+        Vec3 acc = radiance[k[b]];
+        for (uint32_t j = b; j < e; ++j) {
+            Vec3 v;
+            if (value(size_t(it[j]), v)) acc += v;
+        }
+        radiance[k[b]] = acc;
+    });
+}
+
+/// Lexicographic order of multi-word keys (word 0 least significant), ties by value; entries
+/// at n and beyond (the power-of-two padding) after everything.
+struct BitonicLess {
+    const uint32_t* keys;
+    int words;
+    const uint32_t* values;
+    size_t n;
+    SHEAF_HD bool operator()(uint32_t a, uint32_t b) const {
+        if (a >= n || b >= n) return a < b && a < n; // padding last
+        for (int w = words - 1; w >= 0; --w) {
+            const uint32_t ka = keys[size_t(a) * words + w], kb = keys[size_t(b) * words + w];
+            if (ka != kb) return ka < kb;
+        }
+        return values[a] < values[b];
+    }
+};
+
+/// The bitonic network of core/sort/bitonic_sort.h as launches: log^2 n stages of n / 2
+/// compare-exchanges; ties broken by value, so the permutation is the stable radix sort's.
+template <class Exec>
+void bitonic_sort_pairs(Exec& ex, uint32_t* keys, int words, uint32_t* values, size_t n) {
+    if (n < 2) return;
+    size_t m = 1;
+    while (m < n) m <<= 1;
+    DeviceBuffer<uint32_t, Exec> order_buf(ex, m);
+    uint32_t* order = order_buf.data();
+    iota(ex, order, m);
+    const BitonicLess less{keys, words, values, n};
+    for (size_t k = 2; k <= m; k <<= 1)
+        for (size_t j = k >> 1; j > 0; j >>= 1)
+            ex.launch("sort.bitonic", m / 2, [=] SHEAF_HD_LAMBDA(size_t t) {
+                // The t-th compare-exchange of this stage: i and its partner i ^ j.
+                const size_t i = ((t / j) * 2 * j) + (t % j), p = i + j;
+                const bool up = (i & k) == 0;
+                if (less(order[p], order[i]) == up) {
+                    const uint32_t tmp = order[i];
+                    order[i] = order[p];
+                    order[p] = tmp;
+                }
+            });
+    DeviceBuffer<uint32_t, Exec> k2(ex, n * size_t(words)), v2(ex, n);
+    uint32_t* kk = k2.data();
+    uint32_t* vv = v2.data();
+    ex.launch("sort.bitonic_gather", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+        const uint32_t src = order[i];
+        vv[i] = values[src];
+        for (int w = 0; w < words; ++w) kk[i * words + w] = keys[size_t(src) * words + w];
+    });
+    ex.copy_on_device(keys, kk, n * size_t(words) * sizeof(uint32_t));
+    ex.copy_on_device(values, vv, n * sizeof(uint32_t));
+}
+
+} // namespace sheaf::wavefront

@@ -1,0 +1,455 @@
+// Tracing one batch of secondary rays on the executing side, as core/rsh/trace.cpp does on the
+// CPU: brute (every ray against every primitive), or hash, order, the ray hierarchy built level
+// by level, and the top-down traversal with compaction (count, scan, fill) of candidate
+// (node, primitive) pairs, then the final tests. The same per-element functions, the same
+// counts in the same statistics keys, the same hits.
+#pragma once
+
+#include "core/hash/ray_hash.h"
+#include "core/rays/ray_gen.h"
+#include "core/rsh/hierarchy.h"
+#include "core/rsh/trace_kernels.h"
+#include "core/wavefront/wf_order.h"
+
+#include <cfloat>
+#include <string>
+#include <vector>
+
+namespace sheaf::wavefront {
+
+/// A batch of rays of one type, structure-of-arrays, on the executing side.
+template <class Exec> struct DeviceBatch {
+    RayType type = RayType::Shadow;
+    size_t n = 0;
+    DeviceBuffer<Ray, Exec> rays;
+    DeviceBuffer<uint32_t, Exec> pixel;
+    DeviceBuffer<Vec3, Exec> weight;
+    DeviceBuffer<uint32_t, Exec> light; // shadow rays only
+
+    DeviceBatch(Exec& ex, RayType t, size_t count) : type(t), n(count) {
+        rays = DeviceBuffer<Ray, Exec>(ex, n);
+        pixel = DeviceBuffer<uint32_t, Exec>(ex, n);
+        weight = DeviceBuffer<Vec3, Exec>(ex, n);
+        if (t == RayType::Shadow) light = DeviceBuffer<uint32_t, Exec>(ex, n);
+    }
+    RaySlots slots() const { return {rays.data(), pixel.data(), weight.data(), light.data()}; }
+};
+
+/// What tracing a batch gives, indexed like the batch.
+template <class Exec> struct DeviceTraceResult {
+    DeviceBuffer<uint64_t, Exec> closest;  // reflection and refraction rays
+    DeviceBuffer<uint8_t, Exec> occluded;  // shadow and AO rays
+    DeviceBuffer<uint64_t, Exec> pass_log; // shadow rays through transparent surfaces, or empty
+    DeviceBuffer<uint32_t, Exec> tests;    // exact tests each ray took part in
+    HitSinks sinks() const { return {closest.data(), occluded.data(), pass_log.data()}; }
+};
+
+struct NodePrim {
+    uint32_t node, prim;
+};
+
+struct BoxUnion {
+    SHEAF_HD Aabb operator()(const Aabb& a, const Aabb& b) const {
+        return {vmin(a.lo, b.lo), vmax(a.hi, b.hi)};
+    }
+};
+
+template <class Exec> class DeviceTracer {
+  public:
+    DeviceTracer(Exec& ex, const PreparedScene& host, const SceneView& scene,
+                 const RenderSettings& s, Stats& stats)
+        : ex_(ex), scene_(scene), s_(s), st_(stats), light_count_(uint32_t(host.lights.size())) {
+        for (uint8_t f : host.prim_flags) transparent_ = transparent_ || (f & kPrimMayPass);
+    }
+
+    void trace(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
+        const size_t n = batch.n;
+        const uint32_t prims = scene_.prim_count();
+        any_ = any_hit_query(batch.type);
+        shadow_ = batch.type == RayType::Shadow;
+        skip_ = skip_flags(batch.type);
+        const std::string p = std::string("tests.") + ray_type_name(batch.type) + ".";
+        st_.add(std::string("rays.") + ray_type_name(batch.type), double(n));
+        st_.add(p + "brute_force", double(n) * double(prims));
+        out = DeviceTraceResult<Exec>();
+        if (any_) {
+            out.occluded = DeviceBuffer<uint8_t, Exec>(ex_, n);
+            fill(ex_, out.occluded.data(), n, uint8_t(0));
+        } else {
+            out.closest = DeviceBuffer<uint64_t, Exec>(ex_, n);
+            fill(ex_, out.closest.data(), n, kNoHit);
+        }
+        if (shadow_ && transparent_) {
+            out.pass_log = DeviceBuffer<uint64_t, Exec>(ex_, 3 * n);
+            fill(ex_, out.pass_log.data(), 3 * n, uint64_t(0));
+        }
+        out.tests = DeviceBuffer<uint32_t, Exec>(ex_, n);
+        fill(ex_, out.tests.data(), n, 0u);
+        if (n == 0 || prims == 0) return;
+
+        if (s_.accel == Accel::Brute) {
+            const TestCount c = brute(batch, out);
+            st_.add(p + "final.tests", double(c.tests));
+            st_.add(p + "final.hits", double(c.hits));
+            st_.add(p + "final.misses", double(c.tests - c.hits));
+            st_.add(p + "total", double(c.tests));
+            return;
+        }
+
+        // Hash and order (crsh); rah keeps the generation order.
+        const HashMode hash = s_.accel == Accel::Crsh ? s_.hash : HashMode::None;
+        DeviceBuffer<uint32_t, Exec> keys;
+        int words = 0;
+        {
+            auto t = ex_.timer();
+            words = hash_rays(batch, hash, keys);
+            st_.add("time_ms.hashing", t.stop_ms());
+        }
+        const SortMode sort = words == 0 ? SortMode::None : s_.sort;
+        // The static 3D order is a fixed permutation, whatever sort.mode says: every key sorted.
+        const SortMode mode = hash == HashMode::Static3d ? SortMode::Full : sort;
+        DeviceOrder<Exec> order =
+            order_rays(ex_, keys.data(), words, n, mode, st_, s_.sort_algorithm);
+        if (sort == SortMode::Csd)
+            st_.add(std::string("sort.") + ray_type_name(batch.type) + ".chunks",
+                    double(order.chunks));
+
+        // Rays gathered into sorted order, then the hierarchy over them.
+        {
+            auto t = ex_.timer();
+            sorted_ = DeviceBuffer<Ray, Exec>(ex_, n);
+            gather_rays(batch.rays.data(), order.perm.data(), sorted_.data(), n);
+            build_levels(n);
+            st_.add("time_ms.hierarchy", t.stop_ms());
+        }
+        perm_ = order.perm.data();
+        st_.add(std::string("hierarchy.") + ray_type_name(batch.type) + ".top_nodes",
+                double(node_count(s_.hierarchy_depth)));
+
+        auto total_timer = ex_.timer();
+        counts_ = Counts();
+        counts_.levels.assign(size_t(s_.hierarchy_depth) + 1, TestCount());
+        final_ms_ = 0;
+        sinks_ = out.sinks();
+        leaf_pairs_ = DeviceBuffer<uint32_t, Exec>(ex_, node_count(1));
+        fill(ex_, leaf_pairs_.data(), node_count(1), 0u);
+        traverse();
+        spread_ray_tests(out.tests.data(), n);
+        const double total_ms = total_timer.stop_ms();
+        st_.add("time_ms.traversal", total_ms - final_ms_);
+        st_.add("time_ms.final_tests", final_ms_);
+
+        uint64_t total = 0;
+        if (s_.cull_objects) {
+            st_.add(p + "objects.tests", double(counts_.objects.tests));
+            st_.add(p + "objects.hits", double(counts_.objects.hits));
+            st_.add(p + "objects.misses", double(counts_.objects.tests - counts_.objects.hits));
+        }
+        for (int k = s_.hierarchy_depth; k >= 1; --k) {
+            const TestCount& c = counts_.levels[size_t(k)];
+            const std::string lk = p + "level" + std::to_string(k) + ".";
+            st_.add(lk + "tests", double(c.tests));
+            st_.add(lk + "hits", double(c.hits));
+            st_.add(lk + "misses", double(c.tests - c.hits));
+            total += c.tests;
+        }
+        st_.add(p + "final.tests", double(counts_.final.tests));
+        st_.add(p + "final.hits", double(counts_.final.hits));
+        st_.add(p + "final.misses", double(counts_.final.tests - counts_.final.hits));
+        total += counts_.final.tests;
+        st_.add(p + "total", double(total));
+        levels_.clear();
+        sorted_ = DeviceBuffer<Ray, Exec>();
+        leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();
+    }
+
+    // The stages below are public only because nvcc's extended lambdas may not live in private
+    // member functions.
+
+    TestCount brute(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
+        auto t = ex_.timer();
+        const size_t n = batch.n;
+        DeviceBuffer<uint32_t, Exec> hits_buf(ex_, n);
+        const SceneView scene = scene_;
+        const Ray* rays = batch.rays.data();
+        uint32_t* tests = out.tests.data();
+        uint32_t* hits = hits_buf.data();
+        const bool any = any_, shadow = shadow_;
+        const uint8_t skip = skip_;
+        const HitSinks sinks = out.sinks();
+        ex_.launch("brute.trace", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            const TestCount c = brute_trace_ray(scene, rays[i], uint32_t(i), any, shadow, skip, sinks);
+            tests[i] = uint32_t(c.tests < 0xFFFFFFFFu ? c.tests : 0xFFFFFFFFu);
+            hits[i] = uint32_t(c.hits);
+        });
+        TestCount c;
+        c.tests = sum(ex_, tests, n);
+        c.hits = sum(ex_, hits, n);
+        st_.add("time_ms.final_tests", t.stop_ms());
+        return c;
+    }
+
+    // Keys of the batch under hash.mode. Returns the number of 32-bit words per key.
+    int hash_rays(const DeviceBatch<Exec>& batch, HashMode mode, DeviceBuffer<uint32_t, Exec>& keys) {
+        const size_t n = batch.n;
+        // static1d is the generation order: a pixel's rays together (paper 003's 1D work groups).
+        if (mode == HashMode::None || mode == HashMode::Static1d) return 0;
+        const Ray* rays = batch.rays.data();
+        if (mode == HashMode::Static3d) {
+            const uint64_t grid_w = uint64_t(s_.width) * uint64_t(s_.aa_samples);
+            const uint64_t grid_h = uint64_t(s_.height) * uint64_t(s_.aa_samples);
+            const uint64_t tiles_x = (grid_w + 7) / 8, tiles = tiles_x * ((grid_h + 15) / 16);
+            const uint64_t per_pixel =
+                batch.type == RayType::Ao ? uint64_t(s_.ao_samples > 1 ? s_.ao_samples : 1) : 1;
+            const bool shadow = batch.type == RayType::Shadow;
+            keys = DeviceBuffer<uint32_t, Exec>(ex_, 2 * n);
+            uint32_t* k = keys.data();
+            const uint32_t* pixel = batch.pixel.data();
+            const uint32_t* light = batch.light.data();
+            ex_.launch("hash.static3d", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+                const uint64_t sample = shadow ? light[i] : uint64_t(i) % per_pixel;
+                const uint64_t key = static3d_key(pixel[i], sample, grid_w, tiles_x, tiles);
+                k[2 * i] = uint32_t(key), k[2 * i + 1] = uint32_t(key >> 32);
+            });
+            return 2;
+        }
+        const Aabb box = ex_.transform_reduce(
+            "hash.box", n, Aabb{Vec3(FLT_MAX), Vec3(-FLT_MAX)},
+            [=] SHEAF_HD_LAMBDA(size_t i) -> Aabb { return {rays[i].origin, rays[i].origin}; },
+            BoxUnion{});
+        if (mode == HashMode::Hash192) {
+            keys = DeviceBuffer<uint32_t, Exec>(ex_, 6 * n);
+            uint32_t* k = keys.data();
+            ex_.launch("hash.192", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+                hash192_key(box, rays[i].origin, rays[i].dir, &k[i * 6]);
+            });
+            return 6;
+        }
+        keys = DeviceBuffer<uint32_t, Exec>(ex_, n);
+        uint32_t* k = keys.data();
+        if (mode == HashMode::Hash32) {
+            ex_.launch("hash.32", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+                k[i] = hash32_key(box, rays[i].origin, rays[i].dir);
+            });
+        } else if (batch.type == RayType::Shadow) {
+            const int lb = light_bits(light_count_);
+            const uint32_t* light = batch.light.data();
+            ex_.launch("hash.crsh_shadow", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+                k[i] = crsh_shadow_key(light[i], lb, rays[i].dir);
+            });
+        } else {
+            ex_.launch("hash.crsh", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+                k[i] = crsh_secondary_key(box, rays[i].origin, rays[i].dir);
+            });
+        }
+        return 1;
+    }
+
+    void gather_rays(const Ray* rays, const uint32_t* perm, Ray* sorted, size_t n) {
+        ex_.launch("rsh.gather", n, [=] SHEAF_HD_LAMBDA(size_t j) { sorted[j] = rays[perm[j]]; });
+    }
+
+    size_t node_count(int level) const {
+        return level == 0 ? sorted_.size() : levels_[size_t(level) - 1].size();
+    }
+
+    // The hierarchy level by level: node i of level k unites children [i arity, (i+1) arity).
+    void build_levels(size_t n) {
+        levels_.clear();
+        const int arity = s_.hierarchy_arity;
+        const bool reach = s_.cull_distance;
+        for (int level = 1; level <= s_.hierarchy_depth; ++level) {
+            const size_t below = level == 1 ? n : levels_.back().size();
+            const size_t count = (below + size_t(arity) - 1) / size_t(arity);
+            DeviceBuffer<RayNode, Exec> nodes(ex_, count);
+            RayNode* out = nodes.data();
+            const Ray* rays = sorted_.data();
+            const RayNode* children = level == 1 ? nullptr : levels_.back().data();
+            ex_.launch("rsh.build", count, [=] SHEAF_HD_LAMBDA(size_t i) {
+                out[i] = build_ray_node(rays, children, i * size_t(arity),
+                                        node_last_child(i, arity, below), reach);
+            });
+            levels_.push_back(std::move(nodes));
+        }
+    }
+
+    // Top nodes against object spheres (cull.objects), then against the primitive spheres of
+    // the objects they reach, in groups of top nodes that yield at most traversal.batch pairs.
+    void traverse() {
+        const int top = s_.hierarchy_depth;
+        const size_t top_nodes = node_count(top);
+        const uint32_t prims = scene_.prim_count();
+        const uint32_t objects = scene_.object_count;
+        const bool cull = s_.cull_objects;
+        const size_t group =
+            std::max<size_t>(1, size_t(s_.batch_pairs) / std::max<size_t>(1, prims));
+        const size_t most = std::min(group, top_nodes);
+        DeviceBuffer<uint8_t, Exec> objhit_buf(ex_, cull ? most * objects : 0);
+        DeviceBuffer<uint8_t, Exec> code_buf(ex_, most * prims);
+        DeviceBuffer<uint32_t, Exec> offset_buf(ex_, most * prims);
+        const RayNode* nodes = levels_[size_t(top) - 1].data();
+        const SceneView scene = scene_;
+        const uint8_t skip = skip_;
+        uint8_t* objhit = objhit_buf.data();
+        uint8_t* code = code_buf.data();
+        uint32_t* offset = offset_buf.data();
+        for (size_t g0 = 0; g0 < top_nodes; g0 += group) {
+            const size_t gn = std::min(top_nodes, g0 + group) - g0;
+            if (cull) {
+                ex_.launch("rsh.objects", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
+                    objhit[x] = node_hits_sphere(nodes[g0 + x / objects],
+                                                 scene.object_sphere[x % objects])
+                                    ? 1
+                                    : 0;
+                });
+                counts_.objects.tests += gn * objects;
+                counts_.objects.hits += sum(ex_, objhit, gn * objects);
+            }
+            // 0: not a candidate, 1: tested and missed, 2: tested and hit.
+            ex_.launch("rsh.top", gn * size_t(prims), [=] SHEAF_HD_LAMBDA(size_t x) {
+                const size_t i = x / prims;
+                const uint32_t p = uint32_t(x % prims);
+                const bool candidate = (!cull || objhit[i * objects + scene.prim_object[p]]) &&
+                                       !(skip && scene.prim_flag(p, skip));
+                code[x] = !candidate                                           ? 0
+                          : node_hits_sphere(nodes[g0 + i], scene.prim_sphere[p]) ? 2
+                                                                                  : 1;
+            });
+            counts_.levels[size_t(top)].tests += ex_.transform_reduce(
+                "rsh.top_tests", gn * size_t(prims), uint64_t(0),
+                [=] SHEAF_HD_LAMBDA(size_t x) -> uint64_t { return code[x] != 0 ? 1 : 0; },
+                SumU64{});
+            const uint32_t found = count_and_scan(
+                ex_, "rsh.top_flags", gn * size_t(prims), offset,
+                [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t { return code[x] == 2 ? 1u : 0u; });
+            counts_.levels[size_t(top)].hits += found;
+            DeviceBuffer<NodePrim, Exec> pairs_buf(ex_, found);
+            NodePrim* pairs = pairs_buf.data();
+            ex_.launch("rsh.top_fill", gn * size_t(prims), [=] SHEAF_HD_LAMBDA(size_t x) {
+                if (code[x] == 2) pairs[offset[x]] = {uint32_t(g0 + x / prims), uint32_t(x % prims)};
+            });
+            descend(top, pairs, found);
+        }
+    }
+
+    // Candidate pairs of nodes at `level`, expanded to level - 1 in chunks of
+    // traversal.batch / arity pairs; at level 1, the final tests.
+    void descend(int level, const NodePrim* pairs, size_t count) {
+        if (level == 1) {
+            finals(pairs, count);
+            return;
+        }
+        const int arity = s_.hierarchy_arity;
+        const size_t below = node_count(level - 1);
+        const RayNode* children = levels_[size_t(level) - 2].data();
+        const Sphere* spheres = scene_.prim_sphere;
+        const size_t chunk = std::max<size_t>(1, size_t(s_.batch_pairs) / size_t(arity));
+        for (size_t c0 = 0; c0 < count; c0 += chunk) {
+            const size_t cn = std::min(count, c0 + chunk) - c0;
+            DeviceBuffer<uint64_t, Exec> mask_buf(ex_, cn);
+            DeviceBuffer<uint32_t, Exec> offset_buf(ex_, cn);
+            uint64_t* mask = mask_buf.data();
+            uint32_t* offset = offset_buf.data();
+            const NodePrim* in = pairs + c0;
+            ex_.launch("rsh.level", cn, [=] SHEAF_HD_LAMBDA(size_t j) {
+                const NodePrim pr = in[j];
+                const Sphere s = spheres[pr.prim];
+                const size_t first = size_t(pr.node) * size_t(arity);
+                const size_t last = node_last_child(pr.node, arity, below);
+                uint64_t m = 0;
+                uint32_t c = 0;
+                for (size_t ch = first; ch < last; ++ch)
+                    if (node_hits_sphere(children[ch], s)) m |= uint64_t(1) << (ch - first), ++c;
+                mask[j] = m;
+                offset[j] = c;
+            });
+            counts_.levels[size_t(level) - 1].tests += ex_.transform_reduce(
+                "rsh.level_tests", cn, uint64_t(0),
+                [=] SHEAF_HD_LAMBDA(size_t j) -> uint64_t {
+                    const size_t first = size_t(in[j].node) * size_t(arity);
+                    return node_last_child(in[j].node, arity, below) - first;
+                },
+                SumU64{});
+            const uint32_t found = ex_.exclusive_scan(offset, cn);
+            counts_.levels[size_t(level) - 1].hits += found;
+            DeviceBuffer<NodePrim, Exec> next_buf(ex_, found);
+            NodePrim* next = next_buf.data();
+            ex_.launch("rsh.level_fill", cn, [=] SHEAF_HD_LAMBDA(size_t j) {
+                const uint32_t first = in[j].node * uint32_t(arity);
+                uint32_t o = offset[j];
+                for (uint64_t m = mask[j]; m; m &= m - 1) {
+                    int bit = 0;
+                    while (!((m >> bit) & 1u)) ++bit;
+                    next[o++] = {first + uint32_t(bit), in[j].prim};
+                }
+            });
+            descend(level - 1, next, found);
+        }
+    }
+
+    // Each level-1 pair: every ray of the node against the primitive, exactly.
+    void finals(const NodePrim* pairs, size_t count) {
+        if (count == 0) return;
+        auto t = ex_.timer();
+        const int arity = s_.hierarchy_arity;
+        const size_t rays_n = sorted_.size();
+        const SceneView scene = scene_;
+        const Ray* rays = sorted_.data();
+        const uint32_t* perm = perm_;
+        uint32_t* leaf_pairs = leaf_pairs_.data();
+        const bool any = any_, shadow = shadow_;
+        const HitSinks sinks = sinks_;
+        DeviceBuffer<uint32_t, Exec> hits_buf(ex_, count);
+        uint32_t* hits = hits_buf.data();
+        ex_.launch("rsh.final", count, [=] SHEAF_HD_LAMBDA(size_t j) {
+            const NodePrim pr = pairs[j];
+            atomic_add_u32(&leaf_pairs[pr.node], 1);
+            const size_t first = size_t(pr.node) * size_t(arity);
+            const size_t last = node_last_child(pr.node, arity, rays_n);
+            hits[j] = uint32_t(final_tests(scene, rays, perm, first, last, pr.prim, any, shadow, sinks));
+        });
+        counts_.final.tests += ex_.transform_reduce(
+            "rsh.final_tests", count, uint64_t(0),
+            [=] SHEAF_HD_LAMBDA(size_t j) -> uint64_t {
+                return node_last_child(pairs[j].node, arity, rays_n) -
+                       size_t(pairs[j].node) * size_t(arity);
+            },
+            SumU64{});
+        counts_.final.hits += sum(ex_, hits, count);
+        final_ms_ += t.stop_ms();
+    }
+
+    // Every ray's exact tests: the candidates of its level-1 node.
+    void spread_ray_tests(uint32_t* tests, size_t n) {
+        const uint32_t* perm = perm_;
+        const uint32_t* leaf_pairs = leaf_pairs_.data();
+        const size_t arity = size_t(s_.hierarchy_arity);
+        ex_.launch("rsh.ray_tests", n,
+                   [=] SHEAF_HD_LAMBDA(size_t j) { tests[perm[j]] = leaf_pairs[j / arity]; });
+    }
+
+  private:
+    struct Counts {
+        TestCount objects, final;
+        std::vector<TestCount> levels; // index k: level k
+    };
+
+    Exec& ex_;
+    SceneView scene_;
+    const RenderSettings& s_;
+    Stats& st_;
+    uint32_t light_count_;
+    bool transparent_ = false; // some primitive may let light through (shadow pass logs)
+    // The batch being traced.
+    bool any_ = false, shadow_ = false;
+    uint8_t skip_ = 0;
+    DeviceBuffer<Ray, Exec> sorted_;
+    const uint32_t* perm_ = nullptr;
+    std::vector<DeviceBuffer<RayNode, Exec>> levels_;
+    DeviceBuffer<uint32_t, Exec> leaf_pairs_;
+    HitSinks sinks_;
+    Counts counts_;
+    double final_ms_ = 0;
+};
+
+} // namespace sheaf::wavefront

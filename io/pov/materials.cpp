@@ -16,15 +16,13 @@ constexpr int kMaxDepth = 12; // nested texture maps; deeper ones use their firs
 std::string key_of(const Material& m) {
     std::ostringstream k;
     k.precision(9);
-    const float* f[] = {&m.color.x,       &m.color.y,          &m.color.z,
-                        &m.emission.x,    &m.emission.y,       &m.emission.z,
-                        &m.ambient,       &m.diffuse,          &m.specular,
-                        &m.phong_exponent, &m.mirror,          &m.transmission,
-                        &m.ior,           &m.brilliance,       &m.blinn,
-                        &m.blinn_exponent, &m.metallic,        &m.mirror_color.x,
-                        &m.mirror_color.y, &m.mirror_color.z,  &m.mirror_min,
-                        &m.mirror_falloff, &m.fade_color.x,    &m.fade_color.y,
-                        &m.fade_color.z,  &m.fade_distance,    &m.fade_power};
+    const float* f[] = {&m.color.x,      &m.color.y,        &m.color.z,        &m.emission.x,
+                        &m.emission.y,   &m.emission.z,     &m.ambient,        &m.diffuse,
+                        &m.specular,     &m.phong_exponent, &m.mirror,         &m.transmission,
+                        &m.ior,          &m.brilliance,     &m.blinn,          &m.blinn_exponent,
+                        &m.metallic,     &m.mirror_color.x, &m.mirror_color.y, &m.mirror_color.z,
+                        &m.mirror_min,   &m.mirror_falloff, &m.fade_color.x,   &m.fade_color.y,
+                        &m.fade_color.z, &m.fade_distance,  &m.fade_power};
     for (const float* v : f) k << *v << ',';
     k << m.mirror_fresnel << m.mirror_metallic << m.conserve_energy << m.fresnel_split;
     return k.str();
@@ -90,10 +88,10 @@ int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern) {
     if (auto it = images_.find(k.str()); it != images_.end()) return it->second;
     Texture t;
     t.path = img.path;
-    t.mapping = img.uv                ? TextureMapping::Uv
-                : img.map_type == 1   ? TextureMapping::Spherical
-                : img.map_type == 2   ? TextureMapping::Cylindrical
-                                      : TextureMapping::Planar;
+    t.mapping = img.uv              ? TextureMapping::Uv
+                : img.map_type == 1 ? TextureMapping::Spherical
+                : img.map_type == 2 ? TextureMapping::Cylindrical
+                                    : TextureMapping::Planar;
     t.transform = to_pattern;
     t.origin = p_.where(img.where);
     scene_.textures.push_back(t);
@@ -196,8 +194,8 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         m.ior = float(in->ior > 0 ? in->ior : 1.0);
         m.fade_distance = float(std::max(in->fade_distance, 0.0));
         m.fade_power = float(std::max(in->fade_power, 0.0));
-        m.fade_color = Vec3(float(in->fade_color[0]), float(in->fade_color[1]),
-                            float(in->fade_color[2]));
+        m.fade_color =
+            Vec3(float(in->fade_color[0]), float(in->fade_color[1]), float(in->fade_color[2]));
     } else {
         m.ior = 1.0f;
     }
@@ -211,18 +209,11 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         std::vector<PigmentEntry> layers;
         for (const PovTextureRef& l : t.below) {
             const PovPigment& lp = l->pigment ? *l->pigment : black;
-            layers.push_back(entry({0, lp.color, std::make_shared<PovPigment>(lp)},
-                                   outer * l->local));
+            layers.push_back(
+                entry({0, lp.color, std::make_shared<PovPigment>(lp)}, outer * l->local));
         }
         layers.push_back(entry({0, top.color, std::make_shared<PovPigment>(top)}, eff));
-        Pigment lp;
-        lp.solid = false;
-        lp.layers = true;
-        lp.first = uint32_t(scene_.pigment_entries.size());
-        lp.count = uint32_t(layers.size());
-        scene_.pigment_entries.insert(scene_.pigment_entries.end(), layers.begin(), layers.end());
-        scene_.pigments.push_back(lp);
-        m.pigment = int32_t(scene_.pigments.size() - 1);
+        m.pigment = layer_pigment(layers);
         // The normal of the top-most layer that has one.
         const PovNormal* n = t.normal.get();
         Affine n_eff = eff;
@@ -275,12 +266,16 @@ int32_t MaterialBuilder::sky(const std::vector<std::shared_ptr<const PovPigment>
     if (layers.size() == 1) return pigment(*layers[0], local);
     std::vector<PigmentEntry> entries;
     for (const auto& l : layers) entries.push_back(entry({0, l->color, l}, local));
+    return layer_pigment(entries);
+}
+
+int32_t MaterialBuilder::layer_pigment(const std::vector<PigmentEntry>& layers) {
     Pigment lp;
     lp.solid = false;
     lp.layers = true;
     lp.first = uint32_t(scene_.pigment_entries.size());
-    lp.count = uint32_t(entries.size());
-    scene_.pigment_entries.insert(scene_.pigment_entries.end(), entries.begin(), entries.end());
+    lp.count = uint32_t(layers.size());
+    scene_.pigment_entries.insert(scene_.pigment_entries.end(), layers.begin(), layers.end());
     scene_.pigments.push_back(lp);
     return int32_t(scene_.pigments.size() - 1);
 }

@@ -13,8 +13,7 @@ namespace sheaf::io::pov {
 
 class MaterialBuilder {
   public:
-    MaterialBuilder(Parser& p, Scene& scene, double gamma)
-        : p_(p), scene_(scene), gamma_(gamma) {}
+    MaterialBuilder(Parser& p, Scene& scene, double gamma) : p_(p), scene_(scene), gamma_(gamma) {}
 
     /// The material of texture `t` (its own transforms included) with interior `in` (may be
     /// null).
@@ -30,6 +29,8 @@ class MaterialBuilder {
                          int depth);
     int32_t pigment(const PovPigment& pg, const Affine& eff);
     PigmentEntry entry(const PovMapEntry& e, const Affine& eff);
+    /// A pigment composing `layers` (bottom first) by their filter and transmit.
+    int32_t layer_pigment(const std::vector<PigmentEntry>& layers);
     Pattern pattern(const PovPattern& pt, const Affine& eff);
     int32_t image(const PovImage& img, const Affine& to_pattern);
     double decode(double c) const;

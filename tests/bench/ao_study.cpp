@@ -10,6 +10,7 @@
 // visibility plus the AO rays alone (as the paper's figures are). AO rays reach a tenth of
 // the scene's bounding radius. "reorder" is hashing + compression + sorting + decompression;
 // "render" is the rest of the frame. Counts are exact; times are one run (or the median of K).
+#include "bench_args.h"
 #include "core/base/error.h"
 #include "core/render/renderer.h"
 #include "core/scenes/builtin.h"
@@ -18,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -33,18 +33,10 @@ struct Order {
 };
 
 const Order kOrders[] = {
-    {"static 1D", "static1d", ""},      {"static 3D", "static3d", ""},
+    {"static 1D", "static1d", ""},        {"static 3D", "static3d", ""},
     {"dynamic 32-bit", "hash32", "full"}, {"dynamic 192-bit", "hash192", "full"},
     {"c.s.d. 32-bit", "hash32", "csd"},
 };
-
-std::vector<std::string> split(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream in(s);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
 
 // The scene without its lights: primary visibility and AO only.
 PreparedScene ao_only(const std::string& name) {
@@ -116,9 +108,9 @@ int main(int argc, char** argv) {
         else if (a == "--frames")
             frames = std::max(1, std::atoi(next().c_str()));
         else if (a == "--backends")
-            backends = split(next());
+            backends = bench::split_list(next());
         else if (a == "--sorts")
-            sorts = split(next());
+            sorts = bench::split_list(next());
         else if (a == "--help" || a == "-h") {
             std::printf("usage: sheaf_ao_study [--size N] [--samples S] [--frames K] "
                         "[--backends cpu,cuda] [--sorts radix,bitonic] [scene ...]\n");

@@ -6,12 +6,12 @@
 //                          [--set KEY=VALUE ...] [scene ...]
 // Times are the median of K frames (default 3). Rays per second counts every ray the frame
 // traced: primary (one per sample) and secondary (shadow, reflection, refraction, AO).
+#include "bench_args.h"
 #include "core/render/renderer.h"
 #include "core/scenes/builtin.h"
 
 #include <algorithm>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,17 +19,9 @@ using namespace sheaf;
 
 namespace {
 
-std::vector<std::string> split(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream in(s);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
-
-const char* const kPhases[] = {"raster",        "gbuffer",   "ray_creation", "hashing",
-                               "compression",   "sorting",   "decompression", "hierarchy",
-                               "traversal",     "final_tests", "shading"};
+const char* const kPhases[] = {"raster",      "gbuffer",     "ray_creation",  "hashing",
+                               "compression", "sorting",     "decompression", "hierarchy",
+                               "traversal",   "final_tests", "shading"};
 
 } // namespace
 
@@ -42,11 +34,12 @@ int main(int argc, char** argv) {
         auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
         if (a == "--sizes") {
             sizes.clear();
-            for (const std::string& s : split(next())) sizes.push_back(std::max(8, std::stoi(s)));
+            for (const std::string& s : bench::split_list(next()))
+                sizes.push_back(std::max(8, std::stoi(s)));
         } else if (a == "--frames") {
             frames = std::max(1, std::stoi(next()));
         } else if (a == "--backends") {
-            backends = split(next());
+            backends = bench::split_list(next());
         } else if (a == "--set") {
             sets.push_back(next());
         } else if (a == "--help" || a == "-h") {

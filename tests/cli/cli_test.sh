@@ -9,39 +9,10 @@ OUT=${2:?usage: cli_test.sh RENDER OUTDIR}
 rm -rf "$OUT"
 mkdir -p "$OUT"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); echo "ok: $1"; }
-fail() { failed=$((failed + 1)); echo "FAILED: $1"; }
+. "$(cd "$(dirname "$0")/.." && pwd)/lib/checks.sh"
 
-# run NAME ARGS...: runs render, keeping the exit code in $rc, stdout and stderr in files.
-run() {
-    local name=$1
-    shift
-    "$RENDER" "$@" >"$OUT/$name.out" 2>"$OUT/$name.err"
-    rc=$?
-}
 
-# expect_rc NAME WANT ARGS...: runs render and checks its exit code.
-expect_rc() {
-    local name=$1 want=$2
-    shift 2
-    run "$name" "$@"
-    if [ "$rc" -eq "$want" ]; then
-        pass "$name exits $want"
-    else
-        fail "$name exits $rc, expected $want; stderr: $(cat "$OUT/$name.err")"
-    fi
-}
 
-# expect_in FILE TEXT WHAT: checks that FILE contains TEXT.
-expect_in() {
-    if grep -qF -- "$2" "$1"; then
-        pass "$3"
-    else
-        fail "$3: '$2' not in $1: $(head -c 600 "$1")"
-    fi
-}
 
 S=(-W 32 -H 32)
 
@@ -213,5 +184,4 @@ for text in "--compare" "--sweep" "+A0.3" "+L" "--threads" "-q"; do
     expect_in "$OUT/help.out" "$text" "--help mentions $text"
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -25,10 +25,7 @@ if [ -z "$BROWSER" ]; then
     exit 77
 fi
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); echo "ok: $1"; }
-fail() { failed=$((failed + 1)); echo "FAILED: $1"; }
+. "$(cd "$(dirname "$0")/.." && pwd)/lib/checks.sh"
 
 # browse NAME URL ARGS...: runs the headless browser on URL with ARGS; the log in NAME.log.
 browse() {
@@ -95,5 +92,4 @@ for log in dom shot; do
     fi
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -11,44 +11,10 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$OUT"
 mkdir -p "$OUT"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); echo "ok: $1"; }
-fail() { failed=$((failed + 1)); echo "FAILED: $1"; }
+. "$(cd "$(dirname "$0")/.." && pwd)/lib/checks.sh"
 
-# expect_rc NAME WANT ARGS...: runs render (stdout, stderr in files) and checks its exit code.
-expect_rc() {
-    local name=$1 want=$2
-    shift 2
-    "$RENDER" "$@" >"$OUT/$name.out" 2>"$OUT/$name.err"
-    local rc=$?
-    if [ "$rc" -eq "$want" ]; then
-        pass "$name exits $want"
-    else
-        fail "$name exits $rc, expected $want; stderr: $(head -c 800 "$OUT/$name.err")"
-    fi
-}
 
-# expect_in FILE TEXT WHAT: checks that FILE contains TEXT.
-expect_in() {
-    if grep -qF -- "$2" "$1"; then
-        pass "$3"
-    else
-        fail "$3: '$2' not in $1: $(head -c 600 "$1")"
-    fi
-}
 
-# check WHAT COMMAND...: passes when the command succeeds, printing its output on failure.
-check() {
-    local what=$1
-    shift
-    local output
-    if output=$("$@" 2>&1); then
-        pass "$what"
-    else
-        fail "$what: $output"
-    fi
-}
 
 # png_field FILE N: field N of png_tool.py's line (4 channels, 5 mean, 6 stddev, 7 non-black).
 png_field() { python3 "$HERE/png_tool.py" "$1" | awk -v n="$2" '{print $n}'; }
@@ -178,5 +144,4 @@ expect_rc sweep_twice 1 --sweep hierarchy.depth=1,2 hierarchy.depth=3 "${S[@]}"
 expect_in "$OUT/sweep_twice.err" "twice" "sweep repeated key: stderr says so"
 expect_rc sweep_empty 1 "${S[@]}" --sweep
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

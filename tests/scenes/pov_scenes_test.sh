@@ -17,10 +17,7 @@ W=96
 H=72
 BUILTINS="cornell office colonnade"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); echo "ok: $1"; }
-fail() { failed=$((failed + 1)); echo "FAILED: $1"; }
+. "$(cd "$(dirname "$0")/.." && pwd)/lib/checks.sh"
 
 is_builtin() {
     case " $BUILTINS " in *" $1 "*) return 0 ;; esac
@@ -127,5 +124,4 @@ for name in $BUILTINS; do
     fi
 done
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

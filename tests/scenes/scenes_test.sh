@@ -12,10 +12,7 @@ PNG_TOOL=${4:?usage: scenes_test.sh RENDER SCENES_DIR OUTDIR PNG_TOOL}
 rm -rf "$OUT"
 mkdir -p "$OUT"
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); echo "ok: $1"; }
-fail() { failed=$((failed + 1)); echo "FAILED: $1"; }
+. "$(cd "$(dirname "$0")/.." && pwd)/lib/checks.sh"
 
 # renders FILE to OUT/NAME.png and checks the exit code and that the picture is not flat.
 check_scene() {
@@ -67,5 +64,4 @@ expect_scene_error unknown_element $'<scene>\n  <sphere/>\n  <cube/>\n</scene>\n
 expect_scene_error syntax $'<scene>\n  <sphere radius="1">\n</scene>\n' "3:3"
 expect_scene_error bad_number $'<scene>\n  <sphere radius="one"/>\n</scene>\n' "2:19"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -22,20 +22,38 @@ SHEAF_HD_INLINE bool inside(const SpanList& spans, float t) {
     return false;
 }
 
-// The surface of `base` inside `clip`: each boundary that survives becomes a span of zero
-// length whose far end is no surface (leaf ~0), so it is hit, and crossed, once.
-SHEAF_HD_INLINE SpanList clip_spans(const SpanList& base, const SpanList& clip) {
-    SpanList out;
+// Adds the boundaries of `base` that lie inside `clip` to `out`, kept in order of t: each
+// becomes a span of zero length whose far end is no surface (leaf ~0), so it is hit, and
+// crossed, once.
+SHEAF_HD_INLINE void clip_spans(const SpanList& base, const SpanList& clip, SpanList& out) {
     for (int i = 0; i < base.n; ++i) {
         const CsgEnd* ends[2] = {&base.s[i].a, &base.s[i].b};
-        for (const CsgEnd* e : ends)
-            if (e->leaf != 0xFFFFFFFFu && inside(clip, e->t))
-                out.push({*e, CsgEnd{e->t, 0xFFFFFFFFu, e->n_local, e->flip}});
+        for (const CsgEnd* e : ends) {
+            if (e->leaf == 0xFFFFFFFFu || !inside(clip, e->t) || out.n >= kMaxCsgSpans) continue;
+            int at = out.n++;
+            for (; at > 0 && out.s[at - 1].a.t > e->t; --at) out.s[at] = out.s[at - 1];
+            out.s[at] = {*e, CsgEnd{e->t, 0xFFFFFFFFu, e->n_local, e->flip}};
+        }
     }
-    return out;
 }
 
 } // namespace analytic_detail
+
+SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const Ray& ray);
+
+/// The surfaces of `node` inside `clip` (POV-Ray's clipped_by): a union keeps every member's
+/// surface, its inner ones too (POV-Ray's union, unlike merge, has them), so a clipped union
+/// shows what the clip opens up; any other node its solid's boundary.
+SHEAF_HD inline void clipped_surfaces(const SceneView& scene, uint32_t node, const Ray& ray,
+                                      const SpanList& clip, SpanList& out) {
+    const PreparedCsgNode& n = scene.csg[node];
+    if (n.op == CsgOp::Union && !n.inverse) {
+        for (uint32_t c = 0; c < n.count; ++c)
+            clipped_surfaces(scene, scene.csg_children[n.first + c], ray, clip, out);
+        return;
+    }
+    analytic_detail::clip_spans(csg_spans(scene, node, ray), clip, out);
+}
 
 /// The spans of the ray inside CSG node `node` (recursive over the node's children).
 SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const Ray& ray) {
@@ -46,7 +64,7 @@ SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const 
         SpanList clip = csg_spans(scene, scene.csg_children[n.first + 1], ray);
         for (uint32_t c = 2; c < n.count; ++c)
             clip = span_intersection(clip, csg_spans(scene, scene.csg_children[n.first + c], ray));
-        out = clip_spans(csg_spans(scene, scene.csg_children[n.first], ray), clip);
+        clipped_surfaces(scene, scene.csg_children[n.first], ray, clip, out);
         return n.inverse ? span_complement(out) : out;
     }
     if (n.op == CsgOp::Leaf) {

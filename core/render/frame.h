@@ -21,6 +21,10 @@ struct Frame {
     Stats stats;
     /// Effective settings the frame was rendered with (key, canonical value).
     std::vector<std::pair<std::string, std::string>> settings;
+    /// Where the frame was computed: "cpu" or "cuda" (empty before render_frame sets it).
+    std::string backend;
+    /// The same in one line, with why: "backend: cpu (no CUDA device: cudaErrorNoDevice: ...)".
+    std::string backend_line;
 };
 
 } // namespace sheaf

@@ -218,11 +218,8 @@ class FramePipeline {
 
 } // namespace
 
-Frame render_frame(const PreparedScene& scene, const RenderSettings& s,
-                   const ProgressFn& progress) {
-    if (s.backend == Backend::Cuda)
-        throw RenderError(
-            "backend=cuda: this build has no CUDA backend yet; use backend=cpu or backend=auto");
+Frame render_frame_cpu(const PreparedScene& scene, const RenderSettings& s,
+                       const ProgressFn& progress) {
     Frame f;
     tbb::task_arena arena(s.threads > 0 ? s.threads : tbb::task_arena::automatic);
     arena.execute([&] { FramePipeline(scene, s, progress, f).run(); });

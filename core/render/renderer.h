@@ -14,8 +14,16 @@ namespace sheaf {
 /// which makes render_frame throw RenderError("cancelled").
 using ProgressFn = std::function<bool(float done)>;
 
-/// Renders one frame. Throws RenderError (or SceneError for scene settings that do not parse).
+/// Renders one frame on the backend the settings ask for (core/backend/backend.h): the CPU
+/// renderer, or the CUDA module's wavefront pipeline; the frame says which (Frame::backend,
+/// Frame::backend_line, statistic backend.cuda). Throws RenderError (backend=cuda without a
+/// usable device, cancelled, a failed render), or SceneError for scene settings that do not
+/// parse.
 Frame render_frame(const PreparedScene& scene, const RenderSettings& settings,
                    const ProgressFn& progress = {});
+
+/// The CPU renderer itself, whatever `settings.backend` says.
+Frame render_frame_cpu(const PreparedScene& scene, const RenderSettings& settings,
+                       const ProgressFn& progress = {});
 
 } // namespace sheaf

@@ -38,7 +38,7 @@ std::string label(const std::string& scene, const SettingList& kv) {
 Frame expect_identical(const PreparedScene& scene, const std::string& name, const SettingList& kv,
                        int w = 40, int h = 32) {
     const RenderSettings s = settings_for(scene, kv, w, h);
-    const Frame cpu = render_frame(scene, s);
+    const Frame cpu = render_frame_cpu(scene, s);
     const Frame wave = render_frame_wavefront_cpu(scene, s);
     test::expect_same_frame(cpu, wave, label(name, kv));
     return cpu;

@@ -133,9 +133,11 @@ SHEAF_API SheafError sheafFrameGetText(SheafFrame frame, const char* what, char*
             text = f.stats.to_table();
         else if (w == "settings")
             for (const auto& [key, value] : f.settings) text += key + "=" + value + "\n";
+        else if (w == "backend")
+            text = f.backend_line;
         else
             throw InvalidArgument("unknown text '" + w +
-                                  "'; known: stats.json, stats.table, settings");
+                                  "'; known: stats.json, stats.table, settings, backend");
         copy_text(text, buf, size, needed);
     });
 }

@@ -161,10 +161,13 @@ if [ -s "$OUT/quiet.out" ] || [ -s "$OUT/quiet.err" ] || [ ! -s "$OUT/quiet.png"
 else
     pass "-q: silent, image written"
 fi
-if [ -s "$OUT/png.err" ]; then
+# Off a terminal stderr carries the one backend line and nothing else (no progress bar).
+if grep -v -q '^backend: ' "$OUT/png.err"; then
     fail "progress drawn when stderr is not a terminal"
+elif [ "$(grep -c '^backend: ' "$OUT/png.err")" != 1 ]; then
+    fail "one backend line on stderr"
 else
-    pass "no progress off a terminal"
+    pass "no progress off a terminal, one backend line"
 fi
 # On a terminal (script(1) gives a pseudo-terminal): the bar with the time left.
 if command -v script >/dev/null; then

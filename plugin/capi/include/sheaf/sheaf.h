@@ -255,8 +255,9 @@ SHEAF_API SheafError sheafFrameGetStatCount(SheafFrame frame, size_t* count);
 SHEAF_API SheafError sheafFrameGetStat(SheafFrame frame, size_t index, const char** key,
                                        double* value);
 SHEAF_API SheafError sheafFrameGetStatByName(SheafFrame frame, const char* key, double* value);
-/* what: "stats.json", "stats.table" or "settings" (one "key=value" line per effective setting).
- * snprintf-style, as sheafRendererGetString. */
+/* what: "stats.json", "stats.table", "settings" (one "key=value" line per effective setting)
+ * or "backend" (where the frame was computed and why, in one line: "backend: cpu (no CUDA
+ * device: ...)"). snprintf-style, as sheafRendererGetString. */
 SHEAF_API SheafError sheafFrameGetText(SheafFrame frame, const char* what, char* buf, size_t size,
                                        size_t* needed);
 /* Writes the frame; the format follows the extension. 8-bit files (.png .jpg .tif) are

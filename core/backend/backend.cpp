@@ -1,0 +1,91 @@
+#include "core/backend/backend.h"
+
+#include "core/base/error.h"
+#include "core/wavefront/wavefront.h"
+
+namespace sheaf {
+
+namespace {
+
+std::string device_words(const SheafCudaProbe& p) {
+    return std::string(p.name) + ", compute " + std::to_string(p.cc_major) + "." +
+           std::to_string(p.cc_minor);
+}
+
+void mark(Frame& f, bool cuda, const std::string& line) {
+    f.backend = cuda ? "cuda" : "cpu";
+    f.backend_line = line;
+    f.stats.set("backend.cuda", cuda ? 1 : 0);
+}
+
+} // namespace
+
+BackendChoice choose_backend(const PreparedScene& scene, Backend requested,
+                             const CudaBackendStatus& cuda) {
+    BackendChoice c;
+    if (requested == Backend::Cpu) {
+        c.line = "backend: cpu (backend=cpu)";
+        c.why_not = "backend=cpu";
+        return c;
+    }
+    if (const std::string why = wavefront_unsupported(scene); !why.empty()) {
+        c.line = "backend: cpu (" + why + ")";
+        c.why_not = why;
+        return c;
+    }
+    if (!cuda.usable) {
+        c.line = "backend: cpu (" + cuda.error + ")";
+        c.why_not = cuda.detail.empty() ? cuda.error : cuda.detail;
+        return c;
+    }
+    c.cuda = true;
+    c.line = "backend: cuda (" + device_words(cuda.probe) + ")";
+    return c;
+}
+
+Frame render_frame_cuda(const CudaBackendStatus& cuda, const PreparedScene& scene,
+                        const RenderSettings& s, const ProgressFn& progress) {
+    if (!cuda.module) throw RenderError("backend=cuda: " + cuda.error);
+    Frame f;
+    char error[1024] = {0};
+    const int rc = cuda.module->render(&scene, &s, &progress, &f, error, sizeof error);
+    if (rc == SHEAF_CUDA_CANCELLED) throw RenderError("cancelled");
+    if (rc != SHEAF_CUDA_OK)
+        throw RenderError(std::string("the CUDA render failed: ") +
+                          (error[0] ? error : "no message from the module"));
+    return f;
+}
+
+Frame render_frame(const PreparedScene& scene, const RenderSettings& s,
+                   const ProgressFn& progress) {
+    if (s.backend == Backend::Cpu) {
+        Frame f = render_frame_cpu(scene, s, progress);
+        mark(f, false, "backend: cpu (backend=cpu)");
+        return f;
+    }
+    const CudaBackendStatus& cuda = cuda_backend();
+    const BackendChoice c = choose_backend(scene, s.backend, cuda);
+    if (!c.cuda) {
+        if (s.backend == Backend::Cuda)
+            throw RenderError("backend=cuda: the CUDA backend cannot render this frame: " +
+                              c.why_not);
+        Frame f = render_frame_cpu(scene, s, progress);
+        mark(f, false, c.line);
+        return f;
+    }
+    try {
+        Frame f = render_frame_cuda(cuda, scene, s, progress);
+        mark(f, true, c.line);
+        return f;
+    } catch (const RenderError& e) {
+        const std::string what = e.what();
+        if (what == "cancelled") throw;
+        if (s.backend == Backend::Cuda) throw RenderError("backend=cuda: " + what);
+        // auto: the device failed (out of memory, a driver error); the CPU still renders.
+        Frame f = render_frame_cpu(scene, s, progress);
+        mark(f, false, "backend: cpu (" + what + ")");
+        return f;
+    }
+}
+
+} // namespace sheaf

@@ -1,0 +1,27 @@
+// Where a frame is computed (setting `backend`): the CPU renderer, or the wavefront pipeline
+// in the CUDA module. `auto` takes CUDA when the module loads, a device is usable and the
+// scene has nothing the device cannot do; otherwise the CPU, and the frame says why.
+#pragma once
+
+#include "core/backend/cuda_loader.h"
+#include "core/render/renderer.h"
+
+#include <string>
+
+namespace sheaf {
+
+struct BackendChoice {
+    bool cuda = false;
+    std::string line;    // "backend: cpu (no CUDA device: cudaErrorNoDevice: ...)"
+    std::string why_not; // when not CUDA: why, with details (for backend=cuda's error)
+};
+
+/// The choice for `scene` under `requested`, given what the CUDA loader found.
+BackendChoice choose_backend(const PreparedScene& scene, Backend requested,
+                             const CudaBackendStatus& cuda);
+
+/// Renders through the CUDA module (throws RenderError with the module's message).
+Frame render_frame_cuda(const CudaBackendStatus& cuda, const PreparedScene& scene,
+                        const RenderSettings& settings, const ProgressFn& progress = {});
+
+} // namespace sheaf

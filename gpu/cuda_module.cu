@@ -1,0 +1,154 @@
+// libsheaf_cuda.so.0: the CUDA backend. One export, sheaf_cuda_module(), gives libsheaf the
+// table of core/backend/cuda_module_abi.h: probe (is there a usable device?) and render (the
+// wavefront pipeline of core/wavefront under the CUDA execution policy). libsheaf dlopen()s
+// this module at first use; nothing of CUDA is linked into libsheaf itself.
+#include "core/backend/cuda_module_abi.h"
+#include "core/wavefront/wf_frame.h"
+#include "gpu/cuda_exec.cuh"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+
+namespace sheaf::gpu {
+namespace {
+
+#define SHEAF_STRINGIFY2(x) #x
+#define SHEAF_STRINGIFY(x) SHEAF_STRINGIFY2(x)
+
+constexpr const char* kBuild = "CUDA " SHEAF_STRINGIFY(__CUDACC_VER_MAJOR__) "." SHEAF_STRINGIFY(
+    __CUDACC_VER_MINOR__) ", sm " SHEAF_CUDA_ARCHS;
+
+void copy_message(char* dst, size_t size, const std::string& msg) {
+    if (!dst || size == 0) return;
+    std::snprintf(dst, size, "%s", msg.c_str());
+}
+
+std::string runtime_error(cudaError_t e) {
+    return std::string(cudaGetErrorName(e)) + ": " + cudaGetErrorString(e);
+}
+
+/// The device to render on: $SHEAF_CUDA_DEVICE, else 0.
+int chosen_device() {
+    const char* env = std::getenv("SHEAF_CUDA_DEVICE");
+    return env && *env ? std::atoi(env) : 0;
+}
+
+// The deepest nesting of CSG nodes below analytic roots: csg_spans recurses once per level,
+// with a few span lists (about 1 KiB each) per frame.
+int csg_depth(const PreparedScene& s, uint32_t node, int depth) {
+    const PreparedCsgNode& n = s.csg[node];
+    int d = depth;
+    if (n.op != CsgOp::Leaf && depth < 64)
+        for (uint32_t c = 0; c < n.count; ++c)
+            d = std::max(d, csg_depth(s, s.csg_children[n.first + c], depth + 1));
+    return d;
+}
+
+size_t stack_bytes(const PreparedScene& s) {
+    int depth = 0;
+    for (uint32_t root : s.analytic_root) depth = std::max(depth, csg_depth(s, root, 1));
+    // 8 KiB for the shading, pigment and pattern code, 6 KiB more per CSG level, at most 64.
+    return std::min<size_t>(size_t(64) << 10, (size_t(8) << 10) + size_t(depth) * (6u << 10));
+}
+
+__global__ void probe_kernel(int* out) {
+    *out = 42;
+}
+
+int probe(SheafCudaProbe* out) {
+    std::memset(out, 0, sizeof *out);
+    int count = 0;
+    cudaError_t e = cudaGetDeviceCount(&count);
+    if (e != cudaSuccess) {
+        copy_message(out->error, sizeof out->error, runtime_error(e));
+        return SHEAF_CUDA_FAILED;
+    }
+    out->device_count = count;
+    if (count == 0) {
+        copy_message(out->error, sizeof out->error, "no CUDA-capable device is detected");
+        return SHEAF_CUDA_FAILED;
+    }
+    const int device = chosen_device();
+    out->device = device;
+    if (device < 0 || device >= count) {
+        copy_message(out->error, sizeof out->error,
+                     "SHEAF_CUDA_DEVICE=" + std::to_string(device) + " but there are " +
+                         std::to_string(count) + " devices");
+        return SHEAF_CUDA_FAILED;
+    }
+    cudaDeviceProp prop{};
+    if ((e = cudaGetDeviceProperties(&prop, device)) != cudaSuccess) {
+        copy_message(out->error, sizeof out->error, runtime_error(e));
+        return SHEAF_CUDA_FAILED;
+    }
+    copy_message(out->name, sizeof out->name, prop.name);
+    out->cc_major = prop.major, out->cc_minor = prop.minor;
+    out->memory_bytes = prop.totalGlobalMem;
+    if (prop.major < 8) {
+        copy_message(out->error, sizeof out->error,
+                     std::string(prop.name) + " has compute capability " +
+                         std::to_string(prop.major) + "." + std::to_string(prop.minor) +
+                         "; the module is built for 8.0 and newer");
+        return SHEAF_CUDA_FAILED;
+    }
+    // One tiny kernel: proves the module's code runs on this device and driver.
+    int* d = nullptr;
+    int v = 0;
+    if ((e = cudaSetDevice(device)) != cudaSuccess || (e = cudaMalloc(&d, sizeof(int))) != cudaSuccess) {
+        copy_message(out->error, sizeof out->error, runtime_error(e));
+        return SHEAF_CUDA_FAILED;
+    }
+    probe_kernel<<<1, 1>>>(d);
+    if ((e = cudaGetLastError()) == cudaSuccess)
+        e = cudaMemcpy(&v, d, sizeof v, cudaMemcpyDeviceToHost);
+    cudaFree(d);
+    if (e != cudaSuccess || v != 42) {
+        copy_message(out->error, sizeof out->error,
+                     "a test kernel did not run: " +
+                         (e != cudaSuccess ? runtime_error(e) : std::string("wrong result")));
+        return SHEAF_CUDA_FAILED;
+    }
+    return SHEAF_CUDA_OK;
+}
+
+int render(const void* scene_p, const void* settings_p, const void* progress_p, void* frame_p,
+           char* error, size_t error_size) {
+    try {
+        const PreparedScene& scene = *static_cast<const PreparedScene*>(scene_p);
+        const RenderSettings& s = *static_cast<const RenderSettings*>(settings_p);
+        static const ProgressFn none;
+        const ProgressFn& progress = progress_p ? *static_cast<const ProgressFn*>(progress_p) : none;
+        Frame& f = *static_cast<Frame*>(frame_p);
+        CudaExec exec(chosen_device(), stack_bytes(scene));
+        wavefront::DeviceFrame<CudaExec>(exec, scene, s, progress, f).run();
+        check(cudaStreamSynchronize(exec.stream()), "the end of the frame");
+        return SHEAF_CUDA_OK;
+    } catch (const RenderError& e) {
+        if (std::strcmp(e.what(), "cancelled") == 0) return SHEAF_CUDA_CANCELLED;
+        copy_message(error, error_size, e.what());
+    } catch (const std::bad_alloc&) {
+        copy_message(error, error_size, "out of host memory");
+    } catch (const std::exception& e) {
+        copy_message(error, error_size, e.what());
+    } catch (...) {
+        copy_message(error, error_size, "unknown error");
+    }
+    return SHEAF_CUDA_FAILED;
+}
+
+const SheafCudaModule kModule = {SHEAF_CUDA_MODULE_ABI, cuda_module_layout(), kBuild, probe,
+                                 render};
+
+} // namespace
+} // namespace sheaf::gpu
+
+extern "C" __attribute__((visibility("default"))) const SheafCudaModule*
+sheaf_cuda_module(int abi_version, unsigned long long layout) {
+    if (abi_version != SHEAF_CUDA_MODULE_ABI || layout != sheaf::cuda_module_layout())
+        return nullptr;
+    return &sheaf::gpu::kModule;
+}

@@ -342,6 +342,9 @@ def test_default_cube():
     log = draw_panel("SHEAF_RENDER_PT_statistics")
     check("Intersection tests" in log and "{:,}".format(int(s["tests.total"])) in log,
           "the statistics panel shows %s" % log)
+    check(stats["backend"].startswith("backend: cpu (") or
+          stats["backend"].startswith("backend: cuda ("), "backend line: %r" % stats["backend"])
+    check(stats["backend"] in log, "the statistics panel lacks the backend line: %s" % log)
     log = draw_panel("SHEAF_VIEWLAYER_PT_passes")
     check("prop:use_pass_tests" in log and "prop:use_pass_z" in log, "passes panel: %s" % log)
 

@@ -198,6 +198,7 @@ class SheafRenderEngine(bpy.types.RenderEngine):
         with frame:
             self.write_result(depsgraph, frame, exported, (x0, y0, bw, bh))
             stats = frame.stats()
+            backend = frame.text("backend")  # "backend: cpu (why)" / "backend: cuda (device)"
         summary = summary_line(stats)
         LAST_STATS[scene.name] = {
             "stats": stats,
@@ -205,6 +206,7 @@ class SheafRenderEngine(bpy.types.RenderEngine):
             "seconds": time.perf_counter() - start,
             "settings": properties.settings_text(scene),
             "warnings": list(exported.warnings),
+            "backend": backend,
         }
         self.update_stats("", summary)
         self.update_progress(1.0)

@@ -112,6 +112,8 @@ class SHEAF_RENDER_PT_statistics(SheafPanel, bpy.types.Panel):
                 text = "{:,}".format(int(v))
             grid.label(text=label)
             grid.label(text=text)
+        if last.get("backend"):
+            layout.label(text=last["backend"])
         for w in last.get("warnings", [])[:5]:
             layout.label(text=w, icon='INFO')
 

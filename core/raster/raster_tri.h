@@ -72,6 +72,7 @@ SHEAF_HD_INLINE void setup_triangle(const TriangleVerts& t, uint32_t prim, bool 
     using namespace raster_detail;
     const int W = cam.width, H = cam.height;
     out[0].x0 = out[1].x0 = 1, out[0].x1 = out[1].x1 = 0;
+    out[0].y0 = out[1].y0 = 1, out[0].y1 = out[1].y1 = 0; // the cover loops read these too
     if (hidden) return; // not seen by the camera
     const Vec3 v[3] = {t.a, t.b, t.c};
     D3 c[3];

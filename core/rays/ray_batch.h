@@ -2,6 +2,7 @@
 // back to its pixel.
 #pragma once
 
+#include "core/base/device.h"
 #include "core/base/memory.h"
 #include "core/geometry/ray.h"
 
@@ -27,7 +28,7 @@ inline const char* ray_type_name(RayType t) {
 }
 
 /// Shadow and ambient-occlusion rays ask whether anything is hit; the others ask what is hit first.
-inline bool any_hit_query(RayType t) {
+SHEAF_HD inline bool any_hit_query(RayType t) {
     return t == RayType::Shadow || t == RayType::Ao;
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 namespace sheaf {
@@ -235,6 +236,41 @@ TEST(ProceduralRender, TransparentSurfacesFilterShadows) {
     // A filter tints by the colour at each crossing: green 0.5^2, blue 0.25^2 of the light.
     EXPECT_NEAR((filtered.y - ambient) / (clear.y - ambient), 0.25f, 0.01f);
     EXPECT_NEAR((filtered.z - ambient) / (clear.z - ambient), 0.0625f, 0.01f);
+}
+
+// A transparent `inverse` sphere with a fading interior: its spans start or end at no
+// surface (everything outside the ball is inside the solid). Shadow rays crossing it fade by
+// the interior of the surface they do cross, and nothing reads the missing surface's material.
+TEST(ProceduralRender, ShadowsThroughAnInverseSolidFade) {
+    Scene s;
+    Material floor, ball;
+    ball.fade_distance = 4, ball.fade_power = 2, ball.fade_color = Vec3(0.5f);
+    Pigment pg;
+    pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = 1; // fully transmitting
+    s.pigments.push_back(pg);
+    ball.pigment = 0;
+    ball.fresnel_split = false;
+    const uint32_t mf = s.add_material(floor), mb = s.add_material(ball);
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+    ShapeObject o;
+    o.name = "inverse ball";
+    CsgNode leaf;
+    leaf.shape = Shape{ShapeKind::Sphere};
+    leaf.material = mb;
+    leaf.inverse = true;
+    o.nodes.push_back(leaf);
+    o.transform = Affine::translate(Vec3(0, 1, 0));
+    s.add_shape_object(o);
+    s.add_light(Light{Vec3(0, 6, 0), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 0, 6);
+    s.camera.look_at = Vec3(0, -1, 0);
+    s.settings["trace.depth"] = "0";
+    const PreparedScene p = prepare_scene(s);
+    const Frame f = render(p, {{"width", "41"}, {"height", "31"}});
+    const Frame brute = render(p, {{"width", "41"}, {"height", "31"}, {"accel", "brute"}});
+    EXPECT_TRUE(same_image(f, brute));
+    const Vec3 under = pixel(f, 20, 15);
+    EXPECT_TRUE(std::isfinite(under.x) && std::isfinite(under.y) && std::isfinite(under.z));
 }
 
 } // namespace

@@ -53,10 +53,12 @@ SHEAF_HD_INLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const Ra
                                                       p.x, p.y);
             if (max_component(pass) <= 0.0f) return Vec3(0.0f);
         }
-        // The stretch inside the solid fades as its interior does (the entering surface's).
+        // The stretch inside the solid fades as its interior does (the entering surface's; a
+        // span of an `inverse` solid may start or end at no surface, marked 0xFFFFFFFF).
+        const uint32_t leaf = span.a.leaf != 0xFFFFFFFFu ? span.a.leaf : span.b.leaf;
         const float inside = fminf(span.b.t, ray.tmax) - fmaxf(span.a.t, ray.tmin);
-        if (inside > 0)
-            pass = pass * interior_fade(scene.materials[scene.shape_material[span.a.leaf]], inside);
+        if (inside > 0 && leaf != 0xFFFFFFFFu)
+            pass = pass * interior_fade(scene.materials[scene.shape_material[leaf]], inside);
     }
     return pass;
 }

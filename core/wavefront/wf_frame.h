@@ -92,6 +92,7 @@ template <class Exec> class DeviceFrame {
                 });
                 ex_.launch("raster.cover", 2 * tris, [=] SHEAF_HD_LAMBDA(size_t k) {
                     const ScreenTri& s = screen[k];
+                    if (s.x0 > s.x1) return; // covers nothing
                     for (int y = s.y0; y <= s.y1; ++y)
                         for (int x = s.x0; x <= s.x1; ++x) {
                             uint64_t key;

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <mutex>
 #include <string>
 
 namespace sheaf::gpu {
@@ -43,7 +44,7 @@ class CudaExec {
         const char* sync = std::getenv("SHEAF_CUDA_SYNC");
         sync_launches_ = sync && *sync && *sync != '0';
         check(cudaSetDevice(device), "cudaSetDevice");
-        check(cudaDeviceSetLimit(cudaLimitStackSize, stack_bytes), "cudaDeviceSetLimit(stack)");
+        raise_stack_limit(stack_bytes);
         check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "cudaStreamCreate");
     }
     ~CudaExec() {
@@ -163,6 +164,17 @@ class CudaExec {
     }
 
   private:
+    /// The stack limit is the device's, shared by every render in the process: only ever
+    /// raised, so a render on another thread never loses the stack it was launched with.
+    static void raise_stack_limit(size_t bytes) {
+        static std::mutex m;
+        std::lock_guard<std::mutex> lock(m);
+        size_t current = 0;
+        check(cudaDeviceGetLimit(&current, cudaLimitStackSize), "cudaDeviceGetLimit(stack)");
+        if (bytes > current)
+            check(cudaDeviceSetLimit(cudaLimitStackSize, bytes), "cudaDeviceSetLimit(stack)");
+    }
+
     cudaStream_t stream_ = nullptr;
     bool sync_launches_ = false;
     void* temp_ = nullptr;

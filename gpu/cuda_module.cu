@@ -3,6 +3,7 @@
 // wavefront pipeline of core/wavefront under the CUDA execution policy). libsheaf dlopen()s
 // this module at first use; nothing of CUDA is linked into libsheaf itself.
 #include "core/backend/cuda_module_abi.h"
+#include "core/backend/device_stack.h"
 #include "core/wavefront/wf_frame.h"
 #include "gpu/cuda_exec.cuh"
 
@@ -35,24 +36,6 @@ std::string runtime_error(cudaError_t e) {
 int chosen_device() {
     const char* env = std::getenv("SHEAF_CUDA_DEVICE");
     return env && *env ? std::atoi(env) : 0;
-}
-
-// The deepest nesting of CSG nodes below analytic roots: csg_spans recurses once per level,
-// with a few span lists (about 1 KiB each) per frame.
-int csg_depth(const PreparedScene& s, uint32_t node, int depth) {
-    const PreparedCsgNode& n = s.csg[node];
-    int d = depth;
-    if (n.op != CsgOp::Leaf && depth < 64)
-        for (uint32_t c = 0; c < n.count; ++c)
-            d = std::max(d, csg_depth(s, s.csg_children[n.first + c], depth + 1));
-    return d;
-}
-
-size_t stack_bytes(const PreparedScene& s) {
-    int depth = 0;
-    for (uint32_t root : s.analytic_root) depth = std::max(depth, csg_depth(s, root, 1));
-    // 8 KiB for the shading, pigment and pattern code, 6 KiB more per CSG level, at most 64.
-    return std::min<size_t>(size_t(64) << 10, (size_t(8) << 10) + size_t(depth) * (6u << 10));
 }
 
 __global__ void probe_kernel(int* out) {
@@ -123,7 +106,11 @@ int render(const void* scene_p, const void* settings_p, const void* progress_p, 
         static const ProgressFn none;
         const ProgressFn& progress = progress_p ? *static_cast<const ProgressFn*>(progress_p) : none;
         Frame& f = *static_cast<Frame*>(frame_p);
-        CudaExec exec(chosen_device(), stack_bytes(scene));
+        const size_t stack = device_stack_bytes(scene);
+        if (stack > kDeviceStackCap)
+            throw RenderError("CSG nested " + std::to_string(csg_nesting(scene)) +
+                              " levels deep needs more device stack than the module allows");
+        CudaExec exec(chosen_device(), stack);
         wavefront::DeviceFrame<CudaExec>(exec, scene, s, progress, f).run();
         check(cudaStreamSynchronize(exec.stream()), "the end of the frame");
         return SHEAF_CUDA_OK;

@@ -1,5 +1,6 @@
 #include "core/backend/backend.h"
 
+#include "core/backend/device_stack.h"
 #include "core/base/error.h"
 #include "core/wavefront/wavefront.h"
 
@@ -28,7 +29,13 @@ BackendChoice choose_backend(const PreparedScene& scene, Backend requested,
         c.why_not = "backend=cpu";
         return c;
     }
-    if (const std::string why = wavefront_unsupported(scene); !why.empty()) {
+    std::string why = wavefront_unsupported(scene);
+    if (why.empty() && device_stack_bytes(scene) > kDeviceStackCap)
+        why = "CSG nested " + std::to_string(csg_nesting(scene)) +
+              " levels deep needs more device stack than the CUDA module allows (" +
+              std::to_string((kDeviceStackCap - kDeviceStackBase) / kDeviceStackPerCsgLevel) +
+              " levels)";
+    if (!why.empty()) {
         c.line = "backend: cpu (" + why + ")";
         c.why_not = why;
         return c;

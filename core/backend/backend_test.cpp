@@ -2,12 +2,14 @@
 // a clear error, a missing module is no error for libsheaf, and the module, when it loads,
 // reports its device or why there is none.
 #include "core/backend/backend.h"
+#include "core/backend/device_stack.h"
 
 #include "core/base/error.h"
 #include "core/wavefront/test_scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -64,6 +66,62 @@ TEST(Backend, AutoFallsBackToTheCpuAndSaysWhy) {
     const BackendChoice t = choose_backend(textured, Backend::Auto, device);
     EXPECT_FALSE(t.cuda);
     EXPECT_NE(t.line.find("image textures"), std::string::npos) << t.line;
+}
+
+// A sphere inside `levels` nested intersections (each with a big box, so the shape is the
+// same at every depth).
+PreparedScene nested_csg(int levels) {
+    Scene s;
+    const uint32_t m = s.add_material(Material{});
+    ShapeObject o; // children are later nodes: op, its box, the next op, ..., the sphere
+    o.name = "nested";
+    for (int i = 0; i < levels; ++i) {
+        CsgNode op;
+        op.op = CsgOp::Intersection;
+        op.children = {uint32_t(2 * i + 1), uint32_t(2 * i + 2)};
+        o.nodes.push_back(op);
+        CsgNode box;
+        box.shape = Shape{ShapeKind::Box};
+        box.material = m;
+        box.transform = Affine::scale(Vec3(4));
+        o.nodes.push_back(box);
+    }
+    CsgNode sphere;
+    sphere.shape = Shape{ShapeKind::Sphere};
+    sphere.material = m;
+    o.nodes.push_back(sphere);
+    o.root = 0;
+    s.add_shape_object(o);
+    s.add_light(Light{Vec3(0, 6, 6), Vec3(1.0f)});
+    return prepare_scene(s);
+}
+
+// The device stack grows with CSG nesting; past the cap a scene stays on the CPU with auto
+// and is an error with cuda, before anything is launched.
+TEST(Backend, DeepCsgStaysOnTheCpu) {
+    EXPECT_EQ(csg_nesting(prepare_scene(test::glass_mirror_scene())), 0);
+    EXPECT_EQ(csg_nesting(nested_csg(1)), 1);
+    EXPECT_EQ(csg_nesting(nested_csg(7)), 7);
+    const int most = int((kDeviceStackCap - kDeviceStackBase) / kDeviceStackPerCsgLevel);
+    EXPECT_LE(device_stack_bytes(nested_csg(most)), kDeviceStackCap);
+    EXPECT_GT(device_stack_bytes(nested_csg(most + 1)), kDeviceStackCap);
+
+    CudaBackendStatus device;
+    device.usable = true;
+    std::snprintf(device.probe.name, sizeof device.probe.name, "NVIDIA H100");
+    device.probe.cc_major = 9;
+    EXPECT_TRUE(choose_backend(nested_csg(most), Backend::Auto, device).cuda);
+    const PreparedScene deep = nested_csg(most + 1);
+    const BackendChoice c = choose_backend(deep, Backend::Auto, device);
+    EXPECT_FALSE(c.cuda);
+    EXPECT_NE(c.line.find("CSG nested " + std::to_string(most + 1) + " levels"),
+              std::string::npos)
+        << c.line;
+    // The CPU renders it, and the sphere is seen.
+    const Frame f = render_frame(deep, small("cpu"));
+    float peak = 0;
+    for (float v : f.rgba) peak = std::max(peak, v);
+    EXPECT_GT(peak, 0.0f);
 }
 
 TEST(Backend, RenderFrameSaysWhereTheFrameWasComputed) {

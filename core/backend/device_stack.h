@@ -1,0 +1,66 @@
+// The per-thread stack the device code needs for a scene. csg_spans recurses once per level
+// of CSG nesting (each frame holds span lists: about 7 KiB on sm_80, plus about 2 KiB more
+// under a clipped_by), and the shading, pigment and pattern code needs a base of its own
+// (about 3 KiB in the tracing kernels plus nested pigments). The device reserves the stack
+// for every resident thread (about 270,000 on an H100), so it is capped; a scene nested more
+// deeply renders on the CPU (backend=auto) or is an error (backend=cuda).
+#pragma once
+
+#include "core/scene/prepared_scene.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sheaf {
+
+constexpr size_t kDeviceStackBase = size_t(12) << 10;
+constexpr size_t kDeviceStackPerCsgLevel = size_t(9) << 10;
+constexpr size_t kDeviceStackCap = size_t(96) << 10;
+
+/// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each
+/// node's height is computed once (roots may share subtrees).
+inline int csg_nesting(const PreparedScene& s) {
+    std::vector<int> height(s.csg.size(), -1);
+    std::vector<uint32_t> todo;
+    int deepest = 0;
+    for (uint32_t root : s.analytic_root) {
+        todo.push_back(root);
+        while (!todo.empty()) {
+            const uint32_t node = todo.back();
+            const PreparedCsgNode& n = s.csg[node];
+            if (height[node] >= 0) {
+                todo.pop_back();
+                continue;
+            }
+            int h = 0;
+            bool ready = true;
+            if (n.op != CsgOp::Leaf)
+                for (uint32_t c = 0; c < n.count; ++c) {
+                    const uint32_t child = s.csg_children[n.first + c];
+                    if (height[child] < 0) {
+                        ready = false;
+                        todo.push_back(child);
+                    } else {
+                        h = std::max(h, height[child] + 1);
+                    }
+                }
+            if (!ready) {
+                if (todo.size() > s.csg_children.size() + 1) return 1 << 20; // only a cycle
+                continue;
+            }
+            height[node] = n.op == CsgOp::Leaf ? 0 : std::max(h, 1);
+            todo.pop_back();
+        }
+        deepest = std::max(deepest, height[root]);
+    }
+    return deepest;
+}
+
+/// The stack the device code needs for `s`, in bytes (may exceed kDeviceStackCap).
+inline size_t device_stack_bytes(const PreparedScene& s) {
+    return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel;
+}
+
+} // namespace sheaf

@@ -114,8 +114,7 @@ TEST(Backend, DeepCsgStaysOnTheCpu) {
     const PreparedScene deep = nested_csg(most + 1);
     const BackendChoice c = choose_backend(deep, Backend::Auto, device);
     EXPECT_FALSE(c.cuda);
-    EXPECT_NE(c.line.find("CSG nested " + std::to_string(most + 1) + " levels"),
-              std::string::npos)
+    EXPECT_NE(c.line.find("CSG nested " + std::to_string(most + 1) + " levels"), std::string::npos)
         << c.line;
     // The CPU renders it, and the sphere is seen.
     const Frame f = render_frame(deep, small("cpu"));

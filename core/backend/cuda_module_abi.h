@@ -33,12 +33,12 @@ extern "C" {
 
 /// What the module found: the device it renders on, or why there is none.
 struct SheafCudaProbe {
-    int device_count;   // CUDA devices visible
-    int device;         // the device used (0, or $SHEAF_CUDA_DEVICE)
-    char name[256];     // its name
+    int device_count; // CUDA devices visible
+    int device;       // the device used (0, or $SHEAF_CUDA_DEVICE)
+    char name[256];   // its name
     int cc_major, cc_minor;
     unsigned long long memory_bytes;
-    char error[512];    // empty when the device is usable; else e.g. "cudaErrorNoDevice: ..."
+    char error[512]; // empty when the device is usable; else e.g. "cudaErrorNoDevice: ..."
 };
 
 enum SheafCudaStatus { SHEAF_CUDA_OK = 0, SHEAF_CUDA_FAILED = 1, SHEAF_CUDA_CANCELLED = 2 };

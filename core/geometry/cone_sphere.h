@@ -4,6 +4,7 @@
 
 #include "core/geometry/cone.h"
 #include "core/geometry/sphere.h"
+#include "core/math/hd_math.h"
 
 namespace sheaf {
 
@@ -28,8 +29,8 @@ SHEAF_HD_INLINE RayNode make_ray_node(const Sphere& s, const Cone& c) {
     n.axis = c.axis;
     n.angle = c.angle;
     if (c.angle < 1.5f) { // below ~86 degrees eq. (9) is used, above it the angular test
-        n.tan_angle = tanf(c.angle);
-        n.inv_cos_angle = 1.0f / cosf(c.angle);
+        n.tan_angle = hdm::tanf(c.angle);
+        n.inv_cos_angle = 1.0f / hdm::cosf(c.angle);
     }
     return n;
 }
@@ -43,7 +44,7 @@ SHEAF_HD_INLINE bool node_hits_sphere(const RayNode& node, const Sphere& prim) {
     const float R = prim.radius + node.radius;
     const Vec3 v = prim.center - node.center;
     const float dist2 = dot(v, v);
-    if (dist2 <= R * R) return true;   // the apex region touches the sphere
+    if (dist2 <= R * R) return true; // the apex region touches the sphere
     // Beyond every ray's end (padded for rounding; an infinite reach never culls).
     const float far = (node.reach + prim.radius) * (1.0f + 1e-5f);
     if (dist2 > far * far) return false;
@@ -56,8 +57,8 @@ SHEAF_HD_INLINE bool node_hits_sphere(const RayNode& node, const Sphere& prim) {
     // Wide cones: the directions that reach the sphere form a cap of half-angle asin(R/dist)
     // around v; they meet the node's cone when the angular distance is within the sum.
     const float dist = sqrtf(dist2);
-    const float theta = atan2f(length(cross(v, node.axis)), h);
-    return theta <= node.angle + asinf(fminf(1.0f, R / dist)) + 1e-6f;
+    const float theta = hdm::atan2f(length(cross(v, node.axis)), h);
+    return theta <= node.angle + hdm::asinf(fminf(1.0f, R / dist)) + 1e-6f;
 }
 
 } // namespace sheaf

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 
 #include <cstdint>
 
@@ -66,8 +67,8 @@ SHEAF_HD_INLINE uint32_t morton2(uint32_t a, uint32_t b) {
 
 /// Spherical coordinates of a unit direction mapped to [0, 1]: (phi, theta) with theta from +z.
 SHEAF_HD_INLINE void spherical_unit(Vec3 d, float& u_phi, float& u_theta) {
-    const float theta = acosf(fminf(fmaxf(d.z, -1.0f), 1.0f));
-    const float phi = atan2f(d.y, d.x);
+    const float theta = hdm::acosf(fminf(fmaxf(d.z, -1.0f), 1.0f));
+    const float phi = hdm::atan2f(d.y, d.x);
     u_phi = (phi + kPi) / (2.0f * kPi);
     u_theta = theta / kPi;
 }

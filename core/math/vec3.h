@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/base/device.h"
+#include "core/math/hd_math.h"
 
 #include <cmath>
 
@@ -89,7 +90,7 @@ SHEAF_HD_INLINE Vec3 reflect(Vec3 d, Vec3 n) {
 /// Angle between two unit vectors, robust near 0 and pi.
 SHEAF_HD_INLINE float angle_between(Vec3 a, Vec3 b) {
     // atan2 of |a x b| and a.b is accurate everywhere, unlike acos of the dot product.
-    return atan2f(length(cross(a, b)), dot(a, b));
+    return hdm::atan2f(length(cross(a, b)), dot(a, b));
 }
 
 constexpr float kPi = 3.14159265358979323846f;

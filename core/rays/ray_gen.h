@@ -6,6 +6,7 @@
 // wavefront pipeline emit the same rays in the same order.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/rays/ray_batch.h"
 #include "core/render/shade.h"
 #include "core/render/surface.h"
@@ -17,8 +18,8 @@
 namespace sheaf {
 
 struct RayGenParams {
-    float epsilon = 1e-4f;   // offset from surfaces, in scene units
-    float far = 1e4f;        // beyond the scene: where parallel lights' shadow rays start
+    float epsilon = 1e-4f; // offset from surfaces, in scene units
+    float far = 1e4f;      // beyond the scene: where parallel lights' shadow rays start
     int ao_samples = 0;
     float ao_distance = 1.0f;
     float min_weight = 1e-3f; // reflection/refraction rays carrying less are not traced
@@ -110,7 +111,7 @@ SHEAF_HD_INLINE void ao_ray_fill(const SceneView& scene, const SurfaceHit& h, ui
         const uint32_t index = h.pixel * n + s + 1;
         const float u1 = radical_inverse(index, 2), u2 = radical_inverse(index, 3);
         const float r = sqrtf(u1), phi = 2.0f * kPi * u2;
-        const Vec3 d = t * (r * cosf(phi)) + b * (r * sinf(phi)) +
+        const Vec3 d = t * (r * hdm::cosf(phi)) + b * (r * hdm::sinf(phi)) +
                        h.geo_normal * sqrtf(fmaxf(0.0f, 1.0f - u1));
         Ray ray;
         ray.origin = h.position + h.geo_normal * p.epsilon;

@@ -5,6 +5,7 @@
 // patterns look alike but are not POV-Ray's pixel for pixel.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/render/noise.h"
 #include "core/scene/pattern.h"
 
@@ -42,13 +43,13 @@ SHEAF_HD_INLINE float apply_wave(const Pattern& pt, float v) {
     case Wave::Triangle:
         return v < 0.5f ? 2.0f * v : 2.0f - 2.0f * v;
     case Wave::Sine:
-        return 0.5f + 0.5f * sinf(2.0f * kPi * v);
+        return 0.5f + 0.5f * hdm::sinf(2.0f * kPi * v);
     case Wave::Scallop:
-        return fabsf(sinf(kPi * v));
+        return fabsf(hdm::sinf(kPi * v));
     case Wave::Cubic:
         return v * v * (3.0f - 2.0f * v);
     case Wave::Poly:
-        return powf(v, pt.wave_exponent);
+        return hdm::powf(v, pt.wave_exponent);
     }
     return v;
 }
@@ -68,7 +69,7 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Onion:
         return length(p);
     case PatternKind::Radial:
-        return atan2f(p.x, -p.z) / (2.0f * kPi) + 0.5f;
+        return hdm::atan2f(p.x, -p.z) / (2.0f * kPi) + 0.5f;
     case PatternKind::Spherical:
         return 1.0f - clamp01(length(p));
     case PatternKind::Cylindrical:
@@ -78,7 +79,7 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Boxed:
         return 1.0f - clamp01(fmaxf(fabsf(p.x), fmaxf(fabsf(p.y), fabsf(p.z))));
     case PatternKind::Leopard: {
-        const float s = (sinf(p.x) + sinf(p.y) + sinf(p.z)) / 3.0f;
+        const float s = (hdm::sinf(p.x) + hdm::sinf(p.y) + hdm::sinf(p.z)) / 3.0f;
         return s * s;
     }
     case PatternKind::Bozo:
@@ -93,8 +94,8 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
     }
     case PatternKind::Agate: {
         const float turb = turbulence(p, 7, 0.5f, 2.0f) * (pt.param[0] > 0 ? pt.param[0] : 1.0f);
-        const float v = 0.5f + 0.5f * cosf((p.z + 2.0f * turb) * 2.0f * kPi * 0.5f);
-        return clamp01(powf(v, 0.5f));
+        const float v = 0.5f + 0.5f * hdm::cosf((p.z + 2.0f * turb) * 2.0f * kPi * 0.5f);
+        return clamp01(hdm::powf(v, 0.5f));
     }
     case PatternKind::Wrinkles: {
         float sum = 0, f = 1;
@@ -123,7 +124,7 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
         for (int k = 0; k < 10; ++k) {
             const float d = length(p - wave_source(k));
             const float w = pt.kind == PatternKind::Waves ? 1.0f / (1.0f + d) : 1.0f;
-            sum += w * cosf(2.0f * kPi * (d * pt.frequency + pt.phase));
+            sum += w * hdm::cosf(2.0f * kPi * (d * pt.frequency + pt.phase));
             weight += w;
         }
         return clamp01(0.5f + 0.5f * sum / weight);
@@ -132,7 +133,7 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Spiral2: {
         const float arms = pt.param[0] != 0 ? pt.param[0] : 1.0f;
         const float r = sqrtf(p.x * p.x + p.y * p.y);
-        const float a = atan2f(p.y, p.x) / (2.0f * kPi);
+        const float a = hdm::atan2f(p.y, p.x) / (2.0f * kPi);
         if (pt.kind == PatternKind::Spiral1) return r + arms * a;
         const float s1 = frac(r + arms * a), s2 = frac(r - arms * a);
         return 0.5f * (s1 + s2);
@@ -206,7 +207,7 @@ SHEAF_HD_INLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
         if (pt.kind == PatternKind::Hexagon) return hex;
         // Six triangles per hexagon: the sector of the point around its hexagon's centre.
         const float hx = 1.5f * rx, hz = sqrtf(3.0f) * (rz + 0.5f * rx);
-        const float a = atan2f(p.z - hz, p.x - hx) / (2.0f * kPi) + 0.5f;
+        const float a = hdm::atan2f(p.z - hz, p.x - hx) / (2.0f * kPi) + 0.5f;
         return imod(floor_int(a * 6.0f), 6);
     }
     case PatternKind::Brick: {
@@ -221,8 +222,8 @@ SHEAF_HD_INLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
         const float fy = frac(q.y / size.y) * size.y;
         const float fz = frac(q.z / size.z + shift) * size.z;
         const float m = 0.5f * mortar;
-        const bool in_mortar = fx < m || fx > size.x - m || fy < m || fy > size.y - m ||
-                               fz < m || fz > size.z - m;
+        const bool in_mortar =
+            fx < m || fx > size.x - m || fy < m || fy > size.y - m || fz < m || fz > size.z - m;
         return in_mortar ? 0 : 1;
     }
     default:

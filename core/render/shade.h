@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 #include "core/render/surface.h"
 #include "core/render/surface_hit.h"
 #include "core/scene/prepared_scene.h"
@@ -26,7 +27,6 @@ SHEAF_HD_INLINE float fresnel_dielectric(float cos_i, float eta) {
     return 0.5f * (rs * rs + rp * rp);
 }
 
-
 /// The mirror reflection of the surface at h (per channel): constant, or varying with the angle
 /// of view (POV-Ray's reflection { min max falloff } and fresnel), tinted when metallic.
 SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
@@ -35,7 +35,7 @@ SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
         const float lo = fmaxf(m.mirror_min, 0.0f), hi = m.mirror;
         const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
         const float f = m.mirror_fresnel ? fresnel_dielectric(cos_i, h.front ? 1.0f / m.ior : m.ior)
-                                         : powf(1.0f - cos_i, m.mirror_falloff);
+                                         : hdm::powf(1.0f - cos_i, m.mirror_falloff);
         r = lo + (hi - lo) * f;
     }
     Vec3 w = m.mirror_color * r;
@@ -50,17 +50,17 @@ SHEAF_HD_INLINE Vec3 direct_light(const Material& m, const SurfaceHit& h, Vec3 t
                                   Vec3 light_color) {
     const Vec3 n = h.normal;
     const float ndl = fmaxf(dot(n, to_light), 0.0f);
-    float kd = m.diffuse * (m.brilliance == 1.0f ? ndl : powf(ndl, m.brilliance)) * opacity(h);
+    float kd = m.diffuse * (m.brilliance == 1.0f ? ndl : hdm::powf(ndl, m.brilliance)) * opacity(h);
     if (m.conserve_energy) kd *= fmaxf(0.0f, 1.0f - max_component(mirror_weight(m, h)));
     Vec3 c = h.albedo * kd;
     float highlight = 0.0f;
     if (m.specular > 0) {
         const Vec3 r = reflect(-to_light, n);
-        highlight += m.specular * powf(fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
+        highlight += m.specular * hdm::powf(fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
     }
     if (m.blinn > 0) {
         const Vec3 half = normalize(to_light - h.incoming);
-        highlight += m.blinn * powf(fmaxf(dot(n, half), 0.0f), m.blinn_exponent);
+        highlight += m.blinn * hdm::powf(fmaxf(dot(n, half), 0.0f), m.blinn_exponent);
     }
     if (highlight > 0) {
         const Vec3 tint = Vec3(1.0f - m.metallic) + h.albedo * m.metallic;
@@ -89,7 +89,8 @@ SHEAF_HD_INLINE float spot_factor(const Light& l, Vec3 light_to_point) {
         const float u = (l.spot_falloff - angle) / fmaxf(l.spot_falloff - l.spot_radius, 1e-6f);
         f = u * u * (3.0f - 2.0f * u);
     }
-    if (l.spot_tightness > 0) f *= powf(fmaxf(cosf(angle * kPi / 180.0f), 0.0f), l.spot_tightness);
+    if (l.spot_tightness > 0)
+        f *= hdm::powf(fmaxf(hdm::cosf(angle * kPi / 180.0f), 0.0f), l.spot_tightness);
     return f;
 }
 
@@ -109,7 +110,7 @@ SHEAF_HD_INLINE LightSample sample_light(const Light& l, Vec3 p, float far) {
     float k = 1.0f;
     if (l.type == LightType::Spot) k *= spot_factor(l, -s.to_light);
     if (l.fade_distance > 0 && l.fade_power > 0)
-        k *= 2.0f / (1.0f + powf(s.distance / l.fade_distance, l.fade_power));
+        k *= 2.0f / (1.0f + hdm::powf(s.distance / l.fade_distance, l.fade_power));
     s.radiance = l.color * k;
     return s;
 }
@@ -127,10 +128,11 @@ SHEAF_HD_INLINE Vec3 interior_fade(const Material& m, float d) {
     if (!(m.fade_distance > 0) || !(m.fade_power > 0)) return Vec3(1.0f);
     if (m.fade_power >= 1000.0f) {
         const float k = d / m.fade_distance;
-        return Vec3(expf(-(1.0f - m.fade_color.x) * k), expf(-(1.0f - m.fade_color.y) * k),
-                    expf(-(1.0f - m.fade_color.z) * k));
+        return Vec3(hdm::expf(-(1.0f - m.fade_color.x) * k),
+                    hdm::expf(-(1.0f - m.fade_color.y) * k),
+                    hdm::expf(-(1.0f - m.fade_color.z) * k));
     }
-    const float a = 1.0f / (1.0f + powf(d / m.fade_distance, m.fade_power));
+    const float a = 1.0f / (1.0f + hdm::powf(d / m.fade_distance, m.fade_power));
     return Vec3(a) + m.fade_color * (1.0f - a);
 }
 
@@ -143,7 +145,7 @@ SHEAF_HD_INLINE void fog_over(const Fog& f, float d, float& keep, Vec3& add) {
         keep = 1.0f, add = Vec3(0.0f);
         return;
     }
-    const float a = d < 3.0e38f ? expf(-d / f.distance) : 0.0f;
+    const float a = d < 3.0e38f ? hdm::expf(-d / f.distance) : 0.0f;
     keep = fmaxf(a, f.transmit);
     add = f.color * (1.0f - keep);
 }

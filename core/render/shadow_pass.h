@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 #include "core/render/shade.h"
 #include "core/render/surface_hit.h"
 #include "core/scene/analytic.h"
@@ -49,8 +50,8 @@ SHEAF_HD_INLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const Ra
         for (const CsgEnd* e : ends) {
             if (!(e->t > ray.tmin && e->t < ray.tmax) || e->leaf == 0xFFFFFFFFu) continue;
             const Vec3 p = ray_at(ray, e->t);
-            pass = pass * shadow_detail::surface_pass(scene, scene.shape_material[e->leaf], p,
-                                                      p.x, p.y);
+            pass = pass *
+                   shadow_detail::surface_pass(scene, scene.shape_material[e->leaf], p, p.x, p.y);
             if (max_component(pass) <= 0.0f) return Vec3(0.0f);
         }
         // The stretch inside the solid fades as its interior does (the entering surface's; a
@@ -70,12 +71,12 @@ constexpr uint64_t kPassLogZero = 256 * kPassLogOne;
 SHEAF_HD_INLINE uint64_t pass_to_log(float pass) {
     if (!(pass > 0.0f)) return kPassLogZero;
     if (pass >= 1.0f) return 0;
-    const double q = -log2(double(pass)) * double(kPassLogOne);
+    const double q = -hdm::log2(double(pass)) * double(kPassLogOne);
     return q >= double(kPassLogZero) ? kPassLogZero : uint64_t(q + 0.5);
 }
 
 SHEAF_HD_INLINE float log_to_pass(uint64_t q) {
-    return q >= kPassLogZero ? 0.0f : float(exp2(-double(q) / double(kPassLogOne)));
+    return q >= kPassLogZero ? 0.0f : float(hdm::exp2(-double(q) / double(kPassLogOne)));
 }
 
 /// The light a shadow ray keeps per channel from its three fixed-point log sums.

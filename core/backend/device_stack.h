@@ -23,15 +23,15 @@ constexpr size_t kDeviceStackCap = size_t(96) << 10;
 /// node's height is computed once (roots may share subtrees).
 inline int csg_nesting(const PreparedScene& s) {
     std::vector<int> height(s.csg.size(), -1);
-    std::vector<uint32_t> todo;
+    std::vector<uint32_t> pending;
     int deepest = 0;
     for (uint32_t root : s.analytic_root) {
-        todo.push_back(root);
-        while (!todo.empty()) {
-            const uint32_t node = todo.back();
+        pending.push_back(root);
+        while (!pending.empty()) {
+            const uint32_t node = pending.back();
             const PreparedCsgNode& n = s.csg[node];
             if (height[node] >= 0) {
-                todo.pop_back();
+                pending.pop_back();
                 continue;
             }
             int h = 0;
@@ -41,17 +41,17 @@ inline int csg_nesting(const PreparedScene& s) {
                     const uint32_t child = s.csg_children[n.first + c];
                     if (height[child] < 0) {
                         ready = false;
-                        todo.push_back(child);
+                        pending.push_back(child);
                     } else {
                         h = std::max(h, height[child] + 1);
                     }
                 }
             if (!ready) {
-                if (todo.size() > s.csg_children.size() + 1) return 1 << 20; // only a cycle
+                if (pending.size() > s.csg_children.size() + 1) return 1 << 20; // only a cycle
                 continue;
             }
             height[node] = n.op == CsgOp::Leaf ? 0 : std::max(h, 1);
-            todo.pop_back();
+            pending.pop_back();
         }
         deepest = std::max(deepest, height[root]);
     }

@@ -236,21 +236,30 @@ SHEAF_HD_INLINE double exp2(double x) {
     return ::ldexp(exp((x - k) * detail::kLn2), int(k));
 }
 
-/// x^y with the C library's special cases for y = 0, x = 1, zero, negative and infinite x.
+/// x^y with the C library's special cases for y = 0, x = 1, zero, negative and infinite x
+/// (the sign of a zero x is not kept). Not recursive: these functions are force-inlined.
 SHEAF_HD_INLINE double pow(double x, double y) {
     if (y == 0.0 || x == 1.0) return 1.0;
     if (x != x || y != y) return detail::nan_value();
     const double ay = ::fabs(y);
+    bool negate = false;
     if (x < 0) {
         if (::floor(y) != y) return detail::nan_value(); // a non-integer power of a negative
-        const bool odd = ay < 9007199254740992.0 && ::fmod(ay, 2.0) == 1.0;
-        const double r = pow(-x, y);
-        return odd ? -r : r;
+        negate = ay < 9007199254740992.0 && ::fmod(ay, 2.0) == 1.0;
+        x = -x;
     }
-    if (x == 0) return y > 0 ? 0.0 : detail::inf_value();
-    if (x == detail::inf_value()) return y > 0 ? x : 0.0;
-    if (ay == detail::inf_value()) return (x > 1.0) == (y > 0) ? detail::inf_value() : 0.0;
-    return exp(y * log(x));
+    double r;
+    if (x == 0)
+        r = y > 0 ? 0.0 : detail::inf_value();
+    else if (x == detail::inf_value())
+        r = y > 0 ? x : 0.0;
+    else if (x == 1.0)
+        r = 1.0;
+    else if (ay == detail::inf_value())
+        r = (x > 1.0) == (y > 0) ? detail::inf_value() : 0.0;
+    else
+        r = exp(y * log(x));
+    return negate ? -r : r;
 }
 
 // Float versions: the double result rounded once.

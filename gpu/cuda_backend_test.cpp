@@ -6,7 +6,7 @@
 #include "core/backend/backend.h"
 #include "core/base/error.h"
 #include "core/scenes/builtin.h"
-#include "core/wavefront/test_scenes.h"
+#include "core/scenes/test_scenes.h"
 #include "io/scene/scene_file.h"
 
 #include <gtest/gtest.h>

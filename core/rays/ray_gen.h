@@ -168,30 +168,29 @@ SHEAF_HD_INLINE uint32_t refract_ray_count(const BounceSplit& s, const RayGenPar
     return max_component(s.refract_weight) > p.min_weight ? 1u : 0u;
 }
 
-SHEAF_HD_INLINE void reflect_ray_fill(const SurfaceHit& h, const BounceSplit& s, uint32_t slot,
-                                      const RayGenParams& p, const RaySlots& out) {
-    if (max_component(s.reflect_weight) <= p.min_weight) return;
+/// A bounce ray from hit `h`: offset to the side it leaves on (`side` +1 above the surface,
+/// -1 below), unbounded; written only when its weight is worth tracing.
+SHEAF_HD_INLINE void bounce_ray_fill(const SurfaceHit& h, Vec3 dir, Vec3 weight, float side,
+                                     uint32_t slot, const RayGenParams& p, const RaySlots& out) {
+    if (max_component(weight) <= p.min_weight) return;
     Ray r;
-    r.origin = h.position + h.geo_normal * p.epsilon;
-    r.dir = s.reflect_dir;
+    r.origin = h.position + h.geo_normal * (side * p.epsilon);
+    r.dir = dir;
     r.tmin = 0.0f;
     r.tmax = FLT_MAX;
     out.rays[slot] = r;
     out.pixel[slot] = h.pixel;
-    out.weight[slot] = s.reflect_weight;
+    out.weight[slot] = weight;
+}
+
+SHEAF_HD_INLINE void reflect_ray_fill(const SurfaceHit& h, const BounceSplit& s, uint32_t slot,
+                                      const RayGenParams& p, const RaySlots& out) {
+    bounce_ray_fill(h, s.reflect_dir, s.reflect_weight, 1.0f, slot, p, out);
 }
 
 SHEAF_HD_INLINE void refract_ray_fill(const SurfaceHit& h, const BounceSplit& s, uint32_t slot,
                                       const RayGenParams& p, const RaySlots& out) {
-    if (max_component(s.refract_weight) <= p.min_weight) return;
-    Ray r;
-    r.origin = h.position - h.geo_normal * p.epsilon; // below the surface
-    r.dir = s.refract_dir;
-    r.tmin = 0.0f;
-    r.tmax = FLT_MAX;
-    out.rays[slot] = r;
-    out.pixel[slot] = h.pixel;
-    out.weight[slot] = s.refract_weight;
+    bounce_ray_fill(h, s.refract_dir, s.refract_weight, -1.0f, slot, p, out);
 }
 
 /// Shadow rays for every lit (hit, light) pair of the lights that cast shadows.

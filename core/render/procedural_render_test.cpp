@@ -4,6 +4,7 @@
 #include "core/render/renderer.h"
 
 #include "core/scenes/shapes.h"
+#include "core/scenes/test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -37,78 +38,10 @@ Vec3 pixel(const Frame& f, int x, int y) {
     return Vec3(p[0], p[1], p[2]);
 }
 
-PigmentEntry entry(float value, Vec3 c, float transmit = 0) {
-    PigmentEntry e;
-    e.value = value;
-    e.color[0] = c.x, e.color[1] = c.y, e.color[2] = c.z, e.color[4] = transmit;
-    return e;
-}
-
-int32_t pigment(Scene& s, PatternKind kind, std::vector<PigmentEntry> entries, float scale = 1) {
-    Pigment pg;
-    pg.solid = false;
-    pg.pattern.kind = kind;
-    pg.pattern.to_pattern = Affine::scale(Vec3(1.0f / scale));
-    pg.first = uint32_t(s.pigment_entries.size());
-    pg.count = uint32_t(entries.size());
-    s.pigment_entries.insert(s.pigment_entries.end(), entries.begin(), entries.end());
-    s.pigments.push_back(pg);
-    return int32_t(s.pigments.size() - 1);
-}
-
-// Every procedural feature at once: patterned pigments, a transmitting pigment, layers, a
-// normal, variable and Fresnel reflection, a texture map, flags, fog and sky.
-Scene textured_scene() {
-    Scene s;
-    Material floor;
-    floor.pigment = pigment(s, PatternKind::Checker, {entry(0, Vec3(0.9f)), entry(0, Vec3(0.2f))}, 0.5f);
-    floor.mirror = 0.5f, floor.mirror_min = 0.05f, floor.mirror_falloff = 2;
-    Material marble;
-    marble.pigment = pigment(s, PatternKind::Marble, {entry(0, Vec3(0.9f, 0.8f, 0.7f)), entry(1, Vec3(0.2f, 0.1f, 0.1f))});
-    Pattern bumps;
-    bumps.kind = PatternKind::Bozo;
-    bumps.to_pattern = Affine::scale(Vec3(5));
-    s.normal_patterns.push_back({bumps, 0.6f});
-    marble.normal = 0;
-    marble.blinn = 0.5f, marble.blinn_exponent = 30, marble.metallic = 0.5f;
-    Material glass;
-    glass.pigment = pigment(s, PatternKind::Gradient, {entry(0, Vec3(1), 0.9f), entry(1, Vec3(0.8f, 1, 0.8f), 0.6f)});
-    glass.ior = 1.5f, glass.fresnel_split = false, glass.mirror = 1, glass.mirror_min = 0,
-    glass.mirror_fresnel = true, glass.fade_distance = 1, glass.fade_power = 2;
-    Material a, b, picked;
-    a.color = Vec3(1, 0.2f, 0.2f), b.color = Vec3(0.2f, 0.2f, 1);
-    const uint32_t ma = s.add_material(a), mb = s.add_material(b);
-    MaterialSwitch sw;
-    sw.pattern.kind = PatternKind::Gradient;
-    sw.pattern.to_pattern = Affine::scale(Vec3(2));
-    sw.first = 0, sw.count = 2;
-    s.material_switches.push_back(sw);
-    s.material_entries = {{0.0f, ma}, {1.0f, mb}};
-    picked.select = 0;
-    const uint32_t mf = s.add_material(floor), mm = s.add_material(marble),
-                   mg = s.add_material(glass), mp = s.add_material(picked);
-    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
-    s.add_shape("marble", Shape{ShapeKind::Sphere}, mm, Affine::translate(Vec3(-1.2f, 0, 0)));
-    s.add_shape("glass", Shape{ShapeKind::Sphere}, mg,
-                Affine::translate(Vec3(1.2f, 0, 0.5f)) * Affine::scale(Vec3(0.8f)));
-    const uint32_t box = s.add_mesh_object("picked", make_box(Vec3(-0.5f, -1, -2), Vec3(0.5f, 0, -1.5f)), mp);
-    s.objects[box].flags = kNoShadow;
-    const uint32_t ghost = s.add_shape("ghost", Shape{ShapeKind::Sphere}, ma,
-                                       Affine::translate(Vec3(0, 2, -1)) * Affine::scale(Vec3(0.5f)));
-    s.shape_objects[ghost].flags = kNoImage | kNoReflection;
-    s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
-    s.camera.position = Vec3(0, 1.5f, 5);
-    s.camera.look_at = Vec3(0, 0, 0);
-    s.fog.distance = 20, s.fog.color = Vec3(0.5f, 0.5f, 0.6f), s.fog.transmit = 0.2f;
-    Pattern sky;
-    sky.kind = PatternKind::Gradient;
-    s.sky = pigment(s, PatternKind::Gradient, {entry(0, Vec3(1)), entry(1, Vec3(0.1f, 0.2f, 0.8f))});
-    s.settings["trace.depth"] = "3";
-    return s;
-}
-
 TEST(ProceduralRender, AccelModesStayIdentical) {
-    const PreparedScene scene = prepare_scene(textured_scene());
+    // Every procedural feature at once (patterned, layered and transmitting pigments, a normal,
+    // variable and Fresnel reflection, a texture map, flags, fog and sky).
+    const PreparedScene scene = prepare_scene(test::procedural_scene());
     const Frame brute = render(scene, {{"accel", "brute"}, {"ao.samples", "2"}});
     EXPECT_GT(brute.stats.get("rays.refraction"), 0);
     EXPECT_GT(brute.stats.get("rays.reflection"), 0);

@@ -5,6 +5,7 @@
 #include "core/base/error.h"
 #include "core/scenes/builtin.h"
 #include "core/scenes/shapes.h"
+#include "core/scenes/test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -34,24 +35,7 @@ double mean(const Frame& f) {
 // A glass sphere and a mirror box over a floor: refraction, total internal reflection and
 // reflection in one small scene.
 PreparedScene glass_scene() {
-    Scene s;
-    Material floor;
-    floor.color = Vec3(0.8f, 0.7f, 0.5f);
-    Material glass;
-    glass.color = Vec3(0.9f, 1.0f, 0.9f);
-    glass.transmission = 0.9f, glass.ior = 1.5f, glass.specular = 0.5f, glass.diffuse = 0.1f;
-    Material mirror;
-    mirror.mirror = 0.8f;
-    const uint32_t mf = s.add_material(floor), mg = s.add_material(glass),
-                   mm = s.add_material(mirror);
-    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
-    s.add_mesh_object("glass", make_uv_sphere(Vec3(0, 0, 0), 1.0f, 12, 24), mg);
-    s.add_mesh_object("mirror", make_box(Vec3(1.5f, -1, -2), Vec3(2.5f, 1, -1)), mm);
-    s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
-    s.camera.position = Vec3(0, 1.5f, 5);
-    s.camera.look_at = Vec3(0, 0, 0);
-    s.background = Vec3(0.2f, 0.3f, 0.5f);
-    return prepare_scene(s);
+    return prepare_scene(test::glass_mirror_scene());
 }
 
 TEST(Renderer, AccelModesGiveIdenticalImagesOnTheBuiltinScenes) {

@@ -28,6 +28,7 @@ struct Counter {
         tests.fetch_add(t, std::memory_order_relaxed);
         hits.fetch_add(h, std::memory_order_relaxed);
     }
+    TestCount count() const { return {tests.load(), hits.load()}; }
 };
 
 HitSinks sinks(TraceResult& out) {
@@ -309,10 +310,7 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
             trace_brute(SceneView(scene), batch, any, batch.type == RayType::Shadow, skip, final,
                         out);
         }
-        stats.add(p + "final.tests", double(final.tests));
-        stats.add(p + "final.hits", double(final.hits));
-        stats.add(p + "final.misses", double(final.tests - final.hits));
-        stats.add(p + "total", double(final.tests));
+        add_test_counts(stats, p, false, {}, {}, final.count()); // brute: final tests only
         return;
     }
 
@@ -361,25 +359,27 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
     stats.add("time_ms.final_tests", trav.final_ms_);
     memory.sub(int64_t(keys.capacity() + order.perm.capacity()) * 4);
 
+    std::vector<TestCount> levels(trav.levels_.size());
+    for (size_t k = 0; k < levels.size(); ++k) levels[k] = trav.levels_[k].count();
+    add_test_counts(stats, p, s.cull_objects, trav.objects_.count(), levels, trav.final_.count());
+}
+
+void add_test_counts(Stats& stats, const std::string& p, bool cull_objects,
+                     const TestCount& objects, const std::vector<TestCount>& levels,
+                     const TestCount& final) {
+    auto add = [&](const std::string& row, const TestCount& c) {
+        stats.add(row + "tests", double(c.tests));
+        stats.add(row + "hits", double(c.hits));
+        stats.add(row + "misses", double(c.tests - c.hits));
+    };
+    if (cull_objects) add(p + "objects.", objects);
     uint64_t total = 0;
-    if (s.cull_objects) {
-        stats.add(p + "objects.tests", double(trav.objects_.tests));
-        stats.add(p + "objects.hits", double(trav.objects_.hits));
-        stats.add(p + "objects.misses", double(trav.objects_.tests - trav.objects_.hits));
+    for (size_t k = levels.size(); k-- > 1;) {
+        add(p + "level" + std::to_string(k) + ".", levels[k]);
+        total += levels[k].tests;
     }
-    for (int k = s.hierarchy_depth; k >= 1; --k) {
-        const Counter& c = trav.levels_[size_t(k)];
-        const std::string lk = p + "level" + std::to_string(k) + ".";
-        stats.add(lk + "tests", double(c.tests));
-        stats.add(lk + "hits", double(c.hits));
-        stats.add(lk + "misses", double(c.tests - c.hits));
-        total += c.tests;
-    }
-    stats.add(p + "final.tests", double(trav.final_.tests));
-    stats.add(p + "final.hits", double(trav.final_.hits));
-    stats.add(p + "final.misses", double(trav.final_.tests - trav.final_.hits));
-    total += trav.final_.tests;
-    stats.add(p + "total", double(total));
+    add(p + "final.", final);
+    stats.add(p + "total", double(total + final.tests));
 }
 
 } // namespace sheaf

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace sheaf {
@@ -49,6 +50,18 @@ struct TraceResult {
     Vec3 pass(size_t i) const;
     std::vector<uint32_t> tests;   // exact ray-primitive tests each ray took part in
 };
+
+/// Tests and hits of one kind of test (objects, a level, the final tests).
+struct TestCount {
+    uint64_t tests = 0, hits = 0;
+};
+
+/// The statistics rows of one traced batch from its counts: `prefix` ("tests.shadow.")
+/// objects.* (when culling objects; not in the total, as in the paper), level<k>.* for k from
+/// the top (levels[k]) down to 1, final.*, and total.
+void add_test_counts(Stats& stats, const std::string& prefix, bool cull_objects,
+                     const TestCount& objects, const std::vector<TestCount>& levels,
+                     const TestCount& final);
 
 /// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
 /// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`.

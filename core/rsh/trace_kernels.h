@@ -55,10 +55,6 @@ SHEAF_HD_INLINE uint8_t skip_flags(RayType type) {
                                            : uint8_t(0);
 }
 
-struct TestCount {
-    uint64_t tests = 0, hits = 0;
-};
-
 /// brute: ray i against every primitive; any-hit queries stop at the first opaque hit.
 /// Writes closest[i] for closest-hit queries.
 SHEAF_HD_INLINE TestCount brute_trace_ray(const SceneView& scene, const Ray& r, uint32_t i,

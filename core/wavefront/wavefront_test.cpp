@@ -8,7 +8,7 @@
 #include "core/scenes/builtin.h"
 #include "core/sort/ray_order.h"
 #include "core/wavefront/cpu_exec.h"
-#include "core/wavefront/test_scenes.h"
+#include "core/scenes/test_scenes.h"
 #include "core/wavefront/wf_order.h"
 
 #include <gtest/gtest.h>

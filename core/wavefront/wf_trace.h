@@ -88,11 +88,7 @@ template <class Exec> class DeviceTracer {
         if (n == 0 || prims == 0) return;
 
         if (s_.accel == Accel::Brute) {
-            const TestCount c = brute(batch, out);
-            st_.add(p + "final.tests", double(c.tests));
-            st_.add(p + "final.hits", double(c.hits));
-            st_.add(p + "final.misses", double(c.tests - c.hits));
-            st_.add(p + "total", double(c.tests));
+            add_test_counts(st_, p, false, {}, {}, brute(batch, out)); // final tests only
             return;
         }
 
@@ -139,25 +135,7 @@ template <class Exec> class DeviceTracer {
         st_.add("time_ms.traversal", total_ms - final_ms_);
         st_.add("time_ms.final_tests", final_ms_);
 
-        uint64_t total = 0;
-        if (s_.cull_objects) {
-            st_.add(p + "objects.tests", double(counts_.objects.tests));
-            st_.add(p + "objects.hits", double(counts_.objects.hits));
-            st_.add(p + "objects.misses", double(counts_.objects.tests - counts_.objects.hits));
-        }
-        for (int k = s_.hierarchy_depth; k >= 1; --k) {
-            const TestCount& c = counts_.levels[size_t(k)];
-            const std::string lk = p + "level" + std::to_string(k) + ".";
-            st_.add(lk + "tests", double(c.tests));
-            st_.add(lk + "hits", double(c.hits));
-            st_.add(lk + "misses", double(c.tests - c.hits));
-            total += c.tests;
-        }
-        st_.add(p + "final.tests", double(counts_.final.tests));
-        st_.add(p + "final.hits", double(counts_.final.hits));
-        st_.add(p + "final.misses", double(counts_.final.tests - counts_.final.hits));
-        total += counts_.final.tests;
-        st_.add(p + "total", double(total));
+        add_test_counts(st_, p, s_.cull_objects, counts_.objects, counts_.levels, counts_.final);
         levels_.clear();
         sorted_ = DeviceBuffer<Ray, Exec>();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();

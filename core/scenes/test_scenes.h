@@ -1,5 +1,5 @@
-// Scenes and checks shared by the tests that compare the wavefront pipeline (CPU policy here,
-// CUDA in gpu/) with the CPU renderer: each scene exercises a part of the pipeline (glass,
+// Scenes and checks shared by the tests (the renderer's, the wavefront pipeline's against the
+// CPU renderer, the CUDA backend's in gpu/): each scene exercises a part of the pipeline (glass,
 // mirrors and AO; every light kind; analytic shapes and CSG with transparent shadows;
 // procedural textures, flags, fog and sky), and frames are compared byte for byte. Test code.
 #pragma once

@@ -28,6 +28,16 @@ SHEAF_CUDA_MODULE=/nonexistent/libsheaf_cuda.so.0 "$render" builtin:cornell -W 1
   -o "$out/quiet.png" >"$out/quiet.out" 2>"$out/quiet.err"
 check "-q prints no backend line" "! grep -q '^backend:' '$out/quiet.err'"
 
+# --compare and --sweep: one line with the reason when every run says the same, else each run's.
+SHEAF_CUDA_MODULE=/nonexistent/libsheaf_cuda.so.0 "$render" --compare crsh,rah builtin:cornell \
+  -W 16 -H 12 >"$out/compare.out" 2>"$out/compare.err"
+check "compare says cpu and why in one line" \
+  "[ \$(grep -c '^backend: ' '$out/compare.err') = 1 ] && grep -q '^backend: cpu (.*no CUDA module' '$out/compare.err'"
+SHEAF_CUDA_MODULE=/nonexistent/libsheaf_cuda.so.0 "$render" --sweep backend=cpu,auto builtin:cornell \
+  -W 16 -H 12 >"$out/sweep.out" 2>"$out/sweep.err"
+check "sweep names each run's backend and why" \
+  "grep -q '^backend: backend=cpu: cpu (backend=cpu); backend=auto: cpu (.*no CUDA module' '$out/sweep.err'"
+
 # This machine as it is: the module of this build (if nvcc was found) and whatever device.
 "$render" builtin:cornell -W 16 -H 12 -o "$out/here.png" >"$out/here.out" 2>"$out/here.err"
 rc=$?
@@ -41,5 +51,5 @@ if grep -q '^backend: cuda' "$out/here.err"; then
 else
   check "cuda fails here like auto fell back" "[ $rc = 3 ] && grep -q 'backend=cuda' '$out/here_cuda.err'"
 fi
-for f in auto cuda here here_cuda; do echo "--- $f.err"; cat "$out/$f.err"; done
+for f in auto cuda compare sweep here here_cuda; do echo "--- $f.err"; cat "$out/$f.err"; done
 exit $fail

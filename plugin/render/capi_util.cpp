@@ -30,6 +30,17 @@ std::optional<std::string> frame_text(SheafFrame frame, const char* what) {
     return text;
 }
 
+std::string frame_backend(SheafFrame frame) {
+    std::optional<std::string> line = frame_text(frame, "backend");
+    if (!line || line->empty()) {
+        double cuda = 0;
+        sheafFrameGetStatByName(frame, "backend.cuda", &cuda);
+        line = cuda != 0 ? "backend: cuda" : "backend: cpu";
+    }
+    while (!line->empty() && line->back() == '\n') line->pop_back();
+    return *line;
+}
+
 std::optional<std::vector<float>> frame_pass(SheafFrame frame, const char* pass, int channels) {
     int w = 0, h = 0;
     if (sheafFrameGetSize(frame, &w, &h) != SHEAF_OK) return std::nullopt;

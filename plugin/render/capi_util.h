@@ -40,6 +40,10 @@ using Frame = std::unique_ptr<std::remove_pointer_t<SheafFrame>, FrameDeleter>;
 /// A text of the frame ("stats.json", "stats.table", "settings") through the size protocol.
 std::optional<std::string> frame_text(SheafFrame frame, const char* what);
 
+/// Where the frame was computed, in one line: the library's own line with its reason
+/// ("backend: cpu (no CUDA device: ...)") where the C ABI gives it, else from backend.cuda.
+std::string frame_backend(SheafFrame frame);
+
 /// A pass of the frame ("combined", "tests", ...) with `channels` floats per pixel.
 std::optional<std::vector<float>> frame_pass(SheafFrame frame, const char* pass, int channels);
 

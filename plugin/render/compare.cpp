@@ -54,14 +54,6 @@ int write_compare_report(const Options& o, const ResultsMeta& meta,
                               o.quiet);
 }
 
-// Where each run was computed (statistic backend.cuda), in one line on stderr.
-void print_backends(const std::vector<RunResult>& results) {
-    std::string line = "backend:";
-    for (const RunResult& r : results) {
-        line += " " + r.name + "=" + (r.stat("backend.cuda") != 0 ? "cuda" : "cpu");
-    }
-    std::cerr << line << "\n";
-}
 
 } // namespace
 
@@ -96,7 +88,7 @@ int run_compare(const Options& o) {
         if (rc) return rc;
     }
 
-    if (!o.quiet) print_backends(results);
+    if (!o.quiet) std::cerr << backend_summary(results) << "\n";
     std::vector<std::string> differences(results.size());
     bool identical = true;
     for (size_t i = 1; i < results.size(); ++i) {

@@ -34,6 +34,20 @@ std::vector<std::pair<std::string, std::string>> RunResult::settings_list() cons
     return out;
 }
 
+std::string backend_summary(const std::vector<RunResult>& results) {
+    bool same = true;
+    for (const RunResult& r : results) same = same && r.backend == results.front().backend;
+    if (results.empty() || same) return results.empty() ? "backend: none" : results.front().backend;
+    const std::string prefix = "backend: ";
+    std::string line = prefix;
+    for (const RunResult& r : results) {
+        const bool plain = r.backend.compare(0, prefix.size(), prefix) == 0;
+        line += (line.size() > prefix.size() ? "; " : "") + r.name + ": " +
+                (plain ? r.backend.substr(prefix.size()) : r.backend);
+    }
+    return line;
+}
+
 int render_into(SheafRenderer renderer, SheafScene scene, bool keep_images, RunResult& out,
                 const std::string& image_path) {
     SheafFrame raw = nullptr;
@@ -45,6 +59,7 @@ int render_into(SheafRenderer renderer, SheafScene scene, bool keep_images, RunR
     auto settings = frame_text(frame.get(), "settings");
     if (!settings) return error(kRender, out.name + ": settings: " + last_error());
     out.settings = *settings;
+    out.backend = frame_backend(frame.get());
     if (!image_path.empty() && sheafFrameSaveImage(frame.get(), image_path.c_str()) != SHEAF_OK)
         return error(kRender, last_error());
     if (keep_images) {

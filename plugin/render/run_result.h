@@ -14,6 +14,7 @@ struct RunResult {
     std::string name;                                      ///< preset, or the grid point
     std::vector<std::pair<std::string, std::string>> grid; ///< sweep axes: key, value
     std::string settings; ///< the frame's effective settings, "key=value" lines
+    std::string backend;  ///< where it was computed and why: "backend: cpu (no CUDA device: ...)"
     std::vector<std::pair<std::string, double>> stats;
     int width = 0, height = 0;
     std::vector<float> rgba;  ///< "combined", 4 floats per pixel (compare only)
@@ -27,6 +28,10 @@ struct RunResult {
     /// The settings as (key, value) pairs.
     std::vector<std::pair<std::string, std::string>> settings_list() const;
 };
+
+/// Where a set of runs was computed, in one line: the common line ("backend: cpu (reason)") when
+/// every run says the same, else each run's name with its own ("backend: a: cuda (...); b: cpu (...)").
+std::string backend_summary(const std::vector<RunResult>& results);
 
 /// Renders `scene` with `renderer` into `out` (its name and grid are left as they are); with
 /// `keep_images` the combined and tests passes are kept; with an `image_path` the frame is saved

@@ -12,19 +12,6 @@ namespace render {
 
 namespace {
 
-// Where the frame was computed, in one line on stderr: the library's own line with its reason
-// ("backend: cpu (no CUDA device: ...)") where the C ABI gives it, else from backend.cuda.
-void print_backend(SheafFrame frame) {
-    std::optional<std::string> line = frame_text(frame, "backend");
-    if (!line || line->empty()) {
-        double cuda = 0;
-        sheafFrameGetStatByName(frame, "backend.cuda", &cuda);
-        line = cuda != 0 ? "backend: cuda" : "backend: cpu";
-    }
-    while (!line->empty() && line->back() == '\n') line->pop_back();
-    std::cerr << *line << "\n";
-}
-
 int write_outputs(SheafFrame frame, const Options& o, double ms) {
     int w = 0, h = 0;
     sheafFrameGetSize(frame, &w, &h);
@@ -94,7 +81,7 @@ int run_single(const Options& o) {
     progress.finish_run(raw_renderer);
     if (rendered != SHEAF_OK) return error(render_error_code(rendered), last_error());
     Frame frame(raw_frame);
-    if (!o.quiet) print_backend(frame.get());
+    if (!o.quiet) std::cerr << frame_backend(frame.get()) << "\n";
     return write_outputs(frame.get(), o, ms);
 }
 

@@ -31,17 +31,6 @@ int check_axes(const std::vector<Axis>& axes) {
     return kOk;
 }
 
-// Where the runs were computed (statistic backend.cuda), in one line on stderr.
-void print_backends(const std::vector<RunResult>& results) {
-    size_t cuda = 0;
-    for (const RunResult& r : results) cuda += r.stat("backend.cuda") != 0 ? 1 : 0;
-    if (cuda == 0 || cuda == results.size())
-        std::cerr << "backend: " << (cuda ? "cuda" : "cpu") << "\n";
-    else
-        std::cerr << "backend: cuda for " << cuda << " runs, cpu for " << results.size() - cuda
-                  << "\n";
-}
-
 } // namespace
 
 int run_sweep(const Options& o) {
@@ -86,7 +75,7 @@ int run_sweep(const Options& o) {
         if (rc) return rc;
     }
 
-    if (!o.quiet) print_backends(results);
+    if (!o.quiet) std::cerr << backend_summary(results) << "\n";
     const Best best = find_best(results);
     std::cout << sweep_table(results, best) << best_lines(results, best);
     if (o.report.empty()) return kOk;

@@ -9,6 +9,7 @@
 #include "core/sort/radix_sort.h"
 
 #include <tbb/parallel_reduce.h>
+#include <tbb/parallel_scan.h>
 
 #include <chrono>
 #include <cstdint>
@@ -40,13 +41,17 @@ class CpuExec {
 
     /// data[i] = sum of data[0..i) in place; returns the total.
     uint32_t exclusive_scan(uint32_t* data, size_t n) {
-        uint32_t sum = 0;
-        for (size_t i = 0; i < n; ++i) {
-            const uint32_t t = data[i];
-            data[i] = sum;
-            sum += t;
-        }
-        return sum;
+        return tbb::parallel_scan(
+            tbb::blocked_range<size_t>(0, n, 1 << 16), uint32_t(0),
+            [data](const tbb::blocked_range<size_t>& r, uint32_t sum, bool final) {
+                for (size_t i = r.begin(); i != r.end(); ++i) {
+                    const uint32_t t = data[i];
+                    if (final) data[i] = sum;
+                    sum += t;
+                }
+                return sum;
+            },
+            [](uint32_t a, uint32_t b) { return a + b; });
     }
 
     /// op over map(i) for i in [0, n), from init. op must be associative and commutative and

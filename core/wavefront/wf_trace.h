@@ -48,6 +48,29 @@ struct NodePrim {
     uint32_t node, prim;
 };
 
+struct NodeObject {
+    uint32_t node, object;
+};
+
+/// The top level's candidate pairs of a group of top nodes from g0, in order of node, then
+/// primitive: every primitive of every node without culling; with culling, the primitives of
+/// each hit (node, object) pair j, whose first candidate is start[j], candidate c belonging to
+/// pair owner[c].
+struct TopCandidates {
+    bool cull;
+    uint32_t g0, prims;
+    const NodeObject* hit;
+    const uint32_t* start;
+    const uint32_t* owner;
+    const uint32_t* object_begin;
+
+    SHEAF_HD NodePrim operator()(size_t c) const {
+        if (!cull) return {g0 + uint32_t(c / prims), uint32_t(c % prims)};
+        const uint32_t j = owner[c];
+        return {hit[j].node, object_begin[hit[j].object] + (uint32_t(c) - start[j])};
+    }
+};
+
 struct BoxUnion {
     SHEAF_HD Aabb operator()(const Aabb& a, const Aabb& b) const {
         return {vmin(a.lo, b.lo), vmax(a.hi, b.hi)};
@@ -253,6 +276,9 @@ template <class Exec> class DeviceTracer {
 
     // Top nodes against object spheres (cull.objects), then against the primitive spheres of
     // the objects they reach, in groups of top nodes that yield at most traversal.batch pairs.
+    // With culling, only the primitives of hit objects are expanded (an object's primitives
+    // are the range object_begin[o] .. object_begin[o + 1]), so the work is the tests the
+    // statistics count, not every (node, primitive) pair of the group.
     void traverse() {
         const int top = s_.hierarchy_depth;
         const size_t top_nodes = node_count(top);
@@ -263,16 +289,25 @@ template <class Exec> class DeviceTracer {
             std::max<size_t>(1, size_t(s_.batch_pairs) / std::max<size_t>(1, prims));
         const size_t most = std::min(group, top_nodes);
         DeviceBuffer<uint8_t, Exec> objhit_buf(ex_, cull ? most * objects : 0);
+        DeviceBuffer<uint32_t, Exec> objoff_buf(ex_, cull ? most * objects : 0);
         DeviceBuffer<uint8_t, Exec> code_buf(ex_, most * prims);
         DeviceBuffer<uint32_t, Exec> offset_buf(ex_, most * prims);
+        DeviceBuffer<uint32_t, Exec> owner_buf(ex_, cull ? most * prims : 0);
         const RayNode* nodes = levels_[size_t(top) - 1].data();
         const SceneView scene = scene_;
         const uint8_t skip = skip_;
         uint8_t* objhit = objhit_buf.data();
+        uint32_t* objoff = objoff_buf.data();
         uint8_t* code = code_buf.data();
         uint32_t* offset = offset_buf.data();
         for (size_t g0 = 0; g0 < top_nodes; g0 += group) {
             const size_t gn = std::min(top_nodes, g0 + group) - g0;
+            // Candidate c of the group is the (node, primitive) pair candidate(c).
+            size_t candidates = gn * size_t(prims);
+            DeviceBuffer<NodeObject, Exec> hit_buf;
+            DeviceBuffer<uint32_t, Exec> start_buf;
+            TopCandidates candidate{cull, uint32_t(g0), prims, nullptr, nullptr, 0,
+                                    scene.object_begin};
             if (cull) {
                 ex_.launch("rsh.objects", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
                     objhit[x] = node_hits_sphere(nodes[g0 + x / objects],
@@ -282,29 +317,55 @@ template <class Exec> class DeviceTracer {
                 });
                 counts_.objects.tests += gn * objects;
                 counts_.objects.hits += sum(ex_, objhit, gn * objects);
+                // The hit pairs with primitives, compacted, and their first candidates.
+                const uint32_t hits = count_and_scan(
+                    ex_, "rsh.object_flags", gn * objects, objoff,
+                    [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t {
+                        const uint32_t o = uint32_t(x % objects);
+                        return objhit[x] && scene.object_begin[o + 1] > scene.object_begin[o];
+                    });
+                hit_buf = DeviceBuffer<NodeObject, Exec>(ex_, hits);
+                start_buf = DeviceBuffer<uint32_t, Exec>(ex_, hits);
+                NodeObject* h = hit_buf.data();
+                uint32_t* st = start_buf.data();
+                ex_.launch("rsh.object_fill", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
+                    const uint32_t o = uint32_t(x % objects);
+                    if (!objhit[x] || scene.object_begin[o + 1] == scene.object_begin[o]) return;
+                    h[objoff[x]] = {uint32_t(g0 + x / objects), o};
+                    st[objoff[x]] = scene.object_begin[o + 1] - scene.object_begin[o];
+                });
+                candidates = ex_.exclusive_scan(st, hits);
+                // owner[c] = the pairs j >= 1 with start[j] <= c: a 1 at start[j] - 1 (distinct,
+                // every span being at least one), scanned.
+                uint32_t* own = owner_buf.data();
+                fill(ex_, own, candidates, 0u);
+                ex_.launch("rsh.owner", hits, [=] SHEAF_HD_LAMBDA(size_t j) {
+                    if (j > 0) own[st[j] - 1] = 1;
+                });
+                ex_.exclusive_scan(own, candidates);
+                candidate.hit = h;
+                candidate.start = st;
+                candidate.owner = own;
             }
             // 0: not a candidate, 1: tested and missed, 2: tested and hit.
-            ex_.launch("rsh.top", gn * size_t(prims), [=] SHEAF_HD_LAMBDA(size_t x) {
-                const size_t i = x / prims;
-                const uint32_t p = uint32_t(x % prims);
-                const bool candidate = (!cull || objhit[i * objects + scene.prim_object[p]]) &&
-                                       !(skip && scene.prim_flag(p, skip));
-                code[x] = !candidate                                           ? 0
-                          : node_hits_sphere(nodes[g0 + i], scene.prim_sphere[p]) ? 2
-                                                                                  : 1;
+            ex_.launch("rsh.top", candidates, [=] SHEAF_HD_LAMBDA(size_t c) {
+                const NodePrim np = candidate(c);
+                code[c] = skip && scene.prim_flag(np.prim, skip)                ? 0
+                          : node_hits_sphere(nodes[np.node], scene.prim_sphere[np.prim]) ? 2
+                                                                                     : 1;
             });
             counts_.levels[size_t(top)].tests += ex_.transform_reduce(
-                "rsh.top_tests", gn * size_t(prims), uint64_t(0),
-                [=] SHEAF_HD_LAMBDA(size_t x) -> uint64_t { return code[x] != 0 ? 1 : 0; },
+                "rsh.top_tests", candidates, uint64_t(0),
+                [=] SHEAF_HD_LAMBDA(size_t c) -> uint64_t { return code[c] != 0 ? 1 : 0; },
                 SumU64{});
             const uint32_t found = count_and_scan(
-                ex_, "rsh.top_flags", gn * size_t(prims), offset,
-                [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t { return code[x] == 2 ? 1u : 0u; });
+                ex_, "rsh.top_flags", candidates, offset,
+                [=] SHEAF_HD_LAMBDA(size_t c) -> uint32_t { return code[c] == 2 ? 1u : 0u; });
             counts_.levels[size_t(top)].hits += found;
             DeviceBuffer<NodePrim, Exec> pairs_buf(ex_, found);
             NodePrim* pairs = pairs_buf.data();
-            ex_.launch("rsh.top_fill", gn * size_t(prims), [=] SHEAF_HD_LAMBDA(size_t x) {
-                if (code[x] == 2) pairs[offset[x]] = {uint32_t(g0 + x / prims), uint32_t(x % prims)};
+            ex_.launch("rsh.top_fill", candidates, [=] SHEAF_HD_LAMBDA(size_t c) {
+                if (code[c] == 2) pairs[offset[c]] = candidate(c);
             });
             descend(top, pairs, found);
         }

@@ -4,11 +4,14 @@
 //
 // Usage: sheaf_frame_bench [--sizes 512,1024] [--frames K] [--backends cpu,cuda]
 //                          [--set KEY=VALUE ...] [scene ...]
+// A backend is a value of the setting `backend`, or `wavefront-cpu`: the CUDA module's pipeline
+// (core/wavefront) compiled for the CPU policy, to weigh it against the CPU renderer.
 // Times are the median of K frames (default 3). Rays per second counts every ray the frame
 // traced: primary (one per sample) and secondary (shadow, reflection, refraction, AO).
 #include "bench_args.h"
 #include "core/render/renderer.h"
 #include "core/scenes/builtin.h"
+#include "core/wavefront/wavefront.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -65,7 +68,8 @@ int main(int argc, char** argv) {
                 Settings s;
                 s.set("width", std::to_string(size));
                 s.set("height", std::to_string(size));
-                s.set("backend", backend);
+                const bool wavefront = backend == "wavefront-cpu";
+                s.set("backend", wavefront ? "cpu" : backend);
                 for (const std::string& kv : sets) {
                     const size_t eq = kv.find('=');
                     if (eq != std::string::npos) s.set(kv.substr(0, eq), kv.substr(eq + 1));
@@ -73,7 +77,9 @@ int main(int argc, char** argv) {
                 std::vector<Frame> runs;
                 try {
                     const RenderSettings rs = RenderSettings::resolve(s, scene.settings);
-                    for (int f = 0; f < frames; ++f) runs.push_back(render_frame(scene, rs));
+                    for (int f = 0; f < frames; ++f)
+                        runs.push_back(wavefront ? render_frame_wavefront_cpu(scene, rs)
+                                                 : render_frame(scene, rs));
                 } catch (const std::exception& e) {
                     std::printf("| %s | %d | %s | unavailable: %s |\n", name.c_str(), size,
                                 backend.c_str(), e.what());

@@ -1,6 +1,7 @@
 // Direction cones: apex-free sets of unit directions within `angle` of `axis`.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/math/vec3.h"
 
 namespace sheaf {
@@ -32,9 +33,9 @@ SHEAF_HD_INLINE Cone cone_union_paper(const Cone& a, const Cone& b) {
     // its own angle. In floats, for nearly opposite axes the short sum's rounding (and the axes'
     // own length error) tilts the axis by up to ~1e-7 / l: measure the reach from the axis used.
     const float reach =
-        fmaxf(angle_between(c.axis, a.axis) + a.angle, angle_between(c.axis, b.axis) + b.angle);
+        hdm::fmaxf(angle_between(c.axis, a.axis) + a.angle, angle_between(c.axis, b.axis) + b.angle);
     c.angle =
-        fminf(kPi, fmaxf(angle_between(a.axis, b.axis) * 0.5f + fmaxf(a.angle, b.angle), reach) +
+        hdm::fminf(kPi, hdm::fmaxf(angle_between(a.axis, b.axis) * 0.5f + hdm::fmaxf(a.angle, b.angle), reach) +
                        kAnglePad);
     return c;
 }
@@ -47,8 +48,8 @@ SHEAF_HD_INLINE Cone cone_union(const Cone* c, int n) {
     float l = length(s);
     Vec3 axis = l > 1e-6f ? s / l : c[0].axis;
     float a = 0;
-    for (int i = 0; i < n; ++i) a = fmaxf(a, angle_between(axis, c[i].axis) + c[i].angle);
-    return {axis, fminf(kPi, a + kAnglePad)};
+    for (int i = 0; i < n; ++i) a = hdm::fmaxf(a, angle_between(axis, c[i].axis) + c[i].angle);
+    return {axis, hdm::fminf(kPi, a + kAnglePad)};
 }
 
 } // namespace sheaf

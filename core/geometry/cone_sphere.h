@@ -51,14 +51,14 @@ SHEAF_HD_INLINE bool node_hits_sphere(const RayNode& node, const Sphere& prim) {
     const float h = dot(v, node.axis); // |C - H|, signed along the axis
     if (node.angle < 1.5f) {
         if (h < -R) return false; // wholly behind the apex: a cone under 90 degrees looks forward
-        const float q = sqrtf(fmaxf(dist2 - h * h, 0.0f)); // |P - H|
+        const float q = sqrtf(hdm::fmaxf(dist2 - h * h, 0.0f)); // |P - H|
         return h * node.tan_angle + R * node.inv_cos_angle >= q * (1.0f - 1e-6f);
     }
     // Wide cones: the directions that reach the sphere form a cap of half-angle asin(R/dist)
     // around v; they meet the node's cone when the angular distance is within the sum.
     const float dist = sqrtf(dist2);
     const float theta = hdm::atan2f(length(cross(v, node.axis)), h);
-    return theta <= node.angle + hdm::asinf(fminf(1.0f, R / dist)) + 1e-6f;
+    return theta <= node.angle + hdm::asinf(hdm::fminf(1.0f, R / dist)) + 1e-6f;
 }
 
 } // namespace sheaf

@@ -2,6 +2,7 @@
 // (Welzl's algorithm with Gaertner's move-to-front order).
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/geometry/sphere.h"
 
 #include <span>
@@ -29,7 +30,7 @@ SHEAF_HD_INLINE Sphere triangle_sphere(Vec3 a, Vec3 b, Vec3 c) {
         else
             center = a + (cross(n, ab) * dac + cross(ac, n) * dab) * (0.5f / nn);
     }
-    float r = fmaxf(length(a - center), fmaxf(length(b - center), length(c - center)));
+    float r = hdm::fmaxf(length(a - center), hdm::fmaxf(length(b - center), length(c - center)));
     return {center, pad_radius(r, center)};
 }
 

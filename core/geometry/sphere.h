@@ -1,6 +1,7 @@
 // Bounding spheres: the unions of paper 000 (eqs. 7, 8) and their n-ary form.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/math/vec3.h"
 
 namespace sheaf {
@@ -29,7 +30,7 @@ SHEAF_HD_INLINE bool sphere_contains(const Sphere& s, Vec3 p) {
 SHEAF_HD_INLINE Sphere sphere_union_paper(const Sphere& a, const Sphere& b) {
     Sphere s;
     s.center = (a.center + b.center) * 0.5f;
-    s.radius = pad_radius(length(b.center - a.center) * 0.5f + fmaxf(a.radius, b.radius), s.center);
+    s.radius = pad_radius(length(b.center - a.center) * 0.5f + hdm::fmaxf(a.radius, b.radius), s.center);
     return s;
 }
 
@@ -40,7 +41,7 @@ SHEAF_HD_INLINE Sphere sphere_union(const Sphere* s, int n) {
     for (int i = 0; i < n; ++i) c += s[i].center;
     c = c * (1.0f / float(n));
     float r = 0;
-    for (int i = 0; i < n; ++i) r = fmaxf(r, length(s[i].center - c) + s[i].radius);
+    for (int i = 0; i < n; ++i) r = hdm::fmaxf(r, length(s[i].center - c) + s[i].radius);
     return {c, pad_radius(r, c)};
 }
 

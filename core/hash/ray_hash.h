@@ -23,7 +23,7 @@ struct Aabb {
 SHEAF_HD_INLINE Vec3 translate_to_unit(const Aabb& box, Vec3 p) {
     const Vec3 ext = box.hi - box.lo;
     auto f = [](float v, float lo, float e) {
-        return e > 0 ? fminf(fmaxf((v - lo) / e, 0.0f), 1.0f) : 0.0f;
+        return e > 0 ? hdm::fminf(hdm::fmaxf((v - lo) / e, 0.0f), 1.0f) : 0.0f;
     };
     return {f(p.x, box.lo.x, ext.x), f(p.y, box.lo.y, ext.y), f(p.z, box.lo.z, ext.z)};
 }
@@ -67,7 +67,7 @@ SHEAF_HD_INLINE uint32_t morton2(uint32_t a, uint32_t b) {
 
 /// Spherical coordinates of a unit direction mapped to [0, 1]: (phi, theta) with theta from +z.
 SHEAF_HD_INLINE void spherical_unit(Vec3 d, float& u_phi, float& u_theta) {
-    const float theta = hdm::acosf(fminf(fmaxf(d.z, -1.0f), 1.0f));
+    const float theta = hdm::acosf(hdm::fminf(hdm::fmaxf(d.z, -1.0f), 1.0f));
     const float phi = hdm::atan2f(d.y, d.x);
     u_phi = (phi + kPi) / (2.0f * kPi);
     u_theta = theta / kPi;
@@ -130,7 +130,7 @@ SHEAF_HD_INLINE void hash192_key(const Aabb& box, Vec3 origin, Vec3 dir, uint32_
     const Vec3 o = translate_to_unit(box, origin);
     const Vec3 d = (dir + Vec3(1.0f)) * 0.5f;
     for (int i = 0; i < 6; ++i) out6[i] = 0;
-    auto q = [](float v, int bits) { return quantize(fminf(fmaxf(v, 0.0f), 1.0f), bits); };
+    auto q = [](float v, int bits) { return quantize(hdm::fminf(hdm::fmaxf(v, 0.0f), 1.0f), bits); };
     collect_bits(out6, 0, q(o.x, 24));
     collect_bits(out6, 1, q(o.y, 24));
     collect_bits(out6, 2, q(o.z, 24));

@@ -16,6 +16,20 @@
 
 namespace sheaf::hdm {
 
+/// Minimum and maximum of floats by comparison, the same bits on the host and the device:
+/// std::fminf/fmaxf may return either zero for +0 and -0 (glibc and the GPU's min and max
+/// instructions need not agree). A NaN argument gives the other one, as fminf/fmaxf do.
+SHEAF_HD_INLINE float fminf(float a, float b) { return (b < a || a != a) ? b : a; }
+SHEAF_HD_INLINE float fmaxf(float a, float b) { return (a < b || a != a) ? b : a; }
+
+/// floor(v) as an int, defined everywhere: a float to int conversion out of range is undefined
+/// in C++ (x86 gives INT_MIN, the GPU saturates, and NaN gives 0 there), so NaN and values
+/// beyond 2^30 give 0 on both sides, with room left for the lattice offsets callers add.
+SHEAF_HD_INLINE int floor_int(float v) {
+    const float f = ::floorf(v);
+    return f >= -1073741824.0f && f <= 1073741824.0f ? int(f) : 0;
+}
+
 namespace detail {
 
 constexpr double kPiO2Hi = 1.5707963267341256;    // pi/2, first 33 bits

@@ -70,13 +70,13 @@ SHEAF_HD_INLINE Vec3 normalize(Vec3 a) {
     return l > 0 ? a / l : Vec3(0, 0, 0);
 }
 SHEAF_HD_INLINE Vec3 vmin(Vec3 a, Vec3 b) {
-    return {fminf(a.x, b.x), fminf(a.y, b.y), fminf(a.z, b.z)};
+    return {hdm::fminf(a.x, b.x), hdm::fminf(a.y, b.y), hdm::fminf(a.z, b.z)};
 }
 SHEAF_HD_INLINE Vec3 vmax(Vec3 a, Vec3 b) {
-    return {fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z)};
+    return {hdm::fmaxf(a.x, b.x), hdm::fmaxf(a.y, b.y), hdm::fmaxf(a.z, b.z)};
 }
 SHEAF_HD_INLINE float max_component(Vec3 a) {
-    return fmaxf(a.x, fmaxf(a.y, a.z));
+    return hdm::fmaxf(a.x, hdm::fmaxf(a.y, a.z));
 }
 SHEAF_HD_INLINE bool is_finite(Vec3 a) {
     return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);

@@ -112,7 +112,7 @@ SHEAF_HD_INLINE void ao_ray_fill(const SceneView& scene, const SurfaceHit& h, ui
         const float u1 = radical_inverse(index, 2), u2 = radical_inverse(index, 3);
         const float r = sqrtf(u1), phi = 2.0f * kPi * u2;
         const Vec3 d = t * (r * hdm::cosf(phi)) + b * (r * hdm::sinf(phi)) +
-                       h.geo_normal * sqrtf(fmaxf(0.0f, 1.0f - u1));
+                       h.geo_normal * sqrtf(hdm::fmaxf(0.0f, 1.0f - u1));
         Ray ray;
         ray.origin = h.position + h.geo_normal * p.epsilon;
         ray.dir = normalize(d);
@@ -142,12 +142,12 @@ SHEAF_HD_INLINE BounceSplit bounce_split(const SceneView& scene, const SurfaceHi
         const float eta = h.front ? 1.0f / m.ior : m.ior;
         float kr = 0.0f;
         if (m.fresnel_split) {
-            const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
+            const float cos_i = hdm::fminf(1.0f, hdm::fmaxf(0.0f, -dot(h.normal, h.incoming)));
             kr = fresnel_dielectric(cos_i, eta);
         }
         if (kr < 1.0f && refract(h.incoming, h.normal, eta, s.refract_dir)) {
             float keep = 1.0f - kr;
-            if (m.conserve_energy) keep *= fmaxf(0.0f, 1.0f - max_component(mirror));
+            if (m.conserve_energy) keep *= hdm::fmaxf(0.0f, 1.0f - max_component(mirror));
             s.refract_weight = h.throughput * pass * keep;
         } else {
             kr = 1.0f; // total internal reflection: what would pass is reflected

@@ -3,6 +3,7 @@
 // cellular (Worley) distances. Deterministic: the same point gives the same value everywhere.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/math/vec3.h"
 
 #include <cstdint>
@@ -48,7 +49,7 @@ SHEAF_HD_INLINE float grad(uint32_t h, float x, float y, float z) {
 SHEAF_HD_INLINE float gradient_noise(Vec3 p, uint32_t salt = 0) {
     using namespace noise_detail;
     const float fx = floorf(p.x), fy = floorf(p.y), fz = floorf(p.z);
-    const int ix = int(fx), iy = int(fy), iz = int(fz);
+    const int ix = hdm::floor_int(p.x), iy = hdm::floor_int(p.y), iz = hdm::floor_int(p.z);
     const float x = p.x - fx, y = p.y - fy, z = p.z - fz;
     const float u = fade(x), v = fade(y), w = fade(z);
     auto g = [&](int dx, int dy, int dz) {
@@ -65,7 +66,7 @@ constexpr float kPatternNoiseScale = 0.625f;
 /// Noise in [0, 1] (POV-Ray's bozo, spotted and bumps look).
 SHEAF_HD_INLINE float noise01(Vec3 p) {
     const float n = 0.5f + 0.5f * gradient_noise(p * kPatternNoiseScale);
-    return fminf(1.0f, fmaxf(0.0f, n));
+    return hdm::fminf(1.0f, hdm::fmaxf(0.0f, n));
 }
 
 /// Three independent noises in about [-1, 1].
@@ -100,7 +101,7 @@ SHEAF_HD_INLINE Vec3 vector_turbulence(Vec3 p, int octaves, float omega, float l
 /// Distances to the nearest and second nearest of one random point per unit cell (Worley).
 /// `id` receives a hash of the nearest point's cell.
 SHEAF_HD_INLINE void cell_distances(Vec3 p, float& f1, float& f2, uint32_t& id) {
-    const int ix = int(floorf(p.x)), iy = int(floorf(p.y)), iz = int(floorf(p.z));
+    const int ix = hdm::floor_int(p.x), iy = hdm::floor_int(p.y), iz = hdm::floor_int(p.z);
     f1 = f2 = 1e30f;
     id = 0;
     for (int dz = -1; dz <= 1; ++dz)

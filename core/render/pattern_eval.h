@@ -17,11 +17,9 @@ SHEAF_HD_INLINE float frac(float v) {
     return v - floorf(v);
 }
 SHEAF_HD_INLINE float clamp01(float v) {
-    return fminf(1.0f, fmaxf(0.0f, v));
+    return hdm::fminf(1.0f, hdm::fmaxf(0.0f, v));
 }
-SHEAF_HD_INLINE int floor_int(float v) {
-    return int(floorf(v));
-}
+using hdm::floor_int;
 SHEAF_HD_INLINE int imod(int a, int n) {
     const int r = a % n;
     return r < 0 ? r + n : r;
@@ -77,7 +75,7 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Planar:
         return 1.0f - clamp01(fabsf(p.y));
     case PatternKind::Boxed:
-        return 1.0f - clamp01(fmaxf(fabsf(p.x), fmaxf(fabsf(p.y), fabsf(p.z))));
+        return 1.0f - clamp01(hdm::fmaxf(fabsf(p.x), hdm::fmaxf(fabsf(p.y), fabsf(p.z))));
     case PatternKind::Leopard: {
         const float s = (hdm::sinf(p.x) + hdm::sinf(p.y) + hdm::sinf(p.z)) / 3.0f;
         return s * s;
@@ -140,7 +138,7 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
     }
     case PatternKind::Quilted: {
         const Vec3 q(frac(p.x + 0.5f) - 0.5f, frac(p.y + 0.5f) - 0.5f, frac(p.z + 0.5f) - 0.5f);
-        const float m = 2.0f * fmaxf(fabsf(q.x), fmaxf(fabsf(q.y), fabsf(q.z)));
+        const float m = 2.0f * hdm::fmaxf(fabsf(q.x), hdm::fmaxf(fabsf(q.y), fabsf(q.z)));
         return clamp01(m * m * (3.0f - 2.0f * m));
     }
     default:

@@ -19,7 +19,7 @@ SHEAF_HD_INLINE float opacity(const SurfaceHit& h) {
 
 /// Fresnel reflectance of a dielectric for unpolarised light; eta = n_incident / n_transmitted.
 SHEAF_HD_INLINE float fresnel_dielectric(float cos_i, float eta) {
-    const float sin_t2 = eta * eta * fmaxf(0.0f, 1.0f - cos_i * cos_i);
+    const float sin_t2 = eta * eta * hdm::fmaxf(0.0f, 1.0f - cos_i * cos_i);
     if (sin_t2 >= 1.0f) return 1.0f; // total internal reflection
     const float cos_t = sqrtf(1.0f - sin_t2);
     const float rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
@@ -32,8 +32,8 @@ SHEAF_HD_INLINE float fresnel_dielectric(float cos_i, float eta) {
 SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
     float r = m.mirror;
     if (m.mirror_min >= 0.0f || m.mirror_fresnel) {
-        const float lo = fmaxf(m.mirror_min, 0.0f), hi = m.mirror;
-        const float cos_i = fminf(1.0f, fmaxf(0.0f, -dot(h.normal, h.incoming)));
+        const float lo = hdm::fmaxf(m.mirror_min, 0.0f), hi = m.mirror;
+        const float cos_i = hdm::fminf(1.0f, hdm::fmaxf(0.0f, -dot(h.normal, h.incoming)));
         const float f = m.mirror_fresnel ? fresnel_dielectric(cos_i, h.front ? 1.0f / m.ior : m.ior)
                                          : hdm::powf(1.0f - cos_i, m.mirror_falloff);
         r = lo + (hi - lo) * f;
@@ -49,18 +49,18 @@ SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
 SHEAF_HD_INLINE Vec3 direct_light(const Material& m, const SurfaceHit& h, Vec3 to_light,
                                   Vec3 light_color) {
     const Vec3 n = h.normal;
-    const float ndl = fmaxf(dot(n, to_light), 0.0f);
+    const float ndl = hdm::fmaxf(dot(n, to_light), 0.0f);
     float kd = m.diffuse * (m.brilliance == 1.0f ? ndl : hdm::powf(ndl, m.brilliance)) * opacity(h);
-    if (m.conserve_energy) kd *= fmaxf(0.0f, 1.0f - max_component(mirror_weight(m, h)));
+    if (m.conserve_energy) kd *= hdm::fmaxf(0.0f, 1.0f - max_component(mirror_weight(m, h)));
     Vec3 c = h.albedo * kd;
     float highlight = 0.0f;
     if (m.specular > 0) {
         const Vec3 r = reflect(-to_light, n);
-        highlight += m.specular * hdm::powf(fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
+        highlight += m.specular * hdm::powf(hdm::fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
     }
     if (m.blinn > 0) {
         const Vec3 half = normalize(to_light - h.incoming);
-        highlight += m.blinn * hdm::powf(fmaxf(dot(n, half), 0.0f), m.blinn_exponent);
+        highlight += m.blinn * hdm::powf(hdm::fmaxf(dot(n, half), 0.0f), m.blinn_exponent);
     }
     if (highlight > 0) {
         const Vec3 tint = Vec3(1.0f - m.metallic) + h.albedo * m.metallic;
@@ -86,11 +86,11 @@ SHEAF_HD_INLINE float spot_factor(const Light& l, Vec3 light_to_point) {
     if (angle >= l.spot_falloff) return 0.0f;
     float f = 1.0f;
     if (angle > l.spot_radius) {
-        const float u = (l.spot_falloff - angle) / fmaxf(l.spot_falloff - l.spot_radius, 1e-6f);
+        const float u = (l.spot_falloff - angle) / hdm::fmaxf(l.spot_falloff - l.spot_radius, 1e-6f);
         f = u * u * (3.0f - 2.0f * u);
     }
     if (l.spot_tightness > 0)
-        f *= hdm::powf(fmaxf(hdm::cosf(angle * kPi / 180.0f), 0.0f), l.spot_tightness);
+        f *= hdm::powf(hdm::fmaxf(hdm::cosf(angle * kPi / 180.0f), 0.0f), l.spot_tightness);
     return f;
 }
 
@@ -146,7 +146,7 @@ SHEAF_HD_INLINE void fog_over(const Fog& f, float d, float& keep, Vec3& add) {
         return;
     }
     const float a = d < 3.0e38f ? hdm::expf(-d / f.distance) : 0.0f;
-    keep = fmaxf(a, f.transmit);
+    keep = hdm::fmaxf(a, f.transmit);
     add = f.color * (1.0f - keep);
 }
 

@@ -57,7 +57,7 @@ SHEAF_HD_INLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const Ra
         // The stretch inside the solid fades as its interior does (the entering surface's; a
         // span of an `inverse` solid may start or end at no surface, marked 0xFFFFFFFF).
         const uint32_t leaf = span.a.leaf != 0xFFFFFFFFu ? span.a.leaf : span.b.leaf;
-        const float inside = fminf(span.b.t, ray.tmax) - fmaxf(span.a.t, ray.tmin);
+        const float inside = hdm::fminf(span.b.t, ray.tmax) - hdm::fmaxf(span.a.t, ray.tmin);
         if (inside > 0 && leaf != 0xFFFFFFFFu)
             pass = pass * interior_fade(scene.materials[scene.shape_material[leaf]], inside);
     }

@@ -3,6 +3,7 @@
 // and the wavefront pipeline rebuild every primary and bounce hit with it.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/geometry/ray.h"
 #include "core/render/surface.h"
 #include "core/render/surface_texture.h"
@@ -90,8 +91,8 @@ SHEAF_HD_INLINE SurfaceHit make_surface_hit(const SceneView& scene, const Ray& r
     const float den = d00 * d11 - d01 * d01;
     float u = den != 0 ? (d11 * d20 - d01 * d21) / den : 0.0f;
     float v = den != 0 ? (d00 * d21 - d01 * d20) / den : 0.0f;
-    u = fminf(fmaxf(u, 0.0f), 1.0f);
-    v = fminf(fmaxf(v, 0.0f), 1.0f - u);
+    u = hdm::fminf(hdm::fmaxf(u, 0.0f), 1.0f);
+    v = hdm::fminf(hdm::fmaxf(v, 0.0f), 1.0f - u);
 
     h.front = dot(gn, ray.dir) < 0;
     if (!h.front) gn = -gn;

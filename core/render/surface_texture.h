@@ -4,6 +4,7 @@
 // image textures never reach the device.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/render/pattern_eval.h"
 #include "core/render/texture.h"
 #include "core/scene/scene_view.h"
@@ -66,7 +67,7 @@ struct Evaluator {
                 const SurfaceColor top = entry(entries[i], p, depth);
                 const float pass = top.filter + top.transmit;
                 SurfaceColor out;
-                out.rgb = top.rgb * fmaxf(0.0f, 1.0f - pass) +
+                out.rgb = top.rgb * hdm::fmaxf(0.0f, 1.0f - pass) +
                           c.rgb * (top.rgb * top.filter + Vec3(top.transmit));
                 out.filter = c.filter * pass;
                 out.transmit = c.transmit * pass;

@@ -4,6 +4,7 @@
 // ray of a node lies inside its sphere and cone.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/base/memory.h"
 #include "core/geometry/cone_sphere.h"
 #include "core/geometry/ray.h"
@@ -60,7 +61,7 @@ SHEAF_HD_INLINE RayNode build_ray_node(const Ray* rays, const RayNode* children,
     // Every ray point of a child lies within its reach of the child's centre.
     float r = 0;
     for (int k = 0; k < n && r < INFINITY; ++k)
-        r = fmaxf(r, length(s[k].center - node.center) + reach[k]);
+        r = hdm::fmaxf(r, length(s[k].center - node.center) + reach[k]);
     node.reach = r * (1.0f + 1e-6f);
     return node;
 }

@@ -282,23 +282,31 @@ void Parser::skip_raw_to_end(int levels, const Token& from) {
     }
 }
 
-// After a false #if/#ifdef/#elseif: skips to the #else, a true #elseif or the #end.
-void Parser::skip_to_branch(const Token& from) {
+// Skips tokens, and nested blocks whole, to the next directive of the block `from` opened;
+// returns its name token, not yet consumed. `missing_end` is the error at the end of input.
+Token Parser::next_directive_in_block(const Token& from, const char* missing_end) {
     int depth = 0;
     for (;;) {
         const Token& t = raw();
-        if (t.kind == TokKind::End) error_at(from, "this block has no #end");
+        if (t.kind == TokKind::End) error_at(from, missing_end);
         advance();
         if (!is_sym_tok(t, "#")) continue;
         const Token d = raw();
-        if (opens_block(d.text)) {
-            ++depth;
-        } else if (d.text == "end") {
-            if (depth-- == 0) {
-                advance();
-                return;
-            }
-        } else if (depth == 0 && (d.text == "else" || d.text == "elseif")) {
+        if (opens_block(d.text)) ++depth;
+        else if (d.text == "end" && depth > 0) --depth;
+        else if (depth == 0) return d;
+    }
+}
+
+// After a false #if/#ifdef/#elseif: skips to the #else, a true #elseif or the #end.
+void Parser::skip_to_branch(const Token& from) {
+    for (;;) {
+        const Token d = next_directive_in_block(from, "this block has no #end");
+        if (d.text == "end") {
+            advance();
+            return;
+        }
+        if (d.text == "else" || d.text == "elseif") {
             advance();
             if (d.text == "elseif" && !truthy(parse_condition())) continue;
             Cond c;
@@ -312,22 +320,14 @@ void Parser::skip_to_branch(const Token& from) {
 // Positions the stream at the clause of the #switch on top that matches, or past its #end.
 void Parser::switch_scan(const Token& from) {
     const double value = frames_.back().conds.back().end;
-    int depth = 0;
     for (;;) {
-        const Token& t = raw();
-        if (t.kind == TokKind::End) error_at(from, "this #switch has no #end");
-        advance();
-        if (!is_sym_tok(t, "#")) continue;
-        const Token d = raw();
-        if (opens_block(d.text)) {
-            ++depth;
-        } else if (d.text == "end") {
-            if (depth-- == 0) {
-                advance();
-                frames_.back().conds.pop_back();
-                return;
-            }
-        } else if (depth == 0 && (d.text == "case" || d.text == "range")) {
+        const Token d = next_directive_in_block(from, "this #switch has no #end");
+        if (d.text == "end") {
+            advance();
+            frames_.back().conds.pop_back();
+            return;
+        }
+        if (d.text == "case" || d.text == "range") {
             advance();
             expect_sym("(");
             const double a = parse_float();
@@ -339,7 +339,7 @@ void Parser::switch_scan(const Token& from) {
             }
             expect_sym(")");
             if (match) return;
-        } else if (depth == 0 && d.text == "else") {
+        } else if (d.text == "else") {
             advance();
             return;
         }

@@ -113,6 +113,7 @@ class Parser {
     /// for any other, returns false and consumes nothing.
     bool directive(bool continuation);
     void skip_to_branch(const Token& from);
+    Token next_directive_in_block(const Token& from, const char* missing_end);
     void declare_directive(bool local);
     void define_macro(const Token& where);
     void call_macro(const Token& name, const Macro& m);

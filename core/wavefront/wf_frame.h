@@ -59,6 +59,8 @@ template <class Exec> class DeviceFrame {
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count());
         frame_totals(st_, host_, s_, ex_.peak_bytes());
+        st_.set("device.launches", double(ex_.launches()));
+        st_.set("device.host_waits", double(ex_.host_waits()));
     }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private

@@ -12,6 +12,7 @@
 #include "core/wavefront/wf_order.h"
 
 #include <cfloat>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -53,20 +54,22 @@ struct NodeObject {
 };
 
 /// The top level's candidate pairs of a group of top nodes from g0, in order of node, then
-/// primitive: every primitive of every node without culling; with culling, the primitives of
-/// each hit (node, object) pair j, whose first candidate is start[j], candidate c belonging to
-/// pair owner[c].
+/// primitive: every primitive of every node (no culling, or every object hit), or, when
+/// `sparse`, the primitives of each hit (node, object) pair j, whose first candidate is
+/// start[j]. Candidates are taken a chunk at a time from c0; candidate c belongs to pair
+/// j0 + owner[c - c0].
 struct TopCandidates {
-    bool cull;
+    bool sparse;
     uint32_t g0, prims;
     const NodeObject* hit;
     const uint32_t* start;
     const uint32_t* owner;
     const uint32_t* object_begin;
+    uint32_t c0, j0;
 
     SHEAF_HD NodePrim operator()(size_t c) const {
-        if (!cull) return {g0 + uint32_t(c / prims), uint32_t(c % prims)};
-        const uint32_t j = owner[c];
+        if (!sparse) return {g0 + uint32_t(c / prims), uint32_t(c % prims)};
+        const uint32_t j = j0 + owner[c - c0];
         return {hit[j].node, object_begin[hit[j].object] + (uint32_t(c) - start[j])};
     }
 };
@@ -83,6 +86,8 @@ template <class Exec> class DeviceTracer {
                  const RenderSettings& s, Stats& stats)
         : ex_(ex), scene_(scene), s_(s), st_(stats), light_count_(uint32_t(host.lights.size())) {
         for (uint8_t f : host.prim_flags) transparent_ = transparent_ || (f & kPrimMayPass);
+        for (size_t o = 0; o + 1 < host.object_begin.size(); ++o)
+            objects_with_prims_ += host.object_begin[o + 1] > host.object_begin[o] ? 1 : 0;
     }
 
     void trace(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
@@ -275,39 +280,47 @@ template <class Exec> class DeviceTracer {
     }
 
     // Top nodes against object spheres (cull.objects), then against the primitive spheres of
-    // the objects they reach, in groups of top nodes that yield at most traversal.batch pairs.
-    // With culling, only the primitives of hit objects are expanded (an object's primitives
-    // are the range object_begin[o] .. object_begin[o + 1]), so the work is the tests the
-    // statistics count, not every (node, primitive) pair of the group.
+    // the objects they reach. Top nodes go in groups of at most traversal.batch (node, object)
+    // pairs with culling, (node, primitive) pairs without, and a group's candidates at most
+    // traversal.batch at a time. With culling only the primitives of hit objects are expanded
+    // (an object's primitives are object_begin[o] .. object_begin[o + 1]), so the work is the
+    // tests the statistics count, in few launches; where every node hit every object, the
+    // candidates are all the primitives, with no expansion.
     void traverse() {
         const int top = s_.hierarchy_depth;
         const size_t top_nodes = node_count(top);
         const uint32_t prims = scene_.prim_count();
         const uint32_t objects = scene_.object_count;
         const bool cull = s_.cull_objects;
-        const size_t group =
-            std::max<size_t>(1, size_t(s_.batch_pairs) / std::max<size_t>(1, prims));
+        const size_t batch = std::max<size_t>(1, size_t(s_.batch_pairs));
+        // A group's candidate indices fit 32 bits.
+        const size_t group = std::max<size_t>(
+            1, std::min(batch / std::max<size_t>(1, cull ? objects : prims),
+                        size_t(UINT32_MAX) / std::max<size_t>(1, prims)));
         const size_t most = std::min(group, top_nodes);
+        const size_t most_chunk = std::min(batch, most * size_t(prims));
         DeviceBuffer<uint8_t, Exec> objhit_buf(ex_, cull ? most * objects : 0);
         DeviceBuffer<uint32_t, Exec> objoff_buf(ex_, cull ? most * objects : 0);
-        DeviceBuffer<uint8_t, Exec> code_buf(ex_, most * prims);
-        DeviceBuffer<uint32_t, Exec> offset_buf(ex_, most * prims);
-        DeviceBuffer<uint32_t, Exec> owner_buf(ex_, cull ? most * prims : 0);
+        DeviceBuffer<uint8_t, Exec> code_buf(ex_, most_chunk);
+        DeviceBuffer<uint32_t, Exec> offset_buf(ex_, most_chunk);
+        DeviceBuffer<uint32_t, Exec> owner_buf(ex_, cull ? most_chunk : 0);
         const RayNode* nodes = levels_[size_t(top) - 1].data();
         const SceneView scene = scene_;
-        const uint8_t skip = skip_;
         uint8_t* objhit = objhit_buf.data();
         uint32_t* objoff = objoff_buf.data();
         uint8_t* code = code_buf.data();
         uint32_t* offset = offset_buf.data();
+        uint32_t* own = owner_buf.data();
         for (size_t g0 = 0; g0 < top_nodes; g0 += group) {
             const size_t gn = std::min(top_nodes, g0 + group) - g0;
             // Candidate c of the group is the (node, primitive) pair candidate(c).
             size_t candidates = gn * size_t(prims);
             DeviceBuffer<NodeObject, Exec> hit_buf;
             DeviceBuffer<uint32_t, Exec> start_buf;
-            TopCandidates candidate{cull, uint32_t(g0), prims, nullptr, nullptr, 0,
-                                    scene.object_begin};
+            TopCandidates candidate{false,   uint32_t(g0),       prims, nullptr, nullptr,
+                                    nullptr, scene.object_begin, 0,     0};
+            uint32_t hits = 0;
+            const uint32_t* st = nullptr;
             if (cull) {
                 ex_.launch("rsh.objects", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
                     objhit[x] = node_hits_sphere(nodes[g0 + x / objects],
@@ -318,57 +331,89 @@ template <class Exec> class DeviceTracer {
                 counts_.objects.tests += gn * objects;
                 counts_.objects.hits += sum(ex_, objhit, gn * objects);
                 // The hit pairs with primitives, compacted, and their first candidates.
-                const uint32_t hits = count_and_scan(
-                    ex_, "rsh.object_flags", gn * objects, objoff,
-                    [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t {
+                hits = count_and_scan(ex_, "rsh.object_flags", gn * objects, objoff,
+                                      [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t {
+                                          const uint32_t o = uint32_t(x % objects);
+                                          return objhit[x] && scene.object_begin[o + 1] >
+                                                                  scene.object_begin[o];
+                                      });
+                // Unless every node hit every object with primitives (one object, say), when
+                // the candidates are all the primitives in the plain order: the hit pairs'
+                // primitive ranges.
+                if (hits < gn * objects_with_prims_) {
+                    hit_buf = DeviceBuffer<NodeObject, Exec>(ex_, hits);
+                    start_buf = DeviceBuffer<uint32_t, Exec>(ex_, hits);
+                    NodeObject* h = hit_buf.data();
+                    uint32_t* sp = start_buf.data();
+                    ex_.launch("rsh.object_fill", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
                         const uint32_t o = uint32_t(x % objects);
-                        return objhit[x] && scene.object_begin[o + 1] > scene.object_begin[o];
+                        if (!objhit[x] || scene.object_begin[o + 1] == scene.object_begin[o])
+                            return;
+                        h[objoff[x]] = {uint32_t(g0 + x / objects), o};
+                        sp[objoff[x]] = scene.object_begin[o + 1] - scene.object_begin[o];
                     });
-                hit_buf = DeviceBuffer<NodeObject, Exec>(ex_, hits);
-                start_buf = DeviceBuffer<uint32_t, Exec>(ex_, hits);
-                NodeObject* h = hit_buf.data();
-                uint32_t* st = start_buf.data();
-                ex_.launch("rsh.object_fill", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
-                    const uint32_t o = uint32_t(x % objects);
-                    if (!objhit[x] || scene.object_begin[o + 1] == scene.object_begin[o]) return;
-                    h[objoff[x]] = {uint32_t(g0 + x / objects), o};
-                    st[objoff[x]] = scene.object_begin[o + 1] - scene.object_begin[o];
-                });
-                candidates = ex_.exclusive_scan(st, hits);
-                // owner[c] = the pairs j >= 1 with start[j] <= c: a 1 at start[j] - 1 (distinct,
-                // every span being at least one), scanned.
-                uint32_t* own = owner_buf.data();
-                fill(ex_, own, candidates, 0u);
-                ex_.launch("rsh.owner", hits, [=] SHEAF_HD_LAMBDA(size_t j) {
-                    if (j > 0) own[st[j] - 1] = 1;
-                });
-                ex_.exclusive_scan(own, candidates);
-                candidate.hit = h;
-                candidate.start = st;
-                candidate.owner = own;
+                    candidates = ex_.exclusive_scan(sp, hits);
+                    st = sp;
+                    candidate.sparse = true;
+                    candidate.hit = h;
+                    candidate.start = st;
+                    candidate.owner = own;
+                }
             }
-            // 0: not a candidate, 1: tested and missed, 2: tested and hit.
-            ex_.launch("rsh.top", candidates, [=] SHEAF_HD_LAMBDA(size_t c) {
-                const NodePrim np = candidate(c);
-                code[c] = skip && scene.prim_flag(np.prim, skip)                ? 0
-                          : node_hits_sphere(nodes[np.node], scene.prim_sphere[np.prim]) ? 2
-                                                                                     : 1;
-            });
-            counts_.levels[size_t(top)].tests += ex_.transform_reduce(
-                "rsh.top_tests", candidates, uint64_t(0),
-                [=] SHEAF_HD_LAMBDA(size_t c) -> uint64_t { return code[c] != 0 ? 1 : 0; },
-                SumU64{});
-            const uint32_t found = count_and_scan(
-                ex_, "rsh.top_flags", candidates, offset,
-                [=] SHEAF_HD_LAMBDA(size_t c) -> uint32_t { return code[c] == 2 ? 1u : 0u; });
-            counts_.levels[size_t(top)].hits += found;
-            DeviceBuffer<NodePrim, Exec> pairs_buf(ex_, found);
-            NodePrim* pairs = pairs_buf.data();
-            ex_.launch("rsh.top_fill", candidates, [=] SHEAF_HD_LAMBDA(size_t c) {
-                if (code[c] == 2) pairs[offset[c]] = candidate(c);
-            });
-            descend(top, pairs, found);
+            for (size_t c0 = 0; c0 < candidates; c0 += batch) {
+                const size_t cn = std::min(candidates, c0 + batch) - c0;
+                if (candidate.sparse) {
+                    // The chunk's owners: j0, the pairs j >= 1 with start[j] <= c0, plus those
+                    // starting in (c0, c0 + x] for candidate c0 + x (a 1 at start[j] - c0 - 1,
+                    // distinct as every span is at least one, scanned).
+                    const uint32_t lo = uint32_t(c0), hi = uint32_t(c0 + cn);
+                    candidate.c0 = lo;
+                    candidate.j0 =
+                        c0 == 0 ? 0
+                                : uint32_t(ex_.transform_reduce(
+                                      "rsh.owner_base", hits, uint64_t(0),
+                                      [=] SHEAF_HD_LAMBDA(size_t j) -> uint64_t {
+                                          return j > 0 && st[j] <= lo ? 1 : 0;
+                                      },
+                                      SumU64{}));
+                    fill(ex_, own, cn, 0u);
+                    ex_.launch("rsh.owner", hits, [=] SHEAF_HD_LAMBDA(size_t j) {
+                        if (j > 0 && st[j] > lo && st[j] <= hi) own[st[j] - lo - 1] = 1;
+                    });
+                    ex_.exclusive_scan(own, cn);
+                }
+                top_chunk(candidate, c0, cn, nodes, code, offset);
+            }
         }
+    }
+
+    // Candidates [c0, c0 + n) of a group: tested, counted, the hits compacted and descended.
+    void top_chunk(const TopCandidates candidate, size_t c0, size_t n, const RayNode* nodes,
+                   uint8_t* code, uint32_t* offset) {
+        const int top = s_.hierarchy_depth;
+        const SceneView scene = scene_;
+        const uint8_t skip = skip_;
+        // 0: not a candidate, 1: tested and missed, 2: tested and hit.
+        ex_.launch("rsh.top", n, [=] SHEAF_HD_LAMBDA(size_t x) {
+            const NodePrim np = candidate(c0 + x);
+            code[x] = skip && scene.prim_flag(np.prim, skip)                          ? 0
+                      : node_hits_sphere(nodes[np.node], scene.prim_sphere[np.prim]) ? 2
+                                                                                     : 1;
+        });
+        counts_.levels[size_t(top)].tests += ex_.transform_reduce(
+            "rsh.top_tests", n, uint64_t(0),
+            [=] SHEAF_HD_LAMBDA(size_t x) -> uint64_t { return code[x] != 0 ? 1 : 0; },
+            SumU64{});
+        const uint32_t found = count_and_scan(
+            ex_, "rsh.top_flags", n, offset,
+            [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t { return code[x] == 2 ? 1u : 0u; });
+        counts_.levels[size_t(top)].hits += found;
+        DeviceBuffer<NodePrim, Exec> pairs_buf(ex_, found);
+        NodePrim* pairs = pairs_buf.data();
+        ex_.launch("rsh.top_fill", n, [=] SHEAF_HD_LAMBDA(size_t x) {
+            if (code[x] == 2) pairs[offset[x]] = candidate(c0 + x);
+        });
+        descend(top, pairs, found);
     }
 
     // Candidate pairs of nodes at `level`, expanded to level - 1 in chunks of
@@ -478,6 +523,7 @@ template <class Exec> class DeviceTracer {
     const RenderSettings& s_;
     Stats& st_;
     uint32_t light_count_;
+    uint32_t objects_with_prims_ = 0;
     bool transparent_ = false; // some primitive may let light through (shadow pass logs)
     // The batch being traced.
     bool any_ = false, shadow_ = false;

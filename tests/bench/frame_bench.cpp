@@ -58,8 +58,9 @@ int main(int argc, char** argv) {
     std::printf("## Frames per backend (median of %d; ms; share of the frame)\n\n", frames);
     std::printf("| scene | size | backend | frame ms | rays | Mrays/s |");
     for (const char* p : kPhases) std::printf(" %s |", p);
+    std::printf(" launches | host waits |");
     std::printf("\n|---|---:|---|---:|---:|---:|");
-    for (size_t i = 0; i < std::size(kPhases); ++i) std::printf("---:|");
+    for (size_t i = 0; i < std::size(kPhases) + 2; ++i) std::printf("---:|");
     std::printf("\n");
     for (const std::string& name : scenes) {
         const PreparedScene scene = prepare_scene(make_builtin_scene(name));
@@ -97,6 +98,12 @@ int main(int argc, char** argv) {
                     const double t = st.get(std::string("time_ms.") + p);
                     std::printf(" %.2f (%.0f%%) |", t, ms > 0 ? 100 * t / ms : 0.0);
                 }
+                // The wavefront pipeline's fixed costs on a GPU (none for the CPU renderer).
+                if (st.has("device.launches"))
+                    std::printf(" %.0f | %.0f |", st.get("device.launches"),
+                                st.get("device.host_waits"));
+                else
+                    std::printf(" - | - |");
                 std::printf("\n");
                 std::fflush(stdout);
             }

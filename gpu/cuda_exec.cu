@@ -10,6 +10,12 @@ void CudaExec::sort_pairs(uint32_t* keys, int words, uint32_t* values, size_t n)
     using wavefront::DeviceBuffer;
     if (n < 2) return;
     if (n > size_t(INT32_MAX)) throw RenderError("CUDA sort: more than 2^31 keys");
+    // One sort is one piece of device work in the counts, as in the CPU policy.
+    struct CountOnce {
+        uint64_t& launches;
+        uint64_t before;
+        ~CountOnce() { launches = before + 1; }
+    } count_once{launches_, launches_};
     const int items = int(n);
     if (words == 1) {
         DeviceBuffer<uint32_t, CudaExec> k_alt(*this, n), v_alt(*this, n);

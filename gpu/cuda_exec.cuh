@@ -44,13 +44,19 @@ class CudaExec {
         const char* sync = std::getenv("SHEAF_CUDA_SYNC");
         sync_launches_ = sync && *sync && *sync != '0';
         check(cudaSetDevice(device), "cudaSetDevice");
-        raise_stack_limit(stack_bytes);
-        check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "cudaStreamCreate");
+        stack_.acquire(stack_bytes);
+        if (const cudaError_t e = cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking);
+            e != cudaSuccess) {
+            stack_.release();
+            check(e, "cudaStreamCreate");
+        }
     }
     ~CudaExec() {
         if (temp_) cudaFreeAsync(temp_, stream_);
+        if (scan_ends_) cudaFreeAsync(scan_ends_, stream_);
         cudaStreamSynchronize(stream_);
         cudaStreamDestroy(stream_);
+        stack_.release();
     }
     CudaExec(const CudaExec&) = delete;
     CudaExec& operator=(const CudaExec&) = delete;
@@ -61,16 +67,24 @@ class CudaExec {
         memory_.add(int64_t(bytes));
         return p;
     }
+    /// Called from destructors, so it cannot throw: a failed free is reported by the next
+    /// launch or copy to the host under its own name, not left for cudaGetLastError.
     void deallocate(void* p, size_t bytes) {
-        cudaFreeAsync(p, stream_);
         memory_.sub(int64_t(bytes));
+        if (const cudaError_t e = cudaFreeAsync(p, stream_); e != cudaSuccess) {
+            cudaGetLastError();
+            if (free_error_ == cudaSuccess) free_error_ = e;
+        }
     }
     // Host <-> device copies wait for the copy: the host side may be a temporary.
     void copy_to_device(void* dst, const void* src, size_t bytes) {
+        ++waits_;
         check(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyHostToDevice, stream_), "copy to device");
         check(cudaStreamSynchronize(stream_), "copy to device");
     }
     void copy_to_host(void* dst, const void* src, size_t bytes) {
+        ++waits_;
+        check_frees();
         check(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyDeviceToHost, stream_), "copy to host");
         check(cudaStreamSynchronize(stream_), "copy to host");
     }
@@ -81,6 +95,8 @@ class CudaExec {
     /// fn(i) for every i in [0, n): a grid-stride kernel of 256-thread blocks.
     template <class Fn> void launch(const char* name, size_t n, const Fn& fn) {
         if (n == 0) return;
+        ++launches_;
+        check_frees();
         const size_t blocks = std::min<size_t>((n + 255) / 256, size_t(1) << 20);
         launch_kernel<<<unsigned(blocks), 256, 0, stream_>>>(n, fn);
         check(cudaGetLastError(), name);
@@ -88,24 +104,33 @@ class CudaExec {
         if (sync_launches_) check(cudaStreamSynchronize(stream_), name);
     }
 
-    /// data[i] = sum of data[0..i) in place (CUB); returns the total.
+    /// data[i] = sum of data[0..i) in place (CUB); returns the total. The last element before
+    /// and after the scan are copied aside on the device, so the host waits once.
     uint32_t exclusive_scan(uint32_t* data, size_t n) {
         if (n == 0) return 0;
-        uint32_t last_in = 0, last_out = 0;
-        copy_to_host(&last_in, data + n - 1, sizeof last_in);
+        ++launches_;
+        if (!scan_ends_) {
+            check(cudaMallocAsync(reinterpret_cast<void**>(&scan_ends_), 2 * sizeof(uint32_t),
+                                  stream_),
+                  "cudaMallocAsync");
+        }
+        copy_on_device(scan_ends_, data + n - 1, sizeof(uint32_t));
         size_t bytes = 0;
         check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, data, data, n, stream_),
               "cub::DeviceScan::ExclusiveSum");
         check(cub::DeviceScan::ExclusiveSum(temp(bytes), bytes, data, data, n, stream_),
               "cub::DeviceScan::ExclusiveSum");
-        copy_to_host(&last_out, data + n - 1, sizeof last_out);
-        return last_out + last_in;
+        copy_on_device(scan_ends_ + 1, data + n - 1, sizeof(uint32_t));
+        uint32_t ends[2] = {0, 0};
+        copy_to_host(ends, scan_ends_, sizeof ends);
+        return ends[0] + ends[1];
     }
 
     /// op over map(i) for i in [0, n), from init (Thrust; waits for the result).
     template <class T, class Map, class Op>
     T transform_reduce(const char* name, size_t n, T init, const Map& map, const Op& op) {
         if (n == 0) return init;
+        ++launches_, ++waits_;
         const T r = thrust::transform_reduce(thrust::cuda::par.on(stream_),
                                              thrust::counting_iterator<size_t>(0),
                                              thrust::counting_iterator<size_t>(n), map, init, op);
@@ -121,20 +146,25 @@ class CudaExec {
     /// Device time of a phase: CUDA events around it on the stream.
     class Timer {
       public:
-        explicit Timer(cudaStream_t s) : stream_(s) {
-            cudaEventCreate(&start_);
-            cudaEventCreate(&stop_);
-            cudaEventRecord(start_, stream_);
+        Timer(cudaStream_t s, uint64_t* waits) : stream_(s), waits_(waits) {
+            check(cudaEventCreate(&start_), "cudaEventCreate");
+            if (const cudaError_t e = cudaEventCreate(&stop_); e != cudaSuccess) {
+                cudaEventDestroy(start_);
+                check(e, "cudaEventCreate");
+            }
+            check(cudaEventRecord(start_, stream_), "cudaEventRecord");
         }
         ~Timer() {
             cudaEventDestroy(start_);
             cudaEventDestroy(stop_);
         }
-        Timer(Timer&& o) noexcept : stream_(o.stream_), start_(o.start_), stop_(o.stop_) {
+        Timer(Timer&& o) noexcept
+            : stream_(o.stream_), waits_(o.waits_), start_(o.start_), stop_(o.stop_) {
             o.start_ = o.stop_ = nullptr;
         }
         Timer(const Timer&) = delete;
         double stop_ms() const {
+            ++*waits_;
             float ms = 0;
             check(cudaEventRecord(stop_, stream_), "cudaEventRecord");
             check(cudaEventSynchronize(stop_), "cudaEventSynchronize");
@@ -144,11 +174,15 @@ class CudaExec {
 
       private:
         cudaStream_t stream_;
+        uint64_t* waits_;
         cudaEvent_t start_ = nullptr, stop_ = nullptr;
     };
-    Timer timer() { return Timer(stream_); }
+    Timer timer() { return Timer(stream_, &waits_); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
+    /// Device work started and host waits for the device, counted as the CPU policy does.
+    uint64_t launches() const { return launches_; }
+    uint64_t host_waits() const { return waits_; }
     cudaStream_t stream() const { return stream_; }
 
     /// Scratch space for CUB, grown as needed (ordered on the stream).
@@ -164,22 +198,60 @@ class CudaExec {
     }
 
   private:
-    /// The stack limit is the device's, shared by every render in the process: only ever
-    /// raised, so a render on another thread never loses the stack it was launched with.
-    static void raise_stack_limit(size_t bytes) {
-        static std::mutex m;
-        std::lock_guard<std::mutex> lock(m);
-        size_t current = 0;
-        check(cudaDeviceGetLimit(&current, cudaLimitStackSize), "cudaDeviceGetLimit(stack)");
-        if (bytes > current)
-            check(cudaDeviceSetLimit(cudaLimitStackSize, bytes), "cudaDeviceSetLimit(stack)");
+    void check_frees() {
+        if (free_error_ == cudaSuccess) return;
+        const cudaError_t e = free_error_;
+        free_error_ = cudaSuccess;
+        check(e, "cudaFreeAsync");
     }
 
+    /// The per-thread stack limit is the device's, shared by every render in the process, and
+    /// the device reserves it for every resident thread (a 96 KiB limit is about 26 GiB on an
+    /// H100). While renders run it is only raised, so none loses the stack it was launched
+    /// with; when the last one ends, the limit the process had before is put back.
+    class StackLimit {
+      public:
+        void acquire(size_t bytes) {
+            std::lock_guard<std::mutex> lock(state().m);
+            State& st = state();
+            size_t current = 0;
+            check(cudaDeviceGetLimit(&current, cudaLimitStackSize), "cudaDeviceGetLimit(stack)");
+            if (st.active == 0) st.before = current;
+            if (bytes > current)
+                check(cudaDeviceSetLimit(cudaLimitStackSize, bytes), "cudaDeviceSetLimit(stack)");
+            ++st.active;
+            held_ = true;
+        }
+        void release() {
+            if (!held_) return;
+            held_ = false;
+            std::lock_guard<std::mutex> lock(state().m);
+            State& st = state();
+            if (--st.active == 0) cudaDeviceSetLimit(cudaLimitStackSize, st.before);
+        }
+
+      private:
+        struct State {
+            std::mutex m;
+            int active = 0;
+            size_t before = 0;
+        };
+        static State& state() {
+            static State s;
+            return s;
+        }
+        bool held_ = false;
+    };
+
+    StackLimit stack_;
     cudaStream_t stream_ = nullptr;
     bool sync_launches_ = false;
     void* temp_ = nullptr;
     size_t temp_bytes_ = 0;
+    uint32_t* scan_ends_ = nullptr; // the scanned array's last element before and after
     MemoryTracker memory_;
+    uint64_t launches_ = 0, waits_ = 0;
+    cudaError_t free_error_ = cudaSuccess;
 };
 
 } // namespace sheaf::gpu

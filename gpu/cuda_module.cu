@@ -42,7 +42,7 @@ __global__ void probe_kernel(int* out) {
     *out = 42;
 }
 
-int probe(SheafCudaProbe* out) {
+int probe_device(SheafCudaProbe* out) {
     std::memset(out, 0, sizeof *out);
     int count = 0;
     cudaError_t e = cudaGetDeviceCount(&count);
@@ -98,6 +98,25 @@ int probe(SheafCudaProbe* out) {
     return SHEAF_CUDA_OK;
 }
 
+int probe(SheafCudaProbe* out) {
+    try {
+        return probe_device(out);
+    } catch (...) {
+        copy_message(out->error, sizeof out->error, "the CUDA probe failed (out of host memory)");
+        return SHEAF_CUDA_FAILED;
+    }
+}
+
+/// After a failed render: SHEAF_CUDA_BROKEN when the context is lost (a sticky error, which
+/// every call returns from then on), else `status`.
+int unless_broken(int status, char* error, size_t error_size) {
+    const cudaError_t e = cudaDeviceSynchronize();
+    if (e == cudaSuccess) return status;
+    const std::string before = error && error[0] ? std::string(error) + "; " : std::string();
+    copy_message(error, error_size, before + "the device's context is lost: " + runtime_error(e));
+    return SHEAF_CUDA_BROKEN;
+}
+
 int render(const void* scene_p, const void* settings_p, const void* progress_p, void* frame_p,
            char* error, size_t error_size) {
     try {
@@ -124,10 +143,10 @@ int render(const void* scene_p, const void* settings_p, const void* progress_p, 
     } catch (...) {
         copy_message(error, error_size, "unknown error");
     }
-    return SHEAF_CUDA_FAILED;
+    return unless_broken(SHEAF_CUDA_FAILED, error, error_size);
 }
 
-const SheafCudaModule kModule = {SHEAF_CUDA_MODULE_ABI, cuda_module_layout(), kBuild, probe,
+const SheafCudaModule kModule = {SHEAF_CUDA_MODULE_ABI, cuda_module_signature(), kBuild, probe,
                                  render};
 
 } // namespace
@@ -135,7 +154,7 @@ const SheafCudaModule kModule = {SHEAF_CUDA_MODULE_ABI, cuda_module_layout(), kB
 
 extern "C" __attribute__((visibility("default"))) const SheafCudaModule*
 sheaf_cuda_module(int abi_version, unsigned long long layout) {
-    if (abi_version != SHEAF_CUDA_MODULE_ABI || layout != sheaf::cuda_module_layout())
+    if (abi_version != SHEAF_CUDA_MODULE_ABI || layout != sheaf::cuda_module_signature())
         return nullptr;
     return &sheaf::gpu::kModule;
 }

@@ -4,6 +4,9 @@
 #include "core/base/error.h"
 #include "core/wavefront/wavefront.h"
 
+#include <map>
+#include <mutex>
+
 namespace sheaf {
 
 namespace {
@@ -11,6 +14,21 @@ namespace {
 std::string device_words(const SheafCudaProbe& p) {
     return std::string(p.name) + ", compute " + std::to_string(p.cc_major) + "." +
            std::to_string(p.cc_minor);
+}
+
+/// The modules that lost their device's context in this process, and why.
+struct Broken {
+    std::mutex m;
+    std::map<const SheafCudaModule*, std::string> why;
+};
+Broken& broken() {
+    static Broken b;
+    return b;
+}
+std::string broken_why(const SheafCudaModule* module) {
+    std::lock_guard<std::mutex> lock(broken().m);
+    const auto it = broken().why.find(module);
+    return it == broken().why.end() ? std::string() : it->second;
 }
 
 void mark(Frame& f, bool cuda, const std::string& line) {
@@ -57,6 +75,12 @@ Frame render_frame_cuda(const CudaBackendStatus& cuda, const PreparedScene& scen
     char error[1024] = {0};
     const int rc = cuda.module->render(&scene, &s, &progress, &f, error, sizeof error);
     if (rc == SHEAF_CUDA_CANCELLED) throw RenderError("cancelled");
+    if (rc == SHEAF_CUDA_BROKEN) {
+        std::lock_guard<std::mutex> lock(broken().m);
+        broken().why.emplace(cuda.module,
+                             std::string("the CUDA device failed earlier in this process: ") +
+                                 (error[0] ? error : "no message from the module"));
+    }
     if (rc != SHEAF_CUDA_OK)
         throw RenderError(std::string("the CUDA render failed: ") +
                           (error[0] ? error : "no message from the module"));
@@ -65,12 +89,24 @@ Frame render_frame_cuda(const CudaBackendStatus& cuda, const PreparedScene& scen
 
 Frame render_frame(const PreparedScene& scene, const RenderSettings& s,
                    const ProgressFn& progress) {
-    if (s.backend == Backend::Cpu) {
+    if (s.backend == Backend::Cpu) { // without loading the module
         Frame f = render_frame_cpu(scene, s, progress);
         mark(f, false, "backend: cpu (backend=cpu)");
         return f;
     }
-    const CudaBackendStatus& cuda = cuda_backend();
+    return render_frame_with(cuda_backend(), scene, s, progress);
+}
+
+Frame render_frame_with(const CudaBackendStatus& loaded, const PreparedScene& scene,
+                        const RenderSettings& s, const ProgressFn& progress) {
+    CudaBackendStatus lost;
+    if (const std::string why = loaded.module ? broken_why(loaded.module) : std::string();
+        !why.empty()) {
+        lost = loaded;
+        lost.usable = false;
+        lost.error = lost.detail = why;
+    }
+    const CudaBackendStatus& cuda = lost.error.empty() ? loaded : lost;
     const BackendChoice c = choose_backend(scene, s.backend, cuda);
     if (!c.cuda) {
         if (s.backend == Backend::Cuda)

@@ -20,8 +20,14 @@ struct BackendChoice {
 BackendChoice choose_backend(const PreparedScene& scene, Backend requested,
                              const CudaBackendStatus& cuda);
 
-/// Renders through the CUDA module (throws RenderError with the module's message).
+/// Renders through the CUDA module (throws RenderError with the module's message). A render
+/// that loses the device's context (SHEAF_CUDA_BROKEN) marks the module unusable for the
+/// rest of the process.
 Frame render_frame_cuda(const CudaBackendStatus& cuda, const PreparedScene& scene,
+                        const RenderSettings& settings, const ProgressFn& progress = {});
+
+/// render_frame with `cuda` as what the loader found (render_frame passes cuda_backend()).
+Frame render_frame_with(const CudaBackendStatus& cuda, const PreparedScene& scene,
                         const RenderSettings& settings, const ProgressFn& progress = {});
 
 } // namespace sheaf

@@ -154,6 +154,52 @@ TEST(Backend, CudaWithoutAUsableDeviceIsAClearError) {
     }
 }
 
+// A module whose render loses the device's context: the frame falls back to the CPU, and the
+// process stops using that module, saying why; backend=cuda then fails with the reason.
+int fake_probe(SheafCudaProbe* out) {
+    std::memset(out, 0, sizeof *out);
+    out->device_count = 1;
+    std::snprintf(out->name, sizeof out->name, "Fake GPU");
+    out->cc_major = 9;
+    return SHEAF_CUDA_OK;
+}
+int fake_renders = 0;
+int fake_render_breaks(const void*, const void*, const void*, void*, char* error, size_t size) {
+    ++fake_renders;
+    std::snprintf(error, size, "CUDA rsh.top: cudaErrorIllegalAddress: an illegal memory access");
+    return SHEAF_CUDA_BROKEN;
+}
+
+TEST(Backend, ALostDeviceIsNotUsedAgain) {
+    static const SheafCudaModule fake = {SHEAF_CUDA_MODULE_ABI, 0, "fake", fake_probe,
+                                         fake_render_breaks};
+    CudaBackendStatus st;
+    st.module = &fake;
+    st.usable = fake_probe(&st.probe) == SHEAF_CUDA_OK;
+    const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
+    const Frame cpu = render_frame(scene, small("cpu"));
+
+    const Frame first = render_frame_with(st, scene, small("auto"));
+    EXPECT_EQ(fake_renders, 1);
+    EXPECT_EQ(first.backend, "cpu");
+    EXPECT_NE(first.backend_line.find("cudaErrorIllegalAddress"), std::string::npos)
+        << first.backend_line;
+    EXPECT_EQ(0, std::memcmp(first.rgba.data(), cpu.rgba.data(), cpu.rgba.size() * 4));
+
+    const Frame second = render_frame_with(st, scene, small("auto"));
+    EXPECT_EQ(fake_renders, 1) << "the lost module was asked again";
+    EXPECT_EQ(second.backend_line.rfind("backend: cpu (the CUDA device failed earlier", 0), 0u)
+        << second.backend_line;
+    try {
+        render_frame_with(st, scene, small("cuda"));
+        FAIL() << "backend=cuda used a lost module";
+    } catch (const RenderError& e) {
+        EXPECT_NE(std::string(e.what()).find("failed earlier in this process"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(fake_renders, 1);
+}
+
 // The module this build made (when nvcc was found) loads on a machine without a driver and
 // says why it has no device; the path comes from the build.
 TEST(Backend, TheBuiltModuleLoadsAndProbes) {

@@ -50,7 +50,7 @@ CudaBackendStatus load_cuda_backend(const std::vector<std::string>& candidates) 
         }
         auto entry = reinterpret_cast<SheafCudaModuleEntry>(dlsym(handle, SHEAF_CUDA_MODULE_ENTRY));
         const SheafCudaModule* m =
-            entry ? entry(SHEAF_CUDA_MODULE_ABI, cuda_module_layout()) : nullptr;
+            entry ? entry(SHEAF_CUDA_MODULE_ABI, cuda_module_signature()) : nullptr;
         if (!m) {
             tried += std::string(tried.empty() ? "" : "; ") + path +
                      (entry ? ": built from another version of Sheaf"

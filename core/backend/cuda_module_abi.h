@@ -1,8 +1,8 @@
 // The interface between libsheaf and the CUDA module (libsheaf_cuda.so.0, built in gpu/).
 // libsheaf never links the CUDA runtime: it dlopen()s the module at first use and asks it
-// for this table. Both sides are built from the same tree; the ABI version and a layout
-// signature of the C++ types passed through `void*` guard against a module from another
-// build.
+// for this table. Both sides are built from the same tree; the ABI version and a signature
+// (the sizes of the C++ types passed through `void*`, and a hash of the core's headers) guard
+// against a module from another build.
 #pragma once
 
 #include "core/render/frame.h"
@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#define SHEAF_CUDA_MODULE_ABI 1
+#define SHEAF_CUDA_MODULE_ABI 2
 #define SHEAF_CUDA_MODULE_ENTRY "sheaf_cuda_module"
 #define SHEAF_CUDA_MODULE_FILE "libsheaf_cuda.so.0"
 
@@ -26,6 +26,14 @@ constexpr uint64_t cuda_module_layout() {
            uint64_t(sizeof(Frame)) * 101u + uint64_t(sizeof(Material)) * 31u +
            uint64_t(sizeof(Light)) * 7u + uint64_t(sizeof(Pigment)) * 3u + sizeof(SurfaceHit);
 }
+
+#ifdef SHEAF_BUILD_ID
+/// The layout and this build's identity (SHEAF_BUILD_ID: a hash of the core's headers when
+/// the build was configured, defined for the loader and the module only).
+constexpr uint64_t cuda_module_signature() {
+    return cuda_module_layout() ^ uint64_t(SHEAF_BUILD_ID);
+}
+#endif
 
 } // namespace sheaf
 
@@ -41,13 +49,20 @@ struct SheafCudaProbe {
     char error[512]; // empty when the device is usable; else e.g. "cudaErrorNoDevice: ..."
 };
 
-enum SheafCudaStatus { SHEAF_CUDA_OK = 0, SHEAF_CUDA_FAILED = 1, SHEAF_CUDA_CANCELLED = 2 };
+/// SHEAF_CUDA_BROKEN: the render failed and left the device's context unusable (a kernel
+/// fault: every later CUDA call fails too), so the process stops using the module.
+enum SheafCudaStatus {
+    SHEAF_CUDA_OK = 0,
+    SHEAF_CUDA_FAILED = 1,
+    SHEAF_CUDA_CANCELLED = 2,
+    SHEAF_CUDA_BROKEN = 3
+};
 
 struct SheafCudaModule {
     int abi_version;           // SHEAF_CUDA_MODULE_ABI
-    unsigned long long layout; // sheaf::cuda_module_layout() of the module's build
+    unsigned long long layout; // sheaf::cuda_module_signature() of the module's build
     const char* build;         // "CUDA 13.0, sm 80 90"
-    /// Fills *out; SHEAF_CUDA_OK when a device is usable.
+    /// Fills *out; SHEAF_CUDA_OK when a device is usable. Never throws.
     int (*probe)(SheafCudaProbe* out);
     /// Renders `scene` (const sheaf::PreparedScene*) with `settings` (const
     /// sheaf::RenderSettings*) into `frame` (sheaf::Frame*, empty), calling `progress`
@@ -56,7 +71,8 @@ struct SheafCudaModule {
                   char* error, size_t error_size);
 };
 
-/// The module's one export: its table, or null when `abi_version` / `layout` do not match.
+/// The module's one export: its table, or null when `abi_version` / `layout` (the caller's
+/// cuda_module_signature()) do not match.
 typedef const SheafCudaModule* (*SheafCudaModuleEntry)(int abi_version, unsigned long long layout);
 
 } // extern "C"

@@ -146,8 +146,11 @@ int main(int argc, char** argv) {
                                          backend, size, samples, frames);
                     if (!r.ok) {
                         std::printf(" unavailable | | |");
-                        if (!unavailable)
-                            std::fprintf(stderr, "backend=%s: %s\n", backend.c_str(),
+                        if (!unavailable) // named once: the library's message may name it
+                            std::fprintf(stderr, "%s%s\n",
+                                         r.error.rfind("backend=", 0) == 0
+                                             ? ""
+                                             : ("backend=" + backend + ": ").c_str(),
                                          r.error.c_str());
                         unavailable = true;
                         continue;

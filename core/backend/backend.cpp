@@ -99,14 +99,11 @@ Frame render_frame(const PreparedScene& scene, const RenderSettings& s,
 
 Frame render_frame_with(const CudaBackendStatus& loaded, const PreparedScene& scene,
                         const RenderSettings& s, const ProgressFn& progress) {
-    CudaBackendStatus lost;
-    if (const std::string why = loaded.module ? broken_why(loaded.module) : std::string();
-        !why.empty()) {
-        lost = loaded;
-        lost.usable = false;
-        lost.error = lost.detail = why;
+    CudaBackendStatus cuda = loaded;
+    if (const std::string why = cuda.module ? broken_why(cuda.module) : ""; !why.empty()) {
+        cuda.usable = false;
+        cuda.error = cuda.detail = why;
     }
-    const CudaBackendStatus& cuda = lost.error.empty() ? loaded : lost;
     const BackendChoice c = choose_backend(scene, s.backend, cuda);
     if (!c.cuda) {
         if (s.backend == Backend::Cuda)

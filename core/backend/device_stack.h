@@ -2,10 +2,9 @@
 // of CSG nesting (ptxas -v: 7,048 bytes a level on sm_80 and sm_90, plus 1,952 (sm_90) or
 // 1,960 (sm_80) under a clipped_by: about 9,000 of the 10 KiB allowed), and the shading,
 // pigment and pattern code needs a base of its own (the largest tracing kernel's frame is
-// 2,704 bytes on both, nested pigments 328 to 344 bytes a level). The
-// device reserves the stack for every resident thread (about 270,000 on an H100), so it is
-// capped; a scene nested more deeply renders on the CPU (backend=auto) or is an error
-// (backend=cuda).
+// 2,704 bytes on both, nested pigments 328 to 344 bytes a level). The device reserves the
+// stack for every resident thread (about 270,000 on an H100), so it is capped; a scene nested
+// more deeply renders on the CPU (backend=auto) or is an error (backend=cuda).
 #pragma once
 
 #include "core/scene/prepared_scene.h"

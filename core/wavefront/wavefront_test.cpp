@@ -6,9 +6,9 @@
 
 #include "core/base/error.h"
 #include "core/scenes/builtin.h"
+#include "core/scenes/test_scenes.h"
 #include "core/sort/ray_order.h"
 #include "core/wavefront/cpu_exec.h"
-#include "core/scenes/test_scenes.h"
 #include "core/wavefront/wf_order.h"
 
 #include <gtest/gtest.h>

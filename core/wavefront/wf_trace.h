@@ -320,7 +320,6 @@ template <class Exec> class DeviceTracer {
             TopCandidates candidate{false,   uint32_t(g0),       prims, nullptr, nullptr,
                                     nullptr, scene.object_begin, 0,     0};
             uint32_t hits = 0;
-            const uint32_t* st = nullptr;
             if (cull) {
                 ex_.launch("rsh.objects", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
                     objhit[x] = node_hits_sphere(nodes[g0 + x / objects],
@@ -328,15 +327,18 @@ template <class Exec> class DeviceTracer {
                                     ? 1
                                     : 0;
                 });
-                counts_.objects.tests += gn * objects;
-                counts_.objects.hits += sum(ex_, objhit, gn * objects);
-                // The hit pairs with primitives, compacted, and their first candidates.
+                // The hit pairs with primitives, compacted (all the hits, unless some object
+                // has none), and their first candidates.
                 hits = count_and_scan(ex_, "rsh.object_flags", gn * objects, objoff,
                                       [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t {
                                           const uint32_t o = uint32_t(x % objects);
                                           return objhit[x] && scene.object_begin[o + 1] >
                                                                   scene.object_begin[o];
                                       });
+                counts_.objects.tests += gn * objects;
+                counts_.objects.hits += objects_with_prims_ == objects
+                                            ? hits
+                                            : sum(ex_, objhit, gn * objects);
                 // Unless every node hit every object with primitives (one object, say), when
                 // the candidates are all the primitives in the plain order: the hit pairs'
                 // primitive ranges.
@@ -353,10 +355,9 @@ template <class Exec> class DeviceTracer {
                         sp[objoff[x]] = scene.object_begin[o + 1] - scene.object_begin[o];
                     });
                     candidates = ex_.exclusive_scan(sp, hits);
-                    st = sp;
                     candidate.sparse = true;
                     candidate.hit = h;
-                    candidate.start = st;
+                    candidate.start = sp;
                     candidate.owner = own;
                 }
             }
@@ -367,6 +368,7 @@ template <class Exec> class DeviceTracer {
                     // starting in (c0, c0 + x] for candidate c0 + x (a 1 at start[j] - c0 - 1,
                     // distinct as every span is at least one, scanned).
                     const uint32_t lo = uint32_t(c0), hi = uint32_t(c0 + cn);
+                    const uint32_t* st = candidate.start;
                     candidate.c0 = lo;
                     candidate.j0 =
                         c0 == 0 ? 0

@@ -54,7 +54,6 @@ int write_compare_report(const Options& o, const ResultsMeta& meta,
                               o.quiet);
 }
 
-
 } // namespace
 
 int run_compare(const Options& o) {

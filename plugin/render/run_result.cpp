@@ -35,9 +35,10 @@ std::vector<std::pair<std::string, std::string>> RunResult::settings_list() cons
 }
 
 std::string backend_summary(const std::vector<RunResult>& results) {
+    if (results.empty()) return "backend: none";
     bool same = true;
     for (const RunResult& r : results) same = same && r.backend == results.front().backend;
-    if (results.empty() || same) return results.empty() ? "backend: none" : results.front().backend;
+    if (same) return results.front().backend;
     const std::string prefix = "backend: ";
     std::string line = prefix;
     for (const RunResult& r : results) {

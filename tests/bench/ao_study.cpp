@@ -146,12 +146,12 @@ int main(int argc, char** argv) {
                                          backend, size, samples, frames);
                     if (!r.ok) {
                         std::printf(" unavailable | | |");
-                        if (!unavailable) // named once: the library's message may name it
-                            std::fprintf(stderr, "%s%s\n",
-                                         r.error.rfind("backend=", 0) == 0
-                                             ? ""
-                                             : ("backend=" + backend + ": ").c_str(),
-                                         r.error.c_str());
+                        if (!unavailable) { // the library's message may name the backend
+                            const bool named = r.error.rfind("backend=", 0) == 0;
+                            const std::string what =
+                                named ? r.error : "backend=" + backend + ": " + r.error;
+                            std::fprintf(stderr, "%s\n", what.c_str());
+                        }
                         unavailable = true;
                         continue;
                     }

@@ -1,6 +1,7 @@
 // The CUDA execution policy of the wavefront pipeline (core/wavefront): launches are
 // grid-stride kernels over the pipeline's __host__ __device__ lambdas, memory is stream-ordered
-// device memory, scans and radix sorts are CUB's, reductions Thrust's, timers CUDA events.
+// device memory, scans, radix sorts and reductions kept on the device are CUB's, reductions
+// read at once Thrust's, timers CUDA events.
 // Every call names what failed when the runtime reports an error.
 #pragma once
 
@@ -8,6 +9,7 @@
 #include "core/base/memory.h"
 
 #include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_reduce.cuh>
 #include <cub/device/device_scan.cuh>
 #include <cuda_runtime.h>
 #include <thrust/execution_policy.h>
@@ -19,6 +21,7 @@
 #include <cstdlib>
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace sheaf::gpu {
 
@@ -33,6 +36,14 @@ template <class Fn> __global__ void launch_kernel(size_t n, Fn fn) {
          i += size_t(blockDim.x) * gridDim.x)
         fn(i);
 }
+
+/// One thread's step of reduce_into: *acc = op(*acc, *part).
+template <class T, class Op> struct AddInto {
+    T* acc;
+    const T* part;
+    Op op;
+    __device__ void operator()(size_t) const { *acc = op(*acc, *part); }
+};
 
 class CudaExec {
   public:
@@ -104,26 +115,29 @@ class CudaExec {
         if (sync_launches_) check(cudaStreamSynchronize(stream_), name);
     }
 
-    /// data[i] = sum of data[0..i) in place (CUB); returns the total. The last element before
-    /// and after the scan are copied aside on the device, so the host waits once.
-    uint32_t exclusive_scan(uint32_t* data, size_t n) {
+    /// data[i] = sum of data[0..i) in place (CUB); returns the total (T: uint32_t or
+    /// uint64_t). The last element before and after the scan are copied aside on the device,
+    /// so the host waits once.
+    template <class T> T exclusive_scan(T* data, size_t n) {
+        static_assert(sizeof(T) <= sizeof(uint64_t), "a scanned element fits a scan end slot");
         if (n == 0) return 0;
         ++launches_;
         if (!scan_ends_) {
-            check(cudaMallocAsync(reinterpret_cast<void**>(&scan_ends_), 2 * sizeof(uint32_t),
+            check(cudaMallocAsync(reinterpret_cast<void**>(&scan_ends_), 2 * sizeof(uint64_t),
                                   stream_),
                   "cudaMallocAsync");
         }
-        copy_on_device(scan_ends_, data + n - 1, sizeof(uint32_t));
+        T* ends = reinterpret_cast<T*>(scan_ends_);
+        copy_on_device(ends, data + n - 1, sizeof(T));
         size_t bytes = 0;
         check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, data, data, n, stream_),
               "cub::DeviceScan::ExclusiveSum");
         check(cub::DeviceScan::ExclusiveSum(temp(bytes), bytes, data, data, n, stream_),
               "cub::DeviceScan::ExclusiveSum");
-        copy_on_device(scan_ends_ + 1, data + n - 1, sizeof(uint32_t));
-        uint32_t ends[2] = {0, 0};
-        copy_to_host(ends, scan_ends_, sizeof ends);
-        return ends[0] + ends[1];
+        copy_on_device(ends + 1, data + n - 1, sizeof(T));
+        T e[2] = {0, 0};
+        copy_to_host(e, ends, sizeof e);
+        return T(e[0] + e[1]);
     }
 
     /// op over map(i) for i in [0, n), from init (Thrust; waits for the result).
@@ -136,6 +150,28 @@ class CudaExec {
                                              thrust::counting_iterator<size_t>(n), map, init, op);
         check(cudaGetLastError(), name);
         return r;
+    }
+
+    /// *acc = op(*acc, op over map(i) for i in [0, n)), acc in device memory, without a wait:
+    /// CUB's reduction into a slot after its scratch space, then one thread adds the slot.
+    template <class T, class Map, class Op>
+    void reduce_into(const char* name, size_t n, T* acc, const Map& map, const Op& op) {
+        if (n == 0) return;
+        ++launches_;
+        check_frees();
+        const thrust::counting_iterator<size_t> first(0);
+        size_t bytes = 0;
+        check(cub::DeviceReduce::TransformReduce(nullptr, bytes, first, static_cast<T*>(nullptr), n,
+                                                 op, map, T{}, stream_),
+              name);
+        const size_t at = (bytes + 255) / 256 * 256;
+        char* scratch = static_cast<char*>(temp(at + sizeof(T)));
+        T* part = reinterpret_cast<T*>(scratch + at);
+        check(cub::DeviceReduce::TransformReduce(scratch, bytes, first, part, n, op, map, T{},
+                                                 stream_),
+              name);
+        check(cudaGetLastError(), name);
+        launch(name, 1, AddInto<T, Op>{acc, part, op});
     }
 
     /// Sorts values by keys (n * words words, word 0 least significant), stably: CUB's
@@ -178,6 +214,49 @@ class CudaExec {
         cudaEvent_t start_ = nullptr, stop_ = nullptr;
     };
     Timer timer() { return Timer(stream_, &waits_); }
+
+    /// Device time summed over several spans of work (start, stop, start, stop ...): events
+    /// recorded on the stream, read once by total_ms(), the only wait.
+    class Stopwatch {
+      public:
+        Stopwatch(cudaStream_t s, uint64_t* waits) : stream_(s), waits_(waits) {}
+        ~Stopwatch() {
+            for (cudaEvent_t e : events_) cudaEventDestroy(e);
+        }
+        Stopwatch(Stopwatch&& o) noexcept
+            : stream_(o.stream_), waits_(o.waits_), events_(std::move(o.events_)) {
+            o.events_.clear();
+        }
+        Stopwatch(const Stopwatch&) = delete;
+        void start() { record(); }
+        void stop() { record(); }
+        double total_ms() const {
+            if (events_.size() < 2) return 0;
+            ++*waits_;
+            check(cudaEventSynchronize(events_.back()), "cudaEventSynchronize");
+            double sum = 0;
+            for (size_t i = 0; i + 1 < events_.size(); i += 2) {
+                float ms = 0;
+                check(cudaEventElapsedTime(&ms, events_[i], events_[i + 1]),
+                      "cudaEventElapsedTime");
+                sum += ms;
+            }
+            return sum;
+        }
+
+      private:
+        void record() {
+            events_.reserve(events_.size() + 1);
+            cudaEvent_t e = nullptr;
+            check(cudaEventCreate(&e), "cudaEventCreate");
+            events_.push_back(e);
+            check(cudaEventRecord(e, stream_), "cudaEventRecord");
+        }
+        cudaStream_t stream_;
+        uint64_t* waits_;
+        std::vector<cudaEvent_t> events_;
+    };
+    Stopwatch stopwatch() { return Stopwatch(stream_, &waits_); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
     /// Device work started and host waits for the device, counted as the CPU policy does.
@@ -248,7 +327,7 @@ class CudaExec {
     bool sync_launches_ = false;
     void* temp_ = nullptr;
     size_t temp_bytes_ = 0;
-    uint32_t* scan_ends_ = nullptr; // the scanned array's last element before and after
+    uint64_t* scan_ends_ = nullptr; // the scanned array's last element before and after
     MemoryTracker memory_;
     uint64_t launches_ = 0, waits_ = 0;
     cudaError_t free_error_ = cudaSuccess;

@@ -47,21 +47,21 @@ class CpuExec {
         parallel_for(name, n, fn, 1024);
     }
 
-    /// data[i] = sum of data[0..i) in place; returns the total.
-    uint32_t exclusive_scan(uint32_t* data, size_t n) {
+    /// data[i] = sum of data[0..i) in place; returns the total (T: uint32_t or uint64_t).
+    template <class T> T exclusive_scan(T* data, size_t n) {
         if (n == 0) return 0;
         ++launches_, ++waits_;
         return tbb::parallel_scan(
-            tbb::blocked_range<size_t>(0, n, 1 << 16), uint32_t(0),
-            [data](const tbb::blocked_range<size_t>& r, uint32_t sum, bool final) {
+            tbb::blocked_range<size_t>(0, n, 1 << 16), T(0),
+            [data](const tbb::blocked_range<size_t>& r, T sum, bool final) {
                 for (size_t i = r.begin(); i != r.end(); ++i) {
-                    const uint32_t t = data[i];
+                    const T t = data[i];
                     if (final) data[i] = sum;
                     sum += t;
                 }
                 return sum;
             },
-            [](uint32_t a, uint32_t b) { return a + b; });
+            [](T a, T b) { return a + b; });
     }
 
     /// op over map(i) for i in [0, n), from init. op must be associative and commutative and
@@ -71,13 +71,18 @@ class CpuExec {
         (void)name;
         if (n == 0) return init;
         ++launches_, ++waits_;
-        return tbb::parallel_reduce(
-            tbb::blocked_range<size_t>(0, n, 4096), init,
-            [&](const tbb::blocked_range<size_t>& r, T acc) {
-                for (size_t i = r.begin(); i != r.end(); ++i) acc = op(acc, map(i));
-                return acc;
-            },
-            op);
+        return reduce(n, init, map, op);
+    }
+
+    /// *acc = op(*acc, op over map(i) for i in [0, n)), acc on the executing side: a
+    /// reduction the host reads later, with others, so it costs no wait. Two launches, as on
+    /// the GPU (the reduction, then the addition to *acc).
+    template <class T, class Map, class Op>
+    void reduce_into(const char* name, size_t n, T* acc, const Map& map, const Op& op) {
+        (void)name;
+        if (n == 0) return;
+        launches_ += 2;
+        *acc = op(*acc, reduce(n, T{}, map, op));
     }
 
     /// Sorts values by keys (n * words words, word 0 least significant), stably.
@@ -103,6 +108,31 @@ class CpuExec {
     };
     Timer timer() { return Timer(&waits_); }
 
+    /// Time summed over several spans of work (start, stop, start, stop ...) and read once:
+    /// total_ms() is the only wait.
+    class Stopwatch {
+      public:
+        explicit Stopwatch(uint64_t* waits) : waits_(waits) {}
+        void start() { start_ = clock::now(); }
+        void stop() {
+            ms_ += std::chrono::duration<double, std::milli>(clock::now() - start_).count();
+            spans_ = true;
+        }
+        double total_ms() const {
+            if (!spans_) return 0;
+            ++*waits_;
+            return ms_;
+        }
+
+      private:
+        using clock = std::chrono::steady_clock;
+        uint64_t* waits_;
+        clock::time_point start_;
+        double ms_ = 0;
+        bool spans_ = false;
+    };
+    Stopwatch stopwatch() { return Stopwatch(&waits_); }
+
     int64_t peak_bytes() const { return memory_.peak(); }
     /// Device work started (launches, scans, reductions, sorts) and host waits for the device
     /// (copies, scan totals, reductions, timers): what a frame costs a GPU beyond its kernels.
@@ -111,6 +141,17 @@ class CpuExec {
     uint64_t host_waits() const { return waits_; }
 
   private:
+    template <class T, class Map, class Op>
+    static T reduce(size_t n, T init, const Map& map, const Op& op) {
+        return tbb::parallel_reduce(
+            tbb::blocked_range<size_t>(0, n, 4096), init,
+            [&](const tbb::blocked_range<size_t>& r, T acc) {
+                for (size_t i = r.begin(); i != r.end(); ++i) acc = op(acc, map(i));
+                return acc;
+            },
+            op);
+    }
+
     MemoryTracker memory_;
     uint64_t launches_ = 0, waits_ = 0;
 };

@@ -13,6 +13,7 @@
 
 #include <cfloat>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,7 +58,7 @@ struct NodeObject {
 /// primitive: every primitive of every node (no culling, or every object hit), or, when
 /// `sparse`, the primitives of each hit (node, object) pair j, whose first candidate is
 /// start[j]. Candidates are taken a chunk at a time from c0; candidate c belongs to pair
-/// j0 + owner[c - c0].
+/// owner[c - c0].
 struct TopCandidates {
     bool sparse;
     uint32_t g0, prims;
@@ -65,12 +66,43 @@ struct TopCandidates {
     const uint32_t* start;
     const uint32_t* owner;
     const uint32_t* object_begin;
-    uint32_t c0, j0;
+    uint32_t c0;
 
     SHEAF_HD NodePrim operator()(size_t c) const {
         if (!sparse) return {g0 + uint32_t(c / prims), uint32_t(c % prims)};
-        const uint32_t j = j0 + owner[c - c0];
+        const uint32_t j = owner[c - c0];
         return {hit[j].node, object_begin[hit[j].object] + (uint32_t(c) - start[j])};
+    }
+};
+
+/// The last j in [0, n) with a[j] <= v, for a increasing from a[0] <= v.
+SHEAF_HD inline uint32_t last_at_most(const uint32_t* a, uint32_t n, uint32_t v) {
+    uint32_t lo = 0, hi = n; // a[lo] <= v; a[j] > v for j >= hi
+    while (hi - lo > 1) {
+        const uint32_t mid = lo + (hi - lo) / 2;
+        if (a[mid] <= v)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/// Test and hit counts packed for one scan: hits in the low 32 bits, tests in the high 32. A
+/// scanned array's totals are at most traversal.batch (<= 2^30) each, so neither carries.
+SHEAF_HD inline uint64_t pack_counts(uint64_t tests, uint64_t hits) {
+    return tests << 32 | hits;
+}
+SHEAF_HD inline uint32_t packed_hits(uint64_t p) {
+    return uint32_t(p);
+}
+inline TestCount unpack_counts(uint64_t p) {
+    return {p >> 32, p & 0xFFFFFFFFu};
+}
+
+struct SumCounts {
+    SHEAF_HD TestCount operator()(const TestCount& a, const TestCount& b) const {
+        return {a.tests + b.tests, a.hits + b.hits};
     }
 };
 
@@ -153,20 +185,26 @@ template <class Exec> class DeviceTracer {
         auto total_timer = ex_.timer();
         counts_ = Counts();
         counts_.levels.assign(size_t(s_.hierarchy_depth) + 1, TestCount());
-        final_ms_ = 0;
+        final_watch_.emplace(ex_.stopwatch());
+        final_count_ = DeviceBuffer<TestCount, Exec>(ex_, 1);
+        fill(ex_, final_count_.data(), 1, TestCount{});
         sinks_ = out.sinks();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>(ex_, node_count(1));
         fill(ex_, leaf_pairs_.data(), node_count(1), 0u);
         traverse();
         spread_ray_tests(out.tests.data(), n);
         const double total_ms = total_timer.stop_ms();
-        st_.add("time_ms.traversal", total_ms - final_ms_);
-        st_.add("time_ms.final_tests", final_ms_);
+        const double final_ms = final_watch_->total_ms();
+        st_.add("time_ms.traversal", total_ms - final_ms);
+        st_.add("time_ms.final_tests", final_ms);
+        counts_.final = final_count_.get(0);
 
         add_test_counts(st_, p, s_.cull_objects, counts_.objects, counts_.levels, counts_.final);
         levels_.clear();
         sorted_ = DeviceBuffer<Ray, Exec>();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();
+        final_count_ = DeviceBuffer<TestCount, Exec>();
+        final_watch_.reset();
     }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private
@@ -184,7 +222,8 @@ template <class Exec> class DeviceTracer {
         const uint8_t skip = skip_;
         const HitSinks sinks = out.sinks();
         ex_.launch("brute.trace", n, [=] SHEAF_HD_LAMBDA(size_t i) {
-            const TestCount c = brute_trace_ray(scene, rays[i], uint32_t(i), any, shadow, skip, sinks);
+            const TestCount c =
+                brute_trace_ray(scene, rays[i], uint32_t(i), any, shadow, skip, sinks);
             tests[i] = uint32_t(c.tests < 0xFFFFFFFFu ? c.tests : 0xFFFFFFFFu);
             hits[i] = uint32_t(c.hits);
         });
@@ -196,7 +235,8 @@ template <class Exec> class DeviceTracer {
     }
 
     // Keys of the batch under hash.mode. Returns the number of 32-bit words per key.
-    int hash_rays(const DeviceBatch<Exec>& batch, HashMode mode, DeviceBuffer<uint32_t, Exec>& keys) {
+    int hash_rays(const DeviceBatch<Exec>& batch, HashMode mode,
+                  DeviceBuffer<uint32_t, Exec>& keys) {
         const size_t n = batch.n;
         // static1d is the generation order: a pixel's rays together (paper 003's 1D work groups).
         if (mode == HashMode::None || mode == HashMode::Static1d) return 0;
@@ -221,7 +261,9 @@ template <class Exec> class DeviceTracer {
         }
         const Aabb box = ex_.transform_reduce(
             "hash.box", n, Aabb{Vec3(FLT_MAX), Vec3(-FLT_MAX)},
-            [=] SHEAF_HD_LAMBDA(size_t i) -> Aabb { return {rays[i].origin, rays[i].origin}; },
+            [=] SHEAF_HD_LAMBDA(size_t i) -> Aabb {
+                return {rays[i].origin, rays[i].origin};
+            },
             BoxUnion{});
         if (mode == HashMode::Hash192) {
             keys = DeviceBuffer<uint32_t, Exec>(ex_, 6 * n);
@@ -285,7 +327,8 @@ template <class Exec> class DeviceTracer {
     // traversal.batch at a time. With culling only the primitives of hit objects are expanded
     // (an object's primitives are object_begin[o] .. object_begin[o + 1]), so the work is the
     // tests the statistics count, in few launches; where every node hit every object, the
-    // candidates are all the primitives, with no expansion.
+    // candidates are all the primitives, with no expansion. Counts come with the scan totals
+    // the host needs anyway (pack_counts), so the host waits once per compaction.
     void traverse() {
         const int top = s_.hierarchy_depth;
         const size_t top_nodes = node_count(top);
@@ -294,22 +337,22 @@ template <class Exec> class DeviceTracer {
         const bool cull = s_.cull_objects;
         const size_t batch = std::max<size_t>(1, size_t(s_.batch_pairs));
         // A group's candidate indices fit 32 bits.
-        const size_t group = std::max<size_t>(
-            1, std::min(batch / std::max<size_t>(1, cull ? objects : prims),
-                        size_t(UINT32_MAX) / std::max<size_t>(1, prims)));
+        const size_t group =
+            std::max<size_t>(1, std::min(batch / std::max<size_t>(1, cull ? objects : prims),
+                                         size_t(UINT32_MAX) / std::max<size_t>(1, prims)));
         const size_t most = std::min(group, top_nodes);
         const size_t most_chunk = std::min(batch, most * size_t(prims));
         DeviceBuffer<uint8_t, Exec> objhit_buf(ex_, cull ? most * objects : 0);
-        DeviceBuffer<uint32_t, Exec> objoff_buf(ex_, cull ? most * objects : 0);
-        DeviceBuffer<uint8_t, Exec> code_buf(ex_, most_chunk);
-        DeviceBuffer<uint32_t, Exec> offset_buf(ex_, most_chunk);
+        DeviceBuffer<uint64_t, Exec> objoff_buf(ex_, cull ? most * objects : 0);
+        DeviceBuffer<uint8_t, Exec> hit_flag_buf(ex_, most_chunk);
+        DeviceBuffer<uint64_t, Exec> offset_buf(ex_, most_chunk);
         DeviceBuffer<uint32_t, Exec> owner_buf(ex_, cull ? most_chunk : 0);
         const RayNode* nodes = levels_[size_t(top) - 1].data();
         const SceneView scene = scene_;
         uint8_t* objhit = objhit_buf.data();
-        uint32_t* objoff = objoff_buf.data();
-        uint8_t* code = code_buf.data();
-        uint32_t* offset = offset_buf.data();
+        uint64_t* objoff = objoff_buf.data();
+        uint8_t* hit_flag = hit_flag_buf.data();
+        uint64_t* offset = offset_buf.data();
         uint32_t* own = owner_buf.data();
         for (size_t g0 = 0; g0 < top_nodes; g0 += group) {
             const size_t gn = std::min(top_nodes, g0 + group) - g0;
@@ -318,27 +361,23 @@ template <class Exec> class DeviceTracer {
             DeviceBuffer<NodeObject, Exec> hit_buf;
             DeviceBuffer<uint32_t, Exec> start_buf;
             TopCandidates candidate{false,   uint32_t(g0),       prims, nullptr, nullptr,
-                                    nullptr, scene.object_begin, 0,     0};
+                                    nullptr, scene.object_begin, 0};
             uint32_t hits = 0;
             if (cull) {
+                // Every (node, object) pair tested; the hit pairs with primitives compacted.
                 ex_.launch("rsh.objects", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
-                    objhit[x] = node_hits_sphere(nodes[g0 + x / objects],
-                                                 scene.object_sphere[x % objects])
-                                    ? 1
-                                    : 0;
+                    const uint32_t o = uint32_t(x % objects);
+                    const bool hit =
+                        node_hits_sphere(nodes[g0 + x / objects], scene.object_sphere[o]);
+                    const bool has_prims = scene.object_begin[o + 1] > scene.object_begin[o];
+                    // Packed: every hit (high), the hits compacted: those with primitives.
+                    objhit[x] = hit && has_prims ? 1 : 0;
+                    objoff[x] = pack_counts(hit ? 1 : 0, objhit[x]);
                 });
-                // The hit pairs with primitives, compacted (all the hits, unless some object
-                // has none), and their first candidates.
-                hits = count_and_scan(ex_, "rsh.object_flags", gn * objects, objoff,
-                                      [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t {
-                                          const uint32_t o = uint32_t(x % objects);
-                                          return objhit[x] && scene.object_begin[o + 1] >
-                                                                  scene.object_begin[o];
-                                      });
+                const uint64_t total = ex_.exclusive_scan(objoff, gn * objects);
+                hits = packed_hits(total);
                 counts_.objects.tests += gn * objects;
-                counts_.objects.hits += objects_with_prims_ == objects
-                                            ? hits
-                                            : sum(ex_, objhit, gn * objects);
+                counts_.objects.hits += total >> 32;
                 // Unless every node hit every object with primitives (one object, say), when
                 // the candidates are all the primitives in the plain order: the hit pairs'
                 // primitive ranges.
@@ -348,11 +387,11 @@ template <class Exec> class DeviceTracer {
                     NodeObject* h = hit_buf.data();
                     uint32_t* sp = start_buf.data();
                     ex_.launch("rsh.object_fill", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
+                        if (!objhit[x]) return;
                         const uint32_t o = uint32_t(x % objects);
-                        if (!objhit[x] || scene.object_begin[o + 1] == scene.object_begin[o])
-                            return;
-                        h[objoff[x]] = {uint32_t(g0 + x / objects), o};
-                        sp[objoff[x]] = scene.object_begin[o + 1] - scene.object_begin[o];
+                        const uint32_t j = packed_hits(objoff[x]);
+                        h[j] = {uint32_t(g0 + x / objects), o};
+                        sp[j] = scene.object_begin[o + 1] - scene.object_begin[o];
                     });
                     candidates = ex_.exclusive_scan(sp, hits);
                     candidate.sparse = true;
@@ -364,58 +403,42 @@ template <class Exec> class DeviceTracer {
             for (size_t c0 = 0; c0 < candidates; c0 += batch) {
                 const size_t cn = std::min(candidates, c0 + batch) - c0;
                 if (candidate.sparse) {
-                    // The chunk's owners: j0, the pairs j >= 1 with start[j] <= c0, plus those
-                    // starting in (c0, c0 + x] for candidate c0 + x (a 1 at start[j] - c0 - 1,
-                    // distinct as every span is at least one, scanned).
-                    const uint32_t lo = uint32_t(c0), hi = uint32_t(c0 + cn);
+                    // Each candidate's pair: the last whose first candidate is at most it
+                    // (start increases strictly, every span being at least one).
+                    const uint32_t lo = uint32_t(c0);
                     const uint32_t* st = candidate.start;
                     candidate.c0 = lo;
-                    candidate.j0 =
-                        c0 == 0 ? 0
-                                : uint32_t(ex_.transform_reduce(
-                                      "rsh.owner_base", hits, uint64_t(0),
-                                      [=] SHEAF_HD_LAMBDA(size_t j) -> uint64_t {
-                                          return j > 0 && st[j] <= lo ? 1 : 0;
-                                      },
-                                      SumU64{}));
-                    fill(ex_, own, cn, 0u);
-                    ex_.launch("rsh.owner", hits, [=] SHEAF_HD_LAMBDA(size_t j) {
-                        if (j > 0 && st[j] > lo && st[j] <= hi) own[st[j] - lo - 1] = 1;
+                    ex_.launch("rsh.owner", cn, [=] SHEAF_HD_LAMBDA(size_t x) {
+                        own[x] = last_at_most(st, hits, lo + uint32_t(x));
                     });
-                    ex_.exclusive_scan(own, cn);
                 }
-                top_chunk(candidate, c0, cn, nodes, code, offset);
+                top_chunk(candidate, c0, cn, nodes, hit_flag, offset);
             }
         }
     }
 
     // Candidates [c0, c0 + n) of a group: tested, counted, the hits compacted and descended.
     void top_chunk(const TopCandidates candidate, size_t c0, size_t n, const RayNode* nodes,
-                   uint8_t* code, uint32_t* offset) {
+                   uint8_t* hit_flag, uint64_t* offset) {
         const int top = s_.hierarchy_depth;
         const SceneView scene = scene_;
         const uint8_t skip = skip_;
-        // 0: not a candidate, 1: tested and missed, 2: tested and hit.
         ex_.launch("rsh.top", n, [=] SHEAF_HD_LAMBDA(size_t x) {
             const NodePrim np = candidate(c0 + x);
-            code[x] = skip && scene.prim_flag(np.prim, skip)                          ? 0
-                      : node_hits_sphere(nodes[np.node], scene.prim_sphere[np.prim]) ? 2
-                                                                                     : 1;
+            const bool tested = !(skip && scene.prim_flag(np.prim, skip));
+            const bool hit = tested && node_hits_sphere(nodes[np.node], scene.prim_sphere[np.prim]);
+            hit_flag[x] = hit ? 1 : 0;
+            offset[x] = pack_counts(tested ? 1 : 0, hit ? 1 : 0);
         });
-        counts_.levels[size_t(top)].tests += ex_.transform_reduce(
-            "rsh.top_tests", n, uint64_t(0),
-            [=] SHEAF_HD_LAMBDA(size_t x) -> uint64_t { return code[x] != 0 ? 1 : 0; },
-            SumU64{});
-        const uint32_t found = count_and_scan(
-            ex_, "rsh.top_flags", n, offset,
-            [=] SHEAF_HD_LAMBDA(size_t x) -> uint32_t { return code[x] == 2 ? 1u : 0u; });
-        counts_.levels[size_t(top)].hits += found;
-        DeviceBuffer<NodePrim, Exec> pairs_buf(ex_, found);
+        const TestCount c = unpack_counts(ex_.exclusive_scan(offset, n));
+        counts_.levels[size_t(top)].tests += c.tests;
+        counts_.levels[size_t(top)].hits += c.hits;
+        DeviceBuffer<NodePrim, Exec> pairs_buf(ex_, c.hits);
         NodePrim* pairs = pairs_buf.data();
         ex_.launch("rsh.top_fill", n, [=] SHEAF_HD_LAMBDA(size_t x) {
-            if (code[x] == 2) pairs[offset[x]] = candidate(c0 + x);
+            if (hit_flag[x]) pairs[packed_hits(offset[x])] = candidate(c0 + x);
         });
-        descend(top, pairs, found);
+        descend(top, pairs, c.hits);
     }
 
     // Candidate pairs of nodes at `level`, expanded to level - 1 in chunks of
@@ -433,9 +456,9 @@ template <class Exec> class DeviceTracer {
         for (size_t c0 = 0; c0 < count; c0 += chunk) {
             const size_t cn = std::min(count, c0 + chunk) - c0;
             DeviceBuffer<uint64_t, Exec> mask_buf(ex_, cn);
-            DeviceBuffer<uint32_t, Exec> offset_buf(ex_, cn);
+            DeviceBuffer<uint64_t, Exec> offset_buf(ex_, cn);
             uint64_t* mask = mask_buf.data();
-            uint32_t* offset = offset_buf.data();
+            uint64_t* offset = offset_buf.data();
             const NodePrim* in = pairs + c0;
             ex_.launch("rsh.level", cn, [=] SHEAF_HD_LAMBDA(size_t j) {
                 const NodePrim pr = in[j];
@@ -447,22 +470,17 @@ template <class Exec> class DeviceTracer {
                 for (size_t ch = first; ch < last; ++ch)
                     if (node_hits_sphere(children[ch], s)) m |= uint64_t(1) << (ch - first), ++c;
                 mask[j] = m;
-                offset[j] = c;
+                offset[j] = pack_counts(last - first, c);
             });
-            counts_.levels[size_t(level) - 1].tests += ex_.transform_reduce(
-                "rsh.level_tests", cn, uint64_t(0),
-                [=] SHEAF_HD_LAMBDA(size_t j) -> uint64_t {
-                    const size_t first = size_t(in[j].node) * size_t(arity);
-                    return node_last_child(in[j].node, arity, below) - first;
-                },
-                SumU64{});
-            const uint32_t found = ex_.exclusive_scan(offset, cn);
-            counts_.levels[size_t(level) - 1].hits += found;
+            const TestCount counted = unpack_counts(ex_.exclusive_scan(offset, cn));
+            counts_.levels[size_t(level) - 1].tests += counted.tests;
+            counts_.levels[size_t(level) - 1].hits += counted.hits;
+            const uint32_t found = uint32_t(counted.hits);
             DeviceBuffer<NodePrim, Exec> next_buf(ex_, found);
             NodePrim* next = next_buf.data();
             ex_.launch("rsh.level_fill", cn, [=] SHEAF_HD_LAMBDA(size_t j) {
                 const uint32_t first = in[j].node * uint32_t(arity);
-                uint32_t o = offset[j];
+                uint32_t o = packed_hits(offset[j]);
                 for (uint64_t m = mask[j]; m; m &= m - 1) {
                     int bit = 0;
                     while (!((m >> bit) & 1u)) ++bit;
@@ -473,10 +491,11 @@ template <class Exec> class DeviceTracer {
         }
     }
 
-    // Each level-1 pair: every ray of the node against the primitive, exactly.
+    // Each level-1 pair: every ray of the node against the primitive, exactly. The counts go
+    // to final_count_ and the time to final_watch_ on the executing side: no wait here.
     void finals(const NodePrim* pairs, size_t count) {
         if (count == 0) return;
-        auto t = ex_.timer();
+        final_watch_->start();
         const int arity = s_.hierarchy_arity;
         const size_t rays_n = sorted_.size();
         const SceneView scene = scene_;
@@ -492,17 +511,17 @@ template <class Exec> class DeviceTracer {
             atomic_add_u32(&leaf_pairs[pr.node], 1);
             const size_t first = size_t(pr.node) * size_t(arity);
             const size_t last = node_last_child(pr.node, arity, rays_n);
-            hits[j] = uint32_t(final_tests(scene, rays, perm, first, last, pr.prim, any, shadow, sinks));
+            hits[j] =
+                uint32_t(final_tests(scene, rays, perm, first, last, pr.prim, any, shadow, sinks));
         });
-        counts_.final.tests += ex_.transform_reduce(
-            "rsh.final_tests", count, uint64_t(0),
-            [=] SHEAF_HD_LAMBDA(size_t j) -> uint64_t {
-                return node_last_child(pairs[j].node, arity, rays_n) -
-                       size_t(pairs[j].node) * size_t(arity);
+        ex_.reduce_into(
+            "rsh.final_counts", count, final_count_.data(),
+            [=] SHEAF_HD_LAMBDA(size_t j) -> TestCount {
+                const size_t first = size_t(pairs[j].node) * size_t(arity);
+                return {node_last_child(pairs[j].node, arity, rays_n) - first, hits[j]};
             },
-            SumU64{});
-        counts_.final.hits += sum(ex_, hits, count);
-        final_ms_ += t.stop_ms();
+            SumCounts{});
+        final_watch_->stop();
     }
 
     // Every ray's exact tests: the candidates of its level-1 node.
@@ -536,7 +555,8 @@ template <class Exec> class DeviceTracer {
     DeviceBuffer<uint32_t, Exec> leaf_pairs_;
     HitSinks sinks_;
     Counts counts_;
-    double final_ms_ = 0;
+    DeviceBuffer<TestCount, Exec> final_count_;
+    std::optional<typename Exec::Stopwatch> final_watch_;
 };
 
 } // namespace sheaf::wavefront

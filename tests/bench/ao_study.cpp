@@ -2,7 +2,7 @@
 // reorder them and the time to render them, with radix and bitonic sorting, on each backend.
 //
 // Usage: sheaf_ao_study [--size N] [--samples S] [--frames K] [--backends cpu,cuda]
-//                       [--sorts radix,bitonic] [scene ...]
+//                       [--sorts radix,bitonic] [--set KEY=VALUE ...] [scene ...]
 // Defaults: 1024 x 1024, 16 AO rays per pixel (about 17M rays on the built-in scenes), one
 // frame, the CPU and, when a CUDA device is usable, the GPU; every built-in scene.
 //
@@ -10,6 +10,8 @@
 // visibility plus the AO rays alone (as the paper's figures are). AO rays reach a tenth of
 // the scene's bounding radius. "reorder" is hashing + compression + sorting + decompression;
 // "render" is the rest of the frame. Counts are exact; times are one run (or the median of K).
+// --set gives other settings (hierarchy.depth=4, say); the study sets the size, accel, order,
+// sort, AO, trace.depth and backend itself.
 #include "bench_args.h"
 #include "core/base/error.h"
 #include "core/render/renderer.h"
@@ -59,8 +61,8 @@ struct Result {
 };
 
 Result run(const PreparedScene& scene, const Order& o, const std::string& sort_algorithm,
-           const std::string& backend, int size, int samples, int frames) {
-    Settings s;
+           const std::string& backend, int size, int samples, int frames, const Settings& sets) {
+    Settings s = sets;
     s.set("width", std::to_string(size));
     s.set("height", std::to_string(size));
     s.set("accel", "crsh");
@@ -98,6 +100,8 @@ Result run(const PreparedScene& scene, const Order& o, const std::string& sort_a
 int main(int argc, char** argv) {
     int size = 1024, samples = 16, frames = 1;
     std::vector<std::string> backends = {"cpu", "cuda"}, sorts = {"radix", "bitonic"}, scenes;
+    Settings sets;
+    std::string set_text; // the --set arguments, for the header
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
@@ -111,9 +115,17 @@ int main(int argc, char** argv) {
             backends = bench::split_list(next());
         else if (a == "--sorts")
             sorts = bench::split_list(next());
-        else if (a == "--help" || a == "-h") {
+        else if (a == "--set") {
+            std::string error;
+            if (!bench::add_setting(sets, next(), error)) {
+                std::fprintf(stderr, "sheaf_ao_study: %s\n", error.c_str());
+                return 2;
+            }
+            set_text += " " + std::string(argv[i]);
+        } else if (a == "--help" || a == "-h") {
             std::printf("usage: sheaf_ao_study [--size N] [--samples S] [--frames K] "
-                        "[--backends cpu,cuda] [--sorts radix,bitonic] [scene ...]\n");
+                        "[--backends cpu,cuda] [--sorts radix,bitonic] [--set KEY=VALUE ...] "
+                        "[scene ...]\n");
             return 0;
         } else
             scenes.push_back(a);
@@ -124,6 +136,7 @@ int main(int argc, char** argv) {
     std::printf("Reorder = hashing + compression + sorting + decompression; render = the rest "
                 "of the frame (primary visibility and the AO rays). Tests: AO ray-primitive "
                 "tests as a share of brute force.\n");
+    if (!set_text.empty()) std::printf("\nSettings given:%s\n", set_text.c_str());
     for (const std::string& backend : backends) {
         std::vector<PreparedScene> prepared;
         for (const std::string& n : scenes) prepared.push_back(ao_only(n));
@@ -143,7 +156,7 @@ int main(int argc, char** argv) {
                 std::printf("| %s | %s |", o.label, algorithm.c_str());
                 for (size_t k = 0; k < scenes.size(); ++k) {
                     const Result r = run(prepared[k], o, algorithm == "-" ? "radix" : algorithm,
-                                         backend, size, samples, frames);
+                                         backend, size, samples, frames, sets);
                     if (!r.ok) {
                         std::printf(" unavailable | | |");
                         if (!unavailable) { // the library's message may name the backend

@@ -31,7 +31,8 @@ const char* const kPhases[] = {"raster",      "gbuffer",     "ray_creation",  "h
 int main(int argc, char** argv) {
     std::vector<int> sizes = {512, 1024};
     int frames = 3;
-    std::vector<std::string> backends = {"cpu", "cuda"}, scenes, sets;
+    std::vector<std::string> backends = {"cpu", "cuda"}, scenes;
+    Settings sets; // --set; each run sets its size and backend over these
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
@@ -44,7 +45,11 @@ int main(int argc, char** argv) {
         } else if (a == "--backends") {
             backends = bench::split_list(next());
         } else if (a == "--set") {
-            sets.push_back(next());
+            std::string error;
+            if (!bench::add_setting(sets, next(), error)) {
+                std::fprintf(stderr, "sheaf_frame_bench: %s\n", error.c_str());
+                return 2;
+            }
         } else if (a == "--help" || a == "-h") {
             std::printf("usage: sheaf_frame_bench [--sizes 512,1024] [--frames K] "
                         "[--backends cpu,cuda] [--set KEY=VALUE ...] [scene ...]\n");
@@ -66,17 +71,13 @@ int main(int argc, char** argv) {
         const PreparedScene scene = prepare_scene(make_builtin_scene(name));
         for (int size : sizes)
             for (const std::string& backend : backends) {
-                Settings s;
+                Settings s = sets;
                 s.set("width", std::to_string(size));
                 s.set("height", std::to_string(size));
                 const bool wavefront = backend == "wavefront-cpu";
-                s.set("backend", wavefront ? "cpu" : backend);
-                for (const std::string& kv : sets) {
-                    const size_t eq = kv.find('=');
-                    if (eq != std::string::npos) s.set(kv.substr(0, eq), kv.substr(eq + 1));
-                }
                 std::vector<Frame> runs;
                 try {
+                    s.set("backend", wavefront ? "cpu" : backend);
                     const RenderSettings rs = RenderSettings::resolve(s, scene.settings);
                     for (int f = 0; f < frames; ++f)
                         runs.push_back(wavefront ? render_frame_wavefront_cpu(scene, rs)

@@ -2,7 +2,9 @@
 # The CUDA checks in one call, from a folder made by gpu/kit.sh: the device, the CPU<->CUDA
 # identity test (with backend selection), then the benchmarks of the CUDA issue
 # (frames at 512² and 1024² on both backends; paper 003's AO study at 1024², 16 rays per
-# pixel, on the GPU). Logs go to OUT_DIR (default $OUT, else ./kit-out); the tables last.
+# pixel, on the GPU, at hierarchy depth 2 and 4). Logs go to OUT_DIR (default $OUT, else
+# ./kit-out); the tables last. The steps' time limits add up to 570 s, under the device
+# tool's 600 s per call.
 # usage: run.sh [OUT_DIR]
 set -u
 kit=$(dirname "$(realpath "$0")")
@@ -15,12 +17,15 @@ export SHEAF_SCENES_DIR="$kit/scenes" SHEAF_POV_INCLUDE="$kit/pov-include"
 (nvidia-smi -L; nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv) \
   >"$out/device.txt" 2>&1
 cat "$out/device.txt"
-SHEAF_CUDA_SYNC=1 timeout 300 "$kit/bin/sheaf_cuda_tests" >"$out/cuda_tests.txt" 2>&1
+SHEAF_CUDA_SYNC=1 timeout 240 "$kit/bin/sheaf_cuda_tests" >"$out/cuda_tests.txt" 2>&1
 echo "cuda tests: exit $? ($(grep -c '^\[       OK' "$out/cuda_tests.txt") ok," \
      "$(grep -c '^\[  FAILED  \]' "$out/cuda_tests.txt") failed lines)"
 grep -E '^\[  (FAILED|SKIPPED) |^module ' "$out/cuda_tests.txt" | head -20
-timeout 240 "$kit/bin/sheaf_frame_bench" --frames 5 >"$out/frame_bench.md" 2>&1
+timeout 150 "$kit/bin/sheaf_frame_bench" --frames 5 >"$out/frame_bench.md" 2>&1
 echo "frame bench: exit $?"
-timeout 240 "$kit/bin/sheaf_ao_study" --backends cuda --frames 3 >"$out/ao_study.md" 2>&1
+timeout 120 "$kit/bin/sheaf_ao_study" --backends cuda --frames 3 >"$out/ao_study.md" 2>&1
 echo "ao study: exit $?"
-cat "$out/frame_bench.md" "$out/ao_study.md"
+timeout 60 "$kit/bin/sheaf_ao_study" --backends cuda --sorts radix --set hierarchy.depth=4 \
+  >"$out/ao_study_depth4.md" 2>&1
+echo "ao study, depth 4: exit $?"
+cat "$out/frame_bench.md" "$out/ao_study.md" "$out/ao_study_depth4.md"

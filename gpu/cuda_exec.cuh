@@ -1,7 +1,7 @@
 // The CUDA execution policy of the wavefront pipeline (core/wavefront): launches are
 // grid-stride kernels over the pipeline's __host__ __device__ lambdas, memory is stream-ordered
 // device memory, scans, radix sorts and reductions kept on the device are CUB's, reductions
-// read at once Thrust's, timers CUDA events.
+// read at once Thrust's, phase times CUDA events.
 // Every call names what failed when the runtime reports an error.
 #pragma once
 
@@ -129,11 +129,7 @@ class CudaExec {
         }
         T* ends = reinterpret_cast<T*>(scan_ends_);
         copy_on_device(ends, data + n - 1, sizeof(T));
-        size_t bytes = 0;
-        check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, data, data, n, stream_),
-              "cub::DeviceScan::ExclusiveSum");
-        check(cub::DeviceScan::ExclusiveSum(temp(bytes), bytes, data, data, n, stream_),
-              "cub::DeviceScan::ExclusiveSum");
+        scan_on_stream(data, n);
         copy_on_device(ends + 1, data + n - 1, sizeof(T));
         T e[2] = {0, 0};
         copy_to_host(e, ends, sizeof e);
@@ -150,6 +146,14 @@ class CudaExec {
                                              thrust::counting_iterator<size_t>(n), map, init, op);
         check(cudaGetLastError(), name);
         return r;
+    }
+
+    /// The same scan when the host does not need the total: no wait.
+    template <class T> void exclusive_scan_async(T* data, size_t n) {
+        if (n == 0) return;
+        ++launches_;
+        check_frees();
+        scan_on_stream(data, n);
     }
 
     /// *acc = op(*acc, op over map(i) for i in [0, n)), acc in device memory, without a wait:
@@ -179,61 +183,28 @@ class CudaExec {
     /// pair of words as 64-bit keys (each pass stable), then a gather of keys and values.
     void sort_pairs(uint32_t* keys, int words, uint32_t* values, size_t n);
 
-    /// Device time of a phase: CUDA events around it on the stream.
-    class Timer {
-      public:
-        Timer(cudaStream_t s, uint64_t* waits) : stream_(s), waits_(waits) {
-            check(cudaEventCreate(&start_), "cudaEventCreate");
-            if (const cudaError_t e = cudaEventCreate(&stop_); e != cudaSuccess) {
-                cudaEventDestroy(start_);
-                check(e, "cudaEventCreate");
-            }
-            check(cudaEventRecord(start_, stream_), "cudaEventRecord");
-        }
-        ~Timer() {
-            cudaEventDestroy(start_);
-            cudaEventDestroy(stop_);
-        }
-        Timer(Timer&& o) noexcept
-            : stream_(o.stream_), waits_(o.waits_), start_(o.start_), stop_(o.stop_) {
-            o.start_ = o.stop_ = nullptr;
-        }
-        Timer(const Timer&) = delete;
-        double stop_ms() const {
-            ++*waits_;
-            float ms = 0;
-            check(cudaEventRecord(stop_, stream_), "cudaEventRecord");
-            check(cudaEventSynchronize(stop_), "cudaEventSynchronize");
-            check(cudaEventElapsedTime(&ms, start_, stop_), "cudaEventElapsedTime");
-            return ms;
-        }
-
-      private:
-        cudaStream_t stream_;
-        uint64_t* waits_;
-        cudaEvent_t start_ = nullptr, stop_ = nullptr;
-    };
-    Timer timer() { return Timer(stream_, &waits_); }
+    /// Waits for the work issued so far on the stream: one host wait.
+    void synchronize() {
+        ++waits_;
+        check_frees();
+        check(cudaStreamSynchronize(stream_), "cudaStreamSynchronize");
+    }
 
     /// Device time summed over several spans of work (start, stop, start, stop ...): events
-    /// recorded on the stream, read once by total_ms(), the only wait.
+    /// recorded on the stream, read by total_ms() after synchronize(), with no wait of its own.
     class Stopwatch {
       public:
-        Stopwatch(cudaStream_t s, uint64_t* waits) : stream_(s), waits_(waits) {}
+        explicit Stopwatch(cudaStream_t s) : stream_(s) {}
         ~Stopwatch() {
             for (cudaEvent_t e : events_) cudaEventDestroy(e);
         }
-        Stopwatch(Stopwatch&& o) noexcept
-            : stream_(o.stream_), waits_(o.waits_), events_(std::move(o.events_)) {
+        Stopwatch(Stopwatch&& o) noexcept : stream_(o.stream_), events_(std::move(o.events_)) {
             o.events_.clear();
         }
         Stopwatch(const Stopwatch&) = delete;
         void start() { record(); }
         void stop() { record(); }
         double total_ms() const {
-            if (events_.size() < 2) return 0;
-            ++*waits_;
-            check(cudaEventSynchronize(events_.back()), "cudaEventSynchronize");
             double sum = 0;
             for (size_t i = 0; i + 1 < events_.size(); i += 2) {
                 float ms = 0;
@@ -253,10 +224,9 @@ class CudaExec {
             check(cudaEventRecord(e, stream_), "cudaEventRecord");
         }
         cudaStream_t stream_;
-        uint64_t* waits_;
         std::vector<cudaEvent_t> events_;
     };
-    Stopwatch stopwatch() { return Stopwatch(stream_, &waits_); }
+    Stopwatch stopwatch() { return Stopwatch(stream_); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
     /// Device work started and host waits for the device, counted as the CPU policy does.
@@ -277,6 +247,14 @@ class CudaExec {
     }
 
   private:
+    template <class T> void scan_on_stream(T* data, size_t n) {
+        size_t bytes = 0;
+        check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, data, data, n, stream_),
+              "cub::DeviceScan::ExclusiveSum");
+        check(cub::DeviceScan::ExclusiveSum(temp(bytes), bytes, data, data, n, stream_),
+              "cub::DeviceScan::ExclusiveSum");
+    }
+
     void check_frees() {
         if (free_error_ == cudaSuccess) return;
         const cudaError_t e = free_error_;

@@ -50,18 +50,12 @@ class CpuExec {
     /// data[i] = sum of data[0..i) in place; returns the total (T: uint32_t or uint64_t).
     template <class T> T exclusive_scan(T* data, size_t n) {
         if (n == 0) return 0;
-        ++launches_, ++waits_;
-        return tbb::parallel_scan(
-            tbb::blocked_range<size_t>(0, n, 1 << 16), T(0),
-            [data](const tbb::blocked_range<size_t>& r, T sum, bool final) {
-                for (size_t i = r.begin(); i != r.end(); ++i) {
-                    const T t = data[i];
-                    if (final) data[i] = sum;
-                    sum += t;
-                }
-                return sum;
-            },
-            [](T a, T b) { return a + b; });
+        ++waits_;
+        return scan(data, n);
+    }
+    /// The same scan when the host does not need the total: no wait.
+    template <class T> void exclusive_scan_async(T* data, size_t n) {
+        if (n > 0) scan(data, n);
     }
 
     /// op over map(i) for i in [0, n), from init. op must be associative and commutative and
@@ -92,55 +86,50 @@ class CpuExec {
         radix_sort_pairs(keys, words, values, n);
     }
 
-    /// Wall time of a phase.
-    class Timer {
-      public:
-        explicit Timer(uint64_t* waits) : waits_(waits) {}
-        double stop_ms() const {
-            ++*waits_;
-            return std::chrono::duration<double, std::milli>(clock::now() - start_).count();
-        }
+    /// Waits for the work issued so far (here it is done already): one host wait.
+    void synchronize() { ++waits_; }
 
-      private:
-        using clock = std::chrono::steady_clock;
-        uint64_t* waits_;
-        clock::time_point start_ = clock::now();
-    };
-    Timer timer() { return Timer(&waits_); }
-
-    /// Time summed over several spans of work (start, stop, start, stop ...) and read once:
-    /// total_ms() is the only wait.
+    /// Time summed over several spans of work (start, stop, start, stop ...), read by
+    /// total_ms() after synchronize(): no wait of its own.
     class Stopwatch {
       public:
-        explicit Stopwatch(uint64_t* waits) : waits_(waits) {}
         void start() { start_ = clock::now(); }
         void stop() {
             ms_ += std::chrono::duration<double, std::milli>(clock::now() - start_).count();
-            spans_ = true;
         }
-        double total_ms() const {
-            if (!spans_) return 0;
-            ++*waits_;
-            return ms_;
-        }
+        double total_ms() const { return ms_; }
 
       private:
         using clock = std::chrono::steady_clock;
-        uint64_t* waits_;
         clock::time_point start_;
         double ms_ = 0;
-        bool spans_ = false;
     };
-    Stopwatch stopwatch() { return Stopwatch(&waits_); }
+    Stopwatch stopwatch() { return Stopwatch(); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
     /// Device work started (launches, scans, reductions, sorts) and host waits for the device
-    /// (copies, scan totals, reductions, timers): what a frame costs a GPU beyond its kernels.
+    /// (copies, scan totals, reductions read at once, synchronize): what a frame costs a GPU
+    /// beyond its kernels.
     /// Counted alike by both policies, so the CPU policy shows what the GPU will do.
     uint64_t launches() const { return launches_; }
     uint64_t host_waits() const { return waits_; }
 
   private:
+    template <class T> T scan(T* data, size_t n) {
+        ++launches_;
+        return tbb::parallel_scan(
+            tbb::blocked_range<size_t>(0, n, 1 << 16), T(0),
+            [data](const tbb::blocked_range<size_t>& r, T sum, bool final) {
+                for (size_t i = r.begin(); i != r.end(); ++i) {
+                    const T t = data[i];
+                    if (final) data[i] = sum;
+                    sum += t;
+                }
+                return sum;
+            },
+            [](T a, T b) { return a + b; });
+    }
+
     template <class T, class Map, class Op>
     static T reduce(size_t n, T init, const Map& map, const Op& op) {
         return tbb::parallel_reduce(

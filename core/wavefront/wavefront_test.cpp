@@ -72,9 +72,10 @@ const std::vector<SettingList>& variants() {
 TEST(Wavefront, BuiltinScenesAreIdentical) {
     for (const std::string& name : builtin_scene_names()) {
         const PreparedScene scene = prepare_scene(make_builtin_scene(name));
-        for (const SettingList& kv : {SettingList{}, SettingList{{"accel", "rah"}},
-                                      SettingList{{"hash.mode", "hash192"}, {"ao.samples", "2"}},
-                                      SettingList{{"aa.samples", "2"}, {"traversal.batch", "4096"}}})
+        for (const SettingList& kv :
+             {SettingList{}, SettingList{{"accel", "rah"}},
+              SettingList{{"hash.mode", "hash192"}, {"ao.samples", "2"}},
+              SettingList{{"aa.samples", "2"}, {"traversal.batch", "4096"}}})
             expect_identical(scene, name, kv, 32, 24);
     }
     const PreparedScene cornell = prepare_scene(make_builtin_scene("cornell"));
@@ -98,7 +99,8 @@ TEST(Wavefront, GlassMirrorsAndAmbientOcclusionAreIdentical) {
 TEST(Wavefront, EveryLightKindIsIdentical) {
     for (bool ortho : {false, true}) {
         const PreparedScene scene = prepare_scene(test::lights_scene(ortho));
-        for (const SettingList& kv : variants()) expect_identical(scene, ortho ? "ortho" : "lights", kv);
+        for (const SettingList& kv : variants())
+            expect_identical(scene, ortho ? "ortho" : "lights", kv);
         const Frame f = expect_identical(scene, "lights", {});
         EXPECT_GT(f.stats.get("rays.shadow"), f.stats.get("rays.primary")); // several lights
         EXPECT_GT(mean(f), 0.05);
@@ -157,15 +159,20 @@ TEST(Wavefront, OrderMatchesTheCpuOrder) {
                 for (size_t i = 0; i < n; ++i)
                     for (int w = 0; w < words; ++w) // runs of equal keys, few distinct values
                         keys[i * words + w] = (i / 3 % 5 == 0) && i > 0 ? keys[(i - 1) * words + w]
-                                                                         : uint32_t(g() % 97);
+                                                                        : uint32_t(g() % 97);
                 Stats a, b;
                 const OrderResult cpu = order_rays(keys, words, n, mode, a, alg);
                 wavefront::CpuExec ex;
                 wavefront::DeviceBuffer<uint32_t, wavefront::CpuExec> dk(ex, keys.size());
                 dk.upload(keys.data(), keys.size());
-                const auto dev = wavefront::order_rays(ex, dk.data(), words, n, mode, b, alg);
+                wavefront::PhaseClock<wavefront::CpuExec> clock(ex);
+                const auto dev = wavefront::order_rays(ex, dk.data(), words, n, mode, clock, alg);
                 EXPECT_EQ(cpu.perm, dev.perm.download()) << words << " words";
                 EXPECT_EQ(cpu.chunks, dev.chunks) << words << " words";
+                clock.add_to(b); // the phases the CPU order times
+                for (const char* k :
+                     {"time_ms.sorting", "time_ms.compression", "time_ms.decompression"})
+                    EXPECT_EQ(a.has(k), b.has(k)) << k;
             }
 }
 

@@ -7,10 +7,10 @@
 #pragma once
 
 #include "core/base/error.h"
+#include "core/raster/raster_tri.h"
 #include "core/render/frame.h"
 #include "core/render/frame_kernels.h"
 #include "core/render/frame_stats.h"
-#include "core/raster/raster_tri.h"
 #include "core/render/renderer.h"
 #include "core/wavefront/wf_scene.h"
 #include "core/wavefront/wf_trace.h"
@@ -29,7 +29,7 @@ template <class Exec> class DeviceFrame {
   public:
     DeviceFrame(Exec& ex, const PreparedScene& scene, const RenderSettings& s,
                 const ProgressFn& progress, Frame& f)
-        : ex_(ex), host_(scene), s_(s), progress_(progress), f_(f), st_(f.stats) {}
+        : ex_(ex), host_(scene), s_(s), progress_(progress), f_(f), st_(f.stats), clock_(ex) {}
 
     void run() {
         declare_frame_keys(st_);
@@ -44,7 +44,7 @@ template <class Exec> class DeviceFrame {
         fill(ex_, radiance_.data(), samples, Vec3(0.0f));
         fill(ex_, tests_.data(), samples, 0u);
         params_ = frame_ray_params(host_, s_);
-        DeviceTracer<Exec> tracer(ex_, host_, scene_, s_, st_);
+        DeviceTracer<Exec> tracer(ex_, host_, scene_, s_, st_, clock_);
         tracer_ = &tracer;
 
         DeviceHits<Exec> hits = primary();
@@ -55,6 +55,7 @@ template <class Exec> class DeviceFrame {
         }
         resolve();
         tracer_ = nullptr;
+        clock_.add_to(st_);
         st_.add("time_ms.frame",
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count());
@@ -80,7 +81,7 @@ template <class Exec> class DeviceFrame {
         DeviceBuffer<uint64_t, Exec> vis_buf(ex_, samples);
         uint64_t* vis = vis_buf.data();
         {
-            auto t = ex_.timer();
+            clock_.start("raster");
             fill(ex_, vis, samples, kEmptyPixel);
             const size_t tris = host_.triangle_count();
             if (tris > 0) {
@@ -105,14 +106,14 @@ template <class Exec> class DeviceFrame {
             }
             if (scene.analytic_count > 0)
                 ex_.launch("raster.analytic", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
-                    vis[i] = cast_analytic_pixel(scene, cam, int(i % size_t(W)),
-                                                 int(i / size_t(W)), vis[i]);
+                    vis[i] = cast_analytic_pixel(scene, cam, int(i % size_t(W)), int(i / size_t(W)),
+                                                 vis[i]);
                 });
-            st_.add("time_ms.raster", t.stop_ms());
+            clock_.stop("raster");
         }
         st_.set("rays.primary", double(samples));
 
-        auto t = ex_.timer();
+        clock_.start("gbuffer");
         DeviceBuffer<uint32_t, Exec> slot_buf(ex_, samples);
         uint32_t* slot = slot_buf.data();
         const uint32_t count = count_and_scan(
@@ -140,7 +141,7 @@ template <class Exec> class DeviceFrame {
             object[i] = ps.object;
             if (ps.hit) out[slot[i]] = ps.h;
         });
-        st_.add("time_ms.gbuffer", t.stop_ms());
+        clock_.stop("gbuffer");
         return hits;
     }
 
@@ -159,14 +160,14 @@ template <class Exec> class DeviceFrame {
         if (trace_ao) ao = ao_rays(hits);
         {
             // Terms that need no ray: emission, ambient (unless AO traces it), shadowless lights.
-            auto t = ex_.timer();
+            clock_.start("shading");
             accumulate_in_order(
                 ex_, n, radiance, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return h[i].pixel; },
-                [=] SHEAF_HD_LAMBDA(size_t i, Vec3& v) -> bool {
+                [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                     v = unshadowed_terms(scene, h[i], trace_ao, params);
                     return true;
                 });
-            st_.add("time_ms.shading", t.stop_ms());
+            clock_.stop("shading");
         }
         DeviceTraceResult<Exec> r;
         tracer_->trace(shadow, r);
@@ -181,12 +182,12 @@ template <class Exec> class DeviceFrame {
         BounceSplit* split = split_buf.data();
         DeviceBatch<Exec> refl(ex_, RayType::Reflection, 0), refr(ex_, RayType::Refraction, 0);
         {
-            auto t = ex_.timer();
+            clock_.start("ray_creation");
             ex_.launch("raygen.split", n,
                        [=] SHEAF_HD_LAMBDA(size_t i) { split[i] = bounce_split(scene, h[i]); });
             refl = bounce_rays(hits, split, RayType::Reflection);
             refr = bounce_rays(hits, split, RayType::Refraction);
-            st_.add("time_ms.ray_creation", t.stop_ms());
+            clock_.stop("ray_creation");
         }
         DeviceHits<Exec> next;
         next.h = DeviceBuffer<SurfaceHit, Exec>(ex_, refl.n + refr.n);
@@ -196,28 +197,28 @@ template <class Exec> class DeviceFrame {
     }
 
     DeviceBatch<Exec> shadow_rays(const DeviceHits<Exec>& hits) {
-        auto t = ex_.timer();
+        clock_.start("ray_creation");
         const SceneView scene = scene_;
         const RayGenParams params = params_;
         const SurfaceHit* h = hits.h.data();
         const size_t n = hits.n, k = n * host_.lights.size();
         DeviceBuffer<uint32_t, Exec> offset_buf(ex_, k);
         uint32_t* offset = offset_buf.data();
-        const uint32_t total = count_and_scan(
-            ex_, "raygen.count", k, offset, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
-                return shadow_ray_count(scene, h, n, i, params);
-            });
+        const uint32_t total = count_and_scan(ex_, "raygen.count", k, offset,
+                                              [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
+                                                  return shadow_ray_count(scene, h, n, i, params);
+                                              });
         DeviceBatch<Exec> out(ex_, RayType::Shadow, total);
         const RaySlots slots = out.slots();
         ex_.launch("raygen.fill", k, [=] SHEAF_HD_LAMBDA(size_t i) {
             shadow_ray_fill(scene, h, n, i, offset[i], params, slots);
         });
-        st_.add("time_ms.ray_creation", t.stop_ms());
+        clock_.stop("ray_creation");
         return out;
     }
 
     DeviceBatch<Exec> ao_rays(const DeviceHits<Exec>& hits) {
-        auto t = ex_.timer();
+        clock_.start("ray_creation");
         const SceneView scene = scene_;
         const RayGenParams params = params_;
         const SurfaceHit* h = hits.h.data();
@@ -227,7 +228,7 @@ template <class Exec> class DeviceFrame {
         ex_.launch("raygen.ao", hits.n, [=] SHEAF_HD_LAMBDA(size_t i) {
             ao_ray_fill(scene, h[i], uint32_t(i) * per, params, slots);
         });
-        st_.add("time_ms.ray_creation", t.stop_ms());
+        clock_.stop("ray_creation");
         return out;
     }
 
@@ -257,7 +258,7 @@ template <class Exec> class DeviceFrame {
     // Shadow and AO rays that reach their end add their radiance (through what transparent
     // surfaces let pass), in ray order per sample; every ray's tests go to its sample.
     void add_unoccluded(const DeviceBatch<Exec>& b, const DeviceTraceResult<Exec>& r) {
-        auto t = ex_.timer();
+        clock_.start("shading");
         const uint32_t* pixel = b.pixel.data();
         const Vec3* weight = b.weight.data();
         const uint8_t* occluded = r.occluded.data();
@@ -265,13 +266,13 @@ template <class Exec> class DeviceFrame {
         accumulate_in_order(
             ex_, b.n, radiance_.data(),
             [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
-            [=] SHEAF_HD_LAMBDA(size_t i, Vec3& v) -> bool {
+            [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                 if (occluded[i]) return false;
                 v = pass_log ? weight[i] * pass_from_logs(&pass_log[3 * i]) : weight[i];
                 return true;
             });
         count_tests(b, r);
-        st_.add("time_ms.shading", t.stop_ms());
+        clock_.stop("shading");
     }
 
     void count_tests(const DeviceBatch<Exec>& b, const DeviceTraceResult<Exec>& r) {
@@ -288,7 +289,7 @@ template <class Exec> class DeviceFrame {
     void next_hits(const DeviceBatch<Exec>& b, DeviceHits<Exec>& next) {
         DeviceTraceResult<Exec> r;
         tracer_->trace(b, r);
-        auto t = ex_.timer();
+        clock_.start("shading");
         count_tests(b, r);
         const SceneView scene = scene_;
         const Ray* rays = b.rays.data();
@@ -298,7 +299,7 @@ template <class Exec> class DeviceFrame {
         accumulate_in_order(
             ex_, b.n, radiance_.data(),
             [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
-            [=] SHEAF_HD_LAMBDA(size_t i, Vec3& v) -> bool {
+            [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                 if (closest[i] != kNoHit) return false;
                 v = leave_scene(scene, rays[i].dir, weight[i]);
                 return true;
@@ -313,24 +314,25 @@ template <class Exec> class DeviceFrame {
         SurfaceHit* out = next.h.data() + next.n;
         ex_.launch("shade.next", b.n, [=] SHEAF_HD_LAMBDA(size_t i) {
             if (closest[i] == kNoHit) return;
-            out[slot[i]] = bounce_hit(scene, rays[i], closest[i], pixel[i], weight[i], fog[slot[i]]);
+            out[slot[i]] =
+                bounce_hit(scene, rays[i], closest[i], pixel[i], weight[i], fog[slot[i]]);
         });
         if (host_.fog.distance > 0) // in ray order: sums stay the same on every accel
             accumulate_in_order(
                 ex_, count, radiance_.data(),
                 [=] SHEAF_HD_LAMBDA(size_t k) -> uint32_t { return out[k].pixel; },
-                [=] SHEAF_HD_LAMBDA(size_t k, Vec3& v) -> bool {
+                [=] SHEAF_HD_LAMBDA(size_t k, Vec3 & v) -> bool {
                     v = fog[k];
                     return true;
                 });
         next.n += count;
-        st_.add("time_ms.shading", t.stop_ms());
+        clock_.stop("shading");
     }
 
     // Box filter of the aa x aa samples of each pixel; passes from the centre sample; the
     // results come back to the host.
     void resolve() {
-        auto t = ex_.timer();
+        clock_.start("shading");
         const int aa = s_.aa_samples, w = s_.width, h = s_.height, W = W_;
         const size_t pixels = size_t(w) * h;
         DeviceBuffer<float, Exec> rgba(ex_, 4 * pixels), depth(ex_, pixels);
@@ -349,7 +351,7 @@ template <class Exec> class DeviceFrame {
         f_.albedo = albedo.download();
         f_.object_id = object.download();
         f_.tests = tests.download();
-        st_.add("time_ms.shading", t.stop_ms());
+        clock_.stop("shading");
     }
 
   private:
@@ -359,6 +361,7 @@ template <class Exec> class DeviceFrame {
     const ProgressFn& progress_;
     Frame& f_;
     Stats& st_;
+    PhaseClock<Exec> clock_;
     SceneView scene_;
     DeviceTracer<Exec>* tracer_ = nullptr;
     RayGenParams params_;

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/settings/settings.h"
-#include "core/stats/stats.h"
+#include "core/wavefront/wf_phases.h"
 #include "core/wavefront/wf_steps.h"
 
 namespace sheaf::wavefront {
@@ -24,11 +24,11 @@ void sort_pairs(Exec& ex, uint32_t* keys, int words, uint32_t* values, size_t n,
         ex.sort_pairs(keys, words, values, n);
 }
 
-/// keys: n * words words (word 0 least significant). Adds time_ms.compression,
-/// time_ms.sorting and time_ms.decompression.
+/// keys: n * words words (word 0 least significant). Times the phases compression, sorting
+/// and decompression.
 template <class Exec>
 DeviceOrder<Exec> order_rays(Exec& ex, const uint32_t* keys, int words, size_t n, SortMode mode,
-                             Stats& stats, SortAlgorithm algorithm) {
+                             PhaseClock<Exec>& clock, SortAlgorithm algorithm) {
     DeviceOrder<Exec> r;
     r.perm = DeviceBuffer<uint32_t, Exec>(ex, n);
     uint32_t* perm = r.perm.data();
@@ -37,19 +37,19 @@ DeviceOrder<Exec> order_rays(Exec& ex, const uint32_t* keys, int words, size_t n
         return r;
     }
     if (mode == SortMode::Full) {
-        auto t = ex.timer();
+        clock.start("sorting");
         DeviceBuffer<uint32_t, Exec> k(ex, n * size_t(words));
         ex.copy_on_device(k.data(), keys, n * size_t(words) * sizeof(uint32_t));
         iota(ex, perm, n);
         sort_pairs(ex, k.data(), words, perm, n, algorithm);
         r.chunks = n;
-        stats.add("time_ms.sorting", t.stop_ms());
+        clock.stop("sorting");
         return r;
     }
 
     // Compression: a head flag where the key differs from its predecessor, a scan of the
     // flags, then one chunk (key, base, size) per run.
-    auto tc = ex.timer();
+    clock.start("compression");
     DeviceBuffer<uint32_t, Exec> head_buf(ex, n);
     uint32_t* head = head_buf.data();
     ex.launch("csd.flags", n, [=] SHEAF_HD_LAMBDA(size_t i) {
@@ -80,14 +80,14 @@ DeviceOrder<Exec> order_rays(Exec& ex, const uint32_t* keys, int words, size_t n
         chunk_size[c] = end - chunk_base[c];
     });
     iota(ex, chunk_ids, chunks);
-    stats.add("time_ms.compression", tc.stop_ms());
+    clock.stop("compression");
 
-    auto ts = ex.timer();
+    clock.start("sorting");
     sort_pairs(ex, chunk_keys, words, chunk_ids, chunks, algorithm);
-    stats.add("time_ms.sorting", ts.stop_ms());
+    clock.stop("sorting");
 
     // Decompression: the sizes in sorted order, scanned, give each chunk's place.
-    auto td = ex.timer();
+    clock.start("decompression");
     DeviceBuffer<uint32_t, Exec> offset_buf(ex, chunks);
     uint32_t* offset = offset_buf.data();
     ex.launch("csd.sorted_sizes", chunks,
@@ -97,7 +97,7 @@ DeviceOrder<Exec> order_rays(Exec& ex, const uint32_t* keys, int words, size_t n
         const uint32_t c = chunk_ids[j], base = chunk_base[c], size = chunk_size[c];
         for (uint32_t k = 0; k < size; ++k) perm[offset[j] + k] = base + k;
     });
-    stats.add("time_ms.decompression", td.stop_ms());
+    clock.stop("decompression");
     return r;
 }
 

@@ -1,7 +1,7 @@
 // Data-parallel building blocks of the wavefront pipeline, written once against the exec seam
-// (launch, exclusive_scan, transform_reduce, reduce_into, sort_pairs): filling, counting and
-// scanning, accumulation into samples in a fixed order, and the stable bitonic sort of paper
-// 003.
+// (launch, exclusive_scan[_async], transform_reduce, reduce_into, sort_pairs): filling,
+// counting and scanning, accumulation into samples in a fixed order, and the stable bitonic
+// sort of paper 003.
 #pragma once
 
 #include "core/base/device.h"

@@ -13,7 +13,6 @@
 
 #include <cfloat>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,35 +57,23 @@ struct NodeObject {
 /// primitive: every primitive of every node (no culling, or every object hit), or, when
 /// `sparse`, the primitives of each hit (node, object) pair j, whose first candidate is
 /// start[j]. Candidates are taken a chunk at a time from c0; candidate c belongs to pair
-/// owner[c - c0].
+/// *j0 + owner[c - c0].
 struct TopCandidates {
     bool sparse;
     uint32_t g0, prims;
     const NodeObject* hit;
     const uint32_t* start;
     const uint32_t* owner;
+    const uint32_t* j0;
     const uint32_t* object_begin;
     uint32_t c0;
 
     SHEAF_HD NodePrim operator()(size_t c) const {
         if (!sparse) return {g0 + uint32_t(c / prims), uint32_t(c % prims)};
-        const uint32_t j = owner[c - c0];
+        const uint32_t j = *j0 + owner[c - c0];
         return {hit[j].node, object_begin[hit[j].object] + (uint32_t(c) - start[j])};
     }
 };
-
-/// The last j in [0, n) with a[j] <= v, for a increasing from a[0] <= v.
-SHEAF_HD inline uint32_t last_at_most(const uint32_t* a, uint32_t n, uint32_t v) {
-    uint32_t lo = 0, hi = n; // a[lo] <= v; a[j] > v for j >= hi
-    while (hi - lo > 1) {
-        const uint32_t mid = lo + (hi - lo) / 2;
-        if (a[mid] <= v)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
 
 /// Test and hit counts packed for one scan: hits in the low 32 bits, tests in the high 32. A
 /// scanned array's totals are at most traversal.batch (<= 2^30) each, so neither carries.
@@ -115,8 +102,9 @@ struct BoxUnion {
 template <class Exec> class DeviceTracer {
   public:
     DeviceTracer(Exec& ex, const PreparedScene& host, const SceneView& scene,
-                 const RenderSettings& s, Stats& stats)
-        : ex_(ex), scene_(scene), s_(s), st_(stats), light_count_(uint32_t(host.lights.size())) {
+                 const RenderSettings& s, Stats& stats, PhaseClock<Exec>& clock)
+        : ex_(ex), scene_(scene), s_(s), st_(stats), clock_(clock),
+          light_count_(uint32_t(host.lights.size())) {
         for (uint8_t f : host.prim_flags) transparent_ = transparent_ || (f & kPrimMayPass);
         for (size_t o = 0; o + 1 < host.object_begin.size(); ++o)
             objects_with_prims_ += host.object_begin[o + 1] > host.object_begin[o] ? 1 : 0;
@@ -156,36 +144,31 @@ template <class Exec> class DeviceTracer {
         const HashMode hash = s_.accel == Accel::Crsh ? s_.hash : HashMode::None;
         DeviceBuffer<uint32_t, Exec> keys;
         int words = 0;
-        {
-            auto t = ex_.timer();
-            words = hash_rays(batch, hash, keys);
-            st_.add("time_ms.hashing", t.stop_ms());
-        }
+        clock_.start("hashing");
+        words = hash_rays(batch, hash, keys);
+        clock_.stop("hashing");
         const SortMode sort = words == 0 ? SortMode::None : s_.sort;
         // The static 3D order is a fixed permutation, whatever sort.mode says: every key sorted.
         const SortMode mode = hash == HashMode::Static3d ? SortMode::Full : sort;
         DeviceOrder<Exec> order =
-            order_rays(ex_, keys.data(), words, n, mode, st_, s_.sort_algorithm);
+            order_rays(ex_, keys.data(), words, n, mode, clock_, s_.sort_algorithm);
         if (sort == SortMode::Csd)
             st_.add(std::string("sort.") + ray_type_name(batch.type) + ".chunks",
                     double(order.chunks));
 
         // Rays gathered into sorted order, then the hierarchy over them.
-        {
-            auto t = ex_.timer();
-            sorted_ = DeviceBuffer<Ray, Exec>(ex_, n);
-            gather_rays(batch.rays.data(), order.perm.data(), sorted_.data(), n);
-            build_levels(n);
-            st_.add("time_ms.hierarchy", t.stop_ms());
-        }
+        clock_.start("hierarchy");
+        sorted_ = DeviceBuffer<Ray, Exec>(ex_, n);
+        gather_rays(batch.rays.data(), order.perm.data(), sorted_.data(), n);
+        build_levels(n);
+        clock_.stop("hierarchy");
         perm_ = order.perm.data();
         st_.add(std::string("hierarchy.") + ray_type_name(batch.type) + ".top_nodes",
                 double(node_count(s_.hierarchy_depth)));
 
-        auto total_timer = ex_.timer();
+        clock_.start("traversal");
         counts_ = Counts();
         counts_.levels.assign(size_t(s_.hierarchy_depth) + 1, TestCount());
-        final_watch_.emplace(ex_.stopwatch());
         final_count_ = DeviceBuffer<TestCount, Exec>(ex_, 1);
         fill(ex_, final_count_.data(), 1, TestCount{});
         sinks_ = out.sinks();
@@ -193,10 +176,7 @@ template <class Exec> class DeviceTracer {
         fill(ex_, leaf_pairs_.data(), node_count(1), 0u);
         traverse();
         spread_ray_tests(out.tests.data(), n);
-        const double total_ms = total_timer.stop_ms();
-        const double final_ms = final_watch_->total_ms();
-        st_.add("time_ms.traversal", total_ms - final_ms);
-        st_.add("time_ms.final_tests", final_ms);
+        clock_.stop("traversal");
         counts_.final = final_count_.get(0);
 
         add_test_counts(st_, p, s_.cull_objects, counts_.objects, counts_.levels, counts_.final);
@@ -204,14 +184,13 @@ template <class Exec> class DeviceTracer {
         sorted_ = DeviceBuffer<Ray, Exec>();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();
         final_count_ = DeviceBuffer<TestCount, Exec>();
-        final_watch_.reset();
     }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private
     // member functions.
 
     TestCount brute(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
-        auto t = ex_.timer();
+        clock_.start("final_tests");
         const size_t n = batch.n;
         DeviceBuffer<uint32_t, Exec> hits_buf(ex_, n);
         const SceneView scene = scene_;
@@ -230,7 +209,7 @@ template <class Exec> class DeviceTracer {
         TestCount c;
         c.tests = sum(ex_, tests, n);
         c.hits = sum(ex_, hits, n);
-        st_.add("time_ms.final_tests", t.stop_ms());
+        clock_.stop("final_tests");
         return c;
     }
 
@@ -347,6 +326,7 @@ template <class Exec> class DeviceTracer {
         DeviceBuffer<uint8_t, Exec> hit_flag_buf(ex_, most_chunk);
         DeviceBuffer<uint64_t, Exec> offset_buf(ex_, most_chunk);
         DeviceBuffer<uint32_t, Exec> owner_buf(ex_, cull ? most_chunk : 0);
+        DeviceBuffer<uint32_t, Exec> j0_buf(ex_, cull ? 1 : 0);
         const RayNode* nodes = levels_[size_t(top) - 1].data();
         const SceneView scene = scene_;
         uint8_t* objhit = objhit_buf.data();
@@ -354,13 +334,14 @@ template <class Exec> class DeviceTracer {
         uint8_t* hit_flag = hit_flag_buf.data();
         uint64_t* offset = offset_buf.data();
         uint32_t* own = owner_buf.data();
+        uint32_t* j0 = j0_buf.data();
         for (size_t g0 = 0; g0 < top_nodes; g0 += group) {
             const size_t gn = std::min(top_nodes, g0 + group) - g0;
             // Candidate c of the group is the (node, primitive) pair candidate(c).
             size_t candidates = gn * size_t(prims);
             DeviceBuffer<NodeObject, Exec> hit_buf;
             DeviceBuffer<uint32_t, Exec> start_buf;
-            TopCandidates candidate{false,   uint32_t(g0),       prims, nullptr, nullptr,
+            TopCandidates candidate{false,   uint32_t(g0),       prims, nullptr, nullptr, nullptr,
                                     nullptr, scene.object_begin, 0};
             uint32_t hits = 0;
             if (cull) {
@@ -398,19 +379,26 @@ template <class Exec> class DeviceTracer {
                     candidate.hit = h;
                     candidate.start = sp;
                     candidate.owner = own;
+                    candidate.j0 = j0;
                 }
             }
             for (size_t c0 = 0; c0 < candidates; c0 += batch) {
                 const size_t cn = std::min(candidates, c0 + batch) - c0;
                 if (candidate.sparse) {
-                    // Each candidate's pair: the last whose first candidate is at most it
-                    // (start increases strictly, every span being at least one).
-                    const uint32_t lo = uint32_t(c0);
+                    // The chunk's first pair, *j0: the last whose first candidate is at most
+                    // c0 (start increases strictly, every span being at least one); then a 1
+                    // at start[j] - c0 - 1 for each pair starting in (c0, c0 + cn], scanned:
+                    // own[x] counts the pairs after j0 that candidate c0 + x has passed.
+                    const uint32_t lo = uint32_t(c0), hi = uint32_t(c0 + cn);
                     const uint32_t* st = candidate.start;
+                    uint32_t* first = j0;
                     candidate.c0 = lo;
-                    ex_.launch("rsh.owner", cn, [=] SHEAF_HD_LAMBDA(size_t x) {
-                        own[x] = last_at_most(st, hits, lo + uint32_t(x));
+                    fill(ex_, own, cn, 0u);
+                    ex_.launch("rsh.owner", hits, [=] SHEAF_HD_LAMBDA(size_t j) {
+                        if (st[j] <= lo && (j + 1 == hits || st[j + 1] > lo)) *first = uint32_t(j);
+                        if (j > 0 && st[j] > lo && st[j] <= hi) own[st[j] - lo - 1] = 1;
                     });
+                    ex_.exclusive_scan_async(own, cn);
                 }
                 top_chunk(candidate, c0, cn, nodes, hit_flag, offset);
             }
@@ -491,11 +479,13 @@ template <class Exec> class DeviceTracer {
         }
     }
 
-    // Each level-1 pair: every ray of the node against the primitive, exactly. The counts go
-    // to final_count_ and the time to final_watch_ on the executing side: no wait here.
+    // Each level-1 pair: every ray of the node against the primitive, exactly: the phase
+    // final_tests within traversal. The counts go to final_count_ on the executing side, so
+    // the host does not wait here.
     void finals(const NodePrim* pairs, size_t count) {
         if (count == 0) return;
-        final_watch_->start();
+        clock_.stop("traversal");
+        clock_.start("final_tests");
         const int arity = s_.hierarchy_arity;
         const size_t rays_n = sorted_.size();
         const SceneView scene = scene_;
@@ -521,7 +511,8 @@ template <class Exec> class DeviceTracer {
                 return {node_last_child(pairs[j].node, arity, rays_n) - first, hits[j]};
             },
             SumCounts{});
-        final_watch_->stop();
+        clock_.stop("final_tests");
+        clock_.start("traversal");
     }
 
     // Every ray's exact tests: the candidates of its level-1 node.
@@ -543,6 +534,7 @@ template <class Exec> class DeviceTracer {
     SceneView scene_;
     const RenderSettings& s_;
     Stats& st_;
+    PhaseClock<Exec>& clock_;
     uint32_t light_count_;
     uint32_t objects_with_prims_ = 0;
     bool transparent_ = false; // some primitive may let light through (shadow pass logs)
@@ -556,7 +548,6 @@ template <class Exec> class DeviceTracer {
     HitSinks sinks_;
     Counts counts_;
     DeviceBuffer<TestCount, Exec> final_count_;
-    std::optional<typename Exec::Stopwatch> final_watch_;
 };
 
 } // namespace sheaf::wavefront

@@ -43,14 +43,17 @@ uint32_t count_and_scan(Exec& ex, const char* name, size_t n, uint32_t* offsets,
 /// Adds items [0, n) to samples: item i goes to sample `sample(i)` when `value(i, v)` gives
 /// it a contribution v. Per sample, items add in item order, so the sums are bitwise those of
 /// the CPU renderer's sequential loop: a stable sort of the items by sample, one thread per
-/// sample adding its run in order.
+/// sample adding its run in order. The number of runs stays on the executing side (threads
+/// past it return), so the host does not wait.
 template <class Exec, class Sample, class Value>
 void accumulate_in_order(Exec& ex, size_t n, Vec3* radiance, Sample sample, Value value) {
     if (n == 0) return;
-    DeviceBuffer<uint32_t, Exec> keys(ex, n), items(ex, n), heads(ex, n);
+    DeviceBuffer<uint32_t, Exec> keys(ex, n), items(ex, n), heads(ex, n), starts(ex, n + 2);
     uint32_t* k = keys.data();
     uint32_t* it = items.data();
     uint32_t* h = heads.data();
+    uint32_t* st = starts.data();  // st[r]: the first item of run r, then n
+    uint32_t* runs = st + (n + 1); // the number of runs
     ex.launch("accumulate.keys", n, [=] SHEAF_HD_LAMBDA(size_t i) {
         k[i] = sample(i);
         it[i] = uint32_t(i);
@@ -58,15 +61,18 @@ void accumulate_in_order(Exec& ex, size_t n, Vec3* radiance, Sample sample, Valu
     ex.sort_pairs(k, 1, it, n);
     ex.launch("accumulate.heads", n,
               [=] SHEAF_HD_LAMBDA(size_t j) { h[j] = j == 0 || k[j] != k[j - 1] ? 1u : 0u; });
-    const uint32_t runs = ex.exclusive_scan(h, n);
-    DeviceBuffer<uint32_t, Exec> starts(ex, size_t(runs) + 1);
-    uint32_t* st = starts.data();
+    ex.exclusive_scan_async(h, n);
     ex.launch("accumulate.starts", n, [=] SHEAF_HD_LAMBDA(size_t j) {
-        if (j == 0 || k[j] != k[j - 1]) st[h[j]] = uint32_t(j);
+        const bool head = j == 0 || k[j] != k[j - 1];
+        if (head) st[h[j]] = uint32_t(j);
+        if (j + 1 == n) {
+            const uint32_t count = h[j] + (head ? 1u : 0u);
+            st[count] = uint32_t(n);
+            *runs = count;
+        }
     });
-    const uint32_t end = uint32_t(n);
-    starts.upload(&end, 1, runs);
-    ex.launch("accumulate.add", runs, [=] SHEAF_HD_LAMBDA(size_t r) {
+    ex.launch("accumulate.add", n, [=] SHEAF_HD_LAMBDA(size_t r) {
+        if (r >= *runs) return;
         const uint32_t b = st[r], e = st[r + 1];
         Vec3 acc = radiance[k[b]];
         for (uint32_t j = b; j < e; ++j) {

@@ -217,7 +217,9 @@ class CudaExec {
 
       private:
         void record() {
-            events_.reserve(events_.size() + 1);
+            // Room first (geometric growth), so a failed push cannot leak the event.
+            if (events_.size() == events_.capacity())
+                events_.reserve(std::max<size_t>(16, 2 * events_.size()));
             cudaEvent_t e = nullptr;
             check(cudaEventCreate(&e), "cudaEventCreate");
             events_.push_back(e);

@@ -76,7 +76,8 @@ struct TopCandidates {
 };
 
 /// Test and hit counts packed for one scan: hits in the low 32 bits, tests in the high 32. A
-/// scanned array's totals are at most traversal.batch (<= 2^30) each, so neither carries.
+/// scanned array's totals are below 2^32 each (at most traversal.batch <= 2^30, or the object
+/// count for the object scan), so neither carries.
 SHEAF_HD inline uint64_t pack_counts(uint64_t tests, uint64_t hits) {
     return tests << 32 | hits;
 }

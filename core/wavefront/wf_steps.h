@@ -13,23 +13,12 @@
 
 namespace sheaf::wavefront {
 
-struct SumU64 {
-    SHEAF_HD uint64_t operator()(uint64_t a, uint64_t b) const { return a + b; }
-};
-
 template <class Exec, class T> void fill(Exec& ex, T* p, size_t n, T value) {
     ex.launch("fill", n, [=] SHEAF_HD_LAMBDA(size_t i) { p[i] = value; });
 }
 
 template <class Exec> void iota(Exec& ex, uint32_t* p, size_t n) {
     ex.launch("iota", n, [=] SHEAF_HD_LAMBDA(size_t i) { p[i] = uint32_t(i); });
-}
-
-/// Sum of p[0, n) as 64 bits.
-template <class Exec, class T> uint64_t sum(Exec& ex, const T* p, size_t n) {
-    return ex.transform_reduce(
-        "sum", n, uint64_t(0), [=] SHEAF_HD_LAMBDA(size_t i) -> uint64_t { return uint64_t(p[i]); },
-        SumU64{});
 }
 
 /// offsets[i] = count(i), then scanned in place; returns the total. Count, scan, fill: the

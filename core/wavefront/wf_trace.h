@@ -207,9 +207,12 @@ template <class Exec> class DeviceTracer {
             tests[i] = uint32_t(c.tests < 0xFFFFFFFFu ? c.tests : 0xFFFFFFFFu);
             hits[i] = uint32_t(c.hits);
         });
-        TestCount c;
-        c.tests = sum(ex_, tests, n);
-        c.hits = sum(ex_, hits, n);
+        const TestCount c = ex_.transform_reduce(
+            "brute.counts", n, TestCount{},
+            [=] SHEAF_HD_LAMBDA(size_t i) -> TestCount {
+                return {tests[i], hits[i]};
+            },
+            SumCounts{});
         clock_.stop("final_tests");
         return c;
     }

@@ -157,21 +157,23 @@ class CudaExec {
     }
 
     /// *acc = op(*acc, op over map(i) for i in [0, n)), acc in device memory, without a wait:
-    /// CUB's reduction into a slot after its scratch space, then one thread adds the slot.
+    /// CUB's reduction (from `identity`) into a slot after its scratch space, then one thread
+    /// steps *acc by the slot.
     template <class T, class Map, class Op>
-    void reduce_into(const char* name, size_t n, T* acc, const Map& map, const Op& op) {
+    void reduce_into(const char* name, size_t n, T* acc, T identity, const Map& map,
+                     const Op& op) {
         if (n == 0) return;
         ++launches_;
         check_frees();
         const thrust::counting_iterator<size_t> first(0);
         size_t bytes = 0;
         check(cub::DeviceReduce::TransformReduce(nullptr, bytes, first, static_cast<T*>(nullptr), n,
-                                                 op, map, T{}, stream_),
+                                                 op, map, identity, stream_),
               name);
         const size_t at = (bytes + 255) / 256 * 256;
         char* scratch = static_cast<char*>(temp(at + sizeof(T)));
         T* part = reinterpret_cast<T*>(scratch + at);
-        check(cub::DeviceReduce::TransformReduce(scratch, bytes, first, part, n, op, map, T{},
+        check(cub::DeviceReduce::TransformReduce(scratch, bytes, first, part, n, op, map, identity,
                                                  stream_),
               name);
         check(cudaGetLastError(), name);

@@ -364,22 +364,33 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
     add_test_counts(stats, p, s.cull_objects, trav.objects_.count(), levels, trav.final_.count());
 }
 
+namespace {
+
+void add_row(Stats& stats, const std::string& row, const TestCount& c) {
+    stats.add(row + "tests", double(c.tests));
+    stats.add(row + "hits", double(c.hits));
+    stats.add(row + "misses", double(c.tests - c.hits));
+}
+
+} // namespace
+
 void add_test_counts(Stats& stats, const std::string& p, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final) {
-    auto add = [&](const std::string& row, const TestCount& c) {
-        stats.add(row + "tests", double(c.tests));
-        stats.add(row + "hits", double(c.hits));
-        stats.add(row + "misses", double(c.tests - c.hits));
-    };
-    if (cull_objects) add(p + "objects.", objects);
+    if (cull_objects) add_row(stats, p + "objects.", objects);
     uint64_t total = 0;
     for (size_t k = levels.size(); k-- > 1;) {
-        add(p + "level" + std::to_string(k) + ".", levels[k]);
+        add_row(stats, p + "level" + std::to_string(k) + ".", levels[k]);
         total += levels[k].tests;
     }
-    add(p + "final.", final);
-    stats.add(p + "total", double(total + final.tests));
+    add_row(stats, p + "final.", TestCount{});
+    stats.add(p + "total", double(total));
+    add_final_counts(stats, p, final);
+}
+
+void add_final_counts(Stats& stats, const std::string& p, const TestCount& final) {
+    add_row(stats, p + "final.", final);
+    stats.add(p + "total", double(final.tests));
 }
 
 } // namespace sheaf

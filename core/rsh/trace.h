@@ -63,6 +63,11 @@ void add_test_counts(Stats& stats, const std::string& prefix, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final);
 
+/// Adds a batch's final tests to the rows add_test_counts wrote (final.* and total): for
+/// counts read after the batch, the rows written first with a zero final count, so the keys
+/// keep their order.
+void add_final_counts(Stats& stats, const std::string& prefix, const TestCount& final);
+
 /// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
 /// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`.
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& settings,

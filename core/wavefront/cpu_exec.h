@@ -69,14 +69,16 @@ class CpuExec {
     }
 
     /// *acc = op(*acc, op over map(i) for i in [0, n)), acc on the executing side: a
-    /// reduction the host reads later, with others, so it costs no wait. Two launches, as on
-    /// the GPU (the reduction, then the addition to *acc).
+    /// reduction the host reads later, with others, or that later launches read, so it costs
+    /// no wait. `identity`: op(identity, x) == x. Two launches, as on the GPU (the reduction,
+    /// then the step into *acc).
     template <class T, class Map, class Op>
-    void reduce_into(const char* name, size_t n, T* acc, const Map& map, const Op& op) {
+    void reduce_into(const char* name, size_t n, T* acc, T identity, const Map& map,
+                     const Op& op) {
         (void)name;
         if (n == 0) return;
         launches_ += 2;
-        *acc = op(*acc, reduce(n, T{}, map, op));
+        *acc = op(*acc, reduce(n, identity, map, op));
     }
 
     /// Sorts values by keys (n * words words, word 0 least significant), stably.

@@ -53,6 +53,7 @@ template <class Exec> class DeviceFrame {
             hits = shade_wave(hits, bounce);
             report(0.1f + 0.9f * float(bounce + 1) / float(s_.trace_depth + 1));
         }
+        tracer.flush();
         resolve();
         tracer_ = nullptr;
         clock_.add_to(st_);

@@ -136,8 +136,11 @@ template <class Exec> class DeviceTracer {
         fill(ex_, out.tests.data(), n, 0u);
         if (n == 0 || prims == 0) return;
 
+        // The final tests count into this batch's slot, read with the others' by flush().
+        final_count_ = take_final_slot(p);
         if (s_.accel == Accel::Brute) {
-            add_test_counts(st_, p, false, {}, {}, brute(batch, out)); // final tests only
+            brute(batch, out);
+            add_test_counts(st_, p, false, {}, {}, {}); // final tests only
             return;
         }
 
@@ -170,27 +173,34 @@ template <class Exec> class DeviceTracer {
         clock_.start("traversal");
         counts_ = Counts();
         counts_.levels.assign(size_t(s_.hierarchy_depth) + 1, TestCount());
-        final_count_ = DeviceBuffer<TestCount, Exec>(ex_, 1);
-        fill(ex_, final_count_.data(), 1, TestCount{});
         sinks_ = out.sinks();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>(ex_, node_count(1));
         fill(ex_, leaf_pairs_.data(), node_count(1), 0u);
         traverse();
         spread_ray_tests(out.tests.data(), n);
         clock_.stop("traversal");
-        counts_.final = final_count_.get(0);
 
-        add_test_counts(st_, p, s_.cull_objects, counts_.objects, counts_.levels, counts_.final);
+        add_test_counts(st_, p, s_.cull_objects, counts_.objects, counts_.levels, {});
         levels_.clear();
         sorted_ = DeviceBuffer<Ray, Exec>();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();
-        final_count_ = DeviceBuffer<TestCount, Exec>();
+    }
+
+    /// Adds the final tests of every batch traced since the last flush to the statistics:
+    /// one read for them all, at the end of the frame, so tracing a batch costs the host no
+    /// wait for its counts.
+    void flush() {
+        if (pending_.empty()) return;
+        const std::vector<TestCount> finals = finals_.download(pending_.size());
+        for (size_t i = 0; i < pending_.size(); ++i) add_final_counts(st_, pending_[i], finals[i]);
+        pending_.clear();
+        fill(ex_, finals_.data(), finals_.size(), TestCount{});
     }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private
     // member functions.
 
-    TestCount brute(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
+    void brute(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
         clock_.start("final_tests");
         const size_t n = batch.n;
         DeviceBuffer<uint32_t, Exec> hits_buf(ex_, n);
@@ -207,14 +217,13 @@ template <class Exec> class DeviceTracer {
             tests[i] = uint32_t(c.tests < 0xFFFFFFFFu ? c.tests : 0xFFFFFFFFu);
             hits[i] = uint32_t(c.hits);
         });
-        const TestCount c = ex_.transform_reduce(
-            "brute.counts", n, TestCount{},
+        ex_.reduce_into(
+            "brute.counts", n, final_count_, TestCount{},
             [=] SHEAF_HD_LAMBDA(size_t i) -> TestCount {
                 return {tests[i], hits[i]};
             },
             SumCounts{});
         clock_.stop("final_tests");
-        return c;
     }
 
     // Keys of the batch under hash.mode. Returns the number of 32-bit words per key.
@@ -242,17 +251,32 @@ template <class Exec> class DeviceTracer {
             });
             return 2;
         }
-        const Aabb box = ex_.transform_reduce(
-            "hash.box", n, Aabb{Vec3(FLT_MAX), Vec3(-FLT_MAX)},
+        if (mode == HashMode::Crsh && batch.type == RayType::Shadow) {
+            keys = DeviceBuffer<uint32_t, Exec>(ex_, n);
+            uint32_t* k = keys.data();
+            const int lb = light_bits(light_count_);
+            const uint32_t* light = batch.light.data();
+            ex_.launch("hash.crsh_shadow", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+                k[i] = crsh_shadow_key(light[i], lb, rays[i].dir);
+            });
+            return 1;
+        }
+        // The origins' bounding box, kept on the executing side for the hash kernels.
+        if (box_.empty()) box_ = DeviceBuffer<Aabb, Exec>(ex_, 1);
+        const Aabb none{Vec3(FLT_MAX), Vec3(-FLT_MAX)};
+        fill(ex_, box_.data(), 1, none);
+        ex_.reduce_into(
+            "hash.box", n, box_.data(), none,
             [=] SHEAF_HD_LAMBDA(size_t i) -> Aabb {
                 return {rays[i].origin, rays[i].origin};
             },
             BoxUnion{});
+        const Aabb* box = box_.data();
         if (mode == HashMode::Hash192) {
             keys = DeviceBuffer<uint32_t, Exec>(ex_, 6 * n);
             uint32_t* k = keys.data();
             ex_.launch("hash.192", n, [=] SHEAF_HD_LAMBDA(size_t i) {
-                hash192_key(box, rays[i].origin, rays[i].dir, &k[i * 6]);
+                hash192_key(*box, rays[i].origin, rays[i].dir, &k[i * 6]);
             });
             return 6;
         }
@@ -260,17 +284,11 @@ template <class Exec> class DeviceTracer {
         uint32_t* k = keys.data();
         if (mode == HashMode::Hash32) {
             ex_.launch("hash.32", n, [=] SHEAF_HD_LAMBDA(size_t i) {
-                k[i] = hash32_key(box, rays[i].origin, rays[i].dir);
-            });
-        } else if (batch.type == RayType::Shadow) {
-            const int lb = light_bits(light_count_);
-            const uint32_t* light = batch.light.data();
-            ex_.launch("hash.crsh_shadow", n, [=] SHEAF_HD_LAMBDA(size_t i) {
-                k[i] = crsh_shadow_key(light[i], lb, rays[i].dir);
+                k[i] = hash32_key(*box, rays[i].origin, rays[i].dir);
             });
         } else {
             ex_.launch("hash.crsh", n, [=] SHEAF_HD_LAMBDA(size_t i) {
-                k[i] = crsh_secondary_key(box, rays[i].origin, rays[i].dir);
+                k[i] = crsh_secondary_key(*box, rays[i].origin, rays[i].dir);
             });
         }
         return 1;
@@ -484,8 +502,8 @@ template <class Exec> class DeviceTracer {
     }
 
     // Each level-1 pair: every ray of the node against the primitive, exactly: the phase
-    // final_tests within traversal. The counts go to final_count_ on the executing side, so
-    // the host does not wait here.
+    // final_tests within traversal. The counts go to the batch's slot on the executing side,
+    // so the host does not wait here.
     void finals(const NodePrim* pairs, size_t count) {
         if (count == 0) return;
         clock_.stop("traversal");
@@ -509,7 +527,7 @@ template <class Exec> class DeviceTracer {
                 uint32_t(final_tests(scene, rays, perm, first, last, pr.prim, any, shadow, sinks));
         });
         ex_.reduce_into(
-            "rsh.final_counts", count, final_count_.data(),
+            "rsh.final_counts", count, final_count_, TestCount{},
             [=] SHEAF_HD_LAMBDA(size_t j) -> TestCount {
                 const size_t first = size_t(pairs[j].node) * size_t(arity);
                 return {node_last_child(pairs[j].node, arity, rays_n) - first, hits[j]};
@@ -529,8 +547,21 @@ template <class Exec> class DeviceTracer {
     }
 
   private:
+    // A zeroed slot for the batch with statistics prefix p; the slots grow by doubling.
+    TestCount* take_final_slot(const std::string& p) {
+        if (pending_.size() == finals_.size()) {
+            DeviceBuffer<TestCount, Exec> grown(ex_, std::max<size_t>(16, 2 * finals_.size()));
+            fill(ex_, grown.data(), grown.size(), TestCount{});
+            if (!finals_.empty())
+                ex_.copy_on_device(grown.data(), finals_.data(), finals_.size() * sizeof(TestCount));
+            finals_ = std::move(grown);
+        }
+        pending_.push_back(p);
+        return finals_.data() + (pending_.size() - 1);
+    }
+
     struct Counts {
-        TestCount objects, final;
+        TestCount objects;
         std::vector<TestCount> levels; // index k: level k
     };
 
@@ -551,7 +582,11 @@ template <class Exec> class DeviceTracer {
     DeviceBuffer<uint32_t, Exec> leaf_pairs_;
     HitSinks sinks_;
     Counts counts_;
-    DeviceBuffer<TestCount, Exec> final_count_;
+    TestCount* final_count_ = nullptr; // the batch's slot in finals_
+    // Final-test counts of the batches traced since the last flush, and their prefixes.
+    DeviceBuffer<TestCount, Exec> finals_;
+    std::vector<std::string> pending_;
+    DeviceBuffer<Aabb, Exec> box_; // the batch's ray origins' bounding box (hashes)
 };
 
 } // namespace sheaf::wavefront

@@ -1,60 +1,88 @@
-// The prepared scene in the executing side's memory: each of PreparedScene's arrays copied
-// once per frame, and the SceneView of them that every launch takes by value. Image textures
-// stay behind (OpenImageIO is host-only): scenes that use them render on the CPU backend.
+// The prepared scene in the executing side's memory, copied once per frame, and the SceneView
+// of it that every launch takes by value. The small arrays (materials, lights, CSG nodes ...)
+// are packed into one buffer and copied at once, one host wait instead of one each; an array
+// of at least kOwnCopy bytes (a large mesh's triangles) is copied on its own, where the copy's
+// fixed cost is small against its transfer and packing would add a pass over its bytes on the
+// host. Image textures stay behind (OpenImageIO is host-only): scenes that use them render on
+// the CPU backend.
 #pragma once
 
 #include "core/scene/scene_view.h"
 #include "core/wavefront/buffer.h"
 
 #include <cstdint>
+#include <cstring>
+#include <functional>
 #include <vector>
 
 namespace sheaf::wavefront {
 
 template <class Exec> class DeviceScene {
   public:
+    static constexpr size_t kOwnCopy = size_t(1) << 20;
+
     DeviceScene(Exec& exec, const PreparedScene& p) : exec_(exec) {
         SceneView& v = view;
         v = SceneView(p); // counts and plain values; every pointer is replaced below
-        v.tris = put(p.tris);
-        v.normals = put(p.normals);
-        v.uvs = put(p.uvs);
-        v.prim_object = put(p.prim_object);
-        v.prim_sphere = put(p.prim_sphere);
-        v.prim_flags = put(p.prim_flags);
-        v.object_begin = put(p.object_begin);
-        v.object_sphere = put(p.object_sphere);
-        v.object_material = put(p.object_material);
-        v.shapes = put(p.shapes);
-        v.shape_material = put(p.shape_material);
-        v.csg = put(p.csg);
-        v.csg_children = put(p.csg_children);
-        v.analytic_root = put(p.analytic_root);
-        v.materials = put(p.materials);
-        v.pigments = put(p.pigments);
-        v.pigment_entries = put(p.pigment_entries);
-        v.normal_patterns = put(p.normal_patterns);
-        v.material_switches = put(p.material_switches);
-        v.material_entries = put(p.material_entries);
-        v.lights = put(p.lights);
+        put(p.tris, v.tris);
+        put(p.normals, v.normals);
+        put(p.uvs, v.uvs);
+        put(p.prim_object, v.prim_object);
+        put(p.prim_sphere, v.prim_sphere);
+        put(p.prim_flags, v.prim_flags);
+        put(p.object_begin, v.object_begin);
+        put(p.object_sphere, v.object_sphere);
+        put(p.object_material, v.object_material);
+        put(p.shapes, v.shapes);
+        put(p.shape_material, v.shape_material);
+        put(p.csg, v.csg);
+        put(p.csg_children, v.csg_children);
+        put(p.analytic_root, v.analytic_root);
+        put(p.materials, v.materials);
+        put(p.pigments, v.pigments);
+        put(p.pigment_entries, v.pigment_entries);
+        put(p.normal_patterns, v.normal_patterns);
+        put(p.material_switches, v.material_switches);
+        put(p.material_entries, v.material_entries);
+        put(p.lights, v.lights);
         v.textures = nullptr;
         v.sampler = nullptr;
+        packed_ = DeviceBuffer<uint8_t, Exec>(exec, staging_.size());
+        packed_.upload(staging_.data(), staging_.size());
+        for (const auto& point : pointers_) point(packed_.data());
+        staging_ = {}, pointers_ = {};
     }
 
     SceneView view;
 
   private:
-    template <class T> const T* put(const std::vector<T>& src) {
-        if (src.empty()) return nullptr;
-        DeviceBuffer<uint8_t, Exec> b(exec_, src.size() * sizeof(T));
-        b.upload(reinterpret_cast<const uint8_t*>(src.data()), src.size() * sizeof(T));
-        const T* p = reinterpret_cast<const T*>(b.data());
-        buffers_.push_back(std::move(b));
-        return p;
+    // A large src is copied into a buffer of its own; a small one is appended to the staging
+    // bytes at an offset aligned for any of the scene's types (buffers are at least
+    // 16-aligned), and dst is pointed at it once the packed buffer exists.
+    template <class T> void put(const std::vector<T>& src, const T*& dst) {
+        static_assert(alignof(T) <= 16, "the packed scene buffer aligns arrays to 16 bytes");
+        dst = nullptr;
+        const size_t bytes = src.size() * sizeof(T);
+        if (bytes == 0) return;
+        if (bytes >= kOwnCopy) {
+            DeviceBuffer<uint8_t, Exec> b(exec_, bytes);
+            b.upload(reinterpret_cast<const uint8_t*>(src.data()), bytes);
+            dst = reinterpret_cast<const T*>(b.data());
+            own_.push_back(std::move(b));
+            return;
+        }
+        const size_t offset = (staging_.size() + 255) / 256 * 256;
+        staging_.resize(offset + bytes);
+        std::memcpy(staging_.data() + offset, src.data(), bytes);
+        pointers_.push_back(
+            [&dst, offset](const uint8_t* base) { dst = reinterpret_cast<const T*>(base + offset); });
     }
 
     Exec& exec_;
-    std::vector<DeviceBuffer<uint8_t, Exec>> buffers_;
+    std::vector<uint8_t> staging_;
+    std::vector<std::function<void(const uint8_t*)>> pointers_;
+    DeviceBuffer<uint8_t, Exec> packed_;
+    std::vector<DeviceBuffer<uint8_t, Exec>> own_;
 };
 
 } // namespace sheaf::wavefront

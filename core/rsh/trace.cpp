@@ -63,10 +63,10 @@ void trace_brute(const SceneView& scene, const RayBatch& batch, bool any, bool s
 // The hierarchy traversal with bounded candidate lists.
 class Traversal {
   public:
-    Traversal(const PreparedScene& scene, const RayHierarchy& h, const TrackedVector<Ray>& rays,
-              const std::vector<uint32_t>& perm, bool any, bool shadow, uint8_t skip,
-              size_t batch, MemoryTracker& memory, TraceResult& out)
-        : levels_(size_t(h.depth) + 1), scene_(scene), view_(scene), sinks_(sinks(out)), h_(h), rays_(rays), perm_(perm), any_(any),
+    Traversal(const PreparedScene& scene, const CullUnits& units, const RayHierarchy& h,
+              const TrackedVector<Ray>& rays, const std::vector<uint32_t>& perm, bool any,
+              bool shadow, uint8_t skip, size_t batch, MemoryTracker& memory, TraceResult& out)
+        : levels_(size_t(h.depth) + 1), scene_(scene), units_(units), view_(scene), sinks_(sinks(out)), h_(h), rays_(rays), perm_(perm), any_(any),
           shadow_(shadow), skip_(skip), batch_(batch), out_(out),
           local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
         for (int k = 0; k <= h.depth; ++k) buffers_.push_back(tracked_vector<Pair>(memory));
@@ -101,11 +101,23 @@ class Traversal {
                             }
                         };
                         if (cull) {
-                            for (size_t o = 0; o < scene_.object_count(); ++o) {
+                            // Each object's sphere, then, where it is hit and the object
+                            // is split (cull.cluster), the spheres of its runs.
+                            for (uint32_t o = 0; o < uint32_t(scene_.object_count()); ++o) {
                                 ++ot;
                                 if (!node_hits_sphere(n, scene_.object_sphere[o])) continue;
                                 ++oh;
-                                test_range(scene_.object_begin[o], scene_.object_begin[o + 1]);
+                                const uint32_t u0 = units_.object_units[o];
+                                if (!units_.split(o)) {
+                                    test_range(units_.begin[u0], units_.begin[u0 + 1]);
+                                    continue;
+                                }
+                                for (uint32_t u = u0; u < units_.object_units[o + 1]; ++u) {
+                                    ++ot;
+                                    if (!node_hits_sphere(n, units_.sphere[u])) continue;
+                                    ++oh;
+                                    test_range(units_.begin[u], units_.begin[u + 1]);
+                                }
                             }
                         } else {
                             test_range(0, uint32_t(prims));
@@ -195,6 +207,7 @@ class Traversal {
     }
 
     const PreparedScene& scene_;
+    const CullUnits& units_;
     SceneView view_;
     HitSinks sinks_;
     const RayHierarchy& h_;
@@ -282,6 +295,12 @@ Vec3 TraceResult::pass(size_t i) const {
 
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
                  Stats& stats, MemoryTracker& memory, TraceResult& out) {
+    trace_batch(scene, make_cull_units(scene, s.cull_objects ? s.cull_cluster : 0), batch, s,
+                stats, memory, out);
+}
+
+void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
+                 const RenderSettings& s, Stats& stats, MemoryTracker& memory, TraceResult& out) {
     const size_t n = batch.size();
     const bool any = any_hit_query(batch.type);
     // Objects without shadows let shadow and AO rays pass; objects without reflections are
@@ -345,7 +364,7 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
               double(h.node_count(s.hierarchy_depth)));
 
     const auto t0 = std::chrono::steady_clock::now();
-    Traversal trav(scene, h, sorted, order.perm, any, batch.type == RayType::Shadow, skip,
+    Traversal trav(scene, units, h, sorted, order.perm, any, batch.type == RayType::Shadow, skip,
                    size_t(s.batch_pairs), memory, out);
     trav.run(s.cull_objects);
     const double total_ms = ms_since(t0);
@@ -377,7 +396,7 @@ void add_row(Stats& stats, const std::string& row, const TestCount& c) {
 void add_test_counts(Stats& stats, const std::string& p, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final) {
-    if (cull_objects) add_row(stats, p + "objects.", objects);
+    if (cull_objects) add_row(stats, p + "objects.", TestCount{});
     uint64_t total = 0;
     for (size_t k = levels.size(); k-- > 1;) {
         add_row(stats, p + "level" + std::to_string(k) + ".", levels[k]);
@@ -385,10 +404,12 @@ void add_test_counts(Stats& stats, const std::string& p, bool cull_objects,
     }
     add_row(stats, p + "final.", TestCount{});
     stats.add(p + "total", double(total));
-    add_final_counts(stats, p, final);
+    add_late_counts(stats, p, cull_objects, objects, final);
 }
 
-void add_final_counts(Stats& stats, const std::string& p, const TestCount& final) {
+void add_late_counts(Stats& stats, const std::string& p, bool cull_objects,
+                     const TestCount& objects, const TestCount& final) {
+    if (cull_objects) add_row(stats, p + "objects.", objects);
     add_row(stats, p + "final.", final);
     stats.add(p + "total", double(final.tests));
 }

@@ -10,6 +10,7 @@
 
 #include "core/base/memory.h"
 #include "core/rays/ray_batch.h"
+#include "core/rsh/cull_units.h"
 #include "core/scene/prepared_scene.h"
 #include "core/settings/settings.h"
 #include "core/stats/stats.h"
@@ -63,13 +64,19 @@ void add_test_counts(Stats& stats, const std::string& prefix, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final);
 
-/// Adds a batch's final tests to the rows add_test_counts wrote (final.* and total): for
-/// counts read after the batch, the rows written first with a zero final count, so the keys
-/// keep their order.
-void add_final_counts(Stats& stats, const std::string& prefix, const TestCount& final);
+/// Adds a batch's object and final-test counts to the rows add_test_counts wrote (objects.*
+/// when culling objects, final.* and total): for counts read after the batch, the rows
+/// written first with those counts zero, so the keys keep their order.
+void add_late_counts(Stats& stats, const std::string& prefix, bool cull_objects,
+                     const TestCount& objects, const TestCount& final);
 
 /// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
-/// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`.
+/// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`. `units`: the scene's
+/// culling units under the settings (make_cull_units, once per frame).
+void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
+                 const RenderSettings& settings, Stats& stats, MemoryTracker& memory,
+                 TraceResult& result);
+/// The same, computing the culling units for this batch alone.
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& settings,
                  Stats& stats, MemoryTracker& memory, TraceResult& result);
 

@@ -56,6 +56,16 @@ const std::vector<SettingSpec>& setting_specs() {
          0,
          {},
          "test top hierarchy nodes against object bounding spheres first"},
+        {"cull.cluster",
+         K::Int,
+         "64",
+         0,
+         1 << 24,
+         {},
+         "with cull.objects: an object of more primitives than this is also culled in runs of "
+         "this many consecutive primitives, each under its own sphere, tested where the "
+         "object's sphere is hit, so a top node that reaches a large mesh meets only the "
+         "primitives of the runs it reaches; 0 culls whole objects only, as the papers do"},
         {"cull.distance",
          K::Bool,
          "true",
@@ -306,6 +316,7 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
         choice("sort.algorithm") == "bitonic" ? SortAlgorithm::Bitonic : SortAlgorithm::Radix;
     r.cull_objects = v.at("cull.objects") == "true";
     r.cull_distance = v.at("cull.distance") == "true";
+    r.cull_cluster = i("cull.cluster");
     r.trace_depth = i("trace.depth");
     const std::string backend = choice("backend");
     r.backend = backend == "cpu" ? Backend::Cpu : backend == "cuda" ? Backend::Cuda : Backend::Auto;

@@ -62,6 +62,7 @@ struct RenderSettings {
     SortAlgorithm sort_algorithm = SortAlgorithm::Radix;
     bool cull_objects = true;
     bool cull_distance = true;
+    int cull_cluster = 64; // primitives per culling sphere within a split object; 0: objects
     int trace_depth = 5;
     Backend backend = Backend::Auto;
     int width = 512, height = 512;

@@ -65,6 +65,9 @@ const std::vector<SettingList>& variants() {
         {{"hierarchy.arity", "64"}, {"hierarchy.depth", "3"}},
         {{"traversal.batch", "1024"}},
         {{"hash.mode", "none"}, {"sort.mode", "none"}},
+        {{"cull.cluster", "0"}},
+        {{"cull.cluster", "1"}, {"traversal.batch", "4096"}},
+        {{"cull.cluster", "7"}, {"hash.mode", "hash192"}, {"hierarchy.depth", "3"}},
     };
     return v;
 }

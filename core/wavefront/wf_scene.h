@@ -7,6 +7,7 @@
 // the CPU backend.
 #pragma once
 
+#include "core/rsh/cull_units.h"
 #include "core/scene/scene_view.h"
 #include "core/wavefront/buffer.h"
 
@@ -17,11 +18,20 @@
 
 namespace sheaf::wavefront {
 
+/// The culling units (core/rsh/cull_units.h) on the executing side.
+struct CullView {
+    const uint32_t* begin = nullptr; // count + 1 entries
+    const Sphere* sphere = nullptr;
+    const uint32_t* object = nullptr;
+    const uint32_t* object_units = nullptr; // objects + 1 entries
+    uint32_t count = 0;
+};
+
 template <class Exec> class DeviceScene {
   public:
     static constexpr size_t kOwnCopy = size_t(1) << 20;
 
-    DeviceScene(Exec& exec, const PreparedScene& p) : exec_(exec) {
+    DeviceScene(Exec& exec, const PreparedScene& p, const CullUnits& units) : exec_(exec) {
         SceneView& v = view;
         v = SceneView(p); // counts and plain values; every pointer is replaced below
         put(p.tris, v.tris);
@@ -45,6 +55,11 @@ template <class Exec> class DeviceScene {
         put(p.material_switches, v.material_switches);
         put(p.material_entries, v.material_entries);
         put(p.lights, v.lights);
+        put(units.begin, cull.begin);
+        put(units.sphere, cull.sphere);
+        put(units.object, cull.object);
+        put(units.object_units, cull.object_units);
+        cull.count = uint32_t(units.count());
         v.textures = nullptr;
         v.sampler = nullptr;
         packed_ = DeviceBuffer<uint8_t, Exec>(exec, staging_.size());
@@ -54,6 +69,7 @@ template <class Exec> class DeviceScene {
     }
 
     SceneView view;
+    CullView cull;
 
   private:
     // A large src is copied into a buffer of its own; a small one is appended to the staging

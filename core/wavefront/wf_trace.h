@@ -10,6 +10,7 @@
 #include "core/rsh/hierarchy.h"
 #include "core/rsh/trace_kernels.h"
 #include "core/wavefront/wf_order.h"
+#include "core/wavefront/wf_scene.h"
 
 #include <cfloat>
 #include <cstdint>
@@ -49,35 +50,35 @@ struct NodePrim {
     uint32_t node, prim;
 };
 
-struct NodeObject {
-    uint32_t node, object;
+struct NodeUnit {
+    uint32_t node, unit; // a top node and a culling unit (core/rsh/cull_units.h)
 };
 
 /// The top level's candidate pairs of a group of top nodes from g0, in order of node, then
-/// primitive: every primitive of every node (no culling, or every object hit), or, when
-/// `sparse`, the primitives of each hit (node, object) pair j, whose first candidate is
+/// primitive: every primitive of every node (no culling, or every unit hit), or, when
+/// `sparse`, the primitives of each hit (node, unit) pair j, whose first candidate is
 /// start[j]. Candidates are taken a chunk at a time from c0; candidate c belongs to pair
 /// *j0 + owner[c - c0].
 struct TopCandidates {
     bool sparse;
     uint32_t g0, prims;
-    const NodeObject* hit;
+    const NodeUnit* hit;
     const uint32_t* start;
     const uint32_t* owner;
     const uint32_t* j0;
-    const uint32_t* object_begin;
+    const uint32_t* unit_begin;
     uint32_t c0;
 
     SHEAF_HD NodePrim operator()(size_t c) const {
         if (!sparse) return {g0 + uint32_t(c / prims), uint32_t(c % prims)};
         const uint32_t j = *j0 + owner[c - c0];
-        return {hit[j].node, object_begin[hit[j].object] + (uint32_t(c) - start[j])};
+        return {hit[j].node, unit_begin[hit[j].unit] + (uint32_t(c) - start[j])};
     }
 };
 
 /// Test and hit counts packed for one scan: hits in the low 32 bits, tests in the high 32. A
-/// scanned array's totals are below 2^32 each (at most traversal.batch <= 2^30, or the object
-/// count for the object scan), so neither carries.
+/// scanned array's totals are below 2^32 each (at most traversal.batch <= 2^30), so neither
+/// carries.
 SHEAF_HD inline uint64_t pack_counts(uint64_t tests, uint64_t hits) {
     return tests << 32 | hits;
 }
@@ -102,13 +103,15 @@ struct BoxUnion {
 
 template <class Exec> class DeviceTracer {
   public:
+    /// `units`: the culling units on the host, `cull` the same on the executing side.
     DeviceTracer(Exec& ex, const PreparedScene& host, const SceneView& scene,
-                 const RenderSettings& s, Stats& stats, PhaseClock<Exec>& clock)
-        : ex_(ex), scene_(scene), s_(s), st_(stats), clock_(clock),
+                 const CullUnits& units, const CullView& cull, const RenderSettings& s,
+                 Stats& stats, PhaseClock<Exec>& clock)
+        : ex_(ex), scene_(scene), cull_(cull), s_(s), st_(stats), clock_(clock),
           light_count_(uint32_t(host.lights.size())) {
         for (uint8_t f : host.prim_flags) transparent_ = transparent_ || (f & kPrimMayPass);
-        for (size_t o = 0; o + 1 < host.object_begin.size(); ++o)
-            objects_with_prims_ += host.object_begin[o + 1] > host.object_begin[o] ? 1 : 0;
+        for (size_t u = 0; u < units.count(); ++u)
+            units_with_prims_ += units.begin[u + 1] > units.begin[u] ? 1 : 0;
     }
 
     void trace(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
@@ -136,8 +139,12 @@ template <class Exec> class DeviceTracer {
         fill(ex_, out.tests.data(), n, 0u);
         if (n == 0 || prims == 0) return;
 
-        // The final tests count into this batch's slot, read with the others' by flush().
-        final_count_ = take_final_slot(p);
+        // Object and final tests count into this batch's slot, read with the others' by
+        // flush().
+        const bool cull = s_.accel != Accel::Brute && s_.cull_objects;
+        BatchCounts* slot = take_slot(p, cull);
+        objects_count_ = &slot->objects;
+        final_count_ = &slot->final;
         if (s_.accel == Accel::Brute) {
             brute(batch, out);
             add_test_counts(st_, p, false, {}, {}, {}); // final tests only
@@ -180,21 +187,23 @@ template <class Exec> class DeviceTracer {
         spread_ray_tests(out.tests.data(), n);
         clock_.stop("traversal");
 
-        add_test_counts(st_, p, s_.cull_objects, counts_.objects, counts_.levels, {});
+        add_test_counts(st_, p, cull, {}, counts_.levels, {});
         levels_.clear();
         sorted_ = DeviceBuffer<Ray, Exec>();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();
     }
 
-    /// Adds the final tests of every batch traced since the last flush to the statistics:
-    /// one read for them all, at the end of the frame, so tracing a batch costs the host no
-    /// wait for its counts.
+    /// Adds the object and final tests of every batch traced since the last flush to the
+    /// statistics: one read for them all, at the end of the frame, so tracing a batch costs
+    /// the host no wait for its counts.
     void flush() {
         if (pending_.empty()) return;
-        const std::vector<TestCount> finals = finals_.download(pending_.size());
-        for (size_t i = 0; i < pending_.size(); ++i) add_final_counts(st_, pending_[i], finals[i]);
+        const std::vector<BatchCounts> counts = slots_.download(pending_.size());
+        for (size_t i = 0; i < pending_.size(); ++i)
+            add_late_counts(st_, pending_[i].prefix, pending_[i].cull, counts[i].objects,
+                            counts[i].final);
         pending_.clear();
-        fill(ex_, finals_.data(), finals_.size(), TestCount{});
+        fill(ex_, slots_.data(), slots_.size(), BatchCounts{});
     }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private
@@ -322,37 +331,40 @@ template <class Exec> class DeviceTracer {
         }
     }
 
-    // Top nodes against object spheres (cull.objects), then against the primitive spheres of
-    // the objects they reach. Top nodes go in groups of at most traversal.batch (node, object)
+    // Top nodes against the object spheres and, within split objects, the unit spheres
+    // (cull.objects, cull.cluster: core/rsh/cull_units.h), then against the primitive spheres
+    // of the units they reach. Top nodes go in groups of at most traversal.batch (node, unit)
     // pairs with culling, (node, primitive) pairs without, and a group's candidates at most
-    // traversal.batch at a time. With culling only the primitives of hit objects are expanded
-    // (an object's primitives are object_begin[o] .. object_begin[o + 1]), so the work is the
-    // tests the statistics count, in few launches; where every node hit every object, the
-    // candidates are all the primitives, with no expansion. Counts come with the scan totals
-    // the host needs anyway (pack_counts), so the host waits once per compaction.
+    // traversal.batch at a time. With culling only the primitives of hit units are expanded
+    // (unit u's primitives are cull_.begin[u] .. cull_.begin[u + 1]), so the work is the
+    // tests the statistics count, in few launches; where every node hit every unit, the
+    // candidates are all the primitives, with no expansion. The level counts come with the
+    // scan totals the host needs anyway (pack_counts), the object counts stay on the
+    // executing side (reduce_into), so the host waits once per compaction.
     void traverse() {
         const int top = s_.hierarchy_depth;
         const size_t top_nodes = node_count(top);
         const uint32_t prims = scene_.prim_count();
-        const uint32_t objects = scene_.object_count;
+        const uint32_t units = cull_.count;
         const bool cull = s_.cull_objects;
         const size_t batch = std::max<size_t>(1, size_t(s_.batch_pairs));
         // A group's candidate indices fit 32 bits.
         const size_t group =
-            std::max<size_t>(1, std::min(batch / std::max<size_t>(1, cull ? objects : prims),
+            std::max<size_t>(1, std::min(batch / std::max<size_t>(1, cull ? units : prims),
                                          size_t(UINT32_MAX) / std::max<size_t>(1, prims)));
         const size_t most = std::min(group, top_nodes);
         const size_t most_chunk = std::min(batch, most * size_t(prims));
-        DeviceBuffer<uint8_t, Exec> objhit_buf(ex_, cull ? most * objects : 0);
-        DeviceBuffer<uint64_t, Exec> objoff_buf(ex_, cull ? most * objects : 0);
+        DeviceBuffer<uint8_t, Exec> objhit_buf(ex_, cull ? most * units : 0);
+        DeviceBuffer<uint32_t, Exec> objoff_buf(ex_, cull ? most * units : 0);
         DeviceBuffer<uint8_t, Exec> hit_flag_buf(ex_, most_chunk);
         DeviceBuffer<uint64_t, Exec> offset_buf(ex_, most_chunk);
         DeviceBuffer<uint32_t, Exec> owner_buf(ex_, cull ? most_chunk : 0);
         DeviceBuffer<uint32_t, Exec> j0_buf(ex_, cull ? 1 : 0);
         const RayNode* nodes = levels_[size_t(top) - 1].data();
-        const SceneView scene = scene_;
+        const CullView cv = cull_;
         uint8_t* objhit = objhit_buf.data();
-        uint64_t* objoff = objoff_buf.data();
+        uint32_t* objoff = objoff_buf.data();
+        const Sphere* object_sphere = scene_.object_sphere;
         uint8_t* hit_flag = hit_flag_buf.data();
         uint64_t* offset = offset_buf.data();
         uint32_t* own = owner_buf.data();
@@ -361,40 +373,50 @@ template <class Exec> class DeviceTracer {
             const size_t gn = std::min(top_nodes, g0 + group) - g0;
             // Candidate c of the group is the (node, primitive) pair candidate(c).
             size_t candidates = gn * size_t(prims);
-            DeviceBuffer<NodeObject, Exec> hit_buf;
+            DeviceBuffer<NodeUnit, Exec> hit_buf;
             DeviceBuffer<uint32_t, Exec> start_buf;
             TopCandidates candidate{false,   uint32_t(g0),       prims, nullptr, nullptr, nullptr,
-                                    nullptr, scene.object_begin, 0};
+                                    nullptr, cv.begin,          0};
             uint32_t hits = 0;
             if (cull) {
-                // Every (node, object) pair tested; the hit pairs with primitives compacted.
-                ex_.launch("rsh.objects", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
-                    const uint32_t o = uint32_t(x % objects);
-                    const bool hit =
-                        node_hits_sphere(nodes[g0 + x / objects], scene.object_sphere[o]);
-                    const bool has_prims = scene.object_begin[o + 1] > scene.object_begin[o];
-                    // Packed: every hit (high), the hits compacted: those with primitives.
-                    objhit[x] = hit && has_prims ? 1 : 0;
-                    objoff[x] = pack_counts(hit ? 1 : 0, objhit[x]);
+                // Every (node, unit) pair: the unit's object's sphere, then, where that is hit
+                // and the object split, the unit's; counted as the CPU counts them (the
+                // object's test with its first unit). The pairs that pass and have primitives
+                // are compacted. objhit: bit 0 passes, bits 1-2 tests, bits 3-4 hits.
+                ex_.launch("rsh.objects", gn * units, [=] SHEAF_HD_LAMBDA(size_t x) {
+                    const uint32_t u = uint32_t(x % units);
+                    const RayNode& node = nodes[g0 + x / units];
+                    const uint32_t o = cv.object[u], u0 = cv.object_units[o];
+                    const bool split = cv.object_units[o + 1] - u0 > 1;
+                    const bool ho = node_hits_sphere(node, object_sphere[o]);
+                    const bool hu = ho && split && node_hits_sphere(node, cv.sphere[u]);
+                    const uint32_t t = (u == u0 ? 1u : 0u) + (ho && split ? 1u : 0u);
+                    const uint32_t h = (u == u0 && ho ? 1u : 0u) + (hu ? 1u : 0u);
+                    const bool pass = ho && (!split || hu) && cv.begin[u + 1] > cv.begin[u];
+                    objhit[x] = uint8_t((pass ? 1u : 0u) | t << 1 | h << 3);
+                    objoff[x] = pass ? 1u : 0u;
                 });
-                const uint64_t total = ex_.exclusive_scan(objoff, gn * objects);
-                hits = packed_hits(total);
-                counts_.objects.tests += gn * objects;
-                counts_.objects.hits += total >> 32;
-                // Unless every node hit every object with primitives (one object, say), when
-                // the candidates are all the primitives in the plain order: the hit pairs'
-                // primitive ranges.
-                if (hits < gn * objects_with_prims_) {
-                    hit_buf = DeviceBuffer<NodeObject, Exec>(ex_, hits);
+                ex_.reduce_into(
+                    "rsh.object_counts", gn * units, objects_count_, TestCount{},
+                    [=] SHEAF_HD_LAMBDA(size_t x) -> TestCount {
+                        return {uint32_t(objhit[x] >> 1 & 3u), uint32_t(objhit[x] >> 3 & 3u)};
+                    },
+                    SumCounts{});
+                hits = ex_.exclusive_scan(objoff, gn * units);
+                // Unless every node hit every unit with primitives (one small object, say),
+                // when the candidates are all the primitives in the plain order: the hit
+                // pairs' primitive ranges.
+                if (hits < gn * units_with_prims_) {
+                    hit_buf = DeviceBuffer<NodeUnit, Exec>(ex_, hits);
                     start_buf = DeviceBuffer<uint32_t, Exec>(ex_, hits);
-                    NodeObject* h = hit_buf.data();
+                    NodeUnit* h = hit_buf.data();
                     uint32_t* sp = start_buf.data();
-                    ex_.launch("rsh.object_fill", gn * objects, [=] SHEAF_HD_LAMBDA(size_t x) {
-                        if (!objhit[x]) return;
-                        const uint32_t o = uint32_t(x % objects);
-                        const uint32_t j = packed_hits(objoff[x]);
-                        h[j] = {uint32_t(g0 + x / objects), o};
-                        sp[j] = scene.object_begin[o + 1] - scene.object_begin[o];
+                    ex_.launch("rsh.object_fill", gn * units, [=] SHEAF_HD_LAMBDA(size_t x) {
+                        if (!(objhit[x] & 1u)) return;
+                        const uint32_t u = uint32_t(x % units);
+                        const uint32_t j = objoff[x];
+                        h[j] = {uint32_t(g0 + x / units), u};
+                        sp[j] = cv.begin[u + 1] - cv.begin[u];
                     });
                     candidates = ex_.exclusive_scan(sp, hits);
                     candidate.sparse = true;
@@ -547,31 +569,39 @@ template <class Exec> class DeviceTracer {
     }
 
   private:
-    // A zeroed slot for the batch with statistics prefix p; the slots grow by doubling.
-    TestCount* take_final_slot(const std::string& p) {
-        if (pending_.size() == finals_.size()) {
-            DeviceBuffer<TestCount, Exec> grown(ex_, std::max<size_t>(16, 2 * finals_.size()));
-            fill(ex_, grown.data(), grown.size(), TestCount{});
-            if (!finals_.empty())
-                ex_.copy_on_device(grown.data(), finals_.data(), finals_.size() * sizeof(TestCount));
-            finals_ = std::move(grown);
+    struct BatchCounts {
+        TestCount objects, final;
+    };
+    struct Pending {
+        std::string prefix; // of the batch's statistics keys
+        bool cull;          // whether it has objects.* rows
+    };
+
+    // A zeroed slot for the next batch; the slots grow by doubling.
+    BatchCounts* take_slot(const std::string& prefix, bool cull) {
+        if (pending_.size() == slots_.size()) {
+            DeviceBuffer<BatchCounts, Exec> grown(ex_, std::max<size_t>(16, 2 * slots_.size()));
+            fill(ex_, grown.data(), grown.size(), BatchCounts{});
+            if (!slots_.empty())
+                ex_.copy_on_device(grown.data(), slots_.data(), slots_.size() * sizeof(BatchCounts));
+            slots_ = std::move(grown);
         }
-        pending_.push_back(p);
-        return finals_.data() + (pending_.size() - 1);
+        pending_.push_back({prefix, cull});
+        return slots_.data() + (pending_.size() - 1);
     }
 
     struct Counts {
-        TestCount objects;
         std::vector<TestCount> levels; // index k: level k
     };
 
     Exec& ex_;
     SceneView scene_;
+    CullView cull_;
     const RenderSettings& s_;
     Stats& st_;
     PhaseClock<Exec>& clock_;
     uint32_t light_count_;
-    uint32_t objects_with_prims_ = 0;
+    uint32_t units_with_prims_ = 0;
     bool transparent_ = false; // some primitive may let light through (shadow pass logs)
     // The batch being traced.
     bool any_ = false, shadow_ = false;
@@ -582,10 +612,12 @@ template <class Exec> class DeviceTracer {
     DeviceBuffer<uint32_t, Exec> leaf_pairs_;
     HitSinks sinks_;
     Counts counts_;
-    TestCount* final_count_ = nullptr; // the batch's slot in finals_
-    // Final-test counts of the batches traced since the last flush, and their prefixes.
-    DeviceBuffer<TestCount, Exec> finals_;
-    std::vector<std::string> pending_;
+    // The batch's counts on the executing side, in its slot of slots_.
+    TestCount* objects_count_ = nullptr;
+    TestCount* final_count_ = nullptr;
+    // Object and final-test counts of the batches traced since the last flush.
+    DeviceBuffer<BatchCounts, Exec> slots_;
+    std::vector<Pending> pending_;
     DeviceBuffer<Aabb, Exec> box_; // the batch's ray origins' bounding box (hashes)
 };
 

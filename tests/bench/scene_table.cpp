@@ -28,6 +28,7 @@ Frame run(const PreparedScene& scene, const char* preset, int size, int frames) 
     s.set("height", std::to_string(size));
     s.set("backend", "cpu");
     s.set("cull.distance", "false"); // the paper's unbounded cones, as presets/rah.xml, crsh.xml
+    s.set("cull.cluster", "0");      // whole objects, as the paper culls
     if (std::strcmp(preset, "rah") == 0) {
         s.set("accel", "rah"), s.set("cull.objects", "false"), s.set("hash.mode", "none"),
             s.set("sort.mode", "none");

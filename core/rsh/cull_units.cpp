@@ -1,0 +1,50 @@
+#include "core/rsh/cull_units.h"
+
+#include "core/base/parallel.h"
+#include "core/geometry/min_sphere.h"
+
+#include <algorithm>
+
+namespace sheaf {
+
+CullUnits make_cull_units(const PreparedScene& scene, int cluster) {
+    CullUnits u;
+    const size_t objects = scene.object_count();
+    const size_t k = cluster > 0 ? size_t(cluster) : 0;
+    u.begin.push_back(0);
+    u.object_units.push_back(0);
+    for (size_t o = 0; o < objects; ++o) {
+        const uint32_t b = scene.object_begin[o], e = scene.object_begin[o + 1];
+        if (k == 0 || e - b <= k) {
+            u.begin.push_back(e);
+            u.object.push_back(uint32_t(o));
+        } else {
+            for (uint32_t s = b; s < e; s += uint32_t(k)) {
+                u.begin.push_back(uint32_t(std::min<size_t>(e, s + k)));
+                u.object.push_back(uint32_t(o));
+            }
+        }
+        u.object_units.push_back(uint32_t(u.object.size()));
+    }
+    u.sphere.resize(u.object.size());
+    parallel_for(
+        "cull.units", u.count(),
+        [&](size_t i) {
+            const uint32_t o = u.object[i];
+            if (!u.split(o)) {
+                u.sphere[i] = scene.object_sphere[o];
+                return;
+            }
+            std::vector<Vec3> pts;
+            pts.reserve(3 * size_t(u.begin[i + 1] - u.begin[i]));
+            for (uint32_t p = u.begin[i]; p < u.begin[i + 1]; ++p) {
+                const TriangleVerts& t = scene.tris[p];
+                pts.push_back(t.a), pts.push_back(t.b), pts.push_back(t.c);
+            }
+            u.sphere[i] = min_sphere(pts);
+        },
+        16);
+    return u;
+}
+
+} // namespace sheaf

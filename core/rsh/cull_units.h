@@ -1,0 +1,36 @@
+// What top hierarchy nodes are tested against before primitives (cull.objects): each object's
+// bounding sphere and, with cull.cluster = K > 0, for an object of more than K primitives, the
+// spheres of its runs of at most K consecutive primitives, tested only where the object's
+// sphere is hit. One object of many primitives (a 66,000-triangle mesh) then no longer sends
+// every top node that reaches it to every primitive: only to those of the runs it reaches.
+// Computed per render from the prepared scene, on the host, and used alike by the CPU
+// traversal and the wavefront's.
+#pragma once
+
+#include "core/geometry/sphere.h"
+#include "core/scene/prepared_scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace sheaf {
+
+/// Units: an unsplit object is one unit; a split object's units are its runs. Unit u holds
+/// primitives [begin[u], begin[u + 1]) of object object[u]; object o's units are
+/// [object_units[o], object_units[o + 1]).
+struct CullUnits {
+    std::vector<uint32_t> begin;        // count() + 1 entries
+    std::vector<Sphere> sphere;         // per unit: encloses its primitives
+    std::vector<uint32_t> object;       // per unit
+    std::vector<uint32_t> object_units; // objects + 1 entries
+    size_t count() const { return sphere.size(); }
+    bool split(uint32_t o) const { return object_units[o + 1] - object_units[o] > 1; }
+};
+
+/// Units of `scene`: every object whole when `cluster` is 0; otherwise an object of more
+/// than `cluster` primitives is split into runs of `cluster` (the last shorter), each under
+/// the minimal sphere of its triangles' vertices (only meshes split: an analytic object is
+/// one primitive).
+CullUnits make_cull_units(const PreparedScene& scene, int cluster);
+
+} // namespace sheaf

@@ -1,0 +1,94 @@
+// Culling units split large objects into runs whose spheres hold their triangles, and the
+// traversal with them finds the same hits with fewer primitive tests.
+#include "core/rsh/cull_units.h"
+
+#include "core/render/renderer.h"
+#include "core/scenes/builtin.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sheaf {
+namespace {
+
+bool inside(const Sphere& s, Vec3 p) {
+    return length(p - s.center) <= s.radius;
+}
+
+TEST(CullUnits, ZeroKeepsEveryObjectWhole) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("office"));
+    const CullUnits u = make_cull_units(scene, 0);
+    ASSERT_EQ(u.count(), scene.object_count());
+    EXPECT_EQ(u.begin, scene.object_begin);
+    for (uint32_t o = 0; o < scene.object_count(); ++o) {
+        EXPECT_FALSE(u.split(o));
+        EXPECT_EQ(u.object[o], o);
+        EXPECT_EQ(u.sphere[o].center.x, scene.object_sphere[o].center.x);
+        EXPECT_EQ(u.sphere[o].radius, scene.object_sphere[o].radius);
+    }
+}
+
+TEST(CullUnits, LargeObjectsSplitIntoRunsThatHoldTheirTriangles) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("colonnade"));
+    for (int k : {1, 7, 64, 1000}) {
+        const CullUnits u = make_cull_units(scene, k);
+        ASSERT_EQ(u.object_units.size(), scene.object_count() + 1) << k;
+        ASSERT_EQ(u.begin.size(), u.count() + 1) << k;
+        EXPECT_EQ(u.begin.front(), 0u);
+        EXPECT_EQ(u.begin.back(), uint32_t(scene.prim_count()));
+        size_t split = 0;
+        for (uint32_t o = 0; o < scene.object_count(); ++o) {
+            const uint32_t prims = scene.object_begin[o + 1] - scene.object_begin[o];
+            const uint32_t u0 = u.object_units[o], u1 = u.object_units[o + 1];
+            EXPECT_EQ(u.begin[u0], scene.object_begin[o]) << k;
+            EXPECT_EQ(u.begin[u1], scene.object_begin[o + 1]) << k;
+            EXPECT_EQ(u1 - u0, prims > uint32_t(k) ? (prims + k - 1) / uint32_t(k) : 1u) << k;
+            split += u.split(o) ? 1 : 0;
+            for (uint32_t i = u0; i < u1; ++i) {
+                EXPECT_EQ(u.object[i], o);
+                if (!u.split(o)) continue;
+                EXPECT_LE(u.begin[i + 1] - u.begin[i], uint32_t(k));
+                EXPECT_LE(u.sphere[i].radius, scene.object_sphere[o].radius * 1.0001f);
+                for (uint32_t p = u.begin[i]; p < u.begin[i + 1]; ++p) {
+                    const TriangleVerts& t = scene.tris[p];
+                    ASSERT_TRUE(inside(u.sphere[i], t.a) && inside(u.sphere[i], t.b) &&
+                                inside(u.sphere[i], t.c))
+                        << "cluster " << k << " unit " << i << " primitive " << p;
+                }
+            }
+        }
+        EXPECT_GT(split, 0u) << k; // the colonnade's mesh is split at every size tried
+    }
+}
+
+Frame render(const PreparedScene& scene, const std::string& cluster) {
+    Settings s;
+    s.set("width", "48"), s.set("height", "36"), s.set("ao.samples", "2");
+    s.set("cull.cluster", cluster);
+    return render_frame(scene, RenderSettings::resolve(s, scene.settings));
+}
+
+TEST(CullUnits, SplittingFindsTheSameHitsWithFewerTests) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("colonnade"));
+    const Frame whole = render(scene, "0");
+    for (const char* k : {"1", "16", "64"}) {
+        const Frame split = render(scene, k);
+        EXPECT_EQ(whole.rgba, split.rgba) << k;
+        for (const char* t : {"shadow", "ao"}) {
+            const std::string p = std::string("tests.") + t + ".";
+            EXPECT_GT(whole.stats.get("rays." + std::string(t)), 0) << t;
+            EXPECT_EQ(whole.stats.get("rays." + std::string(t)),
+                      split.stats.get("rays." + std::string(t)));
+            // Fewer top-level candidates; the run spheres cost object tests instead.
+            EXPECT_LT(split.stats.get(p + "level2.tests"), whole.stats.get(p + "level2.tests"))
+                << k << " " << t;
+            EXPECT_GT(split.stats.get(p + "objects.tests"), whole.stats.get(p + "objects.tests"))
+                << k << " " << t;
+        }
+        EXPECT_LT(split.stats.get("tests.total"), whole.stats.get("tests.total")) << k;
+    }
+}
+
+} // namespace
+} // namespace sheaf

@@ -89,6 +89,12 @@ inline TestCount unpack_counts(uint64_t p) {
     return {p >> 32, p & 0xFFFFFFFFu};
 }
 
+/// A traced batch's counts kept on the executing side until the frame reads them (at
+/// namespace scope: nvcc's extended lambdas may not capture a class's private types).
+struct BatchCounts {
+    TestCount objects, final;
+};
+
 struct SumCounts {
     SHEAF_HD TestCount operator()(const TestCount& a, const TestCount& b) const {
         return {a.tests + b.tests, a.hits + b.hits};
@@ -569,9 +575,6 @@ template <class Exec> class DeviceTracer {
     }
 
   private:
-    struct BatchCounts {
-        TestCount objects, final;
-    };
     struct Pending {
         std::string prefix; // of the batch's statistics keys
         bool cull;          // whether it has objects.* rows

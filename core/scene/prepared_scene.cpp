@@ -1,13 +1,51 @@
 #include "core/scene/prepared_scene.h"
 
 #include "core/geometry/min_sphere.h"
+#include "core/hash/ray_hash.h"
 #include "core/scene/analytic.h"
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <cfloat>
+#include <utility>
+
 namespace sheaf {
 
 namespace {
+
+// Puts triangles [b, e) of one object in the Morton order of their centroids within the
+// object's box (ties in the mesh's order), so that runs of consecutive primitives are compact
+// whatever order the mesh came in: cull.cluster culls such runs (core/rsh/cull_units.h).
+void spatial_order(PreparedScene& p, size_t b, size_t e) {
+    if (e - b < 3) return;
+    auto centroid = [&](size_t i) {
+        return (p.tris[i].a + p.tris[i].b + p.tris[i].c) * (1.0f / 3.0f);
+    };
+    Vec3 lo(FLT_MAX), hi(-FLT_MAX);
+    for (size_t i = b; i < e; ++i) lo = vmin(lo, centroid(i)), hi = vmax(hi, centroid(i));
+    const Vec3 ext = hi - lo;
+    auto cell = [](float v, float l, float x) {
+        return x > 0 ? uint32_t(std::clamp((v - l) / x, 0.0f, 1.0f) * 1023.0f) : 0u;
+    };
+    std::vector<std::pair<uint32_t, uint32_t>> order(e - b);
+    for (size_t i = b; i < e; ++i) {
+        const Vec3 c = centroid(i);
+        order[i - b] = {morton3(cell(c.x, lo.x, ext.x), cell(c.y, lo.y, ext.y),
+                                cell(c.z, lo.z, ext.z)),
+                        uint32_t(i)};
+    }
+    std::sort(order.begin(), order.end());
+    auto permute = [&](auto& v) {
+        std::vector<std::decay_t<decltype(v[0])>> tmp(e - b);
+        for (size_t k = 0; k < e - b; ++k) tmp[k] = v[order[k].second];
+        std::copy(tmp.begin(), tmp.end(), v.begin() + std::ptrdiff_t(b));
+    };
+    permute(p.tris);
+    permute(p.normals);
+    permute(p.uvs);
+    permute(p.prim_sphere);
+}
 
 // Whether a pigment has filter or transmit anywhere (entries and nested pigments included).
 bool pigment_may_pass(const Scene& s, int32_t index, int depth = 0) {
@@ -77,6 +115,7 @@ PreparedScene prepare_scene(const Scene& scene) {
                     tu.s[k] = mesh.uvs[2 * ix[k]], tu.t[k] = mesh.uvs[2 * ix[k] + 1];
             p.uvs[base + t] = tu;
         });
+        spatial_order(p, base, base + tc);
         base += tc;
         p.object_begin.push_back(uint32_t(base));
         // Only the vertices the object's triangles use count towards its sphere.

@@ -34,7 +34,7 @@ class FramePipeline {
         tests_.assign(size_t(W_) * H_, 0);
         memory_.add(int64_t(radiance_.size() * sizeof(Vec3)));
         params_ = frame_ray_params(scene_, s_);
-        units_ = make_cull_units(scene_, s_.cull_objects ? s_.cull_cluster : 0);
+        units_ = cull_units_for(scene_, s_);
 
         std::vector<SurfaceHit> hits = primary();
         report(0.1f);
@@ -130,14 +130,14 @@ class FramePipeline {
                 radiance_[h.pixel] += unshadowed_terms(view_, h, trace_ao, params_);
         }
         TraceResult r;
-        trace_batch(scene_, units_, shadow, s_, st_, memory_, r);
+        trace_batch(scene_, *units_, shadow, s_, st_, memory_, r);
         {
             PhaseTimer t(st_, "time_ms.shading");
             accumulate(shadow, r);
             count_tests(shadow, r);
         }
         if (trace_ao) {
-            trace_batch(scene_, units_, ao, s_, st_, memory_, r);
+            trace_batch(scene_, *units_, ao, s_, st_, memory_, r);
             PhaseTimer t(st_, "time_ms.shading");
             accumulate(ao, r);
             count_tests(ao, r);
@@ -151,7 +151,7 @@ class FramePipeline {
         }
         std::vector<SurfaceHit> next;
         for (RayBatch* b : {&refl, &refr}) {
-            trace_batch(scene_, units_, *b, s_, st_, memory_, r);
+            trace_batch(scene_, *units_, *b, s_, st_, memory_, r);
             PhaseTimer t(st_, "time_ms.shading");
             count_tests(*b, r);
             std::vector<uint32_t> slot(b->size());
@@ -208,7 +208,7 @@ class FramePipeline {
     Stats& st_;
     MemoryTracker memory_;
     RayGenParams params_;
-    CullUnits units_;
+    std::shared_ptr<const CullUnits> units_;
     int W_ = 0, H_ = 0;
     std::vector<Vec3> radiance_;
     std::vector<float> depth_;

@@ -4,8 +4,19 @@
 #include "core/geometry/min_sphere.h"
 
 #include <algorithm>
+#include <map>
+#include <mutex>
 
 namespace sheaf {
+
+struct CullUnitsCache {
+    std::mutex mutex;
+    std::map<int, std::shared_ptr<const CullUnits>> by_cluster;
+};
+
+std::shared_ptr<CullUnitsCache> new_cull_units_cache() {
+    return std::make_shared<CullUnitsCache>();
+}
 
 CullUnits make_cull_units(const PreparedScene& scene, int cluster) {
     CullUnits u;
@@ -45,6 +56,17 @@ CullUnits make_cull_units(const PreparedScene& scene, int cluster) {
         },
         16);
     return u;
+}
+
+std::shared_ptr<const CullUnits> cull_units_for(const PreparedScene& scene,
+                                                const RenderSettings& settings) {
+    const int cluster = settings.cull_objects ? std::max(0, settings.cull_cluster) : 0;
+    CullUnitsCache* cache = scene.cull_units_cache.get();
+    if (!cache) return std::make_shared<const CullUnits>(make_cull_units(scene, cluster));
+    std::lock_guard<std::mutex> lock(cache->mutex);
+    std::shared_ptr<const CullUnits>& units = cache->by_cluster[cluster];
+    if (!units) units = std::make_shared<const CullUnits>(make_cull_units(scene, cluster));
+    return units;
 }
 
 } // namespace sheaf

@@ -9,8 +9,10 @@
 
 #include "core/geometry/sphere.h"
 #include "core/scene/prepared_scene.h"
+#include "core/settings/settings.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace sheaf {
@@ -32,5 +34,11 @@ struct CullUnits {
 /// the minimal sphere of its triangles' vertices (only meshes split: an analytic object is
 /// one primitive).
 CullUnits make_cull_units(const PreparedScene& scene, int cluster);
+
+/// The units a render with `settings` culls by (whole objects unless cull.objects and
+/// cull.cluster split them), computed once per scene and cluster size when the scene came
+/// from prepare_scene (its cull_units_cache), else computed here.
+std::shared_ptr<const CullUnits> cull_units_for(const PreparedScene& scene,
+                                                const RenderSettings& settings);
 
 } // namespace sheaf

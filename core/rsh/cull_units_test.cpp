@@ -65,6 +65,23 @@ TEST(CullUnits, LargeObjectsSplitIntoRunsThatHoldTheirTriangles) {
     }
 }
 
+TEST(CullUnits, ComputedOncePerSceneAndClusterSize) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("office"));
+    Settings s;
+    const RenderSettings r64 = RenderSettings::resolve(s);
+    s.set("cull.cluster", "16");
+    const RenderSettings r16 = RenderSettings::resolve(s);
+    s.set("cull.objects", "false");
+    const RenderSettings whole = RenderSettings::resolve(s);
+    const auto a = cull_units_for(scene, r64);
+    EXPECT_EQ(a, cull_units_for(scene, r64));      // the frames of one scene share them
+    EXPECT_EQ(a, cull_units_for(PreparedScene(scene), r64)); // and its copies
+    EXPECT_NE(a, cull_units_for(scene, r16));
+    EXPECT_EQ(cull_units_for(scene, r16)->count(), make_cull_units(scene, 16).count());
+    EXPECT_EQ(cull_units_for(scene, whole)->count(), scene.object_count()); // not culling
+    EXPECT_NE(cull_units_for(prepare_scene(make_builtin_scene("office")), r64), a);
+}
+
 Frame render(const PreparedScene& scene, const std::string& cluster) {
     Settings s;
     s.set("width", "48"), s.set("height", "36"), s.set("ao.samples", "2");

@@ -295,8 +295,7 @@ Vec3 TraceResult::pass(size_t i) const {
 
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
                  Stats& stats, MemoryTracker& memory, TraceResult& out) {
-    trace_batch(scene, make_cull_units(scene, s.cull_objects ? s.cull_cluster : 0), batch, s,
-                stats, memory, out);
+    trace_batch(scene, *cull_units_for(scene, s), batch, s, stats, memory, out);
 }
 
 void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,

@@ -72,11 +72,11 @@ void add_late_counts(Stats& stats, const std::string& prefix, bool cull_objects,
 
 /// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
 /// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`. `units`: the scene's
-/// culling units under the settings (make_cull_units, once per frame).
+/// culling units under the settings (cull_units_for).
 void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
                  const RenderSettings& settings, Stats& stats, MemoryTracker& memory,
                  TraceResult& result);
-/// The same, computing the culling units for this batch alone.
+/// The same, with the scene's culling units under the settings.
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& settings,
                  Stats& stats, MemoryTracker& memory, TraceResult& result);
 

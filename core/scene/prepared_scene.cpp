@@ -190,6 +190,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.camera = scene.camera;
     p.background = scene.background;
     p.settings = scene.settings;
+    p.cull_units_cache = new_cull_units_cache();
     return p;
 }
 

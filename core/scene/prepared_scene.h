@@ -37,6 +37,10 @@ struct PreparedCsgNode {
 /// through somewhere (filter, transmit), so shadow rays evaluate it where they cross it.
 constexpr uint8_t kPrimMayPass = 0x80;
 
+/// Culling units already computed for a prepared scene, by cull.cluster (core/rsh/cull_units.h).
+struct CullUnitsCache;
+std::shared_ptr<CullUnitsCache> new_cull_units_cache();
+
 struct PreparedScene {
     // Primitives (triangles for now), object by object: object o owns
     // [object_begin[o], object_begin[o + 1]).
@@ -72,6 +76,9 @@ struct PreparedScene {
     Fog fog;
     std::vector<Texture> textures;
     std::shared_ptr<const TextureSampler> sampler; // set by the IO layer when there are textures
+    // Set by prepare_scene: the culling units of this geometry, computed once per
+    // cull.cluster value and shared by its frames (and copies).
+    std::shared_ptr<CullUnitsCache> cull_units_cache;
     std::vector<Light> lights;
     Camera camera;
     Vec3 background;

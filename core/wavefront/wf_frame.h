@@ -37,15 +37,15 @@ template <class Exec> class DeviceFrame {
         const int aa = s_.aa_samples;
         W_ = s_.width * aa, H_ = s_.height * aa;
         const size_t samples = size_t(W_) * H_;
-        const CullUnits units = make_cull_units(host_, s_.cull_objects ? s_.cull_cluster : 0);
-        DeviceScene<Exec> uploaded(ex_, host_, units);
+        const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
+        DeviceScene<Exec> uploaded(ex_, host_, *units);
         scene_ = uploaded.view;
         radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
         tests_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);
         fill(ex_, radiance_.data(), samples, Vec3(0.0f));
         fill(ex_, tests_.data(), samples, 0u);
         params_ = frame_ray_params(host_, s_);
-        DeviceTracer<Exec> tracer(ex_, host_, scene_, units, uploaded.cull, s_, st_, clock_);
+        DeviceTracer<Exec> tracer(ex_, host_, scene_, *units, uploaded.cull, s_, st_, clock_);
         tracer_ = &tracer;
 
         DeviceHits<Exec> hits = primary();

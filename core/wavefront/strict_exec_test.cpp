@@ -1,0 +1,133 @@
+// The wavefront pipeline under StrictExec, the CPU policy that keeps a GPU's rules: no host
+// access to device memory outside copies, fresh buffers full of garbage, nothing past a
+// buffer's end, no dependence on the order of a launch's elements. Frames must still equal the
+// CPU renderer's, and the policy itself must catch what it claims to.
+#include "core/wavefront/strict_exec.h"
+
+#include "core/scenes/builtin.h"
+#include "core/scenes/test_scenes.h"
+#include "core/wavefront/buffer.h"
+#include "core/wavefront/wf_frame.h"
+
+#include <gtest/gtest.h>
+
+namespace sheaf {
+namespace {
+
+using test::SettingList;
+using wavefront::DeviceBuffer;
+using wavefront::StrictExec;
+
+TEST(StrictExec, FreshBuffersHoldGarbage) {
+    StrictExec ex;
+    DeviceBuffer<uint32_t, StrictExec> b(ex, 5);
+    for (uint32_t v : b.download()) EXPECT_EQ(v, 0xA5A5A5A5u);
+}
+
+TEST(StrictExec, LaunchesRunEveryElementAndCountAsTheCpuPolicy) {
+    StrictExec ex;
+    const size_t n = 1000;
+    DeviceBuffer<uint32_t, StrictExec> b(ex, n);
+    uint32_t* p = b.data();
+    ex.launch("iota", n, [=](size_t i) { p[i] = uint32_t(i); });
+    const std::vector<uint32_t> v = b.download();
+    for (size_t i = 0; i < n; ++i) ASSERT_EQ(v[i], i);
+    EXPECT_EQ(ex.exclusive_scan(p, n), n * (n - 1) / 2);
+    EXPECT_EQ(b.get(3), 0u + 1 + 2);
+    EXPECT_EQ(ex.launches(), 2u); // the launch and the scan
+    EXPECT_EQ(ex.host_waits(), 3u); // the download, the scan's total, get
+    EXPECT_EQ(ex.peak_bytes(), int64_t(n * sizeof(uint32_t)));
+}
+
+TEST(StrictExec, WritesIntoThePaddingAreReported) {
+    StrictExec ex;
+    {
+        DeviceBuffer<uint32_t, StrictExec> b(ex, 3); // 12 bytes, 4 of padding
+        uint32_t* p = b.data();
+        ex.launch("one past the end", 1, [=](size_t) { p[3] = 7; });
+    }
+    ASSERT_EQ(ex.violations().size(), 1u);
+    EXPECT_NE(ex.violations()[0].find("past its end"), std::string::npos);
+    EXPECT_EQ(ex.live_buffers(), 0u);
+}
+
+void read_device_memory_on_the_host() {
+    StrictExec ex;
+    DeviceBuffer<uint32_t, StrictExec> b(ex, 8);
+    volatile uint32_t v = b.data()[0];
+    (void)v;
+}
+
+void write_past_the_end() {
+    StrictExec ex;
+    DeviceBuffer<uint32_t, StrictExec> b(ex, 1024); // one page, no padding
+    uint32_t* p = b.data();
+    ex.launch("past the end", 1, [=](size_t) { p[1024] = 1; });
+}
+
+TEST(StrictExecDeathTest, HostAccessToDeviceMemoryFaults) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_DEATH(read_device_memory_on_the_host(),
+                 "between device operations: the host touched device memory");
+}
+
+TEST(StrictExecDeathTest, IndexPastTheGuardPageFaults) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_DEATH(write_past_the_end(), "inside device operation 'past the end'");
+}
+
+Frame render_strict(const PreparedScene& scene, const RenderSettings& s, StrictExec& ex) {
+    Frame f;
+    wavefront::DeviceFrame<StrictExec>(ex, scene, s, {}, f).run();
+    return f;
+}
+
+void expect_strict_matches_cpu(const PreparedScene& scene, const std::string& name,
+                               const SettingList& kv, int w = 24, int h = 18) {
+    Settings set;
+    set.set("width", std::to_string(w)), set.set("height", std::to_string(h));
+    std::string what = name;
+    for (const auto& [k, v] : kv) set.set(k, v), what += " " + k + "=" + v;
+    const RenderSettings s = RenderSettings::resolve(set, scene.settings);
+    StrictExec ex;
+    const Frame strict = render_strict(scene, s, ex);
+    test::expect_same_frame(render_frame_cpu(scene, s), strict, what);
+    EXPECT_TRUE(ex.violations().empty()) << what << ": " << ex.violations().front();
+    EXPECT_EQ(ex.live_buffers(), 0u) << what;
+}
+
+const std::vector<SettingList>& strict_variants() {
+    static const std::vector<SettingList> v = {
+        {},
+        {{"accel", "brute"}},
+        {{"hash.mode", "hash192"}, {"sort.mode", "csd"}, {"ao.samples", "2"}},
+        {{"hash.mode", "hash32"}, {"sort.algorithm", "bitonic"}, {"hierarchy.depth", "4"}},
+        {{"cull.cluster", "3"}, {"aa.samples", "2"}, {"traversal.batch", "1024"}},
+        {{"cull.cluster", "0"}, {"cull.objects", "false"}, {"hash.mode", "static1d"}},
+    };
+    return v;
+}
+
+TEST(StrictExec, BuiltinScenesMatchTheCpuRenderer) {
+    for (const std::string& name : builtin_scene_names()) {
+        const PreparedScene scene = prepare_scene(make_builtin_scene(name));
+        for (const SettingList& kv : strict_variants()) expect_strict_matches_cpu(scene, name, kv);
+    }
+}
+
+TEST(StrictExec, TestScenesMatchTheCpuRenderer) {
+    const std::pair<const char*, Scene> scenes[] = {
+        {"glass", test::glass_mirror_scene()},
+        {"lights", test::lights_scene(false)},
+        {"ortho", test::lights_scene(true)},
+        {"csg", test::csg_scene()},
+        {"procedural", test::procedural_scene()},
+    };
+    for (const auto& [name, s] : scenes) {
+        const PreparedScene scene = prepare_scene(s);
+        for (const SettingList& kv : strict_variants()) expect_strict_matches_cpu(scene, name, kv);
+    }
+}
+
+} // namespace
+} // namespace sheaf

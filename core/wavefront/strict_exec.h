@@ -8,7 +8,12 @@
 //  - indexing past a buffer's end: each buffer ends at a page the process cannot touch, and the
 //    up to 15 bytes of padding before that page must still hold kFill when it is freed;
 //  - depending on the order of a launch's elements: launches run their elements last to
-//    first, one at a time.
+//    first, one at a time;
+//  - with seal_host(k), a launch or a reduction's map reading host memory (a captured host
+//    pointer: an illegal address on the GPU): the first k runs of each launch site (each
+//    lambda type) run in a forked child whose host heap and anonymous memory are inaccessible
+//    but for its stack and thread-local block; device buffers are shared mappings, so the
+//    child's writes are the parent's. A fork costs milliseconds, hence the per-site limit.
 // Counts launches and host waits as the CPU policy does. Linux (mmap, mprotect, sigaction).
 #pragma once
 
@@ -16,17 +21,21 @@
 #include "core/wavefront/cpu_exec.h"
 
 #include <signal.h>
+#include <fcntl.h>
 #include <sys/mman.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstring>
 #include <map>
 #include <iterator>
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace sheaf::wavefront {
@@ -46,6 +55,41 @@ inline void say(const char* s) {
 }
 
 void on_fault(int, siginfo_t* info, void*);
+
+// A sealed child must not call a library function it has not called before: the dynamic
+// linker would resolve the call lazily, with data in the sealed heap. So it writes and exits
+// by system calls of its own (and the test binary links with -z now, for the math functions
+// device code calls).
+#if defined(__x86_64__)
+inline long raw_syscall3(long nr, long a, long b, long c) {
+    long r;
+    asm volatile("syscall" : "=a"(r) : "a"(nr), "D"(a), "S"(b), "d"(c) : "rcx", "r11", "memory");
+    return r;
+}
+[[noreturn]] inline void sealed_exit(int code) {
+    raw_syscall3(231, code, 0, 0); // exit_group
+    __builtin_unreachable();
+}
+inline void sealed_say(const char* s) {
+    long n = 0;
+    while (s[n]) ++n;
+    raw_syscall3(1, 2, reinterpret_cast<long>(s), n); // write(2, ...)
+}
+#else
+[[noreturn]] inline void sealed_exit(int code) { ::_exit(code); }
+inline void sealed_say(const char* s) { say(s); }
+#endif
+
+/// A fault in a sealed child: says where, and ends the child.
+inline void on_sealed_fault(int, siginfo_t* info, void*) {
+    char hex[2 + 16 + 2] = "0x";
+    auto a = reinterpret_cast<uintptr_t>(info->si_addr);
+    for (int i = 17; i >= 2; --i, a >>= 4) hex[i] = "0123456789abcdef"[a & 15];
+    hex[18] = '\n', hex[19] = 0;
+    sealed_say("StrictExec: a sealed device operation touched host memory at ");
+    sealed_say(hex);
+    sealed_exit(128 + SIGSEGV);
+}
 
 inline void install_fault_handler() {
     static const bool installed = [] {
@@ -75,6 +119,7 @@ class StrictExec {
     }
     ~StrictExec() {
         for (auto& [p, r] : regions_) ::munmap(r.base, r.body + page_);
+        if (result_) ::munmap(result_, 4096);
         strict_detail::active.store(nullptr);
     }
     StrictExec(const StrictExec&) = delete;
@@ -83,8 +128,9 @@ class StrictExec {
     void* allocate(size_t bytes) {
         const size_t used = (bytes + 15) / 16 * 16; // buffers are 16-aligned, as on a GPU
         const size_t body = (std::max<size_t>(used, 1) + page_ - 1) / page_ * page_;
+        // Shared, so that what a sealed launch's child process writes is the parent's.
         void* m = ::mmap(nullptr, body + page_, PROT_READ | PROT_WRITE,
-                         MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+                         MAP_SHARED | MAP_ANONYMOUS, -1, 0);
         if (m == MAP_FAILED) throw std::bad_alloc();
         auto* base = static_cast<unsigned char*>(m);
         std::memset(base, kFill, body);
@@ -129,10 +175,20 @@ class StrictExec {
         cpu_.copy_on_device(dst, src, bytes);
     }
 
+    /// The first `runs` runs of each launch site, and of each reduction's map, run sealed
+    /// from host memory (see the top of this file); 0: none.
+    void seal_host(int runs) { seal_runs_ = runs; }
+
     /// fn(i) for every i in [0, n), last to first, one at a time.
     template <class Fn> void launch(const char* name, size_t n, const Fn& fn) {
         if (n == 0) return;
         ++launches_;
+        if (seal_next<Fn>()) {
+            sealed(name, [&] {
+                for (size_t i = n; i-- > 0;) fn(i);
+            });
+            return;
+        }
         Open o(*this, name);
         for (size_t i = n; i-- > 0;) fn(i);
     }
@@ -147,12 +203,23 @@ class StrictExec {
     }
     template <class T, class Map, class Op>
     T transform_reduce(const char* name, size_t n, T init, const Map& map, const Op& op) {
+        if (n > 0 && seal_next<Map>()) {
+            ++launches_, ++waits_; // as the CPU policy counts
+            return sealed_fold(name, n, init, map, op);
+        }
         Open o(*this, name);
         return cpu_.transform_reduce(name, n, init, map, op);
     }
     template <class T, class Map, class Op>
     void reduce_into(const char* name, size_t n, T* acc, T identity, const Map& map,
                      const Op& op) {
+        if (n > 0 && seal_next<Map>()) {
+            launches_ += 2; // as the CPU policy counts
+            const T r = sealed_fold(name, n, identity, map, op);
+            Open o(*this, name);
+            *acc = op(*acc, r);
+            return;
+        }
         Open o(*this, name);
         cpu_.reduce_into(name, n, acc, identity, map, op);
     }
@@ -167,7 +234,7 @@ class StrictExec {
 
     int64_t peak_bytes() const { return memory_.peak(); }
     uint64_t launches() const { return cpu_.launches() + launches_; }
-    uint64_t host_waits() const { return cpu_.host_waits(); }
+    uint64_t host_waits() const { return cpu_.host_waits() + waits_; }
 
     /// Rules broken that did not fault (writes into a buffer's padding, bad frees), checked
     /// when buffers are freed.
@@ -202,6 +269,129 @@ class StrictExec {
         const char* outer_;
     };
 
+    /// Whether this run of the site whose lambda type is Fn runs sealed.
+    template <class Fn> bool seal_next() {
+        static const char site = 0;
+        return seal_runs_ > 0 && sealed_runs_[&site]++ < seal_runs_;
+    }
+
+    /// op over map(i), i in [0, n), from init, computed in a sealed child.
+    template <class T, class Map, class Op>
+    T sealed_fold(const char* name, size_t n, T init, const Map& map, const Op& op) {
+        static_assert(std::is_trivially_copyable_v<T> && sizeof(T) <= 4096,
+                      "a reduction's value is plain data");
+        if (!result_) { // a shared page the children write their reductions to
+            void* m = ::mmap(nullptr, 4096, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS,
+                             -1, 0);
+            if (m == MAP_FAILED) throw std::bad_alloc();
+            result_ = m;
+        }
+        void* out = result_;
+        sealed(name, [&] {
+            T acc = init;
+            for (size_t i = n; i-- > 0;) acc = op(acc, map(i));
+            std::memcpy(out, &acc, sizeof(T));
+        });
+        T r;
+        std::memcpy(&r, out, sizeof(T));
+        return r;
+    }
+
+    /// Runs body in a forked child with every device buffer open and the host's anonymous
+    /// writable memory (heap, large allocations, other threads' stacks) closed, except the
+    /// calling thread's stack and thread-local block: a device lambda that reads host memory
+    /// faults there. Not oneTBB in the child (its threads are not forked).
+    template <class Body> void sealed(const char* name, const Body& body) {
+        const pid_t pid = ::fork();
+        if (pid < 0) throw std::runtime_error("StrictExec: fork failed");
+        if (pid == 0) {
+            struct sigaction sa = {};
+            sa.sa_sigaction = strict_detail::on_sealed_fault;
+            sa.sa_flags = SA_SIGINFO;
+            sigemptyset(&sa.sa_mask);
+            sigaction(SIGSEGV, &sa, nullptr);
+            for (auto& [p, r] : regions_) ::mprotect(r.base, r.body, PROT_READ | PROT_WRITE);
+            seal_host_memory();
+            body();
+            strict_detail::sealed_exit(0);
+        }
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0))
+            throw std::runtime_error(
+                std::string("StrictExec: device operation '") + name +
+                (WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGSEGV
+                     ? "' touched host memory (a captured host pointer?)"
+                     : "' failed in its sealed process (status " + std::to_string(status) +
+                           ")"));
+    }
+
+    /// Closes the anonymous private writable mappings but the ones holding this thread's
+    /// stack and errno (its thread-local block), and those that continue a file's mapping (a
+    /// library's .bss). Reads /proc/self/maps with system calls into the stack only.
+    static void seal_host_memory() {
+        struct Range {
+            uintptr_t lo, hi;
+        };
+        static constexpr int kMax = 8192;
+        Range closing[kMax];
+        int count = 0;
+        char buf[1 << 16];
+        size_t have = 0;
+        const int fd = ::open("/proc/self/maps", O_RDONLY);
+        if (fd < 0) strict_detail::sealed_exit(3);
+        const uintptr_t stack = reinterpret_cast<uintptr_t>(&buf);
+        const uintptr_t tls = reinterpret_cast<uintptr_t>(&errno);
+        uintptr_t file_end = 0; // the end of the last file-backed mapping
+        bool eof = false;
+        for (;;) {
+            char* nl = static_cast<char*>(std::memchr(buf, '\n', have));
+            if (!nl) { // read more only when no whole line is left
+                if (eof || have == sizeof buf) break;
+                const ssize_t got = ::read(fd, buf + have, sizeof buf - have);
+                if (got <= 0) eof = true;
+                else have += size_t(got);
+                continue;
+            }
+            // lo-hi perms offset dev inode [path]
+            const char* c = buf;
+            auto hex = [&c] {
+                uintptr_t v = 0;
+                for (;; ++c) {
+                    const char h = *c;
+                    if (h >= '0' && h <= '9') v = v * 16 + uintptr_t(h - '0');
+                    else if (h >= 'a' && h <= 'f') v = v * 16 + uintptr_t(h - 'a' + 10);
+                    else break;
+                }
+                return v;
+            };
+            const uintptr_t lo = hex();
+            ++c;
+            const uintptr_t hi = hex();
+            ++c;
+            const bool writable = c[1] == 'w', shared = c[3] == 's';
+            int field = 0; // after perms: offset, dev, inode, then the path
+            const char* path = nullptr;
+            for (const char* q = c; q < nl; ++q)
+                if (*q == ' ' && q + 1 < nl && q[1] != ' ' && ++field == 4) path = q + 1;
+            const bool named = path && path < nl;
+            const bool file = named && *path == '/';
+            const bool heap = named && std::strncmp(path, "[heap]", 6) == 0;
+            if (file) file_end = hi;
+            else if (writable && !shared && (heap || !named) && lo != file_end &&
+                     !(stack >= lo && stack < hi) && !(tls >= lo && tls < hi) && count < kMax)
+                closing[count++] = Range{lo, hi};
+            const size_t line = size_t(nl - buf) + 1;
+            std::memmove(buf, nl + 1, have - line);
+            have -= line;
+        }
+        ::close(fd);
+        for (int i = 0; i < count; ++i)
+            ::mprotect(reinterpret_cast<void*>(closing[i].lo), closing[i].hi - closing[i].lo,
+                       PROT_NONE);
+    }
+
     void close_opened() {
         for (auto& [p, r] : regions_)
             if (r.opened.exchange(false)) ::mprotect(r.base, r.body, PROT_NONE);
@@ -221,11 +411,14 @@ class StrictExec {
     }
 
     size_t page_;
+    int seal_runs_ = 0;
+    std::map<const char*, int> sealed_runs_;
+    void* result_ = nullptr;
     std::map<unsigned char*, Region> regions_;
     std::vector<std::string> violations_;
     MemoryTracker memory_;
     CpuExec cpu_;
-    uint64_t launches_ = 0;
+    uint64_t launches_ = 0, waits_ = 0;
 };
 
 namespace strict_detail {

@@ -76,6 +76,34 @@ TEST(StrictExecDeathTest, IndexPastTheGuardPageFaults) {
     EXPECT_DEATH(write_past_the_end(), "inside device operation 'past the end'");
 }
 
+TEST(StrictExec, SealedLaunchesCatchACapturedHostPointer) {
+    StrictExec ex;
+    ex.seal_host(1000);
+    const size_t n = 1000;
+    std::vector<uint32_t> host(n, 1);
+    DeviceBuffer<uint32_t, StrictExec> b(ex, n);
+    uint32_t* p = b.data();
+    const uint32_t* h = host.data();
+    EXPECT_THROW(ex.launch("reads host", n, [=](size_t i) { p[i] = h[i]; }), std::runtime_error);
+    EXPECT_THROW(ex.transform_reduce(
+                     "reduces host", n, 0u, [=](size_t i) { return h[i]; },
+                     [](uint32_t a, uint32_t c) { return a + c; }),
+                 std::runtime_error);
+    // What a sealed child writes to device memory is the parent's.
+    ex.launch("iota", n, [=](size_t i) { p[i] = uint32_t(i); });
+    const std::vector<uint32_t> v = b.download();
+    for (size_t i = 0; i < n; ++i) ASSERT_EQ(v[i], i);
+    const auto sum = [](uint64_t a, uint64_t c) { return a + c; };
+    EXPECT_EQ(ex.transform_reduce("sum", n, uint64_t(5), [=](size_t i) { return uint64_t(p[i]); },
+                                  sum),
+              5 + n * (n - 1) / 2);
+    DeviceBuffer<uint64_t, StrictExec> acc(ex, 1);
+    uint64_t* a = acc.data();
+    ex.launch("zero", 1, [=](size_t) { *a = 7; });
+    ex.reduce_into("sum into", n, a, uint64_t(0), [=](size_t i) { return uint64_t(p[i]); }, sum);
+    EXPECT_EQ(acc.get(0), 7 + n * (n - 1) / 2);
+}
+
 Frame render_strict(const PreparedScene& scene, const RenderSettings& s, StrictExec& ex) {
     Frame f;
     wavefront::DeviceFrame<StrictExec>(ex, scene, s, {}, f).run();
@@ -83,13 +111,15 @@ Frame render_strict(const PreparedScene& scene, const RenderSettings& s, StrictE
 }
 
 void expect_strict_matches_cpu(const PreparedScene& scene, const std::string& name,
-                               const SettingList& kv, int w = 24, int h = 18) {
+                               const SettingList& kv, int seal_runs = 0, int w = 24,
+                               int h = 18) {
     Settings set;
     set.set("width", std::to_string(w)), set.set("height", std::to_string(h));
     std::string what = name;
     for (const auto& [k, v] : kv) set.set(k, v), what += " " + k + "=" + v;
     const RenderSettings s = RenderSettings::resolve(set, scene.settings);
     StrictExec ex;
+    ex.seal_host(seal_runs);
     const Frame strict = render_strict(scene, s, ex);
     test::expect_same_frame(render_frame_cpu(scene, s), strict, what);
     EXPECT_TRUE(ex.violations().empty()) << what << ": " << ex.violations().front();
@@ -112,6 +142,23 @@ TEST(StrictExec, BuiltinScenesMatchTheCpuRenderer) {
     for (const std::string& name : builtin_scene_names()) {
         const PreparedScene scene = prepare_scene(make_builtin_scene(name));
         for (const SettingList& kv : strict_variants()) expect_strict_matches_cpu(scene, name, kv);
+    }
+}
+
+// Launches and reductions in a child process sealed from host memory: the first run of
+// each launch site in a frame (a fork each: milliseconds), in small frames under two settings.
+TEST(StrictExec, NoLaunchReadsHostMemory) {
+    std::vector<std::pair<std::string, Scene>> scenes = {
+        {"glass", test::glass_mirror_scene()}, {"lights", test::lights_scene(false)},
+        {"csg", test::csg_scene()}, {"procedural", test::procedural_scene()}};
+    for (const std::string& name : builtin_scene_names())
+        scenes.emplace_back(name, make_builtin_scene(name));
+    for (const auto& [name, s] : scenes) {
+        const PreparedScene scene = prepare_scene(s);
+        for (const SettingList& kv :
+             {SettingList{}, SettingList{{"hash.mode", "hash192"}, {"sort.mode", "csd"},
+                                         {"ao.samples", "1"}, {"cull.cluster", "5"}}})
+            expect_strict_matches_cpu(scene, name, kv, 1, 12, 10);
     }
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/base/device.h"
 #include "core/wavefront/buffer.h"
+#include "core/wavefront/wf_steps.h"
 
 namespace sheaf::gpu {
 
@@ -29,45 +30,20 @@ void CudaExec::sort_pairs(uint32_t* keys, int words, uint32_t* values, size_t n)
         if (dv.Current() != values) copy_on_device(values, dv.Current(), n * sizeof(uint32_t));
         return;
     }
-    // Positions sorted by each pair of words, least significant pair first: every pass is a
-    // stable radix sort, so the result is the lexicographic order with ties by position.
-    DeviceBuffer<uint32_t, CudaExec> pos_a(*this, n), pos_b(*this, n);
-    DeviceBuffer<uint64_t, CudaExec> k_a(*this, n), k_b(*this, n);
-    uint32_t* pos = pos_a.data();
-    uint32_t* pos_other = pos_b.data();
-    launch("sort.iota", n, [=] SHEAF_HD_LAMBDA(size_t i) { pos[i] = uint32_t(i); });
-    for (int w = 0; w < words; w += 2) {
-        const bool pair = w + 1 < words;
-        uint64_t* k = k_a.data();
-        const uint32_t* cur = pos;
-        launch("sort.pack", n, [=] SHEAF_HD_LAMBDA(size_t j) {
-            const uint32_t* key = keys + size_t(cur[j]) * words;
-            k[j] = (pair ? uint64_t(key[w + 1]) << 32 : 0) | key[w];
-        });
-        cub::DoubleBuffer<uint64_t> dk(k_a.data(), k_b.data());
-        cub::DoubleBuffer<uint32_t> dp(pos, pos_other);
-        const int bits = pair ? 64 : 32;
-        size_t bytes = 0;
-        check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, dk, dp, items, 0, bits, stream_),
-              "cub::DeviceRadixSort::SortPairs");
-        check(cub::DeviceRadixSort::SortPairs(temp(bytes), bytes, dk, dp, items, 0, bits, stream_),
-              "cub::DeviceRadixSort::SortPairs");
-        if (dp.Current() != pos) {
-            pos_other = pos;
-            pos = dp.Current();
-        }
-    }
-    DeviceBuffer<uint32_t, CudaExec> k_out(*this, n * size_t(words)), v_out(*this, n);
-    uint32_t* ko = k_out.data();
-    uint32_t* vo = v_out.data();
-    const uint32_t* order = pos;
-    launch("sort.gather", n, [=] SHEAF_HD_LAMBDA(size_t j) {
-        const size_t src = order[j];
-        vo[j] = values[src];
-        for (int w = 0; w < words; ++w) ko[j * words + w] = keys[src * words + w];
-    });
-    copy_on_device(keys, ko, n * size_t(words) * sizeof(uint32_t));
-    copy_on_device(values, vo, n * sizeof(uint32_t));
+    // More words: positions sorted by each pair of words as 64-bit keys (core/wavefront).
+    wavefront::sort_pairs_by_word_pairs(*this, keys, words, values, n, RadixPass64{this});
+}
+
+bool CudaExec::radix_pass64(uint64_t* k, uint64_t* k_alt, uint32_t* v, uint32_t* v_alt, size_t n,
+                            int bits) {
+    cub::DoubleBuffer<uint64_t> dk(k, k_alt);
+    cub::DoubleBuffer<uint32_t> dv(v, v_alt);
+    size_t bytes = 0;
+    check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, dk, dv, int(n), 0, bits, stream_),
+          "cub::DeviceRadixSort::SortPairs");
+    check(cub::DeviceRadixSort::SortPairs(temp(bytes), bytes, dk, dv, int(n), 0, bits, stream_),
+          "cub::DeviceRadixSort::SortPairs");
+    return dv.Current() != v;
 }
 
 } // namespace sheaf::gpu

@@ -184,6 +184,10 @@ class CudaExec {
     /// radix sort on 32-bit keys for one word; for more, an LSD sort of positions by each
     /// pair of words as 64-bit keys (each pass stable), then a gather of keys and values.
     void sort_pairs(uint32_t* keys, int words, uint32_t* values, size_t n);
+    /// One stable radix sort of (k, v) on the low `bits` bits of k, the alternates as scratch;
+    /// returns whether the result is in the alternates (n < 2^31).
+    bool radix_pass64(uint64_t* k, uint64_t* k_alt, uint32_t* v, uint32_t* v_alt, size_t n,
+                      int bits);
 
     /// Waits for the work issued so far on the stream: one host wait.
     void synchronize() {
@@ -313,6 +317,16 @@ class CudaExec {
     MemoryTracker memory_;
     uint64_t launches_ = 0, waits_ = 0;
     cudaError_t free_error_ = cudaSuccess;
+};
+
+/// CudaExec::radix_pass64 as sort_pairs_by_word_pairs's 64-bit sort: a named type at namespace
+/// scope, as nvcc requires of the template arguments of a function holding extended lambdas.
+struct RadixPass64 {
+    CudaExec* ex;
+    bool operator()(uint64_t* k, uint64_t* k_alt, uint32_t* v, uint32_t* v_alt, size_t n,
+                    int bits) const {
+        return ex->radix_pass64(k, k_alt, v, v_alt, n, bits);
+    }
 };
 
 } // namespace sheaf::gpu

@@ -6,10 +6,16 @@
 
 #include "core/scenes/builtin.h"
 #include "core/scenes/test_scenes.h"
+#include "core/sort/radix_sort.h"
 #include "core/wavefront/buffer.h"
 #include "core/wavefront/wf_frame.h"
+#include "core/wavefront/wf_steps.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
 
 namespace sheaf {
 namespace {
@@ -102,6 +108,53 @@ TEST(StrictExec, SealedLaunchesCatchACapturedHostPointer) {
     ex.launch("zero", 1, [=](size_t) { *a = 7; });
     ex.reduce_into("sum into", n, a, uint64_t(0), [=](size_t i) { return uint64_t(p[i]); }, sum);
     EXPECT_EQ(acc.get(0), 7 + n * (n - 1) / 2);
+}
+
+// The CUDA policy's sort of keys of more than one word (sort_pairs_by_word_pairs over CUB's
+// 64-bit radix sort) with a host stable sort in CUB's place, which leaves its result in the
+// alternate buffers every other pass, as CUB may: the CPU radix sort's order, keys and values.
+TEST(StrictExec, WordPairSortGivesTheCpuOrder) {
+    std::mt19937 g(11);
+    for (int words : {2, 3, 6, 7})
+        for (size_t n : {size_t(2), size_t(3), size_t(1000), size_t(4099)}) {
+            std::vector<uint32_t> keys(n * words), values(n);
+            for (size_t i = 0; i < n; ++i) {
+                values[i] = uint32_t(i * 7 + 3);
+                for (int w = 0; w < words; ++w) // few distinct words: many ties
+                    keys[i * words + w] = w % 2 ? g() % 3 : (g() % 4) << 30 | g() % 2;
+            }
+            std::vector<uint32_t> cpu_keys = keys, cpu_values = values;
+            radix_sort_pairs(cpu_keys.data(), words, cpu_values.data(), n);
+
+            StrictExec ex;
+            DeviceBuffer<uint32_t, StrictExec> dk(ex, keys.size()), dv(ex, n);
+            dk.upload(keys.data(), keys.size()), dv.upload(values.data(), n);
+            int passes = 0;
+            wavefront::sort_pairs_by_word_pairs(
+                ex, dk.data(), words, dv.data(), n,
+                [&](uint64_t* k, uint64_t* k_alt, uint32_t* v, uint32_t* v_alt, size_t m,
+                    int bits) {
+                    const bool to_alt = passes++ % 2 == 0;
+                    ex.launch("sort64", 1, [=](size_t) {
+                        const uint64_t mask = bits == 64 ? ~uint64_t(0) : 0xffffffffu;
+                        std::vector<uint32_t> idx(m);
+                        std::iota(idx.begin(), idx.end(), 0u);
+                        std::stable_sort(idx.begin(), idx.end(), [&](uint32_t a, uint32_t b) {
+                            return (k[a] & mask) < (k[b] & mask);
+                        });
+                        std::vector<uint64_t> ks(m);
+                        std::vector<uint32_t> vs(m);
+                        for (size_t j = 0; j < m; ++j) ks[j] = k[idx[j]], vs[j] = v[idx[j]];
+                        std::copy(ks.begin(), ks.end(), to_alt ? k_alt : k);
+                        std::copy(vs.begin(), vs.end(), to_alt ? v_alt : v);
+                    });
+                    return to_alt;
+                });
+            EXPECT_EQ(passes, (words + 1) / 2);
+            EXPECT_EQ(dk.download(), cpu_keys) << words << " words, n = " << n;
+            EXPECT_EQ(dv.download(), cpu_values) << words << " words, n = " << n;
+            EXPECT_TRUE(ex.violations().empty());
+        }
 }
 
 Frame render_strict(const PreparedScene& scene, const RenderSettings& s, StrictExec& ex) {

@@ -1,7 +1,7 @@
 // Data-parallel building blocks of the wavefront pipeline, written once against the exec seam
 // (launch, exclusive_scan[_async], transform_reduce, reduce_into, sort_pairs): filling,
-// counting and scanning, accumulation into samples in a fixed order, and the stable bitonic
-// sort of paper 003.
+// counting and scanning, accumulation into samples in a fixed order, the stable bitonic
+// sort of paper 003, and multi-word keys sorted by a 64-bit radix sort (the CUDA policy's).
 #pragma once
 
 #include "core/base/device.h"
@@ -122,6 +122,49 @@ void bitonic_sort_pairs(Exec& ex, uint32_t* keys, int words, uint32_t* values, s
     });
     ex.copy_on_device(keys, kk, n * size_t(words) * sizeof(uint32_t));
     ex.copy_on_device(values, vv, n * sizeof(uint32_t));
+}
+
+/// Sorts values by keys of `words` words (word 0 least significant) stably, given a stable
+/// sort of 64-bit keys with 32-bit values: positions sorted by each pair of words as one
+/// 64-bit key, least significant pair first (each pass stable, so the result is the
+/// lexicographic order with ties by position), then keys and values gathered.
+/// sort64(k, k_alt, v, v_alt, n, bits) sorts (k, v) on the low `bits` bits of k, using the
+/// alternate buffers as scratch, and returns whether the result is in the alternates (as CUB's
+/// DoubleBuffer leaves it).
+template <class Exec, class Sort64>
+void sort_pairs_by_word_pairs(Exec& ex, uint32_t* keys, int words, uint32_t* values, size_t n,
+                              const Sort64& sort64) {
+    if (n < 2) return;
+    DeviceBuffer<uint32_t, Exec> pos_a(ex, n), pos_b(ex, n);
+    DeviceBuffer<uint64_t, Exec> k_a(ex, n), k_b(ex, n);
+    uint32_t* pos = pos_a.data();
+    uint32_t* pos_other = pos_b.data();
+    iota(ex, pos, n);
+    for (int w = 0; w < words; w += 2) {
+        const bool pair = w + 1 < words;
+        uint64_t* k = k_a.data();
+        const uint32_t* cur = pos;
+        ex.launch("sort.pack", n, [=] SHEAF_HD_LAMBDA(size_t j) {
+            const uint32_t* key = keys + size_t(cur[j]) * words;
+            k[j] = (pair ? uint64_t(key[w + 1]) << 32 : 0) | key[w];
+        });
+        if (sort64(k_a.data(), k_b.data(), pos, pos_other, n, pair ? 64 : 32)) {
+            uint32_t* t = pos;
+            pos = pos_other;
+            pos_other = t;
+        }
+    }
+    DeviceBuffer<uint32_t, Exec> k_out(ex, n * size_t(words)), v_out(ex, n);
+    uint32_t* ko = k_out.data();
+    uint32_t* vo = v_out.data();
+    const uint32_t* order = pos;
+    ex.launch("sort.gather", n, [=] SHEAF_HD_LAMBDA(size_t j) {
+        const size_t src = order[j];
+        vo[j] = values[src];
+        for (int w = 0; w < words; ++w) ko[j * words + w] = keys[src * words + w];
+    });
+    ex.copy_on_device(keys, ko, n * size_t(words) * sizeof(uint32_t));
+    ex.copy_on_device(values, vo, n * sizeof(uint32_t));
 }
 
 } // namespace sheaf::wavefront

@@ -31,18 +31,10 @@ const CudaBackendStatus& status() {
         if (!status().usable) GTEST_SKIP() << "no usable CUDA device: " << status().error;       \
     } while (0)
 
-RenderSettings settings_for(const PreparedScene& scene, const SettingList& kv, int w, int h) {
-    Settings s;
-    s.set("width", std::to_string(w)), s.set("height", std::to_string(h));
-    for (const auto& [k, v] : kv) s.set(k, v);
-    return RenderSettings::resolve(s, scene.settings);
-}
-
 void expect_cuda_matches_cpu(const PreparedScene& scene, const std::string& name,
                              const SettingList& kv, int w = 64, int h = 48) {
-    const RenderSettings s = settings_for(scene, kv, w, h);
-    std::string label = name;
-    for (const auto& [k, v] : kv) label += " " + k + "=" + v;
+    const RenderSettings s = test::settings_for(scene, kv, w, h);
+    const std::string label = test::label(name, kv);
     const auto t0 = std::chrono::steady_clock::now();
     const Frame cpu = render_frame_cpu(scene, s);
     const auto t1 = std::chrono::steady_clock::now();
@@ -147,7 +139,7 @@ TEST(Cuda, SceneFilesMatchTheCpu) {
 TEST(Cuda, BackendAutoChoosesTheDevice) {
     SKIP_WITHOUT_DEVICE();
     const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
-    const Frame f = render_frame(scene, settings_for(scene, {{"backend", "auto"}}, 32, 24));
+    const Frame f = render_frame(scene, test::settings_for(scene, {{"backend", "auto"}}, 32, 24));
     EXPECT_EQ(f.backend, "cuda");
     EXPECT_EQ(f.stats.get("backend.cuda"), 1);
     EXPECT_EQ(f.backend_line.rfind("backend: cuda (", 0), 0u) << f.backend_line;
@@ -156,7 +148,7 @@ TEST(Cuda, BackendAutoChoosesTheDevice) {
 TEST(Cuda, CancellingStopsTheFrame) {
     SKIP_WITHOUT_DEVICE();
     const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
-    EXPECT_THROW(render_frame_cuda(status(), scene, settings_for(scene, {}, 32, 24),
+    EXPECT_THROW(render_frame_cuda(status(), scene, test::settings_for(scene, {}, 32, 24),
                                    [](float) { return false; }),
                  RenderError);
 }

@@ -7,6 +7,7 @@
 #include "core/render/frame.h"
 #include "core/scene/prepared_scene.h"
 #include "core/scenes/shapes.h"
+#include "core/settings/settings.h"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,22 @@
 namespace sheaf::test {
 
 using SettingList = std::vector<std::pair<std::string, std::string>>;
+
+/// The scene's settings with a w x h frame and `kv` over them.
+inline RenderSettings settings_for(const PreparedScene& scene, const SettingList& kv, int w,
+                                   int h) {
+    Settings s;
+    s.set("width", std::to_string(w)), s.set("height", std::to_string(h));
+    for (const auto& [k, v] : kv) s.set(k, v);
+    return RenderSettings::resolve(s, scene.settings);
+}
+
+/// "scene key=value ...", naming a case in failure messages.
+inline std::string label(const std::string& scene, const SettingList& kv) {
+    std::string l = scene;
+    for (const auto& [k, v] : kv) l += " " + k + "=" + v;
+    return l;
+}
 
 /// A glass sphere and a mirror box over a floor: refraction, total internal reflection,
 /// reflection; AO when the settings ask.

@@ -20,9 +20,10 @@
 #include "core/base/memory.h"
 #include "core/wavefront/cpu_exec.h"
 
-#include <signal.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/mman.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,8 +31,8 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
-#include <map>
 #include <iterator>
+#include <map>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -67,13 +68,13 @@ inline long raw_syscall3(long nr, long a, long b, long c) {
     return r;
 }
 [[noreturn]] inline void sealed_exit(int code) {
-    raw_syscall3(231, code, 0, 0); // exit_group
+    raw_syscall3(SYS_exit_group, code, 0, 0);
     __builtin_unreachable();
 }
 inline void sealed_say(const char* s) {
     long n = 0;
     while (s[n]) ++n;
-    raw_syscall3(1, 2, reinterpret_cast<long>(s), n); // write(2, ...)
+    raw_syscall3(SYS_write, 2, reinterpret_cast<long>(s), n);
 }
 #else
 [[noreturn]] inline void sealed_exit(int code) { ::_exit(code); }
@@ -183,14 +184,12 @@ class StrictExec {
     template <class Fn> void launch(const char* name, size_t n, const Fn& fn) {
         if (n == 0) return;
         ++launches_;
-        if (seal_next<Fn>()) {
-            sealed(name, [&] {
-                for (size_t i = n; i-- > 0;) fn(i);
-            });
-            return;
-        }
+        const auto run = [&] {
+            for (size_t i = n; i-- > 0;) fn(i);
+        };
+        if (seal_next<Fn>()) return sealed(name, run);
         Open o(*this, name);
-        for (size_t i = n; i-- > 0;) fn(i);
+        run();
     }
 
     template <class T> T exclusive_scan(T* data, size_t n) {

@@ -166,11 +166,8 @@ Frame render_strict(const PreparedScene& scene, const RenderSettings& s, StrictE
 void expect_strict_matches_cpu(const PreparedScene& scene, const std::string& name,
                                const SettingList& kv, int seal_runs = 0, int w = 24,
                                int h = 18) {
-    Settings set;
-    set.set("width", std::to_string(w)), set.set("height", std::to_string(h));
-    std::string what = name;
-    for (const auto& [k, v] : kv) set.set(k, v), what += " " + k + "=" + v;
-    const RenderSettings s = RenderSettings::resolve(set, scene.settings);
+    const RenderSettings s = test::settings_for(scene, kv, w, h);
+    const std::string what = test::label(name, kv);
     StrictExec ex;
     ex.seal_host(seal_runs);
     const Frame strict = render_strict(scene, s, ex);

@@ -21,18 +21,11 @@ namespace {
 
 using test::SettingList;
 
+using test::label;
+
 RenderSettings settings_for(const PreparedScene& scene, const SettingList& kv, int w = 40,
                             int h = 32) {
-    Settings s;
-    s.set("width", std::to_string(w)), s.set("height", std::to_string(h));
-    for (const auto& [k, v] : kv) s.set(k, v);
-    return RenderSettings::resolve(s, scene.settings);
-}
-
-std::string label(const std::string& scene, const SettingList& kv) {
-    std::string l = scene;
-    for (const auto& [k, v] : kv) l += " " + k + "=" + v;
-    return l;
+    return test::settings_for(scene, kv, w, h);
 }
 
 Frame expect_identical(const PreparedScene& scene, const std::string& name, const SettingList& kv,

@@ -37,10 +37,12 @@ std::string lower_extension(const std::string& path) {
 
 // Assimp sizes its PLY arrays by the header's element counts before reading them; a header
 // that claims more elements than the file has bytes would make it allocate without bound.
+// Assimp 5.2 also loops for ever on a header without its end_header line.
 void check_ply_header(const std::string& path, uintmax_t file_size) {
+    constexpr int kMaxHeaderLines = 4096;
     std::ifstream in(path, std::ios::binary);
     std::string line;
-    for (int n = 0; n < 4096 && std::getline(in, line); ++n) {
+    for (int n = 0; n < kMaxHeaderLines && std::getline(in, line); ++n) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line == "end_header") return;
         std::istringstream words(line);
@@ -55,6 +57,9 @@ void check_ply_header(const std::string& path, uintmax_t file_size) {
                              "' elements, more than the file can hold (" +
                              std::to_string(file_size) + " bytes)");
     }
+    throw SceneError(path + ": the PLY header has no end_header line" +
+                     (in ? " in its first " + std::to_string(kMaxHeaderLines) + " lines"
+                         : std::string(" (the file ends first)")));
 }
 
 /// Checks the path and imports it with `flags`; the scene lives as long as `importer`.

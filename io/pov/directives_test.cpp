@@ -268,6 +268,60 @@ TEST(PovLimits, SelfAndDeepIncludes) {
     }
 }
 
+std::string repeat(const std::string& s, int n) {
+    std::string out;
+    for (int i = 0; i < n; ++i) out += s;
+    return out;
+}
+
+// The parser recurses into nested constructs: past kMaxNesting levels (all kinds together)
+// an error, not a stack overflow (tests/fuzz/regressions/pov_deep_*.pov nest 100,000 deep).
+TEST(PovLimits, DeepNesting) {
+    // The 501st '(' is column 514.
+    EXPECT_EQ(error_of("#declare V = " + repeat("(", 600) + "1" + repeat(")", 600) + ";"),
+              "scene.pov:1:514: error: nested deeper than 500 levels (expressions, objects and "
+              "textures together)");
+    EXPECT_EQ(declared("#declare V = " + repeat("(", 400) + "1" + repeat(")", 400) + ";", "V").v[0],
+              1);
+    EXPECT_NE(error_of("#declare V = " + repeat("-", 600) + "1;").find("nested deeper than 500"),
+              std::string::npos);
+    EXPECT_NE(error_of(repeat("union { ", 600) + "sphere { 0, 1 }" + repeat(" }", 600))
+                  .find("nested deeper than 500"),
+              std::string::npos);
+    EXPECT_NE(error_of("#macro M(A) A #end\n#declare V = " + repeat("M(", 600) + "1" +
+                       repeat(")", 600) + ";")
+                  .find("nested deeper than 500"),
+              std::string::npos);
+    EXPECT_NE(
+        error_of("#declare F = function { " + repeat("(", 600) + "x" + repeat(")", 600) + " }")
+            .find("nested deeper than 500"),
+        std::string::npos);
+}
+
+// Function bodies are evaluated (and freed) recursively: a chain of operators, or of
+// functions calling the one declared before, deeper than kMaxFunctionHeight is an error; it
+// is built in linear time (it was copied at each operator).
+TEST(PovLimits, DeepFunctions) {
+    std::string e;
+    const double s =
+        seconds([&] { e = error_of("#declare F = function { x" + repeat(" + x", 20000) + " }"); });
+    EXPECT_NE(e.find("a function body more than 10000 operations deep"), std::string::npos) << e;
+    EXPECT_LT(s, 10);
+    EXPECT_DOUBLE_EQ(declared("#declare F = function { x" + repeat(" + x", 5000) +
+                                  " }\n#declare V = F(1, 0, 0);",
+                              "V")
+                         .v[0],
+                     5001);
+    e = error_of("#declare F = function(a) { a }\n#declare I = 0;\n#while (I < 20000)\n"
+                 "  #declare F = function(a) { F(a) + 1 }\n  #declare I = I + 1;\n#end");
+    EXPECT_NE(e.find("more than 10000 operations deep"), std::string::npos) << e;
+}
+
+TEST(PovLimits, ArrayDimensions) {
+    EXPECT_EQ(error_of("#declare A = array[1][1][1][1][1][1];"),
+              "scene.pov:1:35: error: an array has at most 5 dimensions");
+}
+
 TEST(PovLimits, UnclosedBlocks) {
     EXPECT_EQ(error_of("#if (1)\nsphere { 0, 1 }"), "scene.pov:1:2: error: this block has no #end");
     EXPECT_EQ(error_of("#while (0)\n"), "scene.pov:1:2: error: this block has no #end");

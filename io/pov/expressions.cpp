@@ -264,6 +264,7 @@ Value Parser::parse_term() {
 
 Value Parser::parse_unary() {
     const Token t = peek();
+    const Nest nest(*this, t); // every nested expression comes through here
     if (is_sym_tok(t, "-") || is_sym_tok(t, "+")) {
         advance();
         Value v = parse_unary();
@@ -459,6 +460,9 @@ Value Parser::parse_array_literal(const Token& t) {
         const double n = parse_float();
         expect_sym("]");
         if (n < 1) error_at(at, "an array needs at least one element per dimension");
+        if (sizes.size() == kMaxArrayDimensions)
+            error_at(at,
+                     "an array has at most " + std::to_string(kMaxArrayDimensions) + " dimensions");
         if (n > double(kMaxArrayElements) || count * size_t(n) > kMaxArrayElements)
             error_at(at,
                      "an array of more than " + std::to_string(kMaxArrayElements) + " elements");
@@ -521,7 +525,15 @@ Value Parser::call_function(const Token& t, const PovFunction& f) {
     if (args.size() != f.params.size() && f.unsupported.empty())
         error_at(t, "'" + t.text + "' takes " + std::to_string(f.params.size()) +
                         " arguments, not " + std::to_string(args.size()));
-    return Value::number(f.eval(args.data(), int(args.size())));
+    uint64_t left = kMaxParseSteps - std::min(steps_, kMaxParseSteps);
+    const uint64_t had = left;
+    try {
+        const double v = f.eval(args.data(), int(args.size()), left);
+        steps_ += had - left;
+        return Value::number(v);
+    } catch (const FnStepsExceeded&) {
+        too_many_steps(t);
+    }
 }
 
 } // namespace sheaf::io::pov

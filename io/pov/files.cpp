@@ -4,6 +4,7 @@
 
 #include "core/base/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -42,10 +43,13 @@ std::string Parser::find_include(const std::string& name, const Token& where) co
 std::string Parser::find_file(const std::string& name, const Token& where,
                               const std::string& what) const {
     std::vector<fs::path> dirs;
-    dirs.push_back(fs::path(file_names_[where.file]).parent_path());
-    for (const std::string& d : options_.include_paths) dirs.push_back(d);
-    if (fs::is_directory("/usr/share/povray-3.7/include"))
-        dirs.push_back("/usr/share/povray-3.7/include");
+    auto add = [&](const fs::path& d) { // each folder once, in the order first named
+        if (std::find(dirs.begin(), dirs.end(), d.lexically_normal()) == dirs.end())
+            dirs.push_back(d.lexically_normal());
+    };
+    add(fs::path(file_names_[where.file]).parent_path());
+    for (const std::string& d : options_.include_paths) add(d);
+    if (fs::is_directory("/usr/share/povray-3.7/include")) add("/usr/share/povray-3.7/include");
     if (fs::path(name).is_absolute()) {
         if (fs::is_regular_file(name)) return name;
     } else {

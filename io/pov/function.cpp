@@ -97,35 +97,37 @@ bool eval_builtin(const std::string& name, const std::vector<double>& a, double&
 
 namespace {
 
-double eval_node(const FnNode& n, const double* p, int np) {
+double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
+    if (steps == 0) throw FnStepsExceeded{};
+    --steps;
     switch (n.op) {
     case FnNode::Const:
         return n.value;
     case FnNode::Param:
         return n.param < np ? p[n.param] : 0.0;
     case FnNode::Neg:
-        return -eval_node(n.args[0], p, np);
+        return -eval_node(n.args[0], p, np, steps);
     case FnNode::Not:
-        return truth(eval_node(n.args[0], p, np)) ? 0.0 : 1.0;
+        return truth(eval_node(n.args[0], p, np, steps)) ? 0.0 : 1.0;
     case FnNode::Cond:
-        return truth(eval_node(n.args[0], p, np)) ? eval_node(n.args[1], p, np)
-                                                  : eval_node(n.args[2], p, np);
+        return truth(eval_node(n.args[0], p, np, steps)) ? eval_node(n.args[1], p, np, steps)
+                                                         : eval_node(n.args[2], p, np, steps);
     case FnNode::Builtin: {
         std::vector<double> a;
-        for (const FnNode& c : n.args) a.push_back(eval_node(c, p, np));
+        for (const FnNode& c : n.args) a.push_back(eval_node(c, p, np, steps));
         double out = 0;
         eval_builtin(n.name, a, out); // checked when compiled
         return out;
     }
     case FnNode::Call: {
         std::vector<double> a;
-        for (const FnNode& c : n.args) a.push_back(eval_node(c, p, np));
-        return n.fn->eval(a.data(), int(a.size()));
+        for (const FnNode& c : n.args) a.push_back(eval_node(c, p, np, steps));
+        return n.fn->eval(a.data(), int(a.size()), steps);
     }
     default:
         break;
     }
-    const double a = eval_node(n.args[0], p, np), b = eval_node(n.args[1], p, np);
+    const double a = eval_node(n.args[0], p, np, steps), b = eval_node(n.args[1], p, np, steps);
     switch (n.op) {
     case FnNode::Add:
         return a + b;
@@ -158,8 +160,8 @@ double eval_node(const FnNode& n, const double* p, int np) {
 
 } // namespace
 
-double PovFunction::eval(const double* args, int n) const {
-    return eval_node(body, args, n);
+double PovFunction::eval(const double* args, int n, uint64_t& steps) const {
+    return eval_node(body, args, n, steps);
 }
 
 } // namespace sheaf::io::pov

@@ -3,6 +3,7 @@
 // float built-ins (sin, pow, min, select ...) are shared with the scene-language expressions.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,13 +38,19 @@ struct FnNode {
     std::string name; // Builtin
     std::shared_ptr<const struct PovFunction> fn;
     std::vector<FnNode> args;
+    int height = 1; // levels of the tree below and including this node
 };
+
+/// Thrown by PovFunction::eval when the steps allowed run out.
+struct FnStepsExceeded {};
 
 struct PovFunction {
     std::vector<std::string> params; // x, y, z when none were given
     FnNode body;
     std::string unsupported; // non-empty: what it uses that the reader cannot evaluate
-    double eval(const double* args, int n) const;
+    /// Evaluates the body; each node evaluated takes one of `steps` (FnStepsExceeded when
+    /// none is left).
+    double eval(const double* args, int n, uint64_t& steps) const;
 };
 
 /// Evaluates the float built-in `name` (sin, cos, pow, min, max, select, mod ...). Returns

@@ -54,10 +54,18 @@ Value Parser::parse_function(const Token& t) {
 
 namespace {
 
-FnNode node(FnNode::Op op, std::vector<FnNode> args) {
+void set_height(FnNode& n) {
+    for (const FnNode& a : n.args) n.height = std::max(n.height, a.height + 1);
+}
+
+/// An operation over its operands, moved in (a long chain would otherwise be copied at each
+/// operator: quadratic in its length).
+template <class... Kids> FnNode node(FnNode::Op op, Kids&&... kids) {
     FnNode n;
     n.op = op;
-    n.args = std::move(args);
+    n.args.reserve(sizeof...(kids));
+    (n.args.push_back(std::forward<Kids>(kids)), ...);
+    set_height(n);
     return n;
 }
 
@@ -67,9 +75,10 @@ FnNode node(FnNode::Op op, std::vector<FnNode> args) {
 FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
     if (level == 6) {
         const Token t = peek();
+        const Nest nest(*this, t); // every nested term of the body comes through here
         if (is_sym_tok(t, "-")) {
             advance();
-            return node(FnNode::Neg, {parse_fn(params, 6)});
+            return node(FnNode::Neg, parse_fn(params, 6));
         }
         if (is_sym_tok(t, "+")) {
             advance();
@@ -77,7 +86,7 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
         }
         if (is_sym_tok(t, "!")) {
             advance();
-            return node(FnNode::Not, {parse_fn(params, 6)});
+            return node(FnNode::Not, parse_fn(params, 6));
         }
         return parse_fn_primary(params);
     }
@@ -92,7 +101,7 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
             FnNode b = parse_fn(params, 0);
             expect_sym(":");
             FnNode c = parse_fn(params, 0);
-            return node(FnNode::Cond, {a, b, c});
+            return node(FnNode::Cond, std::move(a), std::move(b), std::move(c));
         } else if (level == 1 && o == "|")
             op = FnNode::Or;
         else if (level == 2 && o == "&")
@@ -120,7 +129,11 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
         else
             return a;
         advance();
-        a = node(op, {a, parse_fn(params, level + 1)});
+        FnNode b = parse_fn(params, level + 1);
+        a = node(op, std::move(a), std::move(b));
+        if (a.height > kMaxFunctionHeight)
+            error_at(t, "a function body more than " + std::to_string(kMaxFunctionHeight) +
+                            " operations deep");
     }
 }
 
@@ -175,9 +188,15 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
             if (!n.fn->unsupported.empty() && fn_unsupported_.empty()) // warned when called
                 fn_unsupported_ = n.fn->unsupported + " ('" + t.text + "')";
             n.args = args();
+            set_height(n);
             if (n.args.size() != n.fn->params.size() && n.fn->unsupported.empty())
                 error_at(t, "'" + t.text + "' takes " + std::to_string(n.fn->params.size()) +
                                 " arguments");
+            // Evaluation recurses through the called body too.
+            n.height = std::max(n.height, n.fn->body.height + 1);
+            if (n.height > kMaxFunctionHeight)
+                error_at(t, "'" + t.text + "' calls functions nested more than " +
+                                std::to_string(kMaxFunctionHeight) + " operations deep");
             return n;
         }
         error_at(t, "'" + t.text + "' (" + type_name(v->type) + ") in a function");
@@ -195,6 +214,7 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
         n.op = FnNode::Builtin;
         n.name = t.text;
         n.args = args();
+        set_height(n);
         double out;
         if (!eval_builtin(n.name, std::vector<double>(n.args.size(), 0.5), out))
             error_at(t, t.text + " does not take " + std::to_string(n.args.size()) + " arguments");

@@ -31,6 +31,7 @@ void Parser::define_macro(const Token& where) {
 }
 
 void Parser::call_macro(const Token& name, const Macro& macro) {
+    const Nest nest(*this, name); // an argument may call a macro while its '(' is read
     const Macro m = macro; // the table may change while the arguments are parsed
     std::vector<Value> args;
     expect_sym("(", "'(' after macro " + name.text);

@@ -23,6 +23,7 @@ double normal_slope_scale(const std::string& name) {
 
 std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
     const Token at = peek();
+    const Nest nest(*this, at); // normal maps hold normals
     expect_sym("{");
     PovNormal n = base ? *base : PovNormal{};
     bool have = base != nullptr;

@@ -55,6 +55,7 @@ bool Parser::is_object_start(const Token& t) const {
 
 bool Parser::parse_object(PovObject& o) {
     const Token kw = next();
+    const Nest nest(*this, kw);
     o = PovObject();
     o.where = kw;
     if (++objects_made_ > kMaxObjects)

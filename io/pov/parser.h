@@ -27,6 +27,18 @@ constexpr int kMaxIncludeDepth = 64;
 constexpr size_t kMaxArrayElements = 100'000'000;
 constexpr size_t kMaxDataBytes = size_t(2) << 30;
 constexpr size_t kMaxObjects = 20'000'000;
+/// Nested expressions, objects, textures and function bodies: the parser recurses into each,
+/// so a deeper nesting is refused before the stack runs out (about 3 KB a level: 500 levels
+/// need 1.5 MB of the 8 MB a thread has by default).
+constexpr int kMaxNesting = 500;
+/// Parse steps: tokens read (macro bodies and loop bodies each time they run) and function
+/// nodes evaluated. Bounds what no other limit does, such as macros or functions that call
+/// themselves twice per level (2^40 calls within the depth limits).
+constexpr uint64_t kMaxParseSteps = 1'000'000'000;
+/// A function body's tree, which is evaluated (and freed) recursively.
+constexpr int kMaxFunctionHeight = 10'000;
+/// Array dimensions, as POV-Ray's own limit.
+constexpr size_t kMaxArrayDimensions = 5;
 
 struct Macro {
     std::shared_ptr<const TokenFile> file;
@@ -228,6 +240,29 @@ class Parser {
     void parse_atmospheric(const Token& kw);
     PovSky parse_sky_sphere(); // after the keyword sky_sphere
     bool parse_statement(); // one top-level item; false at the end of the scene
+
+    // ---- work ----
+    uint64_t steps_ = 0; // against kMaxParseSteps
+    [[noreturn]] void too_many_steps(const Token& at) const;
+    int nesting_ = 0;
+    /// One level of a nested construct, from `at` to the end of its scope; an error at `at`
+    /// past kMaxNesting.
+    class Nest {
+      public:
+        Nest(Parser& p, const Token& at) : p_(p) {
+            if (++p_.nesting_ > kMaxNesting) {
+                --p_.nesting_;
+                p_.error_at(at, "nested deeper than " + std::to_string(kMaxNesting) +
+                                    " levels (expressions, objects and textures together)");
+            }
+        }
+        ~Nest() { --p_.nesting_; }
+        Nest(const Nest&) = delete;
+        Nest& operator=(const Nest&) = delete;
+
+      private:
+        Parser& p_;
+    };
 
     // ---- files and random streams ----
     std::string scene_dir_;

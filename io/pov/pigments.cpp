@@ -64,6 +64,7 @@ std::shared_ptr<const PovPigment> Parser::parse_pigment(const PovPigment& base) 
 }
 
 void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
+    const Nest nest(*this, peek()); // pigment maps hold pigments
     Value declared;
     if (accept_declared(VType::Pigment, declared, "a pigment"))
         pg = declared.as<PovPigment>();

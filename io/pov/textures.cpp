@@ -59,6 +59,7 @@ PovTextureRef Parser::parse_texture_layers(const PovTexture& base) {
 }
 
 PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close) {
+    const Nest nest(*this, peek()); // texture maps hold textures
     PovTexture tx = base;
     tx.local = Affine();
     Value declared;

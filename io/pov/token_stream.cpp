@@ -90,6 +90,13 @@ void Parser::pop_frame() {
 void Parser::advance() {
     Frame& f = frames_.back();
     if (f.file->tokens[f.pos].kind != TokKind::End) ++f.pos;
+    if (++steps_ > kMaxParseSteps) too_many_steps(f.file->tokens[f.pos]);
+}
+
+void Parser::too_many_steps(const Token& at) const {
+    error_at(at, "the scene takes more than " + std::to_string(kMaxParseSteps) +
+                     " parse steps (tokens read and function terms evaluated): a macro or "
+                     "function that calls itself without end?");
 }
 
 const Token& Parser::peek() {

@@ -1,0 +1,43 @@
+camera { location <0,0,-5> look_at 0 }
+#macro M0() 1 #end
+#macro M1() M0() + M0() #end
+#macro M2() M1() + M1() #end
+#macro M3() M2() + M2() #end
+#macro M4() M3() + M3() #end
+#macro M5() M4() + M4() #end
+#macro M6() M5() + M5() #end
+#macro M7() M6() + M6() #end
+#macro M8() M7() + M7() #end
+#macro M9() M8() + M8() #end
+#macro M10() M9() + M9() #end
+#macro M11() M10() + M10() #end
+#macro M12() M11() + M11() #end
+#macro M13() M12() + M12() #end
+#macro M14() M13() + M13() #end
+#macro M15() M14() + M14() #end
+#macro M16() M15() + M15() #end
+#macro M17() M16() + M16() #end
+#macro M18() M17() + M17() #end
+#macro M19() M18() + M18() #end
+#macro M20() M19() + M19() #end
+#macro M21() M20() + M20() #end
+#macro M22() M21() + M21() #end
+#macro M23() M22() + M22() #end
+#macro M24() M23() + M23() #end
+#macro M25() M24() + M24() #end
+#macro M26() M25() + M25() #end
+#macro M27() M26() + M26() #end
+#macro M28() M27() + M27() #end
+#macro M29() M28() + M28() #end
+#macro M30() M29() + M29() #end
+#macro M31() M30() + M30() #end
+#macro M32() M31() + M31() #end
+#macro M33() M32() + M32() #end
+#macro M34() M33() + M33() #end
+#macro M35() M34() + M34() #end
+#macro M36() M35() + M35() #end
+#macro M37() M36() + M36() #end
+#macro M38() M37() + M37() #end
+#macro M39() M38() + M38() #end
+#macro M40() M39() + M39() #end
+#declare Y = M40();

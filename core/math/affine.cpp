@@ -11,6 +11,13 @@ float Affine::determinant() const {
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
+bool Affine::finite() const {
+    for (const auto& row : m)
+        for (float v : row)
+            if (!std::isfinite(v)) return false;
+    return true;
+}
+
 Vec3 Affine::normal(Vec3 n) const {
     // Cofactor matrix = det * inverse transpose; the scale does not matter for a direction.
     const Vec3 r0(m[0][0], m[0][1], m[0][2]), r1(m[1][0], m[1][1], m[1][2]),

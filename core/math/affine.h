@@ -47,6 +47,8 @@ struct Affine {
     /// Normals transform by the inverse transpose of the linear part.
     Vec3 normal(Vec3 n) const;
     float determinant() const;
+    /// Whether every entry is a finite number (no NaN or infinity).
+    bool finite() const;
     /// The inverse transform (the matrix must not be singular).
     Affine inverse() const;
     /// The inverse transpose of the linear part, as an Affine with no translation: what

@@ -2,6 +2,7 @@
 
 #include "core/base/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -101,10 +102,7 @@ void Scene::validate() const {
         if (obj.material >= materials.size())
             throw SceneError(name + " names material " + std::to_string(obj.material) +
                              ", which does not exist");
-        for (auto& row : obj.transform.m)
-            for (float v : row)
-                if (!std::isfinite(v))
-                    throw SceneError(name + " has a transform that is not finite");
+        if (!obj.transform.finite()) throw SceneError(name + " has a transform that is not finite");
     }
     for (size_t o = 0; o < shape_objects.size(); ++o) {
         const ShapeObject& so = shape_objects[o];
@@ -124,7 +122,9 @@ void Scene::validate() const {
                     (s.kind == ShapeKind::Disc && s.a > 1) ||
                     (s.kind == ShapeKind::Torus && !(s.a > 0)))
                     throw SceneError(name + ": shape parameters out of range");
-                if (std::fabs(node.transform.determinant()) < 1e-20f)
+                if (!node.transform.finite())
+                    throw SceneError(name + ": a shape's transform is not finite");
+                if (!(std::fabs(node.transform.determinant()) >= 1e-20f))
                     throw SceneError(name + ": a shape's transform is singular (a zero scale)");
             } else {
                 if (node.children.empty())
@@ -137,8 +137,16 @@ void Scene::validate() const {
                                          " must be a later node of the object");
             }
         }
-        if (std::fabs(so.transform.determinant()) < 1e-20f)
+        if (!so.transform.finite()) throw SceneError(name + " has a transform that is not finite");
+        if (!(std::fabs(so.transform.determinant()) >= 1e-20f))
             throw SceneError(name + " has a singular transform");
+        // Children are later nodes: heights from the last node back.
+        std::vector<int> height(so.nodes.size(), 0);
+        for (size_t n = so.nodes.size(); n-- > 0;)
+            for (uint32_t c : so.nodes[n].children) height[n] = std::max(height[n], height[c] + 1);
+        if (height[so.root] > kMaxCsgNesting)
+            throw SceneError(name + ": CSG nested " + std::to_string(height[so.root]) +
+                             " levels deep, more than " + std::to_string(kMaxCsgNesting));
     }
     for (size_t l = 0; l < lights.size(); ++l) {
         const Light& li = lights[l];
@@ -189,9 +197,7 @@ void Scene::validate() const {
 namespace {
 
 void check_pattern(const Pattern& p, size_t textures, const std::string& name) {
-    for (auto& row : p.to_pattern.m)
-        for (float v : row)
-            if (!std::isfinite(v)) throw SceneError(name + ": its transform is not finite");
+    if (!p.to_pattern.finite()) throw SceneError(name + ": its transform is not finite");
     if (!is_finite(p.turbulence) || !std::isfinite(p.frequency) || !std::isfinite(p.phase) ||
         !is_finite(p.vector) || p.octaves < 1 || p.octaves > 16)
         throw SceneError(name + ": a pattern parameter is out of range");

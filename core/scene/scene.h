@@ -131,6 +131,10 @@ struct CsgNode {
     std::vector<uint32_t> children; // operation: indices into the object's nodes
 };
 
+/// The deepest nesting of CSG operations over a shape that a scene may have: both backends
+/// evaluate CSG recursively (the CUDA one with a stack reserved for every resident thread).
+constexpr int kMaxCsgNesting = 64;
+
 /// An object made of analytic shapes: one shape, or a CSG tree whose root is `root`.
 struct ShapeObject {
     std::string name;

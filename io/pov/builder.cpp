@@ -48,6 +48,9 @@ struct Builder {
         l.color =
             Vec3(float(decode(l.color.x)), float(decode(l.color.y)), float(decode(l.color.z)));
         const Vec3 aim = pl.point_at - pl.light.position;
+        if (!is_finite(pl.light.position) || !is_finite(l.color) || !is_finite(aim) ||
+            !is_finite(pl.axis1) || !is_finite(pl.axis2))
+            p.error_at(o.where, "the light's position, colour or aim is not a finite number");
         if (l.type != LightType::Point)
             l.direction = length(aim) > 0 ? normalize(flip.vector(aim)) : Vec3(0, -1, 0);
         if (!pl.area || (pl.n1 == 1 && pl.n2 == 1)) {
@@ -72,6 +75,10 @@ struct Builder {
     void mesh(const PovObject& o, const PovTexture& tex, const PovInterior* in, uint8_t flags) {
         const uint32_t mat = material(tex, in);
         const Affine t = flip * o.local;
+        for (const Vec3& v : o.mesh->positions)
+            if (!is_finite(t.point(v)))
+                p.error_at(o.where, "a vertex is not a finite number (a division by zero, or a "
+                                    "scale beyond 1e38?)");
         if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty() && flags == 0) {
             append_mesh(loose[mat], *o.mesh, t);
             return;
@@ -99,7 +106,10 @@ struct Builder {
             }
             return -1;
         case PovKind::Shape: {
-            if (std::fabs(o.local.determinant()) < 1e-20f) { // as Scene::validate
+            if (!o.local.finite() || !std::isfinite(o.shape.a) || !std::isfinite(o.shape.b))
+                p.error_at(o.where, "the shape's size or placement is not a finite number "
+                                    "(a division by zero, or a scale beyond 1e38?)");
+            if (!(std::fabs(o.local.determinant()) >= 1e-20f)) { // as Scene::validate
                 p.unsupported(o.where, "degenerate shape (a zero scale; left out)");
                 return -1;
             }
@@ -160,6 +170,15 @@ struct Builder {
         ShapeObject built; // children before parents
         const int root = node(o, parent, parent_in, parent_flags, built, true);
         if (root < 0) return;
+        std::vector<int> height(built.nodes.size(), 0);
+        for (size_t i = 0; i < built.nodes.size(); ++i)
+            for (uint32_t c : built.nodes[i].children)
+                height[i] = std::max(height[i], height[c] + 1);
+        if (height[size_t(root)] > kMaxCsgNesting)
+            p.error_at(o.where, "CSG nested " + std::to_string(height[size_t(root)]) +
+                                    " levels deep; Sheaf renders " +
+                                    std::to_string(kMaxCsgNesting) +
+                                    " (unions of separate objects do not count)");
         // The core wants parents before children: copy the tree in preorder from the root.
         ShapeObject so;
         so.name = name(o);

@@ -282,5 +282,32 @@ TEST(PovObjects, SyntaxErrorsNameFileLineColumnAndToken) {
     }
 }
 
+// Numbers the core cannot use are errors where the object starts, not shapes that vanish
+// (a NaN transform passed every "smaller than" test) or a commit error without a place.
+TEST(PovObjects, NonFiniteNumbersAreErrorsAtTheObject) {
+    const std::string finite = "error: the shape's size or placement is not a finite number";
+    EXPECT_NE(error_of("\nsphere { 0, 0/0 }").find("scene.pov:2:1: " + finite), std::string::npos);
+    EXPECT_NE(error_of("box { 0, 1 scale 1e30 scale 1e30 }").find("scene.pov:1:1: " + finite),
+              std::string::npos);
+    EXPECT_NE(error_of("triangle { <0/0, 0, 0>, <1, 0, 0>, <0, 1, 0> }")
+                  .find("scene.pov:1:1: error: a vertex is not a finite number"),
+              std::string::npos);
+    EXPECT_EQ(error_of("light_source { <1, 2, 3> rgb 1e39 }"),
+              "scene.pov:1:1: error: the light's position, colour or aim is not a finite number");
+}
+
+// CSG deeper than the core renders is an error at the outermost object; nested unions of
+// separate objects are taken apart first, so they may nest deeper.
+TEST(PovObjects, CsgNestingIsLimited) {
+    std::string deep, unions;
+    for (int i = 0; i < 70; ++i) deep += "difference { ", unions += "union { ";
+    deep += "sphere { 0, 1 }";
+    unions += "sphere { 0, 1 }";
+    for (int i = 0; i < 70; ++i) deep += " sphere { 0, 0.1 } }", unions += " }";
+    EXPECT_EQ(error_of(deep), "scene.pov:1:1: error: CSG nested 70 levels deep; Sheaf renders 64 "
+                              "(unions of separate objects do not count)");
+    EXPECT_EQ(load_text(unions).scene.shape_objects.size(), 1u);
+}
+
 } // namespace
 } // namespace sheaf::io::pov

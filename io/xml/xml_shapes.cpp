@@ -9,7 +9,7 @@
 namespace sheaf::io::xml {
 namespace {
 
-constexpr int kMaxCsgDepth = 64;
+constexpr int kMaxCsgDepth = kMaxCsgNesting;
 
 const std::vector<std::string> kShapeElements = {"sphere", "box",          "cylinder",  "cone",
                                                  "disc",   "plane",        "torus",     "union",

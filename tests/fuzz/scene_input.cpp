@@ -1,0 +1,113 @@
+#include "tests/fuzz/scene_input.h"
+
+#include "sheaf/sheaf.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace sheaf::fuzz {
+namespace {
+
+[[noreturn]] void broken(const std::string& what) {
+    std::fprintf(stderr, "sheaf fuzz: broken promise: %s\n", what.c_str());
+    std::fflush(stderr);
+    std::abort();
+}
+
+/// The last error's message, and a broken promise when a failed call left none.
+std::string failure(const char* call, SheafError code) {
+    const char* message = nullptr;
+    SheafError last = sheafGetLastError(&message);
+    if (last != code)
+        broken(std::string(call) + " returned " + std::to_string(code) +
+               " but sheafGetLastError says " + std::to_string(last));
+    if (!message || !*message) broken(std::string(call) + " failed without a message");
+    return message;
+}
+
+/// A folder of this process's own for the input file: fuzzers run several processes at once.
+const std::string& work_dir() {
+    static const std::string dir = [] {
+        const char* tmp = std::getenv("TMPDIR");
+        std::string d =
+            std::string(tmp && *tmp ? tmp : "/tmp") + "/sheaf-fuzz-" + std::to_string(getpid());
+        std::string cmd = "mkdir -p '" + d + "'";
+        if (std::system(cmd.c_str()) != 0) broken("cannot create " + d);
+        return d;
+    }();
+    return dir;
+}
+
+void render_small(SheafScene scene, std::FILE* log) {
+    SheafRenderer renderer = nullptr;
+    if (sheafRendererNew(&renderer) != SHEAF_OK) broken("sheafRendererNew failed");
+    // Small and single-threaded: a fuzzer runs many inputs a second. backend=cpu: the input
+    // is what is under test, not the machine.
+    const int width = 24, height = 16;
+    if (sheafRendererSetInt(renderer, "width", width) != SHEAF_OK ||
+        sheafRendererSetInt(renderer, "height", height) != SHEAF_OK ||
+        sheafRendererSetInt(renderer, "threads", 1) != SHEAF_OK ||
+        sheafRendererSetString(renderer, "backend", "cpu") != SHEAF_OK)
+        broken("a documented setting was refused");
+    SheafFrame frame = nullptr;
+    SheafError e = sheafRender(renderer, scene, &frame);
+    if (e != SHEAF_OK) {
+        const std::string message = failure("sheafRender", e);
+        if (log) std::fprintf(log, "  render error %d: %s\n", int(e), message.c_str());
+    } else {
+        int w = 0, h = 0;
+        if (sheafFrameGetSize(frame, &w, &h) != SHEAF_OK || w != width || h != height)
+            broken("the frame is not the size asked for");
+        std::vector<float> rgba(size_t(w) * h * 4);
+        if (sheafFrameGetPass(frame, "combined", rgba.data(), rgba.size()) != SHEAF_OK)
+            broken("the combined pass cannot be read");
+        for (size_t i = 0; i < rgba.size(); ++i)
+            if (!std::isfinite(rgba[i]))
+                broken("pixel " + std::to_string(i / 4) + " channel " + std::to_string(i % 4) +
+                       " is " + std::to_string(rgba[i]));
+        if (log) std::fprintf(log, "  rendered %dx%d\n", w, h);
+        sheafFrameRelease(frame);
+    }
+    sheafRendererRelease(renderer);
+}
+
+} // namespace
+
+int run_scene_input(const uint8_t* data, size_t size, const char* ext, std::FILE* log) {
+    const std::string path = work_dir() + "/input" + ext;
+    if (FILE* f = std::fopen(path.c_str(), "wb")) {
+        if (size && std::fwrite(data, 1, size, f) != size) broken("cannot write " + path);
+        std::fclose(f);
+    } else {
+        broken("cannot write " + path);
+    }
+    SheafScene scene = nullptr;
+    if (sheafSceneNew(&scene) != SHEAF_OK) broken("sheafSceneNew failed");
+    // POV-Ray's own includes, where installed, so that scenes using colors.inc and friends
+    // reach past their first line.
+    for (const char* dir : {"/usr/share/povray-3.7/include", "/usr/share/povray/include"})
+        if (access(dir, R_OK) == 0) sheafSceneSetLoadOption(scene, "include_path", dir);
+    SheafError e = sheafSceneLoadFile(scene, path.c_str());
+    if (e != SHEAF_OK) {
+        std::string message = failure("sheafSceneLoadFile", e);
+        if (e != SHEAF_ERROR_SCENE && e != SHEAF_ERROR_OUT_OF_MEMORY)
+            broken("a bad scene file gave error " + std::to_string(e) + ": " + message);
+        if (message.find("input") == std::string::npos)
+            broken("the error does not name the file: " + message);
+        if (log) std::fprintf(log, "  load error %d: %s\n", int(e), message.c_str());
+    } else if ((e = sheafSceneCommit(scene)) != SHEAF_OK) {
+        const std::string message = failure("sheafSceneCommit", e);
+        if (log) std::fprintf(log, "  commit error %d: %s\n", int(e), message.c_str());
+    } else {
+        render_small(scene, log);
+    }
+    sheafSceneRelease(scene);
+    return 0;
+}
+
+} // namespace sheaf::fuzz

@@ -209,7 +209,9 @@ template <class Exec> class DeviceTracer {
             add_late_counts(st_, pending_[i].prefix, pending_[i].cull, counts[i].objects,
                             counts[i].final);
         pending_.clear();
-        fill(ex_, slots_.data(), slots_.size(), BatchCounts{});
+        // A batch traced after this takes a new buffer, zeroed when allocated: no launch to
+        // clear slots that the frame, which flushes once at its end, would never use again.
+        slots_ = DeviceBuffer<BatchCounts, Exec>();
     }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private

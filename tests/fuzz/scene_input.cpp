@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <regex>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -41,6 +42,13 @@ const std::string& work_dir() {
         return d;
     }();
     return dir;
+}
+
+/// Whether `message` starts "FILE:LINE:COL: ": an error in a file the scene includes names
+/// that file.
+bool names_a_place(const std::string& message) {
+    static const std::regex place(R"(^[^:\s]+:[0-9]+:[0-9]+: )");
+    return std::regex_search(message, place);
 }
 
 void render_small(SheafScene scene, std::FILE* log) {
@@ -97,8 +105,8 @@ int run_scene_input(const uint8_t* data, size_t size, const char* ext, std::FILE
         std::string message = failure("sheafSceneLoadFile", e);
         if (e != SHEAF_ERROR_SCENE && e != SHEAF_ERROR_OUT_OF_MEMORY)
             broken("a bad scene file gave error " + std::to_string(e) + ": " + message);
-        if (message.find("input") == std::string::npos)
-            broken("the error does not name the file: " + message);
+        if (message.find("input") == std::string::npos && !names_a_place(message))
+            broken("the error names neither the file nor a FILE:LINE:COL: " + message);
         if (log) std::fprintf(log, "  load error %d: %s\n", int(e), message.c_str());
     } else if ((e = sheafSceneCommit(scene)) != SHEAF_OK) {
         const std::string message = failure("sheafSceneCommit", e);

@@ -1,7 +1,8 @@
 // One fuzz input as a user's scene file: written to a file with the format's extension, read
 // through the C ABI (sheafSceneLoadFile), and when it loads, committed and rendered small on the
 // CPU. What the C ABI promises is checked, and a broken promise aborts (a finding):
-// - a failed call returns an error code with a message, and a load error names the file;
+// - a failed call returns an error code with a message, and a load error names the file, or
+//   FILE:LINE:COL in a file it includes;
 // - a frame that renders has the size asked for and finite pixels.
 // Crashes, sanitizer reports, hangs and runaway memory are the fuzzer's own findings.
 #pragma once

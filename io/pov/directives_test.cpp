@@ -229,8 +229,11 @@ TEST(PovLimits, EndlessWhile) {
 }
 
 TEST(PovLimits, InfiniteMacroRecursion) {
+    // The call chain follows, a recursion as one line with its count.
     EXPECT_EQ(error_of("#macro R(N) R(N + 1) #end\nR(0)"),
-              "scene.pov:1:13: error: macro calls nested deeper than 200 (endless recursion?)");
+              "scene.pov:1:13: error: macro calls nested deeper than 200 (endless recursion?)\n"
+              "  in macro 'R' called at scene.pov:1:13 (199 times)\n"
+              "  in macro 'R' called at scene.pov:2:1");
 }
 
 TEST(PovLimits, HugeArrays) {

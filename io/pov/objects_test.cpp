@@ -277,8 +277,11 @@ TEST(PovObjects, SyntaxErrorsNameFileLineColumnAndToken) {
         load_pov_scene(d.write("s.pov", "#include \"bad.inc\""), {});
         FAIL();
     } catch (const SceneError& e) {
+        // The include follows on a line of its own.
         EXPECT_EQ(std::string(e.what()), d.path() + "/bad.inc:3:17: error: found ']', expected an "
-                                                    "object modifier or '}'");
+                                                    "object modifier or '}'\n  in 'bad.inc' "
+                                                    "included at " +
+                                             d.path() + "/s.pov:1:2");
     }
 }
 

@@ -101,6 +101,9 @@ class Parser {
     void expect_sym(const char* s, const std::string& expected = "");
     std::string expect_ident(const std::string& expected);
     std::string where(const Token& t) const;
+    /// Where the reader is: one line per macro call and include below the scene file,
+    /// innermost first ("\n  in macro 'M' called at FILE:LINE:COL"), for error messages.
+    std::string context() const;
     [[noreturn]] void error_expected(const Token& found, const std::string& expected) const;
     [[noreturn]] void error_at(const Token& t, const std::string& msg) const;
     void warn(const Token& t, const std::string& msg);

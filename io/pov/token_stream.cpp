@@ -20,13 +20,45 @@ std::string Parser::where(const Token& t) const {
     return file + ":" + std::to_string(t.line) + ":" + std::to_string(t.col);
 }
 
+std::string Parser::context() const {
+    constexpr int kShown = 8; // lines, innermost first; a recursion is one line with a count
+    std::string out, line, previous;
+    int shown = 0, repeats = 0;
+    size_t more = 0;
+    auto flush = [&] {
+        if (previous.empty()) return;
+        if (shown == kShown) {
+            more += size_t(repeats);
+        } else {
+            ++shown;
+            out += "\n  " + previous +
+                   (repeats > 1 ? " (" + std::to_string(repeats) + " times)" : std::string());
+        }
+    };
+    for (size_t i = frames_.size(); i-- > 1;) {
+        const Frame& f = frames_[i];
+        line = f.macro ? "in macro '" + f.where.text + "' called at " + where(f.where)
+                       : "in '" + std::filesystem::path(f.file->path).filename().string() +
+                             "' included at " + where(f.where);
+        if (line == previous) {
+            ++repeats;
+            continue;
+        }
+        flush();
+        previous = line, repeats = 1;
+    }
+    flush();
+    if (more > 0) out += "\n  (and " + std::to_string(more) + " more)";
+    return out;
+}
+
 void Parser::error_expected(const Token& found, const std::string& expected) const {
     throw SceneError(where(found) + ": error: found '" + describe(found) + "', expected " +
-                     expected);
+                     expected + context());
 }
 
 void Parser::error_at(const Token& t, const std::string& msg) const {
-    throw SceneError(where(t) + ": error: " + msg);
+    throw SceneError(where(t) + ": error: " + msg + context());
 }
 
 void Parser::warn(const Token& t, const std::string& msg) {
@@ -39,7 +71,7 @@ void Parser::unsupported(const Token& t, const std::string& what) {
         captures_.back().push_back({t, what});
         return;
     }
-    if (options_.strict) throw SceneError(where(t) + ": error: unsupported " + what);
+    if (options_.strict) throw SceneError(where(t) + ": error: unsupported " + what + context());
     warn(t, "unsupported " + what);
 }
 

@@ -18,5 +18,10 @@ struct SceneError : std::runtime_error {
 struct RenderError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+/// A frame that needs more memory than the machine has available: found before the memory is
+/// taken, so the process is not stopped by the system instead.
+struct OutOfMemory : RenderError {
+    using RenderError::RenderError;
+};
 
 } // namespace sheaf

@@ -9,10 +9,22 @@
 
 namespace sheaf {
 
+/// The memory this process could still take without the system running out: Linux's
+/// MemAvailable, or less where the process's control group has a lower limit. 0 when unknown.
+int64_t available_memory_bytes();
+
 class MemoryTracker {
   public:
+    /// Buffers beyond `bytes` in all are refused (OutOfMemory) before they are allocated;
+    /// 0: no limit. `available` is what the message reports the machine had.
+    void set_limit(int64_t bytes, int64_t available) { limit_ = bytes, available_ = available; }
+
     void add(int64_t bytes) {
         const int64_t now = current_.fetch_add(bytes, std::memory_order_relaxed) + bytes;
+        if (limit_ > 0 && bytes > 0 && now > limit_) {
+            current_.fetch_sub(bytes, std::memory_order_relaxed);
+            refuse(bytes, now);
+        }
         int64_t p = peak_.load(std::memory_order_relaxed);
         while (now > p && !peak_.compare_exchange_weak(p, now, std::memory_order_relaxed)) {
         }
@@ -22,7 +34,9 @@ class MemoryTracker {
     int64_t peak() const { return peak_.load(); }
 
   private:
+    [[noreturn]] void refuse(int64_t bytes, int64_t total) const;
     std::atomic<int64_t> current_{0}, peak_{0};
+    int64_t limit_ = 0, available_ = 0;
 };
 
 /// A std::allocator that reports to a tracker (none: untracked).
@@ -35,9 +49,13 @@ template <class T> struct TrackedAllocator {
     template <class U> TrackedAllocator(const TrackedAllocator<U>& o) : tracker(o.tracker) {}
 
     T* allocate(size_t n) {
-        T* p = std::allocator<T>().allocate(n);
-        if (tracker) tracker->add(int64_t(n * sizeof(T)));
-        return p;
+        if (tracker) tracker->add(int64_t(n * sizeof(T))); // may refuse: before allocating
+        try {
+            return std::allocator<T>().allocate(n);
+        } catch (...) {
+            if (tracker) tracker->sub(int64_t(n * sizeof(T)));
+            throw;
+        }
     }
     void deallocate(T* p, size_t n) {
         if (tracker) tracker->sub(int64_t(n * sizeof(T)));

@@ -30,6 +30,7 @@ class FramePipeline {
         PhaseTimer frame_timer(st_, "time_ms.frame");
         const int aa = s_.aa_samples;
         W_ = s_.width * aa, H_ = s_.height * aa;
+        limit_memory();
         radiance_.assign(size_t(W_) * H_, Vec3(0.0f));
         tests_.assign(size_t(W_) * H_, 0);
         memory_.add(int64_t(radiance_.size() * sizeof(Vec3)));
@@ -48,6 +49,31 @@ class FramePipeline {
     }
 
   private:
+    // A frame too large for the machine is refused before its memory is taken: at once when
+    // the per-sample arrays alone would not fit, else when the tracked buffers (rays, keys,
+    // hierarchy levels, candidates) would pass what is left. The system would otherwise stop
+    // the process (or swap) part way through the frame.
+    void limit_memory() {
+        const int64_t available = available_memory_bytes();
+        if (available <= 0) return; // unknown: no limit
+        const int64_t samples = int64_t(W_) * H_;
+        // Untracked arrays that live together in primary(): radiance, tests, depth, normal,
+        // albedo, object id, the visibility buffer and its slots, the hits (as if every
+        // sample hit); the frame's passes per pixel.
+        const int64_t per_sample = sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t) * 3 +
+                                   sizeof(uint64_t) + sizeof(SurfaceHit);
+        const int64_t per_pixel = sizeof(float) * (4 + 1 + 3 + 3 + 1 + 1);
+        const int64_t fixed = samples * per_sample + int64_t(s_.width) * s_.height * per_pixel;
+        const int64_t usable = available / 10 * 9; // the rest for what is not counted
+        if (fixed > usable)
+            throw OutOfMemory("a " + std::to_string(s_.width) + "x" + std::to_string(s_.height) +
+                              " frame with " + std::to_string(s_.aa_samples) + "x" +
+                              std::to_string(s_.aa_samples) + " samples per pixel needs at least " +
+                              std::to_string(fixed >> 20) + " MiB; this machine has " +
+                              std::to_string(available >> 20) + " MiB available");
+        memory_.set_limit(usable - fixed, available);
+    }
+
     void report(float done) {
         if (progress_ && !progress_(done)) throw RenderError("cancelled");
     }

@@ -3,6 +3,7 @@
 #include "core/render/renderer.h"
 
 #include "core/base/error.h"
+#include "core/base/memory.h"
 #include "core/scenes/builtin.h"
 #include "core/scenes/shapes.h"
 #include "core/scenes/test_scenes.h"
@@ -36,6 +37,24 @@ double mean(const Frame& f) {
 // reflection in one small scene.
 PreparedScene glass_scene() {
     return prepare_scene(test::glass_mirror_scene());
+}
+
+// A frame whose per-sample arrays alone exceed what the machine has is refused before any of
+// it is allocated, with the numbers (the system would otherwise stop the process part way).
+TEST(Renderer, AFrameTooLargeForTheMachineIsRefusedAtOnce) {
+    const int64_t available = available_memory_bytes();
+    if (available == 0 || available > (int64_t(1) << 40))
+        GTEST_SKIP() << "available memory unknown, or more than the 1 TB such a frame needs";
+    try {
+        render(glass_scene(),
+               {{"width", "16384"}, {"height", "16384"}, {"aa.samples", "8"}, {"backend", "cpu"}});
+        FAIL() << "a 16384x16384 frame with 8x8 samples rendered";
+    } catch (const OutOfMemory& e) {
+        EXPECT_NE(std::string(e.what()).find("a 16384x16384 frame with 8x8 samples per pixel "
+                                             "needs at least"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(Renderer, AccelModesGiveIdenticalImagesOnTheBuiltinScenes) {

@@ -69,6 +69,8 @@ SheafError fail_current() noexcept {
         return report(SHEAF_ERROR_INVALID_SETTING, e.what());
     } catch (const SceneError& e) {
         return report(SHEAF_ERROR_SCENE, e.what());
+    } catch (const OutOfMemory& e) {
+        return report(SHEAF_ERROR_OUT_OF_MEMORY, e.what());
     } catch (const RenderError& e) {
         const bool cancelled = std::string_view(e.what()) == "cancelled";
         return report(cancelled ? SHEAF_ERROR_CANCELLED : SHEAF_ERROR_RENDER, e.what());

@@ -93,6 +93,9 @@ expect_in "$OUT/builtin_nosuch.err" "nosuch" "builtin:nosuch: stderr names it"
 # Render and image errors: exit 3.
 expect_rc bad_ext 3 builtin:cornell "${S[@]}" -o "$OUT/out.bogusext"
 expect_in "$OUT/bad_ext.err" "out.bogusext" "bad extension: stderr names the file"
+# A frame larger than the machine's memory (about 1 TB): refused at once, with the numbers.
+expect_rc too_large 3 builtin:cornell -q -W 16384 -H 16384 --set aa.samples=8 --set backend=cpu -o "$OUT/big.png"
+expect_in "$OUT/too_large.err" "samples per pixel needs at least" "too large a frame: stderr says what it needs"
 
 
 # POV-Ray scene files: render, --check, --strict, include paths, a syntax error.

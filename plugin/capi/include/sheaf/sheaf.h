@@ -39,7 +39,7 @@ typedef enum SheafError {
     SHEAF_ERROR_SCENE = 3,            /* a scene that cannot be loaded or rendered */
     SHEAF_ERROR_RENDER = 4,           /* a failure while rendering */
     SHEAF_ERROR_IO = 5,               /* an image that cannot be written */
-    SHEAF_ERROR_OUT_OF_MEMORY = 6,
+    SHEAF_ERROR_OUT_OF_MEMORY = 6,    /* a frame larger than the memory available */
     SHEAF_ERROR_CANCELLED = 7, /* the progress callback returned 0 */
     SHEAF_ERROR_UNKNOWN = 99
 } SheafError;

@@ -1,0 +1,57 @@
+#include "core/base/memory.h"
+
+#include "core/base/error.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace sheaf {
+namespace {
+
+/// A number from a one-line file such as /sys/fs/cgroup/memory.max; -1 when absent or "max".
+int64_t read_number(const char* path) {
+    std::ifstream in(path);
+    std::string word;
+    if (!(in >> word) || word.empty() || word.find_first_not_of("0123456789") != std::string::npos)
+        return -1;
+    return std::stoll(word);
+}
+
+std::string mib(int64_t bytes) {
+    return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB";
+}
+
+} // namespace
+
+int64_t available_memory_bytes() {
+    int64_t available = -1;
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key, unit;
+    int64_t value = 0;
+    while (meminfo >> key >> value) {
+        std::getline(meminfo, unit);
+        if (key == "MemAvailable:") {
+            available = value * 1024;
+            break;
+        }
+    }
+    // A control group (a container, a systemd slice) may allow less than the machine has.
+    const int64_t max = read_number("/sys/fs/cgroup/memory.max");
+    const int64_t current = read_number("/sys/fs/cgroup/memory.current");
+    if (max > 0 && current >= 0) {
+        const int64_t left = std::max<int64_t>(0, max - current);
+        available = available < 0 ? left : std::min(available, left);
+    }
+    return std::max<int64_t>(available, 0);
+}
+
+void MemoryTracker::refuse(int64_t bytes, int64_t total) const {
+    throw OutOfMemory("the frame needs more memory than this machine has available: its buffers "
+                      "would reach " + mib(total) + " with the next " + mib(bytes) + " (" +
+                      mib(available_) + " were available when it started); a smaller size, "
+                      "fewer aa.samples or ao.samples, or a smaller traversal.batch need less");
+}
+
+} // namespace sheaf

@@ -1,0 +1,47 @@
+// The frame's memory accounting, and its limit: a buffer past the limit is refused before it
+// is allocated.
+#include "core/base/memory.h"
+
+#include "core/base/error.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace sheaf {
+namespace {
+
+TEST(MemoryTracker, CountsAndPeaks) {
+    MemoryTracker m;
+    {
+        auto a = tracked_vector<uint32_t>(m, 100);
+        auto b = tracked_vector<uint8_t>(m, 50);
+        EXPECT_EQ(m.current(), 450);
+    }
+    EXPECT_EQ(m.current(), 0);
+    EXPECT_EQ(m.peak(), 450);
+}
+
+TEST(MemoryTracker, ALimitRefusesBeforeAllocating) {
+    MemoryTracker m;
+    m.set_limit(1000, 5000);
+    auto kept = tracked_vector<uint8_t>(m, 600);
+    try {
+        auto refused = tracked_vector<uint8_t>(m, 600);
+        FAIL() << "600 + 600 bytes passed a limit of 1000";
+    } catch (const OutOfMemory& e) {
+        EXPECT_NE(std::string(e.what()).find("1 MiB were available"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(m.current(), 600); // what was refused is not counted
+    EXPECT_EQ(m.peak(), 600);
+    auto fits = tracked_vector<uint8_t>(m, 400);
+    EXPECT_EQ(m.current(), 1000);
+}
+
+TEST(MemoryTracker, TheAvailableMemoryIsKnownOnLinux) {
+    EXPECT_GT(available_memory_bytes(), 0);
+}
+
+} // namespace
+} // namespace sheaf

@@ -62,6 +62,28 @@ void check_ply_header(const std::string& path, uintmax_t file_size) {
                          : std::string(" (the file ends first)")));
 }
 
+/// Faces as the post-processing steps assume them: each with a vertex or more, and each mesh's
+/// primitive types those of its faces (types are set again from the faces: a reader's wrong
+/// types make Triangulate assert).
+void check_faces(const std::string& path, const aiScene& scene) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        aiMesh* mesh = scene.mMeshes[m];
+        if (!mesh) throw SceneError(path + ": mesh " + std::to_string(m) + " is missing");
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const unsigned n = mesh->mFaces[f].mNumIndices;
+            if (n == 0 || !mesh->mFaces[f].mIndices)
+                throw SceneError(path + ": face " + std::to_string(f) + " of mesh " +
+                                 std::to_string(m) + " has no vertices");
+            types |= n == 1   ? aiPrimitiveType_POINT
+                     : n == 2 ? aiPrimitiveType_LINE
+                     : n == 3 ? aiPrimitiveType_TRIANGLE
+                              : aiPrimitiveType_POLYGON;
+        }
+        mesh->mPrimitiveTypes = types;
+    }
+}
+
 /// Checks the path and imports it with `flags`; the scene lives as long as `importer`.
 const aiScene* import(Assimp::Importer& importer, const std::string& path, unsigned flags) {
     if (!is_mesh_file(path))
@@ -76,12 +98,19 @@ const aiScene* import(Assimp::Importer& importer, const std::string& path, unsig
     // Points and lines are not surfaces: SortByPType removes them.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene = importer.ReadFile(path, flags | aiProcess_ValidateDataStructure);
-    if (!scene) {
+    auto failed = [&] {
         std::string why = importer.GetErrorString();
         if (why.empty()) why = "Assimp could not read it";
-        throw SceneError(path + ": " + why);
-    }
+        return SceneError(path + ": " + why);
+    };
+    // Read and validated first, checked, then post-processed: Debian's Assimp is built with
+    // its assertions on, and a post-processing step given faces it does not expect aborts the
+    // process (a PLY face with no vertices stopped the host in Triangulate).
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    if (!scene) throw failed();
+    check_faces(path, *scene);
+    scene = importer.ApplyPostProcessing(flags | aiProcess_ValidateDataStructure);
+    if (!scene) throw failed();
     if (!scene->mRootNode || scene->mNumMeshes == 0)
         throw SceneError(path + ": the file has no faces (only points, lines or nothing)");
     return scene;

@@ -153,10 +153,18 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
         dir / "huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
                           "property float x\nproperty float y\nproperty float z\nend_header\n"));
     EXPECT_NE(e.find("more than the file can hold"), std::string::npos) << e;
-    // A header cut short: Assimp alone would loop for ever (found by fuzzing).
+    // A header cut short: Assimp alone would loop for ever.
     e = error_of(test::write_text(dir / "cut.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
                                                    "property float x\n"));
     EXPECT_NE(e.find("no end_header"), std::string::npos) << e;
+    // A face of no vertices: Debian's Assimp asserts on it in Triangulate and aborts the
+    // process (found by fuzz_ply).
+    e = error_of(test::write_text(dir / "empty_face.ply",
+                                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                  "property float y\nproperty float z\nelement face 2\n"
+                                  "property list uchar int vertex_indices\nend_header\n"
+                                  "0 0 0\n1 0 0\n0 1 0\n0\n3 0 1 2\n"));
+    EXPECT_NE(e.find("face 0 of mesh 0 has no vertices"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "garbage.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));
     EXPECT_NE(e.find("garbage.glb"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "garbage.gltf", "{\"asset\": [1, 2"));

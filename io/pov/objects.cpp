@@ -59,7 +59,8 @@ bool Parser::parse_object(PovObject& o) {
     o = PovObject();
     o.where = kw;
     if (++objects_made_ > kMaxObjects)
-        error_at(kw, "more than " + std::to_string(kMaxObjects) + " objects");
+        error_at(kw, "more than " + std::to_string(kMaxObjects) +
+                         " objects parsed (an endless loop?)");
     const std::string& k = kw.text;
     if (unsupported_objects().count(k)) {
         unsupported(kw, "object '" + k + "'");

@@ -26,7 +26,11 @@ constexpr int kMaxMacroDepth = 200;
 constexpr int kMaxIncludeDepth = 64;
 constexpr size_t kMaxArrayElements = 100'000'000;
 constexpr size_t kMaxDataBytes = size_t(2) << 30;
-constexpr size_t kMaxObjects = 20'000'000;
+/// Objects parsed, temporaries included: objects inside a union are not placed (and charged to
+/// the data budget) until it closes, so an endless loop inside one grew it without bound (20
+/// million took 11 GB). 5 million parsed objects take about 3 GB, or 9 GB when each has a
+/// texture of its own.
+constexpr size_t kMaxObjects = 5'000'000;
 /// Nested expressions, objects, textures and function bodies: the parser recurses into each,
 /// so a deeper nesting is refused before the stack runs out (about 3 KB a level: 500 levels
 /// need 1.5 MB of the 8 MB a thread has by default).

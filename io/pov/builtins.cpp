@@ -189,8 +189,10 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         need(1);
         namespace fs = std::filesystem;
         const fs::path p = str(0);
-        bool e = fs::exists(p.is_absolute() ? p : fs::path(scene_dir_) / p);
-        for (const std::string& d : options_.include_paths) e = e || fs::exists(fs::path(d) / p);
+        std::error_code ec; // a name the system refuses (too long ...) does not exist
+        bool e = fs::exists(p.is_absolute() ? p : fs::path(scene_dir_) / p, ec);
+        for (const std::string& d : options_.include_paths)
+            e = e || fs::exists(fs::path(d) / p, ec);
         out = Value::number(e);
     } else if (n == "seed") {
         need(1);

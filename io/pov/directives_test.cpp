@@ -320,6 +320,20 @@ TEST(PovLimits, DeepFunctions) {
     EXPECT_NE(e.find("more than 10000 operations deep"), std::string::npos) << e;
 }
 
+// Names the system refuses (longer than a path may be) are files that do not exist, not a
+// filesystem exception escaping the reader (found by fuzz_pov).
+TEST(PovLimits, NamesTooLongForTheSystem) {
+    const std::string name = repeat("x", 5000);
+    EXPECT_NE(error_of("#include \"" + name + "\"")
+                  .find("scene.pov:1:2: error: cannot find include file"),
+              std::string::npos);
+    EXPECT_DOUBLE_EQ(declared("#declare V = file_exists(\"" + name + "\");", "V").v[0], 0);
+    EXPECT_NE(error_of("#fopen F \"" + name + "\" read").find("#fopen may read only under"),
+              std::string::npos);
+    EXPECT_NE(error_of("#fopen F \"" + name + "\" write").find("#fopen may write only under"),
+              std::string::npos);
+}
+
 TEST(PovLimits, ArrayDimensions) {
     EXPECT_EQ(error_of("#declare A = array[1][1][1][1][1][1];"),
               "scene.pov:1:35: error: an array has at most 5 dimensions");

@@ -16,7 +16,9 @@ namespace sheaf::io::pov {
 namespace {
 
 bool is_under(const fs::path& p, const fs::path& dir) {
-    const fs::path a = fs::weakly_canonical(p), b = fs::weakly_canonical(dir);
+    std::error_code ea, eb; // a name the system refuses (too long ...) is under nothing
+    const fs::path a = fs::weakly_canonical(p, ea), b = fs::weakly_canonical(dir, eb);
+    if (ea || eb) return false;
     auto ai = a.begin();
     for (auto bi = b.begin(); bi != b.end(); ++bi, ++ai) {
         if (bi->empty()) continue;
@@ -49,13 +51,14 @@ std::string Parser::find_file(const std::string& name, const Token& where,
     };
     add(fs::path(file_names_[where.file]).parent_path());
     for (const std::string& d : options_.include_paths) add(d);
-    if (fs::is_directory("/usr/share/povray-3.7/include")) add("/usr/share/povray-3.7/include");
+    std::error_code ec; // a name the system refuses (too long ...) is not found
+    if (fs::is_directory("/usr/share/povray-3.7/include", ec)) add("/usr/share/povray-3.7/include");
     if (fs::path(name).is_absolute()) {
-        if (fs::is_regular_file(name)) return name;
+        if (fs::is_regular_file(name, ec)) return name;
     } else {
         for (const fs::path& d : dirs) {
             const fs::path p = d / name;
-            if (fs::is_regular_file(p)) return p.lexically_normal().string();
+            if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
         }
     }
     std::string searched;
@@ -70,11 +73,12 @@ void Parser::include_directive(const Token& where) {
     const std::string name = v.str;
     const std::string path = find_include(name, where);
     int depth = 0;
-    const fs::path canon = fs::weakly_canonical(path);
+    std::error_code ec;
+    const fs::path canon = fs::weakly_canonical(path, ec);
     for (const Frame& f : frames_) {
         if (f.macro) continue;
         ++depth;
-        if (fs::weakly_canonical(f.file->path) == canon)
+        if (!canon.empty() && fs::weakly_canonical(f.file->path, ec) == canon)
             error_at(where, "'" + name + "' includes itself");
     }
     if (depth > kMaxIncludeDepth)
@@ -95,7 +99,9 @@ void Parser::fopen_directive(const Token& where) {
         h.reading = true;
         h.tokens = load_tokens(p.lexically_normal().string(), &where);
     } else if (is_kw_tok(mode, "write") || is_kw_tok(mode, "append")) {
-        if (!is_under(fs::absolute(name), fs::current_path()))
+        std::error_code ea, ec;
+        const fs::path target = fs::absolute(name, ea), here = fs::current_path(ec);
+        if (ea || ec || !is_under(target, here))
             error_at(where, "#fopen may write only under the current folder, not '" + name + "'");
         h.out = std::make_shared<std::ofstream>(name, is_kw_tok(mode, "append") ? std::ios::app
                                                                                 : std::ios::trunc);

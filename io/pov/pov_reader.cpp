@@ -19,10 +19,16 @@ void Parser::parse_scene(const std::string& path) {
 }
 
 PovResult load_pov_scene(const std::string& path, const PovOptions& options) {
-    if (!std::filesystem::is_regular_file(path))
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
         throw SceneError(path + ": error: no such scene file");
     Parser p(options);
-    p.parse_scene(path);
+    try {
+        p.parse_scene(path);
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A system call the reader did not expect to fail: still the scene's error.
+        throw SceneError(path + ": error: " + e.what());
+    }
     PovResult r;
     r.assumed_gamma = build_scene(p, r.scene);
     r.version = p.model.version;

@@ -353,16 +353,9 @@ bool Parser::parse_statement() {
         PovObject o;
         if (parse_object(o)) {
             // Placed objects stay until the scene is built: they count against the data
-            // budget (10 million spheres in a loop took 5.6 GB before the loop limit).
-            size_t nodes = 0;
-            std::vector<const PovObject*> open{&o};
-            while (!open.empty()) {
-                const PovObject* n = open.back();
-                open.pop_back();
-                ++nodes;
-                for (const PovObject& c : n->children) open.push_back(&c);
-            }
-            charge(nodes * sizeof(PovObject), t);
+            // budget (10 million spheres in a loop took 5.6 GB before the loop limit). The
+            // objects inside were charged as their CSG took them.
+            charge(object_bytes(o), t);
             model.objects.push_back(std::move(o));
         }
         return true;

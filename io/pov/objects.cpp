@@ -53,6 +53,14 @@ bool Parser::is_object_start(const Token& t) const {
            (supported_objects().count(t.text) || unsupported_objects().count(t.text));
 }
 
+size_t Parser::object_bytes(const PovObject& o) {
+    size_t bytes = sizeof(PovObject);
+    if (o.texture && o.texture.use_count() == 1) // its own texture, not a shared declaration
+        bytes += sizeof(PovTexture) + (o.texture->pigment ? sizeof(PovPigment) : 0) +
+                 (o.texture->normal ? sizeof(PovNormal) : 0);
+    return bytes;
+}
+
 bool Parser::parse_object(PovObject& o) {
     const Token kw = next();
     const Nest nest(*this, kw);
@@ -222,7 +230,13 @@ void Parser::parse_csg(const Token& kw, PovObject& o) {
         if (accept_sym("}")) return;
         if (is_object_start(t)) {
             PovObject child;
-            if (parse_object(child)) o.children.push_back(std::move(child));
+            if (parse_object(child)) {
+                // A CSG keeps its objects until it is placed or dropped: charged as taken, so
+                // that an endless loop inside a union ends at the data budget (it reached 8.7
+                // GB at the object limit when each object had a texture of its own).
+                charge(object_bytes(child), t);
+                o.children.push_back(std::move(child));
+            }
             continue;
         }
         if (!parse_modifier(o, texture_here)) error_expected(t, "an object, a modifier or '}'");

@@ -28,8 +28,7 @@ constexpr size_t kMaxArrayElements = 100'000'000;
 constexpr size_t kMaxDataBytes = size_t(2) << 30;
 /// Objects parsed, temporaries included: objects inside a union are not placed (and charged to
 /// the data budget) until it closes, so an endless loop inside one grew it without bound (20
-/// million took 11 GB). 5 million parsed objects take about 3 GB, or 9 GB when each has a
-/// texture of its own.
+/// million took 11 GB). Objects also count against the data budget as a CSG takes them.
 constexpr size_t kMaxObjects = 5'000'000;
 /// Nested expressions, objects, textures and function bodies: the parser recurses into each,
 /// so a deeper nesting is refused before the stack runs out (about 3 KB a level: 500 levels
@@ -211,6 +210,9 @@ class Parser {
     void parse_mesh2(const Token& kw, PovObject& o);
     void parse_polygon(const Token& kw, PovObject& o);
     size_t objects_made_ = 0;
+    /// What one object (not the objects inside it) adds to the data budget: the object and
+    /// its texture when no other object shares it.
+    static size_t object_bytes(const PovObject& o);
 
     // ---- textures (textures.cpp, pigments.cpp, normals.cpp, patterns.cpp) ----
     /// After 'texture': one { ... } block, on top of `base`.

@@ -6,9 +6,12 @@
 namespace sheaf {
 
 float Affine::determinant() const {
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    // In double: with float products, entries above about 1e13 overflow to infinity and
+    // 0 * infinity makes the determinant NaN, so a large but regular transform looked singular.
+    const auto e = [this](int i, int j) { return double(m[i][j]); };
+    return float(e(0, 0) * (e(1, 1) * e(2, 2) - e(1, 2) * e(2, 1)) -
+                 e(0, 1) * (e(1, 0) * e(2, 2) - e(1, 2) * e(2, 0)) +
+                 e(0, 2) * (e(1, 0) * e(2, 1) - e(1, 1) * e(2, 0)));
 }
 
 bool Affine::finite() const {

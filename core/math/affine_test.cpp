@@ -89,6 +89,16 @@ TEST(Affine, Translate) {
     EXPECT_EQ(t.determinant(), 1.0f);
 }
 
+// Entries near float's range: the determinant is large (infinite past float's range), never
+// NaN, so a large regular transform is not taken for a singular one.
+TEST(Affine, DeterminantOfLargeScalesIsNotNaN) {
+    EXPECT_FLOAT_EQ(Affine::scale(Vec3(1e12f)).determinant(), 1e36f);
+    const float big = Affine::scale(Vec3(1e20f)).determinant();
+    EXPECT_FALSE(std::isnan(big));
+    EXPECT_GT(big, 1.0f);
+    EXPECT_LT(Affine::scale(Vec3(-1e20f, 1e20f, 1e20f)).determinant(), -1.0f);
+}
+
 TEST(Affine, Scale) {
     const Affine s = Affine::scale(Vec3(2, 3, 4));
     EXPECT_EQ(s.point(Vec3(1, 1, 1)), Vec3(2, 3, 4));

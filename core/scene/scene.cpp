@@ -62,6 +62,14 @@ std::string where(size_t mesh) {
 }
 } // namespace
 
+int csg_nesting(const ShapeObject& o) {
+    // Children are later nodes: heights from the last node back.
+    std::vector<int> height(o.nodes.size(), 0);
+    for (size_t n = o.nodes.size(); n-- > 0;)
+        for (uint32_t c : o.nodes[n].children) height[n] = std::max(height[n], height[c] + 1);
+    return o.root < height.size() ? height[o.root] : 0;
+}
+
 void Scene::validate() const {
     for (size_t m = 0; m < meshes.size(); ++m) {
         const Mesh& mesh = meshes[m];
@@ -140,12 +148,8 @@ void Scene::validate() const {
         if (!so.transform.finite()) throw SceneError(name + " has a transform that is not finite");
         if (!(std::fabs(so.transform.determinant()) >= 1e-20f))
             throw SceneError(name + " has a singular transform");
-        // Children are later nodes: heights from the last node back.
-        std::vector<int> height(so.nodes.size(), 0);
-        for (size_t n = so.nodes.size(); n-- > 0;)
-            for (uint32_t c : so.nodes[n].children) height[n] = std::max(height[n], height[c] + 1);
-        if (height[so.root] > kMaxCsgNesting)
-            throw SceneError(name + ": CSG nested " + std::to_string(height[so.root]) +
+        if (const int nesting = csg_nesting(so); nesting > kMaxCsgNesting)
+            throw SceneError(name + ": CSG nested " + std::to_string(nesting) +
                              " levels deep, more than " + std::to_string(kMaxCsgNesting));
     }
     for (size_t l = 0; l < lights.size(); ++l) {

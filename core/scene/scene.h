@@ -144,6 +144,10 @@ struct ShapeObject {
     uint8_t flags = 0; // ObjectFlag bits
 };
 
+/// The deepest nesting of CSG operations in `o` (a lone shape: 0), against kMaxCsgNesting.
+/// Its nodes must be in the core's order: children after their parents.
+int csg_nesting(const ShapeObject& o);
+
 class Scene {
   public:
     /// Adds an object of one analytic shape.

@@ -170,20 +170,11 @@ struct Builder {
         ShapeObject built; // children before parents
         const int root = node(o, parent, parent_in, parent_flags, built, true);
         if (root < 0) return;
-        std::vector<int> height(built.nodes.size(), 0);
-        for (size_t i = 0; i < built.nodes.size(); ++i)
-            for (uint32_t c : built.nodes[i].children)
-                height[i] = std::max(height[i], height[c] + 1);
-        if (height[size_t(root)] > kMaxCsgNesting)
-            p.error_at(o.where, "CSG nested " + std::to_string(height[size_t(root)]) +
-                                    " levels deep; Sheaf renders " +
-                                    std::to_string(kMaxCsgNesting) +
-                                    " (unions of separate objects do not count)");
-        // The core wants parents before children: copy the tree in preorder from the root.
+        // The core wants parents before children: copy the tree in preorder from the root
+        // (as deep as the parser's nesting limit at most).
         ShapeObject so;
         so.name = name(o);
         so.transform = flip;
-        std::vector<uint32_t> stack;
         std::function<uint32_t(uint32_t)> copy = [&](uint32_t i) {
             const uint32_t at = uint32_t(so.nodes.size());
             so.nodes.push_back(built.nodes[i]);
@@ -193,6 +184,11 @@ struct Builder {
             return at;
         };
         so.root = copy(uint32_t(root));
+        if (const int nesting = csg_nesting(so); nesting > kMaxCsgNesting)
+            p.error_at(o.where, "CSG nested " + std::to_string(nesting) +
+                                    " levels deep; Sheaf renders " +
+                                    std::to_string(kMaxCsgNesting) +
+                                    " (unions of separate objects do not count)");
         so.flags = flags;
         scene.add_shape_object(std::move(so));
     }

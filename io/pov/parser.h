@@ -277,7 +277,7 @@ class Parser {
     std::string scene_dir_;
     std::vector<std::string> file_names_;
     std::vector<uint64_t> rand_streams_;
-    size_t data_bytes_ = 0; // live array elements and strings, placed objects: kMaxDataBytes
+    size_t data_bytes_ = 0; // live arrays and strings, objects placed or in a CSG: kMaxDataBytes
     void charge(size_t bytes, const Token& t);
 
     // ---- state ----

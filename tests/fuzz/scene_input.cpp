@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <regex>
 #include <string>
 #include <unistd.h>
@@ -31,17 +32,25 @@ std::string failure(const char* call, SheafError code) {
     return message;
 }
 
-/// A folder of this process's own for the input file: fuzzers run several processes at once.
+/// A folder of this process's own for the input file (fuzzers run several processes at
+/// once), removed when the process ends.
 const std::string& work_dir() {
-    static const std::string dir = [] {
-        const char* tmp = std::getenv("TMPDIR");
-        std::string d =
-            std::string(tmp && *tmp ? tmp : "/tmp") + "/sheaf-fuzz-" + std::to_string(getpid());
-        std::string cmd = "mkdir -p '" + d + "'";
-        if (std::system(cmd.c_str()) != 0) broken("cannot create " + d);
-        return d;
+    struct Dir {
+        std::filesystem::path path;
+        ~Dir() {
+            std::error_code ec;
+            std::filesystem::remove_all(path, ec);
+        }
+    };
+    static const Dir dir{std::filesystem::temp_directory_path() /
+                         ("sheaf-fuzz-" + std::to_string(getpid()))};
+    static const std::string name = [] {
+        std::error_code ec;
+        std::filesystem::create_directories(dir.path, ec);
+        if (ec) broken("cannot create " + dir.path.string() + ": " + ec.message());
+        return dir.path.string();
     }();
-    return dir;
+    return name;
 }
 
 /// Whether `message` starts "FILE:LINE:COL: ": an error in a file the scene includes names
@@ -96,10 +105,6 @@ int run_scene_input(const uint8_t* data, size_t size, const char* ext, std::FILE
     }
     SheafScene scene = nullptr;
     if (sheafSceneNew(&scene) != SHEAF_OK) broken("sheafSceneNew failed");
-    // POV-Ray's own includes, where installed, so that scenes using colors.inc and friends
-    // reach past their first line.
-    for (const char* dir : {"/usr/share/povray-3.7/include", "/usr/share/povray/include"})
-        if (access(dir, R_OK) == 0) sheafSceneSetLoadOption(scene, "include_path", dir);
     SheafError e = sheafSceneLoadFile(scene, path.c_str());
     if (e != SHEAF_OK) {
         std::string message = failure("sheafSceneLoadFile", e);

@@ -5,11 +5,15 @@
 #if defined(__CUDACC__)
 #define SHEAF_HD __host__ __device__
 #define SHEAF_HD_INLINE __host__ __device__ __forceinline__
+// A large leaf function kept out of its callers' frames: recursive device code (CSG) then
+// holds its stack once, at the leaf, instead of once per level of recursion.
+#define SHEAF_HD_NOINLINE __host__ __device__ __noinline__
 // The bodies of the wavefront pipeline's launches: extended lambdas (nvcc --extended-lambda).
 #define SHEAF_HD_LAMBDA __host__ __device__
 #else
 #define SHEAF_HD
 #define SHEAF_HD_INLINE inline
+#define SHEAF_HD_NOINLINE inline
 #define SHEAF_HD_LAMBDA
 #endif
 

@@ -9,8 +9,11 @@
 //   disc      z = 0, hole radius h <= r <= 1 (a surface)
 //   plane     the half-space z <= 0 (unbounded)
 //   torus     major radius 1 around z in the plane z = 0, minor radius r
+//   poly      P(x, y, z) < 0 for a polynomial of degree <= 4 (core/geometry/poly.h), whose
+//             coefficients the scene keeps apart: Shape::poly indexes them
 #pragma once
 
+#include "core/geometry/poly.h"
 #include "core/geometry/ray.h"
 #include "core/math/affine.h"
 
@@ -19,12 +22,13 @@
 
 namespace sheaf {
 
-enum class ShapeKind : uint32_t { Sphere, Box, Cylinder, Cone, Disc, Plane, Torus };
+enum class ShapeKind : uint32_t { Sphere, Box, Cylinder, Cone, Disc, Plane, Torus, Poly };
 
 struct Shape {
     ShapeKind kind = ShapeKind::Sphere;
     float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius
     bool open = false;  // cylinder and cone without caps
+    uint32_t poly = 0;  // poly: index of its coefficients in the prepared scene's polys
 };
 
 /// One span [t0, t1] of a ray inside a solid, with the local normals at both ends (pointing
@@ -127,10 +131,65 @@ SHEAF_HD_INLINE int frustum_spans(const Ray& r, double r0, double r1, bool open,
     return add(out, 0, float(s0), float(s1), n0, n1);
 }
 
+struct SpanEnd {
+    float t;
+    Vec3 n;
+};
+
+// The pieces of the ray where P < 0: the real roots of P along the ray split it, and each
+// piece is inside or out by P's sign within it. Unbounded pieces end at +-FLT_MAX. Not
+// inlined on the device: its tables would otherwise grow every level of csg_spans' recursion.
+SHEAF_HD_NOINLINE int poly_spans(const PolyCoeffs& p, const Ray& r, Span* out) {
+    double q[5];
+    const int deg = ray_polynomial(p, r, q);
+    if (deg < 0) return 0; // the ray lies in the surface
+    double roots[kPolyMaxDegree];
+    int nr = 0;
+    if (deg == 2) {
+        double t0, t1;
+        if (solve_quadratic(q[2], q[1], q[0], t0, t1) && t0 != t1)
+            roots[0] = t0, roots[1] = t1, nr = 2; // a double root only touches
+    } else {
+        nr = poly_roots(q, deg, roots);
+    }
+    auto end = [&](double t, float sign) {
+        if (!(fabs(t) < FLT_MAX)) return SpanEnd{t < 0 ? -FLT_MAX : FLT_MAX, Vec3(0, 0, 1)};
+        const double x = r.origin.x + r.dir.x * t, y = r.origin.y + r.dir.y * t,
+                     z = r.origin.z + r.dir.z * t;
+        Vec3 n = poly_gradient(p, x, y, z);
+        if (!(dot(n, n) > 0)) n = r.dir * sign; // a singular point: against the ray
+        return SpanEnd{float(t), n};
+    };
+    int n = 0;
+    bool in = false;
+    double start = 0;
+    for (int i = 0; i <= nr; ++i) {
+        const double lo = i > 0 ? roots[i - 1] : -INFINITY, hi = i < nr ? roots[i] : INFINITY;
+        const double probe = i > 0 && i < nr ? 0.5 * (lo + hi)
+                             : i < nr        ? hi - (1 + fabs(hi))
+                             : i > 0         ? lo + (1 + fabs(lo))
+                                             : 0.0;
+        const bool inside = poly_detail::eval(q, deg, probe) < 0;
+        if (inside && !in) start = lo, in = true;
+        if (!inside && in) {
+            const SpanEnd a = end(start, -1), b = end(lo, 1);
+            n = add(out, n, a.t, b.t, a.n, b.n);
+            in = false;
+        }
+    }
+    if (in) {
+        const SpanEnd a = end(start, -1), b = end(INFINITY, 1);
+        n = add(out, n, a.t, b.t, a.n, b.n);
+    }
+    return n;
+}
+
 } // namespace shape_detail
 
-/// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans.
-SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out) {
+/// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `polys` holds
+/// the coefficients of poly shapes (none without them).
+SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
+                                const PolyCoeffs* polys = nullptr) {
     using namespace shape_detail;
     const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
     const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
@@ -233,6 +292,8 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out) {
                     normal(roots[i + 1]));
         return n;
     }
+    case ShapeKind::Poly:
+        return polys ? poly_spans(polys[s.poly], r, out) : 0;
     }
     return 0;
 }

@@ -31,6 +31,7 @@ double implicit(const Shape& s, Vec3 p) {
         return std::sqrt(q * q + z * z) - s.a;
     }
     case ShapeKind::Disc:
+    case ShapeKind::Poly: // poly_test.cpp
         return 1;
     }
     return 1;

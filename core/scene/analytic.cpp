@@ -32,6 +32,8 @@ Sphere local_bound(const Shape& s) {
         return {Vec3(0.0f), INFINITY};
     case ShapeKind::Torus:
         return {Vec3(0.0f), 1.0f + s.a};
+    case ShapeKind::Poly: // may be unbounded; a clip or intersection around it bounds it
+        return {Vec3(0.0f), INFINITY};
     }
     return {Vec3(0.0f), INFINITY};
 }

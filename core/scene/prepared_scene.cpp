@@ -144,7 +144,12 @@ PreparedScene prepare_scene(const Scene& scene) {
             if (node.op == CsgOp::Leaf) {
                 out.first = uint32_t(p.shapes.size());
                 out.count = 0;
-                p.shapes.push_back(place_shape(node.shape, obj.transform * node.transform));
+                Shape shape = node.shape;
+                if (shape.kind == ShapeKind::Poly) {
+                    shape.poly = uint32_t(p.polys.size());
+                    p.polys.push_back(*node.poly);
+                }
+                p.shapes.push_back(place_shape(shape, obj.transform * node.transform));
                 p.shape_material.push_back(node.material);
                 if (!have_material) first_material = node.material, have_material = true;
             } else {

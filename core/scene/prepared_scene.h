@@ -58,6 +58,7 @@ struct PreparedScene {
     std::vector<std::string> object_name;
 
     std::vector<PlacedShape> shapes;      // every leaf of every analytic object
+    std::vector<PolyCoeffs> polys;        // of the poly leaves, indexed by Shape::poly
     std::vector<uint32_t> shape_material; // per placed shape
     std::vector<PreparedCsgNode> csg;
     std::vector<uint32_t> csg_children;

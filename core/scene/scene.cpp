@@ -130,6 +130,17 @@ void Scene::validate() const {
                     (s.kind == ShapeKind::Disc && s.a > 1) ||
                     (s.kind == ShapeKind::Torus && !(s.a > 0)))
                     throw SceneError(name + ": shape parameters out of range");
+                if (s.kind == ShapeKind::Poly) {
+                    if (!node.poly) throw SceneError(name + ": a poly shape without coefficients");
+                    bool any = false;
+                    for (double c : node.poly->c) {
+                        if (!std::isfinite(c))
+                            throw SceneError(name + ": a poly coefficient is not finite");
+                        any |= c != 0;
+                    }
+                    if (!any)
+                        throw SceneError(name + ": a poly shape whose coefficients are all zero");
+                }
                 if (!node.transform.finite())
                     throw SceneError(name + ": a shape's transform is not finite");
                 if (!(std::fabs(node.transform.determinant()) >= 1e-20f))

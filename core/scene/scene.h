@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -125,6 +126,7 @@ enum class CsgOp : uint8_t { Leaf, Union, Merge, Intersection, Difference, Clip 
 struct CsgNode {
     CsgOp op = CsgOp::Leaf;
     Shape shape;           // leaf
+    std::shared_ptr<const PolyCoeffs> poly; // leaf of kind Poly: its coefficients
     Affine transform;      // leaf: shape space -> object space
     uint32_t material = 0; // leaf
     bool inverse = false;

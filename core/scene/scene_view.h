@@ -28,6 +28,7 @@ struct SceneView {
     uint32_t object_count = 0;
 
     const PlacedShape* shapes = nullptr;
+    const PolyCoeffs* polys = nullptr;
     const uint32_t* shape_material = nullptr;
     const PreparedCsgNode* csg = nullptr;
     const uint32_t* csg_children = nullptr;
@@ -59,16 +60,15 @@ struct SceneView {
           prim_object(p.prim_object.data()), prim_sphere(p.prim_sphere.data()),
           prim_flags(p.prim_flags.data()), prim_flag_count(uint32_t(p.prim_flags.size())),
           object_begin(p.object_begin.data()), object_sphere(p.object_sphere.data()),
-          object_material(p.object_material.data()),
-          object_count(uint32_t(p.object_sphere.size())), shapes(p.shapes.data()),
-          shape_material(p.shape_material.data()), csg(p.csg.data()),
-          csg_children(p.csg_children.data()), analytic_root(p.analytic_root.data()),
-          materials(p.materials.data()), pigments(p.pigments.data()),
-          pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
-          material_switches(p.material_switches.data()),
+          object_material(p.object_material.data()), object_count(uint32_t(p.object_sphere.size())),
+          shapes(p.shapes.data()), polys(p.polys.data()), shape_material(p.shape_material.data()),
+          csg(p.csg.data()), csg_children(p.csg_children.data()),
+          analytic_root(p.analytic_root.data()), materials(p.materials.data()),
+          pigments(p.pigments.data()), pigment_entries(p.pigment_entries.data()),
+          normal_patterns(p.normal_patterns.data()), material_switches(p.material_switches.data()),
           material_entries(p.material_entries.data()), sky(p.sky), fog(p.fog),
-          lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
-          background(p.background), textures(p.textures.data()), sampler(p.sampler.get()) {}
+          lights(p.lights.data()), light_count(uint32_t(p.lights.size())), background(p.background),
+          textures(p.textures.data()), sampler(p.sampler.get()) {}
 
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
     SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }

@@ -44,6 +44,7 @@ template <class Exec> class DeviceScene {
         put(p.object_sphere, v.object_sphere);
         put(p.object_material, v.object_material);
         put(p.shapes, v.shapes);
+        put(p.polys, v.polys);
         put(p.shape_material, v.shape_material);
         put(p.csg, v.csg);
         put(p.csg_children, v.csg_children);

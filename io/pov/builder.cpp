@@ -116,6 +116,7 @@ struct Builder {
             CsgNode n;
             n.op = CsgOp::Leaf;
             n.shape = o.shape;
+            n.poly = o.poly;
             n.transform = o.local;
             n.material = material(tex, in);
             n.inverse = o.inverse;

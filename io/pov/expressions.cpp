@@ -208,7 +208,7 @@ Value Parser::parse_compare() {
         const Token t = peek_cont();
         if (t.kind != TokKind::Symbol) return a;
         const std::string& o = t.text;
-        if (!(o == "<" || o == "<=" || o == "=" || o == "!=" || o == ">=" ||
+        if (!((o == "<" && no_lt_ == 0) || o == "<=" || o == "=" || o == "!=" || o == ">=" ||
               (o == ">" && no_gt_ == 0)))
             return a;
         if (a.type != VType::Float && a.type != VType::String) return a; // <1,2,3> <4,5,6>
@@ -327,10 +327,10 @@ Value Parser::parse_primary() {
     case TokKind::Symbol:
         if (t.text == "(") {
             advance();
-            const int saved = no_gt_;
-            no_gt_ = 0;
+            const int saved = no_gt_, saved_lt = no_lt_;
+            no_gt_ = no_lt_ = 0;
             Value v = parse_expr();
-            no_gt_ = saved;
+            no_gt_ = saved, no_lt_ = saved_lt;
             expect_sym(")", "')'");
             return v;
         }

@@ -15,10 +15,10 @@ namespace {
 
 const std::set<std::string>& supported_objects() {
     static const std::set<std::string> s = {
-        "sphere",     "box",      "cylinder",        "cone",       "disc",   "plane",
-        "torus",      "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
-        "union",      "merge",    "intersection",    "difference", "object", "light_source",
-        "light_group"};
+        "sphere",      "box",      "cylinder",        "cone",       "disc",   "plane",
+        "torus",       "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
+        "union",       "merge",    "intersection",    "difference", "object", "light_source",
+        "light_group", "quadric",  "cubic",           "quartic",    "poly"};
     return s;
 }
 
@@ -26,8 +26,7 @@ const std::set<std::string>& unsupported_objects() {
     static const std::set<std::string> s = {
         "blob",       "height_field",  "isosurface",   "julia_fractal",  "lathe",
         "prism",      "sor",           "sphere_sweep", "superellipsoid", "text",
-        "parametric", "bicubic_patch", "quadric",      "quartic",        "cubic",
-        "poly",       "polynomial",    "ovus",         "lemon"};
+        "parametric", "bicubic_patch", "polynomial",   "ovus",           "lemon"};
     return s;
 }
 
@@ -55,6 +54,7 @@ bool Parser::is_object_start(const Token& t) const {
 
 size_t Parser::object_bytes(const PovObject& o) {
     size_t bytes = sizeof(PovObject);
+    if (o.poly && o.poly.use_count() == 1) bytes += sizeof(PolyCoeffs);
     if (o.texture && o.texture.use_count() == 1) // its own texture, not a shared declaration
         bytes += sizeof(PovTexture) + (o.texture->pigment ? sizeof(PovPigment) : 0) +
                  (o.texture->normal ? sizeof(PovNormal) : 0);
@@ -126,6 +126,7 @@ bool Parser::parse_object(PovObject& o) {
         parse_light(kw, o);
         return true;
     }
+    if (k == "quadric" || k == "cubic" || k == "quartic" || k == "poly") return parse_poly(kw, o);
     parse_shape(kw, o);
     return true;
 }

@@ -8,6 +8,7 @@
 #include "core/scene/prepared_scene.h"
 
 #include <cmath>
+#include <map>
 
 namespace sheaf::io::pov {
 namespace {
@@ -247,6 +248,63 @@ TEST(PovObjects, ClippedByIsAnOpenSurface) {
     across.origin = Vec3(-3, 0.5f, 0), across.dir = Vec3(1, 0, 0), across.tmin = 0;
     across.tmax = 100;
     EXPECT_FALSE(analytic_first_hit(p, 0, across, h));
+}
+
+/// The first hit of a ray from `from` along `dir` (POV-Ray coordinates) on the scene's only
+/// analytic object; -1 when it misses.
+float first_hit(const PovResult& r, Vec3 from, Vec3 dir) {
+    const PreparedScene p = prepare_scene(r.scene);
+    Ray ray;
+    ray.origin = pov_to_sheaf().point(from), ray.dir = pov_to_sheaf().vector(dir);
+    ray.tmin = 0, ray.tmax = 100;
+    AnalyticHit h;
+    return analytic_first_hit(p, 0, ray, h) ? h.t : -1.0f;
+}
+
+TEST(PovObjects, QuadricCubicQuarticPoly) {
+    // A sphere of radius 2 around <0, 1, 0>.
+    PovResult r = load_text("quadric { <1, 1, 1>, <0, 0, 0>, <0, -2, 0>, -3 }");
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    EXPECT_EQ(r.scene.shape_objects[0].nodes[0].shape.kind, ShapeKind::Poly);
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_NEAR(first_hit(r, {0, 5, 0}, {0, -1, 0}), 2.0f, 1e-5);
+    EXPECT_NEAR(first_hit(r, {-5, 1, 0}, {1, 0, 0}), 3.0f, 1e-5);
+    // An infinite cylinder along y, radius 1 (shapes.inc's Cylinder_Y), moved by a transform.
+    r = load_text("quadric { <1, 0, 1>, <0, 0, 0>, <0, 0, 0>, -1 translate <3, 0, 0> }");
+    EXPECT_NEAR(first_hit(r, {0, 50, 0}, {1, 0, 0}), 2.0f, 1e-5);
+    EXPECT_LT(first_hit(r, {0, 50, 0}, {0, 0, 1}), 0.0f);
+    // POV-Ray's term order for order 2: x^2, xy, xz, x, y^2, yz, y, z^2, z, 1.
+    r = load_text("poly { 2 <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> sturm }"); // no comma: as POV-Ray
+    EXPECT_NEAR(first_hit(r, {0, 0, -4}, {0, 0, 1}), 3.0f, 1e-5);
+    // A torus around y (major 1, minor 0.25) as a quartic: (|p|^2 + 1 - r^2)^2 - 4 (x^2 + z^2).
+    std::string c(35, '0');
+    std::string quartic = "quartic { <";
+    const double k = 1 - 0.0625;
+    // x^4 x^2y^2 x^2z^2 x^2 y^4 y^2z^2 y^2 z^4 z^2 1
+    const std::map<int, double> terms = {{0, 1},          {4, 2},     {7, 2},      {9, 2 * k - 4},
+                                         {20, 1},         {23, 2},    {25, 2 * k}, {30, 1},
+                                         {32, 2 * k - 4}, {34, k * k}};
+    for (int t = 0; t < 35; ++t)
+        quartic += (t ? ", " : "") + std::to_string(terms.count(t) ? terms.at(t) : 0.0);
+    r = load_text(quartic + "> }");
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_NEAR(first_hit(r, {0, 3, 1}, {0, -1, 0}), 2.75f, 1e-4); // top of the tube
+    EXPECT_NEAR(first_hit(r, {-3, 0, 0}, {1, 0, 0}), 1.75f, 1e-4); // outer equator
+    EXPECT_LT(first_hit(r, {0, 3, 0}, {0, -1, 0}), 0.0f);          // through the hole
+
+    EXPECT_EQ(error_of("cubic { <1, 2, 3> }"),
+              "scene.pov:1:9: error: 'cubic' needs 20 coefficients, found 3");
+    EXPECT_EQ(error_of("quadric { <0, 0, 0>, <0, 0, 0>, <0, 0, 0>, 0 }"),
+              "scene.pov:1:1: error: every coefficient of the quadric is zero");
+    EXPECT_EQ(error_of("poly { 1, <1, 2> }"),
+              "scene.pov:1:8: error: a poly's order must be a whole number from 2 to 15");
+    // Orders above 4 are left out with a warning, like other unsupported objects.
+    r = load_text("poly { 5, <1, 2, 3> }\nsphere { 0, 1 }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:1: warning: unsupported poly of order 5"),
+              std::string::npos)
+        << r.warnings[0];
+    EXPECT_EQ(r.scene.shape_objects.size(), 1u);
 }
 
 TEST(PovObjects, UnsupportedIsAWarningOrStrictError) {

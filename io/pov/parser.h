@@ -117,6 +117,8 @@ class Parser {
     std::vector<std::vector<PendingWarning>> captures_;
     /// Skips a balanced { ... } block (directives inside still run).
     void skip_block();
+    /// Skips up to and including the '}' closing a block already entered.
+    void skip_rest_of_block();
     void push_file(const std::string& path, const Token& where);
     bool in_macro_or_include() const { return frames_.size() > 1; }
 
@@ -187,6 +189,7 @@ class Parser {
     /// If the next token is a declared identifier, consumes it (and its indices) into `out`.
     bool accept_declared_any(Value& out);
     int no_gt_ = 0;          // inside < >: '>' closes the vector
+    int no_lt_ = 0;          // a poly's order: '<' opens its coefficients (poly { 4 <...)
     int directive_args_ = 0; // parsing a directive's condition: peek_cont runs no directive
     /// A directive's condition (#if, #while ...): parsed without running later directives.
     Value parse_condition();
@@ -204,6 +207,10 @@ class Parser {
     Affine parse_transform_block();
     void apply_transform(PovObject& o, const Affine& m);
     void parse_shape(const Token& kw, PovObject& o);
+    /// quadric, cubic, quartic, poly; false (after a warning) for a poly above order 4.
+    bool parse_poly(const Token& kw, PovObject& o);
+    /// '<' exactly `count` float coefficients '>'.
+    std::vector<double> parse_coefficients(const Token& kw, size_t count);
     void parse_csg(const Token& kw, PovObject& o);
     void parse_triangle(const Token& kw, PovObject& o, bool smooth);
     void parse_mesh(const Token& kw, PovObject& o);

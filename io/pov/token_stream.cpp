@@ -206,6 +206,10 @@ std::string Parser::expect_ident(const std::string& expected) {
 
 void Parser::skip_block() {
     expect_sym("{");
+    skip_rest_of_block();
+}
+
+void Parser::skip_rest_of_block() {
     int depth = 1;
     while (depth > 0) {
         const Token& t = peek();

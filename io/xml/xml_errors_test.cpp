@@ -74,6 +74,29 @@ TEST(XmlErrors, BadValuesPointAtTheValue) {
                  "must not be 0");
     EXPECT_ERROR("<scene><camera position=\"0 0 0\" look_at=\"0 0 0\"/></scene>", "1:42",
                  "looks at its own position");
+    EXPECT_ERROR("<scene><poly order=\"3\" coefficients=\"1 2 3\"/></scene>", "1:38",
+                 "order 3 needs 20 coefficients, not 3");
+    EXPECT_ERROR("<scene><poly order=\"5\" coefficients=\"1\"/></scene>", "1:21",
+                 "expected an integer in 2..4");
+    EXPECT_ERROR("<scene><poly/></scene>", "1:8", "coefficients");
+    EXPECT_ERROR("<scene><poly coefficients=\"0 0 0 0 0 0 0 0 0 0\"/></scene>", "1:28",
+                 "every coefficient is zero");
+}
+
+TEST(XmlErrors, PolyLoadsInPovRaysTermOrder) {
+    // x^2, xy, xz, x, y^2, yz, y, z^2, z, 1: a unit sphere.
+    const io::SceneFile f = io::parse_xml_scene(
+        "<scene><poly coefficients=\"1 0 0 0 1 0 0 1 0 -1\"/></scene>", "scene.xml");
+    const Scene& s = f.scene;
+    ASSERT_EQ(s.shape_objects.size(), 1u);
+    const CsgNode& n = s.shape_objects[0].nodes[0];
+    ASSERT_EQ(n.shape.kind, ShapeKind::Poly);
+    ASSERT_TRUE(n.poly);
+    EXPECT_EQ(n.poly->c[poly_term(2, 0, 0)], 1);
+    EXPECT_EQ(n.poly->c[poly_term(0, 2, 0)], 1);
+    EXPECT_EQ(n.poly->c[poly_term(0, 0, 2)], 1);
+    EXPECT_EQ(n.poly->c[poly_term(0, 0, 0)], -1);
+    EXPECT_NO_THROW(s.validate());
 }
 
 TEST(XmlErrors, ReferencesMustBeDefinedFirstAndOnce) {

@@ -1,5 +1,5 @@
-// Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus> and
-// <union>, <merge>, <intersection>, <difference> over them. The geometric attributes (centre,
+// Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus>, <poly>
+// and <union>, <merge>, <intersection>, <difference> over them. The geometric attributes (centre,
 // radius, base and cap, ...) become the transform from the core's canonical shape
 // (core/geometry/shape.h); transform elements then place the node.
 #include "io/xml/xml_reader.h"
@@ -11,9 +11,9 @@ namespace {
 
 constexpr int kMaxCsgDepth = kMaxCsgNesting;
 
-const std::vector<std::string> kShapeElements = {"sphere", "box",          "cylinder",  "cone",
-                                                 "disc",   "plane",        "torus",     "union",
-                                                 "merge",  "intersection", "difference"};
+const std::vector<std::string> kShapeElements = {"sphere", "box",   "cylinder",     "cone",
+                                                 "disc",   "plane", "torus",        "poly",
+                                                 "union",  "merge", "intersection", "difference"};
 
 /// The transform taking local z from `base` to `cap`, with local x and y scaled by `radius`.
 Affine axis_frame(Vec3 base, Vec3 cap, float radius) {
@@ -144,6 +144,31 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
             const Vec3 u = normalize(normal);
             s.kind = ShapeKind::Plane;
             frame = axis_frame(u * offset, u * (offset + 1), 1.0f);
+        } else if (kind == "poly") {
+            int order = 2;
+            a.get("order", order, 2, kPolyMaxDegree);
+            std::vector<float> c;
+            a.require("coefficients");
+            a.get_numbers("coefficients", c);
+            // POV-Ray's order: the power of x falls from `order`, then y's, then z's.
+            size_t count = 0;
+            for (int i = order; i >= 0; --i) count += size_t(order - i + 1) * (order - i + 2) / 2;
+            if (c.size() != count)
+                fail_attr("coefficients", "order " + std::to_string(order) + " needs " +
+                                              std::to_string(count) + " coefficients, not " +
+                                              std::to_string(c.size()));
+            auto poly = std::make_shared<PolyCoeffs>();
+            size_t at = 0;
+            bool any = false;
+            for (int i = order; i >= 0; --i)
+                for (int j = order - i; j >= 0; --j)
+                    for (int k = order - i - j; k >= 0; --k) {
+                        any |= c[at] != 0;
+                        poly->c[poly_term(i, j, k)] = c[at++];
+                    }
+            if (!any) fail_attr("coefficients", "every coefficient is zero");
+            s.kind = ShapeKind::Poly;
+            n.poly = std::move(poly);
         } else { // torus
             Vec3 centre;
             float major = 1, minor = 0.25f;

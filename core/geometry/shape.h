@@ -11,10 +11,13 @@
 //   torus     major radius 1 around z in the plane z = 0, minor radius r
 //   poly      P(x, y, z) < 0 for a polynomial of degree <= 4 (core/geometry/poly.h), whose
 //             coefficients the scene keeps apart: Shape::poly indexes them
+//   superellipsoid  POV-Ray's, exponents e = a and n = b, inside [-1, 1]^3
+//             (core/geometry/superellipsoid.h)
 #pragma once
 
 #include "core/geometry/poly.h"
 #include "core/geometry/ray.h"
+#include "core/geometry/superellipsoid.h"
 #include "core/math/affine.h"
 
 #include <cfloat>
@@ -22,11 +25,22 @@
 
 namespace sheaf {
 
-enum class ShapeKind : uint32_t { Sphere, Box, Cylinder, Cone, Disc, Plane, Torus, Poly };
+enum class ShapeKind : uint32_t {
+    Sphere,
+    Box,
+    Cylinder,
+    Cone,
+    Disc,
+    Plane,
+    Torus,
+    Poly,
+    Superellipsoid
+};
 
 struct Shape {
     ShapeKind kind = ShapeKind::Sphere;
-    float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius
+    float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius;
+                        // superellipsoid: e, n
     bool open = false;  // cylinder and cone without caps
     uint32_t poly = 0;  // poly: index of its coefficients in the prepared scene's polys
 };
@@ -184,6 +198,17 @@ SHEAF_HD_NOINLINE int poly_spans(const PolyCoeffs& p, const Ray& r, Span* out) {
     return n;
 }
 
+// Out of line on the device, like poly_spans.
+SHEAF_HD_NOINLINE int superellipsoid_spans(const Shape& s, const Ray& r, Span* out) {
+    double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
+    const int count = superellipsoid_pieces(s.a, s.b, r, t0, t1, kMaxShapeSpans);
+    for (int i = 0; i < count; ++i)
+        out[i] = Span{float(t0[i]), float(t1[i]),
+                      superellipsoid_normal(s.a, s.b, ray_at(r, float(t0[i]))),
+                      superellipsoid_normal(s.a, s.b, ray_at(r, float(t1[i])))};
+    return count;
+}
+
 } // namespace shape_detail
 
 /// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `polys` holds
@@ -294,6 +319,8 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
     }
     case ShapeKind::Poly:
         return polys ? poly_spans(polys[s.poly], r, out) : 0;
+    case ShapeKind::Superellipsoid:
+        return superellipsoid_spans(s, r, out);
     }
     return 0;
 }

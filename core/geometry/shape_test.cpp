@@ -30,6 +30,12 @@ double implicit(const Shape& s, Vec3 p) {
         const double q = std::sqrt(x * x + y * y) - 1;
         return std::sqrt(q * q + z * z) - s.a;
     }
+    case ShapeKind::Superellipsoid: {
+        const double e = s.a, n = s.b;
+        if (std::max({std::fabs(x), std::fabs(y), std::fabs(z)}) > 1 + 1e-5) return 1;
+        return std::pow(std::pow(std::fabs(x), 2 / e) + std::pow(std::fabs(y), 2 / e), e / n) +
+               std::pow(std::fabs(z), 2 / n) - 1;
+    }
     case ShapeKind::Disc:
     case ShapeKind::Poly: // poly_test.cpp
         return 1;
@@ -46,6 +52,8 @@ bool near_edge(const Shape& s, Vec3 p) {
         const float r = s.kind == ShapeKind::Cylinder ? 1.0f : s.a + (s.b - s.a) * p.z;
         return std::fabs(std::sqrt(p.x * p.x + p.y * p.y) - r) < e && (p.z < e || p.z > 1 - e);
     }
+    if (s.kind == ShapeKind::Superellipsoid) // creases on the coordinate planes when pinched
+        return std::min({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}) < 0.02f;
     return false;
 }
 
@@ -76,8 +84,8 @@ void check_solid(const Shape& s, uint32_t seed) {
             if (std::fabs(f) < 2e-3) continue; // too close to the surface to judge
             bool in = false;
             for (int i = 0; i < n; ++i) in |= t >= spans[i].t0 && t <= spans[i].t1;
-            ASSERT_EQ(in, f < 0) << "kind " << int(s.kind) << " ray " << k << " t " << t << " f "
-                                 << f;
+            ASSERT_EQ(in, f < 0) << "kind " << int(s.kind) << " a " << s.a << " b " << s.b
+                                 << " ray " << k << " t " << t << " f " << f;
         }
         for (int i = 0; i < n; ++i)
             for (const auto& [t, nl] :
@@ -104,6 +112,11 @@ TEST(Shapes, SolidsMatchTheirImplicitForms) {
     check_solid({ShapeKind::Cone, 0.0f, 1.0f}, 5);
     check_solid({ShapeKind::Plane}, 6);
     check_solid({ShapeKind::Torus, 0.3f}, 7);
+    check_solid({ShapeKind::Superellipsoid, 1.0f, 1.0f}, 8);  // a ball
+    check_solid({ShapeKind::Superellipsoid, 0.25f, 0.5f}, 9); // a rounded box
+    check_solid({ShapeKind::Superellipsoid, 2.0f, 2.0f}, 10); // an octahedron
+    check_solid({ShapeKind::Superellipsoid, 3.0f, 1.0f}, 11); // pinched around z: not convex
+    check_solid({ShapeKind::Superellipsoid, 1.0f, 2.5f}, 12); // pinched along z
 }
 
 TEST(Shapes, SurfacesAreHitOnTheirSurface) {

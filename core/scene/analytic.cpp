@@ -34,6 +34,8 @@ Sphere local_bound(const Shape& s) {
         return {Vec3(0.0f), 1.0f + s.a};
     case ShapeKind::Poly: // may be unbounded; a clip or intersection around it bounds it
         return {Vec3(0.0f), INFINITY};
+    case ShapeKind::Superellipsoid:
+        return {Vec3(0.0f), std::sqrt(3.0f)};
     }
     return {Vec3(0.0f), INFINITY};
 }

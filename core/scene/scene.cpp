@@ -128,7 +128,8 @@ void Scene::validate() const {
                 if (!std::isfinite(s.a) || !std::isfinite(s.b) || s.a < 0 || s.b < 0 ||
                     (s.kind == ShapeKind::Cone && s.a == 0 && s.b == 0) ||
                     (s.kind == ShapeKind::Disc && s.a > 1) ||
-                    (s.kind == ShapeKind::Torus && !(s.a > 0)))
+                    (s.kind == ShapeKind::Torus && !(s.a > 0)) ||
+                    (s.kind == ShapeKind::Superellipsoid && !(s.a >= 1e-3f && s.b >= 1e-3f)))
                     throw SceneError(name + ": shape parameters out of range");
                 if (s.kind == ShapeKind::Poly) {
                     if (!node.poly) throw SceneError(name + ": a poly shape without coefficients");

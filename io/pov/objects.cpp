@@ -18,15 +18,15 @@ const std::set<std::string>& supported_objects() {
         "sphere",      "box",      "cylinder",        "cone",       "disc",   "plane",
         "torus",       "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
         "union",       "merge",    "intersection",    "difference", "object", "light_source",
-        "light_group", "quadric",  "cubic",           "quartic",    "poly"};
+        "light_group", "quadric",  "cubic",           "quartic",    "poly",   "superellipsoid"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
     static const std::set<std::string> s = {
-        "blob",       "height_field",  "isosurface",   "julia_fractal",  "lathe",
-        "prism",      "sor",           "sphere_sweep", "superellipsoid", "text",
-        "parametric", "bicubic_patch", "polynomial",   "ovus",           "lemon"};
+        "blob",          "height_field", "isosurface",   "julia_fractal", "lathe",
+        "prism",         "sor",          "sphere_sweep", "text",          "parametric",
+        "bicubic_patch", "polynomial",   "ovus",         "lemon"};
     return s;
 }
 
@@ -203,6 +203,14 @@ void Parser::parse_shape(const Token& kw, PovObject& o) {
         basis(w, u, v);
         o.shape.kind = ShapeKind::Plane;
         o.local = frame(w * d, u, v, w);
+    } else if (k == "superellipsoid") {
+        const Token at = peek();
+        const Vec3 v = parse_vector(); // <e, n>
+        if (!(v.x > 0 && v.y > 0))
+            error_at(at, "a superellipsoid's exponents <e, n> must be greater than 0");
+        o.shape.kind = ShapeKind::Superellipsoid;
+        o.shape.a = std::max(v.x, 1e-3f), o.shape.b = std::max(v.y, 1e-3f);
+        o.local = Affine(); // [-1, 1]^3, n along z: POV-Ray's own frame
     } else if (k == "torus") {
         const float R = float(parse_float());
         accept_sym(",");

@@ -307,6 +307,23 @@ TEST(PovObjects, QuadricCubicQuarticPoly) {
     EXPECT_EQ(r.scene.shape_objects.size(), 1u);
 }
 
+TEST(PovObjects, Superellipsoid) {
+    // <1, 1>: the unit ball; <0.2, 0.2>: nearly the box [-1, 1]^3, round at its corners.
+    PovResult r = load_text("superellipsoid { <1, 1> scale 2 translate y }");
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_EQ(r.scene.shape_objects.at(0).nodes.at(0).shape.kind, ShapeKind::Superellipsoid);
+    EXPECT_NEAR(first_hit(r, {0, 5, 0}, {0, -1, 0}), 2.0f, 1e-4);
+    EXPECT_NEAR(first_hit(r, {0, 1, -5}, {0, 0, 1}), 3.0f, 1e-4);
+    r = load_text("superellipsoid { <0.2, 0.2> }");
+    EXPECT_NEAR(first_hit(r, {0.5f, 0.5f, -5}, {0, 0, 1}), 4.0f, 1e-3);
+    const Vec3 corner = normalize(Vec3(1, 1, 1));
+    const float t = first_hit(r, corner * 5.0f, -corner);
+    EXPECT_GT(t, 5.0f - std::sqrt(3.0f)); // the corner is rounded off
+    EXPECT_LT(t, 4.0f);
+    EXPECT_EQ(error_of("superellipsoid { <0, 1> }"),
+              "scene.pov:1:18: error: a superellipsoid's exponents <e, n> must be greater than 0");
+}
+
 TEST(PovObjects, UnsupportedIsAWarningOrStrictError) {
     const std::string s =
         "sphere { 0, 1 }\n  blob { threshold 0.5 sphere { 0, 1, 1 } }\nbox { 0, 1 no_shadow }";

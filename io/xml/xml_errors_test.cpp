@@ -79,6 +79,7 @@ TEST(XmlErrors, BadValuesPointAtTheValue) {
     EXPECT_ERROR("<scene><poly order=\"5\" coefficients=\"1\"/></scene>", "1:21",
                  "expected an integer in 2..4");
     EXPECT_ERROR("<scene><poly/></scene>", "1:8", "coefficients");
+    EXPECT_ERROR("<scene><superellipsoid e=\"0\"/></scene>", "1:27", "at least 0.001");
     EXPECT_ERROR("<scene><poly coefficients=\"0 0 0 0 0 0 0 0 0 0\"/></scene>", "1:28",
                  "every coefficient is zero");
 }

@@ -1,7 +1,7 @@
-// Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus>, <poly>
-// and <union>, <merge>, <intersection>, <difference> over them. The geometric attributes (centre,
-// radius, base and cap, ...) become the transform from the core's canonical shape
-// (core/geometry/shape.h); transform elements then place the node.
+// Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus>, <poly>,
+// <superellipsoid> and <union>, <merge>, <intersection>, <difference> over them. The geometric
+// attributes (centre, radius, base and cap, ...) become the transform from the core's canonical
+// shape (core/geometry/shape.h); transform elements then place the node.
 #include "io/xml/xml_reader.h"
 
 #include <cmath>
@@ -11,9 +11,9 @@ namespace {
 
 constexpr int kMaxCsgDepth = kMaxCsgNesting;
 
-const std::vector<std::string> kShapeElements = {"sphere", "box",   "cylinder",     "cone",
-                                                 "disc",   "plane", "torus",        "poly",
-                                                 "union",  "merge", "intersection", "difference"};
+const std::vector<std::string> kShapeElements = {
+    "sphere",         "box",   "cylinder", "cone",         "disc",      "plane", "torus", "poly",
+    "superellipsoid", "union", "merge",    "intersection", "difference"};
 
 /// The transform taking local z from `base` to `cap`, with local x and y scaled by `radius`.
 Affine axis_frame(Vec3 base, Vec3 cap, float radius) {
@@ -144,6 +144,13 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
             const Vec3 u = normalize(normal);
             s.kind = ShapeKind::Plane;
             frame = axis_frame(u * offset, u * (offset + 1), 1.0f);
+        } else if (kind == "superellipsoid") {
+            float e = 1, en = 1;
+            a.get("e", e);
+            a.get("n", en);
+            if (!(e >= 1e-3f)) fail_attr("e", "the exponent e must be at least 0.001");
+            if (!(en >= 1e-3f)) fail_attr("n", "the exponent n must be at least 0.001");
+            s.kind = ShapeKind::Superellipsoid, s.a = e, s.b = en;
         } else if (kind == "poly") {
             int order = 2;
             a.get("order", order, 2, kPolyMaxDegree);

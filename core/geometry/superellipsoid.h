@@ -1,0 +1,163 @@
+// POV-Ray's superellipsoid { <e, n> }: the solid where
+//   f(p) = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) - 1 < 0,
+// inside the box [-1, 1]^3 (e: the exponent around z, n: the one along z). For e, n <= 2 f is
+// convex, so along a ray it falls to one minimum and rises again: a golden-section search
+// finds that minimum and bisection the two crossings on its sides, with no step to choose
+// and no thin crossing to miss. Above 2 the solid is star-shaped but not convex: the ray's
+// piece inside the box is then sampled (always at its cusps, where it crosses a coordinate
+// plane) for changes of sign, each refined by bisection, and for dips between samples.
+#pragma once
+
+#include "core/geometry/ray.h"
+
+#include <cfloat>
+#include <cmath>
+
+namespace sheaf {
+
+namespace superellipsoid_detail {
+
+struct Exponents {
+    double a, b, c; // 2/e, e/n, 2/n
+};
+
+SHEAF_HD_INLINE Exponents exponents(float e, float n) {
+    return {2.0 / e, double(e) / n, 2.0 / n};
+}
+
+SHEAF_HD_INLINE double value(const Exponents& k, double x, double y, double z) {
+    const double s = pow(fabs(x), k.a) + pow(fabs(y), k.a);
+    return pow(s, k.b) + pow(fabs(z), k.c) - 1;
+}
+
+/// The crossing of f in [lo, hi], where f(lo) and f(hi) differ in sign.
+template <class F> SHEAF_HD_INLINE double bisect(const F& f, double lo, double hi) {
+    const bool lo_inside = f(lo) < 0;
+    for (int it = 0; it < 80; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        if ((f(mid) < 0) == lo_inside)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/// The minimum of a unimodal f on [lo, hi] by golden-section search: its place, and its
+/// value in `fm`.
+template <class F> SHEAF_HD_INLINE double golden_min(const F& f, double lo, double hi, double& fm) {
+    const double g = 0.3819660112501051;
+    double a = lo, b = hi, x1 = a + g * (b - a), x2 = b - g * (b - a);
+    double f1 = f(x1), f2 = f(x2);
+    for (int it = 0; it < 100 && x1 < x2; ++it) {
+        if (f1 < f2)
+            b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
+        else
+            a = x1, x1 = x2, f1 = f2, x2 = b - g * (b - a), f2 = f(x2);
+    }
+    fm = f1 < f2 ? f1 : f2;
+    return f1 < f2 ? x1 : x2;
+}
+
+} // namespace superellipsoid_detail
+
+/// The outward gradient of f at local point p (finite; the point's direction where f has
+/// none, on the axes of a pinched solid).
+SHEAF_HD_INLINE Vec3 superellipsoid_normal(float e, float n, Vec3 p) {
+    using namespace superellipsoid_detail;
+    const Exponents k = exponents(e, n);
+    const double x = fabs(double(p.x)), y = fabs(double(p.y)), z = fabs(double(p.z));
+    const double s = pow(x, k.a) + pow(y, k.a);
+    const double outer = s > 0 ? k.b * pow(s, k.b - 1) : 0;
+    double g[3] = {x > 0 ? outer * k.a * pow(x, k.a - 1) : 0,
+                   y > 0 ? outer * k.a * pow(y, k.a - 1) : 0, z > 0 ? k.c * pow(z, k.c - 1) : 0};
+    const double m = fmax(g[0], fmax(g[1], g[2]));
+    if (!(m > 0 && m < 1e300)) return p;
+    return Vec3(float(copysign(g[0] / m, double(p.x))), float(copysign(g[1] / m, double(p.y))),
+                float(copysign(g[2] / m, double(p.z))));
+}
+
+/// The pieces [t0[i], t1[i]] of the local ray inside the superellipsoid, at most `max`,
+/// ascending; returns their count.
+SHEAF_HD_INLINE int superellipsoid_pieces(float e, float n, const Ray& r, double* t0, double* t1,
+                                          int max) {
+    using namespace superellipsoid_detail;
+    // The ray's piece inside the box.
+    const double o[3] = {r.origin.x, r.origin.y, r.origin.z}, d[3] = {r.dir.x, r.dir.y, r.dir.z};
+    double lo = -DBL_MAX, hi = DBL_MAX;
+    for (int i = 0; i < 3; ++i) {
+        if (fabs(d[i]) < 1e-30) {
+            if (o[i] < -1 || o[i] > 1) return 0;
+            continue;
+        }
+        double a = (-1 - o[i]) / d[i], b = (1 - o[i]) / d[i];
+        if (a > b) {
+            const double t = a;
+            a = b, b = t;
+        }
+        lo = fmax(lo, a), hi = fmin(hi, b);
+    }
+    if (!(lo < hi)) return 0;
+    const Exponents k = exponents(e, n);
+    auto f = [&](double t) { return value(k, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t); };
+    if (e <= 2 && n <= 2) { // convex: one minimum
+        double fm;
+        const double tm = golden_min(f, lo, hi, fm);
+        if (!(fm < 0)) return 0;
+        t0[0] = f(lo) < 0 ? lo : bisect(f, lo, tm);
+        t1[0] = f(hi) < 0 ? hi : bisect(f, tm, hi);
+        return 1;
+    }
+    // Not convex: f has cusps where the ray crosses a coordinate plane (|x|^p with p < 1), so
+    // those points are always sampled; between them f is smooth, and a sampled dip that stays
+    // outside is searched for a minimum below zero (a thin piece between two samples).
+    double cuts[5];
+    int ncut = 0;
+    cuts[ncut++] = lo;
+    for (int i = 0; i < 3; ++i) {
+        if (fabs(d[i]) < 1e-30) continue;
+        const double t = -o[i] / d[i];
+        if (!(t > lo && t < hi)) continue;
+        int at = ncut++;
+        for (; at > 1 && cuts[at - 1] > t; --at) cuts[at] = cuts[at - 1];
+        cuts[at] = t;
+    }
+    cuts[ncut++] = hi;
+    int count = 0;
+    double start = lo;
+    bool in = false;
+    auto cross = [&](double t, bool entering) {
+        if (entering) {
+            start = t, in = true;
+        } else if (in) {
+            if (count < max) t0[count] = start, t1[count] = t, ++count;
+            in = false;
+        }
+    };
+    double tp = lo, fp = -1, ta = lo, fa = f(lo);
+    if (fa < 0) start = lo, in = true;
+    for (int c = 0; c + 1 < ncut; ++c) {
+        const double a = cuts[c], b = cuts[c + 1];
+        int steps = int(128 * (b - a) / (hi - lo));
+        steps = steps < 8 ? 8 : steps;
+        for (int i = 1; i <= steps; ++i) {
+            const double tb = i == steps ? b : a + (b - a) * i / steps, fb = f(tb);
+            if ((fa < 0) != (fb < 0)) {
+                cross(bisect(f, ta, tb), fb < 0);
+            } else if (fa >= 0 && fp >= 0 && fa < fp && fa < fb) {
+                double fm;
+                const double tm = golden_min(f, tp, tb, fm);
+                if (fm < 0) {
+                    cross(bisect(f, tp, tm), true);
+                    cross(bisect(f, tm, tb), false);
+                }
+            }
+            tp = ta, fp = fa, ta = tb, fa = fb;
+        }
+    }
+    if (in && count < max) t0[count] = start, t1[count] = hi, ++count;
+    return count;
+}
+
+} // namespace sheaf

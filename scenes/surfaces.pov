@@ -5,7 +5,12 @@
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 4 }
 
-camera { location <0, 5, -7> look_at <0, 0.6, 0.5> angle 52 }
+camera {
+  location <0, 5, -7>
+  look_at <0, 0.6, 0.5>
+  right x * image_width / image_height
+  angle 52
+}
 light_source { <-6, 9, -7> color rgb 1 }
 light_source { <5, 6, -3> color rgb 0.35 }
 background { color rgb <0.55, 0.65, 0.8> }

@@ -49,7 +49,7 @@ inline CameraFrame make_camera_frame(const Camera& c, int width, int height) {
     f.up = cross(f.right, f.forward);
     f.ortho = c.projection == Projection::Orthographic;
     f.half_y = f.ortho ? 0.5f * c.ortho_height : tanf(c.fov_y_degrees * kPi / 360.0f);
-    f.half_x = f.half_y * float(width) / float(height);
+    f.half_x = f.half_y * (c.aspect > 0 ? c.aspect : float(width) / float(height));
     f.shift_x = 2.0f * c.shift_x;
     f.shift_y = 2.0f * c.shift_y;
     f.width = width;

@@ -195,6 +195,9 @@ void Scene::validate() const {
         throw SceneError("an orthographic camera needs a view height > 0");
     if (!std::isfinite(c.shift_x) || !std::isfinite(c.shift_y))
         throw SceneError("the camera's shift is not finite");
+    if (!(c.aspect >= 0 && c.aspect < 1e6f))
+        throw SceneError(
+            "the camera's aspect ratio must be 0 (the image's) or a finite number > 0");
     for (size_t m = 0; m < materials.size(); ++m)
         if (!is_finite(materials[m].color) || !is_finite(materials[m].emission) ||
             !(materials[m].ior > 0))

@@ -107,6 +107,10 @@ struct Camera {
     Projection projection = Projection::Perspective;
     float ortho_height = 2.0f;      // orthographic: height of the view in scene units
     float shift_x = 0, shift_y = 0; // lens shift in image widths / heights (off-axis views)
+    // > 0: the view's width over its height whatever the image's shape (POV-Ray's
+    // |right| / |up|: an image of another shape shows it stretched, as POV-Ray does); 0: the
+    // image's own width over height.
+    float aspect = 0;
 };
 
 struct Object {

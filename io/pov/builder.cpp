@@ -42,6 +42,11 @@ struct Builder {
 
     void light(const PovObject& o) {
         const PovLight& pl = o.light;
+        for (const PovObject& shape : o.children) { // looks_like, at the light
+            PovObject placed = shape;
+            p.apply_transform(placed, Affine::translate(pl.light.position));
+            top(placed, p.model.default_texture, nullptr, 0);
+        }
         Light l = pl.light;
         l.spot_falloff = std::clamp(l.spot_falloff, 0.01f, 180.0f);
         l.spot_radius = std::clamp(l.spot_radius, 0.0f, l.spot_falloff);
@@ -214,6 +219,14 @@ struct Builder {
         out.position = flip.point(loc);
         out.look_at = flip.point(loc + dir);
         out.up = length(up) > 0 ? normalize(flip.vector(up)) : Vec3(0, 1, 0);
+        // POV-Ray maps |right| across the image and |up| down it, whatever the image's shape.
+        // A ratio equal to image_width / image_height (right x * image_width / image_height)
+        // follows the image the host renders, also when the host did not say its size.
+        const float rl = length(c.transform.vector(right)), ul = length(up);
+        const float image = float(p.options_.image_width) / float(p.options_.image_height);
+        if (rl > 0 && ul > 0 && std::isfinite(rl / ul) &&
+            std::fabs(rl / ul - image) > 1e-3f * image)
+            out.aspect = rl / ul;
         if (c.orthographic) {
             out.projection = Projection::Orthographic;
             out.ortho_height = length(up) > 0 ? length(up) : 1.0f;

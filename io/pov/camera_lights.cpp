@@ -127,7 +127,17 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
         } else if (k == "jitter" || k == "circular" || k == "orient" || k == "media_interaction" ||
                    k == "media_attenuation") {
             parse_bool_opt(true);
-        } else if (k == "looks_like" || k == "projected_through") {
+        } else if (k == "looks_like") {
+            // Modelled around the origin; the builder places it at the light, casting no
+            // shadow (it holds the light).
+            PovObject shape;
+            const bool ok = parse_object_block(shape);
+            o.children.clear();
+            if (ok) {
+                shape.flags |= kNoShadow;
+                o.children.push_back(std::move(shape));
+            }
+        } else if (k == "projected_through") {
             unsupported(t, k + " (ignored)");
             skip_block();
         } else if (k == "photons") {

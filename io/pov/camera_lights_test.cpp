@@ -2,6 +2,8 @@
 // fading, shadowless, area lights as samples), background and global_settings.
 #include "io/pov/pov_test_util.h"
 
+#include "core/raster/camera.h"
+
 #include <cmath>
 
 namespace sheaf::io::pov {
@@ -39,6 +41,30 @@ TEST(PovCamera, DefaultAndOrthographic) {
     EXPECT_FLOAT_EQ(r.scene.camera.position.z, 10);
 }
 
+TEST(PovCamera, RightOverUpIsTheViewsShape) {
+    // POV-Ray maps |right| across the image and |up| down it: the default right (1.33) on a
+    // square image is stretched, as POV-Ray stretches it.
+    PovOptions square;
+    square.image_width = 300, square.image_height = 300;
+    EXPECT_NEAR(load_text("", square).scene.camera.aspect, 1.33f, 1e-6);
+    EXPECT_NEAR(load_text("camera { right 2.5 * x up y }", square).scene.camera.aspect, 2.5f, 1e-6);
+    // The usual right x * image_width / image_height follows the image the host renders.
+    EXPECT_EQ(
+        load_text("camera { right x * image_width / image_height }", square).scene.camera.aspect,
+        0.0f);
+    PovOptions wide;
+    wide.image_width = 400, wide.image_height = 100;
+    EXPECT_EQ(load_text("camera { right 4 * x up y }", wide).scene.camera.aspect, 0.0f);
+    // The frame: |right| / |up| = 2.5 spans 2.5 times the height, on any image.
+    Camera c;
+    c.aspect = 2.5f;
+    const CameraFrame f = make_camera_frame(c, 100, 100);
+    EXPECT_NEAR(f.half_x, 2.5f * f.half_y, 1e-6);
+    c.aspect = 0;
+    EXPECT_NEAR(make_camera_frame(c, 200, 100).half_x, 2 * make_camera_frame(c, 200, 100).half_y,
+                1e-6);
+}
+
 TEST(PovCamera, DeclaredCameras) {
     const PovResult r = load_text("#declare C = camera { location <1, 2, 3> look_at 0 }\n"
                                   "camera { C translate y }");
@@ -71,6 +97,20 @@ TEST(PovLights, PointSpotParallel) {
     EXPECT_NEAR(l.direction.z, -1, 1e-6); // towards POV-Ray +z, which is Sheaf -z
     EXPECT_TRUE(r.warnings.empty());
     EXPECT_NO_THROW(r.scene.validate());
+}
+
+TEST(PovLights, LooksLikeIsAnObjectAtTheLight) {
+    const PovResult r = load_text("#declare Bulb = sphere { 0, 0.25 pigment { rgb 1 } }\n"
+                                  "light_source { <1, 4, 2> rgb 1 looks_like { Bulb } "
+                                  "translate x }");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    ASSERT_EQ(r.scene.lights.size(), 1u);
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    const ShapeObject& o = r.scene.shape_objects[0];
+    EXPECT_EQ(o.flags & kNoShadow, kNoShadow); // it holds the light: it must not block it
+    const Vec3 centre = o.transform.point(o.nodes[0].transform.point(Vec3(0, 0, 0)));
+    EXPECT_NEAR(length(centre - r.scene.lights[0].position), 0, 1e-5);
+    EXPECT_NEAR(centre.x, 2, 1e-5);
 }
 
 TEST(PovLights, AreaLightsBecomeSamples) {

@@ -85,27 +85,7 @@ bool Parser::parse_object(PovObject& o) {
         parse_csg(kw, o);
         return true;
     }
-    if (k == "object") {
-        expect_sym("{");
-        const Token& t = peek();
-        bool ok = true;
-        Value declared;
-        if (accept_declared_any(declared)) {
-            if (declared.type == VType::Other && declared.str == "object")
-                ok = false; // an unsupported object, warned where it was declared
-            else if (declared.type == VType::Object)
-                o = declared.as<PovObject>();
-            else
-                error_expected(t, std::string("an object, not ") + type_name(declared.type));
-        } else if (is_object_start(t)) {
-            ok = parse_object(o);
-        } else {
-            error_expected(t, "an object identifier or an object");
-        }
-        bool texture_here = false;
-        parse_object_modifiers(o, texture_here);
-        return ok;
-    }
+    if (k == "object") return parse_object_block(o);
     if (k == "triangle" || k == "smooth_triangle") {
         parse_triangle(kw, o, k == "smooth_triangle");
         return true;
@@ -129,6 +109,28 @@ bool Parser::parse_object(PovObject& o) {
     if (k == "quadric" || k == "cubic" || k == "quartic" || k == "poly") return parse_poly(kw, o);
     parse_shape(kw, o);
     return true;
+}
+
+bool Parser::parse_object_block(PovObject& o) {
+    expect_sym("{");
+    const Token& t = peek();
+    bool ok = true;
+    Value declared;
+    if (accept_declared_any(declared)) {
+        if (declared.type == VType::Other && declared.str == "object")
+            ok = false; // an unsupported object, warned where it was declared
+        else if (declared.type == VType::Object)
+            o = declared.as<PovObject>();
+        else
+            error_expected(t, std::string("an object, not ") + type_name(declared.type));
+    } else if (is_object_start(t)) {
+        ok = parse_object(o);
+    } else {
+        error_expected(t, "an object identifier or an object");
+    }
+    bool texture_here = false;
+    parse_object_modifiers(o, texture_here);
+    return ok;
 }
 
 void Parser::parse_shape(const Token& kw, PovObject& o) {

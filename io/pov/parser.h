@@ -207,6 +207,8 @@ class Parser {
     Affine parse_transform_block();
     void apply_transform(PovObject& o, const Affine& m);
     void parse_shape(const Token& kw, PovObject& o);
+    /// '{' an object or object identifier, modifiers '}' (object { }, looks_like { }).
+    bool parse_object_block(PovObject& o);
     /// quadric, cubic, quartic, poly; false (after a warning) for a poly above order 4.
     bool parse_poly(const Token& kw, PovObject& o);
     /// '<' exactly `count` float coefficients '>'.

@@ -224,7 +224,16 @@ bool Parser::builtin_call(const Token& t, Value& out) {
             r = n == "bitwise_and" ? (r & b) : n == "bitwise_or" ? (r | b) : (r ^ b);
         }
         out = Value::number(double(r));
-    } else if (n == "min_extent" || n == "max_extent" || n == "trace") {
+    } else if (n == "min_extent" || n == "max_extent") {
+        need(1);
+        Vec3 lo(0.0f), hi(0.0f); // an unsupported object (warned where declared) or none
+        if (args[0].type == VType::Object)
+            object_extent(args[0].as<PovObject>(), lo, hi);
+        else if (!(args[0].type == VType::Other && args[0].str == "object"))
+            error_expected(at[0], "an object identifier");
+        const Vec3 v = n == "min_extent" ? lo : hi;
+        out = Value::vec3(v.x, v.y, v.z);
+    } else if (n == "trace") {
         unsupported(t, n + " (gives <0,0,0>)");
         out = Value::vec3(0, 0, 0);
     } else { // inside, prod, sum, datetime

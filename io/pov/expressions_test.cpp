@@ -117,6 +117,32 @@ TEST(PovExpressions, RandomStreamsAreDeterministic) {
     EXPECT_EQ(a, declared(s, "A").v[0]);
 }
 
+TEST(PovExpressions, MinAndMaxExtent) {
+    auto extent = [](const std::string& object, const char* which) {
+        const Value v =
+            declared("#declare O = " + object + "\n#declare E = " + which + "(O);", "E");
+        return Vec3(float(v.v[0]), float(v.v[1]), float(v.v[2]));
+    };
+    auto expect = [](Vec3 a, Vec3 b) {
+        EXPECT_NEAR(a.x, b.x, 1e-5);
+        EXPECT_NEAR(a.y, b.y, 1e-5);
+        EXPECT_NEAR(a.z, b.z, 1e-5);
+    };
+    expect(extent("sphere { <1, 2, 3>, 0.5 }", "min_extent"), {0.5f, 1.5f, 2.5f});
+    expect(extent("box { <-1, 0, 2>, <3, 2, 4> rotate y * 90 }", "max_extent"), {4, 2, 1});
+    expect(extent("cylinder { 0, y * 2, 0.5 }", "max_extent"), {0.5f, 2, 0.5f});
+    expect(extent("torus { 2, 0.5 }", "min_extent"), {-2.5f, -0.5f, -2.5f});
+    expect(extent("union { sphere { 0, 1 } box { <2, 2, 2>, <3, 4, 5> } }", "max_extent"),
+           {3, 4, 5});
+    expect(extent("intersection { sphere { 0, 1 } box { <0, 0, 0>, <3, 4, 5> } }", "min_extent"),
+           {0, 0, 0});
+    expect(extent("difference { box { -1, 1 } sphere { 0, 3 } }", "max_extent"), {1, 1, 1});
+    expect(extent("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 2, -1> } }", "min_extent"),
+           {0, 0, -1});
+    expect(extent("plane { y, 0 }", "max_extent"), {2e10f, 2e10f, 2e10f});
+    EXPECT_NE(error_of("#declare E = min_extent(3);"), "");
+}
+
 TEST(PovExpressions, Arrays) {
     const std::string s = "#declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };\n"
                           "#declare B = array[4];\n#declare B[2] = 7;\n"

@@ -187,4 +187,8 @@ struct PovModel {
     Color5 fog_color{0, 0, 0, 0, 0};
 };
 
+/// The object's axis-aligned bounding box in POV-Ray's coordinates (min_extent, max_extent;
+/// io/pov/extents.cpp); false when it has none (a light, an empty union).
+bool object_extent(const PovObject& o, Vec3& lo, Vec3& hi);
+
 } // namespace sheaf::io::pov

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 
 #include <cfloat>
 #include <cmath>
@@ -124,7 +125,7 @@ SHEAF_HD_INLINE int poly_roots(const double* q, int n, double* roots) {
     for (int k = 1; k <= n; ++k) {
         double ratio = fabs(q[n - k] / q[n]);
         if (k == n) ratio *= 0.5;
-        const double r = pow(ratio, 1.0 / k);
+        const double r = hdm::pow(ratio, 1.0 / k); // same bits on both backends
         if (r > bound) bound = r;
     }
     bound = 2 * bound + 1;

@@ -6,9 +6,11 @@
 // and no thin crossing to miss. Above 2 the solid is star-shaped but not convex: the ray's
 // piece inside the box is then sampled (always at its cusps, where it crosses a coordinate
 // plane) for changes of sign, each refined by bisection, and for dips between samples.
+// Powers are hdm::pow: the same bits on the CPU and the GPU.
 #pragma once
 
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 
 #include <cfloat>
 #include <cmath>
@@ -26,8 +28,8 @@ SHEAF_HD_INLINE Exponents exponents(float e, float n) {
 }
 
 SHEAF_HD_INLINE double value(const Exponents& k, double x, double y, double z) {
-    const double s = pow(fabs(x), k.a) + pow(fabs(y), k.a);
-    return pow(s, k.b) + pow(fabs(z), k.c) - 1;
+    const double s = hdm::pow(fabs(x), k.a) + hdm::pow(fabs(y), k.a);
+    return hdm::pow(s, k.b) + hdm::pow(fabs(z), k.c) - 1;
 }
 
 /// The crossing of f in [lo, hi], where f(lo) and f(hi) differ in sign.
@@ -68,10 +70,11 @@ SHEAF_HD_INLINE Vec3 superellipsoid_normal(float e, float n, Vec3 p) {
     using namespace superellipsoid_detail;
     const Exponents k = exponents(e, n);
     const double x = fabs(double(p.x)), y = fabs(double(p.y)), z = fabs(double(p.z));
-    const double s = pow(x, k.a) + pow(y, k.a);
-    const double outer = s > 0 ? k.b * pow(s, k.b - 1) : 0;
-    double g[3] = {x > 0 ? outer * k.a * pow(x, k.a - 1) : 0,
-                   y > 0 ? outer * k.a * pow(y, k.a - 1) : 0, z > 0 ? k.c * pow(z, k.c - 1) : 0};
+    const double s = hdm::pow(x, k.a) + hdm::pow(y, k.a);
+    const double outer = s > 0 ? k.b * hdm::pow(s, k.b - 1) : 0;
+    double g[3] = {x > 0 ? outer * k.a * hdm::pow(x, k.a - 1) : 0,
+                   y > 0 ? outer * k.a * hdm::pow(y, k.a - 1) : 0,
+                   z > 0 ? k.c * hdm::pow(z, k.c - 1) : 0};
     const double m = fmax(g[0], fmax(g[1], g[2]));
     if (!(m > 0 && m < 1e300)) return p;
     return Vec3(float(copysign(g[0] / m, double(p.x))), float(copysign(g[1] / m, double(p.y))),

@@ -47,11 +47,12 @@ SHEAF_HD_INLINE uint64_t cast_analytic_pixel(const SceneView& scene, const Camer
     return vis;
 }
 
-/// What a ray leaving the scene along `dir` brings with weight w: the sky, through the fog.
-SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 dir, Vec3 w) {
+/// What a ray from `origin` leaving the scene along `dir` brings with weight w: the sky,
+/// through the fog.
+SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, Vec3 w) {
     float keep;
     Vec3 add;
-    fog_over(scene.fog, INFINITY, keep, add);
+    fog_over(scene.fog, origin, dir, INFINITY, keep, add);
     return w * (sky_color(scene, dir) * keep + add);
 }
 
@@ -60,7 +61,7 @@ SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 dir, Vec3 w) {
 SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h) {
     float keep;
     Vec3 add;
-    fog_over(scene.fog, h.t, keep, add);
+    fog_over(scene.fog, h.position - h.incoming * h.t, h.incoming, h.t, keep, add);
     const Vec3 fog = h.throughput * add;
     h.throughput = h.throughput * keep;
     return fog;
@@ -84,7 +85,7 @@ SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const Camer
     PrimarySample out;
     const Ray ray = cam.pixel_ray(int(i % size_t(W)), int(i / size_t(W)));
     if (vis == kEmptyPixel) {
-        out.radiance = leave_scene(scene, ray.dir, Vec3(1.0f));
+        out.radiance = leave_scene(scene, ray.origin, ray.dir, Vec3(1.0f));
         return out;
     }
     const uint32_t prim = vis_prim(vis);

@@ -219,11 +219,28 @@ TEST(ProceduralShading, FogAndFadeFollowPovRay) {
     f.distance = 10, f.color = Vec3(1), f.transmit = 0.5f;
     float keep;
     Vec3 add;
-    fog_over(f, 10, keep, add); // exp(-1) = 0.37 < transmit: the surface keeps half
+    const Vec3 o(0.0f), d(1, 0, 0);
+    fog_over(f, o, d, 10, keep, add); // exp(-1) = 0.37 < transmit: the surface keeps half
     EXPECT_FLOAT_EQ(keep, 0.5f);
     EXPECT_FLOAT_EQ(add.x, 0.5f);
-    fog_over(f, 1, keep, add);
+    fog_over(f, o, d, 1, keep, add);
     EXPECT_NEAR(keep, std::exp(-0.1f), 1e-6);
+    // Ground fog (POV-Ray's fog_type 2): full below the offset, 1 / (1 + Y^2) above.
+    Fog g;
+    g.distance = 10, g.offset = 1, g.alt = 2, g.up = Vec3(0, 1, 0);
+    EXPECT_NEAR(fog_depth(g, Vec3(0, 0.5f, 0), d, 10), 1.0, 1e-9);        // level, below: constant
+    EXPECT_NEAR(fog_depth(g, Vec3(0, 5, 0), d, 10), 1.0 / (1 + 4), 1e-7); // level, Y = 2
+    // Straight up from the ground through Y = 0..2 (height 1..5): 2 * atan(2) over 10.
+    const Vec3 up(0, 1, 0);
+    EXPECT_NEAR(fog_depth(g, Vec3(0, 1, 0), up, 4), 2 * std::atan(2.0) / 10, 1e-6);
+    // From below the offset: the part below counts fully.
+    EXPECT_NEAR(fog_depth(g, Vec3(0, 0, 0), up, 5), (1 + 2 * std::atan(2.0)) / 10, 1e-6);
+    // Leaving the scene upwards: finite (2 * (pi / 2) / 10 from the offset); level: all fog.
+    EXPECT_NEAR(fog_depth(g, Vec3(0, 1, 0), up, INFINITY), M_PI / 10, 1e-6);
+    EXPECT_EQ(fog_depth(g, Vec3(0, 1, 0), d, INFINITY), INFINITY);
+    g.transmit = 0;
+    fog_over(g, Vec3(0, 1, 0), up, INFINITY, keep, add);
+    EXPECT_NEAR(keep, std::exp(-M_PI / 10), 1e-6);
     Material m;
     m.fade_distance = 2, m.fade_power = 2, m.fade_color = Vec3(0.5f, 0, 0);
     EXPECT_NEAR(interior_fade(m, 2).y, 0.5f, 1e-6); // 1 / (1 + 1)

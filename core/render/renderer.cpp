@@ -187,7 +187,8 @@ class FramePipeline {
                 if (r.closest[i] != kNoHit)
                     ++count;
                 else
-                    radiance_[b->pixel[i]] += leave_scene(view_, b->rays[i].dir, b->weight[i]);
+                    radiance_[b->pixel[i]] +=
+                        leave_scene(view_, b->rays[i].origin, b->rays[i].dir, b->weight[i]);
             }
             const size_t base = next.size();
             next.resize(base + count);

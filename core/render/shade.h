@@ -136,16 +136,49 @@ SHEAF_HD_INLINE Vec3 interior_fade(const Material& m, float d) {
     return Vec3(a) + m.fade_color * (1.0f - a);
 }
 
-/// Constant fog along a ray segment of length d (infinite for rays that leave the scene): the
-/// far colour keeps `keep` of itself and the fog adds `add`.
-/// As POV-Ray: the far colour keeps max(exp(-d / distance), transmit), the fog's colour fills
-/// the rest.
-SHEAF_HD_INLINE void fog_over(const Fog& f, float d, float& keep, Vec3& add) {
+/// The fog's optical depth (length times density over distance) along the ray from `origin`
+/// along unit `dir` for length d (infinite for rays that leave the scene). Constant fog:
+/// d / distance. Ground fog as POV-Ray integrates it: the mean density between the end
+/// heights Y1, Y2 (in units of alt over the offset) is the integral of 1 (below 0) and
+/// 1 / (1 + Y^2) (above: atan) over their difference.
+SHEAF_HD_INLINE double fog_depth(const Fog& f, Vec3 origin, Vec3 dir, float d) {
+    if (!(f.alt > 0)) return d < 3.0e38f ? double(d) / f.distance : INFINITY;
+    const double y1 = (double(dot(origin, f.up)) - f.offset) / f.alt;
+    const double dy = double(dot(dir, f.up)) / f.alt; // change of Y per unit of length
+    // The integral of the density over Y from 0 (or below) up to y, for y >= 0.
+    auto above = [](double y) { return hdm::atan(y); };
+    if (!(d < 3.0e38f)) { // to infinity: finite only when climbing out of the fog
+        if (!(dy > 1e-12)) return INFINITY;
+        const double below = y1 < 0 ? -y1 : 0.0;
+        return (below + 1.5707963267948966 - above(y1 > 0 ? y1 : 0.0)) / dy / f.distance;
+    }
+    const double y2 = y1 + dy * d;
+    double mean;
+    if (y1 <= 0 && y2 <= 0)
+        mean = 1;
+    else if (y1 <= 0)
+        mean = (above(y2) - y1) / (y2 - y1);
+    else if (y2 <= 0)
+        mean = (above(y1) - y2) / (y1 - y2);
+    else if (fabs(y1 - y2) > 1e-10)
+        mean = (above(y1) - above(y2)) / (y1 - y2);
+    else
+        mean = 1 / (y1 * y1 + 1);
+    return double(d) * mean / f.distance;
+}
+
+/// Fog along a ray segment (from `origin` along unit `dir`, length d, infinite for rays that
+/// leave the scene): the far colour keeps `keep` of itself and the fog adds `add`.
+/// As POV-Ray: the far colour keeps max(exp(-depth), transmit), the fog's colour fills the
+/// rest.
+SHEAF_HD_INLINE void fog_over(const Fog& f, Vec3 origin, Vec3 dir, float d, float& keep,
+                              Vec3& add) {
     if (!(f.distance > 0)) {
         keep = 1.0f, add = Vec3(0.0f);
         return;
     }
-    const float a = d < 3.0e38f ? hdm::expf(-d / f.distance) : 0.0f;
+    const double depth = fog_depth(f, origin, dir, d);
+    const float a = depth < 1e30 ? float(hdm::exp(-depth)) : 0.0f;
     keep = hdm::fmaxf(a, f.transmit);
     add = f.color * (1.0f - keep);
 }

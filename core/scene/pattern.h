@@ -112,6 +112,10 @@ struct Fog {
     float distance = 0; // 0: no fog
     Vec3 color{0, 0, 0};
     float transmit = 0;
+    // alt > 0: POV-Ray's ground fog (fog_type 2): full density below the height `offset`
+    // along `up` (unit), 1 / (1 + Y^2) above it, Y the height over offset in units of alt.
+    float offset = 0, alt = 0;
+    Vec3 up{0, 1, 0};
 };
 
 } // namespace sheaf

@@ -303,7 +303,7 @@ template <class Exec> class DeviceFrame {
             [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
             [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                 if (closest[i] != kNoHit) return false;
-                v = leave_scene(scene, rays[i].dir, weight[i]);
+                v = leave_scene(scene, rays[i].origin, rays[i].dir, weight[i]);
                 return true;
             });
         DeviceBuffer<uint32_t, Exec> slot_buf(ex_, b.n);

@@ -265,6 +265,9 @@ double build_scene(Parser& p, Scene& scene) {
         scene.fog.distance = float(m.fog_distance);
         scene.fog.color = b.decode(m.fog_color);
         scene.fog.transmit = float(std::clamp(m.fog_color[4], 0.0, 1.0));
+        scene.fog.alt = float(m.fog_alt);
+        scene.fog.offset = float(m.fog_offset);
+        scene.fog.up = normalize(b.flip.vector(m.fog_up));
     }
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));

@@ -225,29 +225,48 @@ void Parser::parse_atmospheric(const Token& kw) {
     if (kw.text == "fog") {
         expect_sym("{");
         int type = 1;
+        double offset = 0, alt = 1;
+        Vec3 up(0, 1, 0);
+        Affine transform;
         for (;;) {
             const Token t = peek();
             if (accept_sym("}")) break;
-            Affine ignored;
-            if (parse_transform_item(ignored)) continue;
+            Affine m;
+            if (parse_transform_item(m)) { // turns the ground fog's up vector
+                transform = m * transform;
+                continue;
+            }
             if (accept_kw("fog_type")) {
                 type = int(parse_float());
             } else if (accept_kw("distance")) {
                 model.fog_distance = parse_float();
             } else if (is_color_start(t)) {
                 model.fog_color = parse_color();
-            } else if (accept_kw("fog_offset") || accept_kw("fog_alt") || accept_kw("octaves") ||
-                       accept_kw("omega") || accept_kw("lambda") || accept_kw("turb_depth")) {
+            } else if (accept_kw("fog_offset")) {
+                offset = parse_float();
+            } else if (accept_kw("fog_alt")) {
+                const Token at = peek();
+                alt = parse_float();
+                if (!(alt > 0)) error_at(at, "fog_alt must be greater than 0");
+            } else if (accept_kw("up")) {
+                const Token at = peek();
+                up = parse_vector();
+                if (!(length(up) > 0)) error_at(at, "the fog's up vector must not be zero");
+            } else if (accept_kw("octaves") || accept_kw("omega") || accept_kw("lambda") ||
+                       accept_kw("turb_depth")) {
                 parse_float();
-            } else if (accept_kw("turbulence") || accept_kw("up")) {
+            } else if (accept_kw("turbulence")) {
                 parse_expr();
             } else {
                 error_expected(t, "a fog item (distance, color, fog_type ...)");
             }
         }
-        if (type != 1)
-            unsupported(kw, "ground fog (fog_type " + std::to_string(type) +
-                                "; constant fog is used)");
+        if (type != 1 && type != 2)
+            error_at(kw, "fog_type " + std::to_string(type) + " is not 1 (constant) or 2 (ground)");
+        model.fog_alt = type == 2 ? alt : 0;
+        model.fog_offset = offset;
+        model.fog_up = normalize(transform.vector(up));
+        if (!(length(model.fog_up) > 0)) error_at(kw, "the fog's up vector must not be zero");
         model.fog = model.fog_distance > 0;
         return;
     }

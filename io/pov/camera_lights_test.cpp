@@ -9,6 +9,7 @@
 namespace sheaf::io::pov {
 namespace {
 
+using test::error_of;
 using test::load_text;
 
 TEST(PovCamera, PerspectiveFromAngleAndLookAt) {
@@ -151,10 +152,18 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
     EXPECT_FLOAT_EQ(r.scene.fog.distance, 10);
     EXPECT_FLOAT_EQ(r.scene.fog.color.y, 1);
     EXPECT_TRUE(r.warnings.empty());
-    const PovResult g = load_text("fog { fog_type 2 distance 5 color rgb 1 fog_alt 1 }");
-    ASSERT_EQ(g.warnings.size(), 1u);
-    EXPECT_NE(g.warnings[0].find("scene.pov:1:1: warning: unsupported ground fog"),
-              std::string::npos);
+    // Ground fog: its height along up (here -z in POV-Ray, +z in Sheaf after the mirror).
+    const PovResult g = load_text(
+        "fog { fog_type 2 distance 5 color rgb 1 fog_offset 0.5 fog_alt 2 up y rotate x * 90 }");
+    EXPECT_TRUE(g.warnings.empty());
+    EXPECT_FLOAT_EQ(g.scene.fog.alt, 2);
+    EXPECT_FLOAT_EQ(g.scene.fog.offset, 0.5f);
+    EXPECT_NEAR(g.scene.fog.up.z, -1, 1e-6); // POV-Ray's y turned by 90 about x is its +z
+    EXPECT_FLOAT_EQ(load_text("fog { distance 5 color rgb 1 }").scene.fog.alt, 0); // constant
+    EXPECT_EQ(error_of("fog { fog_type 2 distance 5 fog_alt 0 }"),
+              "scene.pov:1:37: error: fog_alt must be greater than 0");
+    EXPECT_EQ(error_of("fog { fog_type 3 distance 5 }"),
+              "scene.pov:1:1: error: fog_type 3 is not 1 (constant) or 2 (ground)");
 }
 
 } // namespace

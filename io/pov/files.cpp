@@ -42,8 +42,8 @@ std::string Parser::find_include(const std::string& name, const Token& where) co
     return find_file(name, where, "include file");
 }
 
-std::string Parser::find_file(const std::string& name, const Token& where,
-                              const std::string& what) const {
+std::string Parser::find_file(const std::string& name, const Token& where, const std::string& what,
+                              const std::vector<std::string>& extensions) const {
     std::vector<fs::path> dirs;
     auto add = [&](const fs::path& d) { // each folder once, in the order first named
         if (std::find(dirs.begin(), dirs.end(), d.lexically_normal()) == dirs.end())
@@ -53,11 +53,17 @@ std::string Parser::find_file(const std::string& name, const Token& where,
     for (const std::string& d : options_.include_paths) add(d);
     std::error_code ec; // a name the system refuses (too long ...) is not found
     if (fs::is_directory("/usr/share/povray-3.7/include", ec)) add("/usr/share/povray-3.7/include");
-    if (fs::path(name).is_absolute()) {
-        if (fs::is_regular_file(name, ec)) return name;
-    } else {
+    // A name without an extension may leave it out (POV-Ray's image_map { "sign" }).
+    std::vector<std::string> names{name};
+    if (fs::path(name).extension().empty())
+        for (const std::string& e : extensions) names.push_back(name + e);
+    for (const std::string& n : names) {
+        if (fs::path(n).is_absolute()) {
+            if (fs::is_regular_file(n, ec)) return n;
+            continue;
+        }
         for (const fs::path& d : dirs) {
-            const fs::path p = d / name;
+            const fs::path p = d / n;
             if (fs::is_regular_file(p, ec)) return p.lexically_normal().string();
         }
     }

@@ -181,10 +181,12 @@ struct PovModel {
     int max_trace_level = -1;
     PovTexture default_texture;
     PovSky sky; // no pigments: no sky_sphere
-    /// Constant fog (fog_type 1).
+    /// Fog: constant (fog_type 1) or ground fog (fog_type 2: fog_alt > 0).
     bool fog = false;
     double fog_distance = 0;
     Color5 fog_color{0, 0, 0, 0, 0};
+    double fog_offset = 0, fog_alt = 0;
+    Vec3 fog_up{0, 1, 0};
 };
 
 /// The object's axis-aligned bounding box in POV-Ray's coordinates (min_extent, max_extent;

@@ -142,9 +142,10 @@ class Parser {
     void include_directive(const Token& where);
     std::string find_include(const std::string& name, const Token& where) const;
     /// A file the scene names (include, image): its folder, the include paths, then POV-Ray's
-    /// standard include folder; an error naming `what` when it is nowhere.
-    std::string find_file(const std::string& name, const Token& where,
-                          const std::string& what) const;
+    /// standard include folder; an error naming `what` when it is nowhere. A name without an
+    /// extension is also tried with each of `extensions`, in order.
+    std::string find_file(const std::string& name, const Token& where, const std::string& what,
+                          const std::vector<std::string>& extensions = {}) const;
     void fopen_directive(const Token& where);
     void read_directive(const Token& where);
     void write_directive(const Token& where);

@@ -230,7 +230,9 @@ void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
     if (peek().kind == TokKind::Ident && types.count(peek().text)) advance();
     const Token name = peek();
     const std::string file = parse_string();
-    img->path = find_file(file, name, "image file");
+    img->path = find_file(file, name, "image file",
+                          {".tga", ".png", ".jpg", ".jpeg", ".ppm", ".pgm", ".bmp", ".tif", ".tiff",
+                           ".exr", ".hdr", ".gif"});
     for (;;) {
         const Token t = peek();
         if (accept_sym("}")) break;

@@ -175,6 +175,12 @@ TEST(PovTextures, ImageMapsAreTextures) {
     const Pigment& pg = r.scene.pigments[size_t(shape_material(r).pigment)];
     EXPECT_EQ(pg.pattern.kind, PatternKind::Image);
     EXPECT_FLOAT_EQ(r.scene.pigment_entries[pg.first].color[4], 0.25f);
+    // POV-Ray lets the name leave out its extension (image_map { "tiles" }).
+    const std::string bare =
+        d.write("bare.pov", "plane { z, 0 pigment { image_map { \"tiles\" } } }\n");
+    const PovResult br = load_pov_scene(bare);
+    ASSERT_EQ(br.scene.textures.size(), 1u);
+    EXPECT_EQ(br.scene.textures[0].path, png);
     EXPECT_NE(error_of("plane { z, 0 pigment { image_map { png \"missing.png\" } } }")
                   .find("scene.pov:1:40: error: cannot find image file 'missing.png'"),
               std::string::npos);

@@ -2,9 +2,9 @@
 // of CSG nesting (ptxas -v: 7,048 bytes a level on sm_80 and sm_90, 7,080 on sm_90 since
 // shapes carry a poly index; plus 1,952 (sm_90) or 1,960 (sm_80) under a clipped_by: about
 // 9,000 of the 10 KiB allowed), and the shading, pigment and pattern code needs a base of its
-// own (the largest tracing kernel's frame is 2,704 bytes on both, nested pigments 328 to 344
-// bytes a level; the out-of-line poly_spans (1,752 bytes on sm_90) and superellipsoid_spans
-// (504) are on the stack once, at the leaf). The device reserves the
+// own (the largest tracing kernel's frame is 2,704 bytes on both, 2,736 on sm_90 with the
+// ground fog; nested pigments 328 to 344 bytes a level; the out-of-line poly_spans (1,752
+// bytes on sm_90) and superellipsoid_spans (584) are on the stack once, at the leaf). The device reserves the
 // stack for every resident thread (about 270,000 on an H100), so it is capped; a scene nested
 // more deeply renders on the CPU (backend=auto) or is an error (backend=cuda).
 #pragma once

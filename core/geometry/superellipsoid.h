@@ -36,6 +36,7 @@ SHEAF_HD_INLINE double value(const Exponents& k, double x, double y, double z) {
 template <class F> SHEAF_HD_INLINE double bisect(const F& f, double lo, double hi) {
     const bool lo_inside = f(lo) < 0;
     for (int it = 0; it < 80; ++it) {
+        if (hi - lo <= 1e-9 * (1 + fabs(lo) + fabs(hi))) break; // far below a float's step
         const double mid = 0.5 * (lo + hi);
         if (mid <= lo || mid >= hi) break;
         if ((f(mid) < 0) == lo_inside)
@@ -47,12 +48,14 @@ template <class F> SHEAF_HD_INLINE double bisect(const F& f, double lo, double h
 }
 
 /// The minimum of a unimodal f on [lo, hi] by golden-section search: its place, and its
-/// value in `fm`.
+/// value in `fm`. Stops at the first point below zero: the callers want a point inside, from
+/// which bisection finds the crossings on both sides.
 template <class F> SHEAF_HD_INLINE double golden_min(const F& f, double lo, double hi, double& fm) {
     const double g = 0.3819660112501051;
     double a = lo, b = hi, x1 = a + g * (b - a), x2 = b - g * (b - a);
     double f1 = f(x1), f2 = f(x2);
     for (int it = 0; it < 100 && x1 < x2; ++it) {
+        if (f1 < 0 || f2 < 0 || b - a <= 1e-9 * (1 + fabs(a) + fabs(b))) break;
         if (f1 < f2)
             b = x2, x2 = x1, f2 = f1, x1 = a + g * (b - a), f1 = f(x1);
         else

@@ -15,6 +15,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 namespace sheaf {
@@ -203,6 +204,30 @@ SHEAF_HD_INLINE int poly_term(int i, int j, int k) {
         if (a == i && b == j && c == k) found = term;
     });
     return found;
+}
+
+/// How many coefficients a polynomial of degree `order` has in POV-Ray's layout (10, 20, 35).
+inline size_t poly_coefficient_count(int order) {
+    return size_t(order + 1) * size_t(order + 2) * size_t(order + 3) / 6;
+}
+
+/// Coefficients given in POV-Ray's order for degree `order` <= 4 (the power of x falls from
+/// `order`, within it y's, within that z's; poly_coefficient_count(order) of them), placed in
+/// the 35-term layout. Host only: the readers' one way in.
+template <class T> PolyCoeffs poly_from_pov_order(int order, const T* c) {
+    PolyCoeffs p;
+    size_t at = 0;
+    for (int i = order; i >= 0; --i)
+        for (int j = order - i; j >= 0; --j)
+            for (int k = order - i - j; k >= 0; --k) p.c[poly_term(i, j, k)] = double(c[at++]);
+    return p;
+}
+
+/// Whether every coefficient is zero (no surface at all).
+inline bool poly_is_zero(const PolyCoeffs& p) {
+    for (double c : p.c)
+        if (c != 0) return false;
+    return true;
 }
 
 } // namespace sheaf

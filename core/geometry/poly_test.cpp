@@ -71,6 +71,24 @@ TEST(Poly, TermOrderIsPovRays) {
     EXPECT_EQ(poly_term(2, 2, 2), -1);
 }
 
+TEST(Poly, PovOrderOfEveryDegreeLandsInTheQuarticLayout) {
+    EXPECT_EQ(poly_coefficient_count(2), 10u);
+    EXPECT_EQ(poly_coefficient_count(3), 20u);
+    EXPECT_EQ(poly_coefficient_count(4), 35u);
+    // Cubic: x^3, x^2 y, x^2 z, x^2, x y^2, ... z, 1.
+    double c[20];
+    for (int i = 0; i < 20; ++i) c[i] = i + 1;
+    const PolyCoeffs p = poly_from_pov_order(3, c);
+    EXPECT_EQ(p.c[poly_term(3, 0, 0)], 1);
+    EXPECT_EQ(p.c[poly_term(2, 1, 0)], 2);
+    EXPECT_EQ(p.c[poly_term(2, 0, 0)], 4);
+    EXPECT_EQ(p.c[poly_term(0, 3, 0)], 11);
+    EXPECT_EQ(p.c[poly_term(0, 0, 0)], 20);
+    EXPECT_EQ(p.c[poly_term(4, 0, 0)], 0);
+    EXPECT_FALSE(poly_is_zero(p));
+    EXPECT_TRUE(poly_is_zero(PolyCoeffs{}));
+}
+
 // The torus of shape.h (major radius 1, minor r) as a quartic:
 // (x^2 + y^2 + z^2 + 1 - r^2)^2 - 4 (x^2 + y^2).
 PolyCoeffs torus_quartic(double r) {

@@ -133,13 +133,10 @@ void Scene::validate() const {
                     throw SceneError(name + ": shape parameters out of range");
                 if (s.kind == ShapeKind::Poly) {
                     if (!node.poly) throw SceneError(name + ": a poly shape without coefficients");
-                    bool any = false;
-                    for (double c : node.poly->c) {
+                    for (double c : node.poly->c)
                         if (!std::isfinite(c))
                             throw SceneError(name + ": a poly coefficient is not finite");
-                        any |= c != 0;
-                    }
-                    if (!any)
+                    if (poly_is_zero(*node.poly))
                         throw SceneError(name + ": a poly shape whose coefficients are all zero");
                 }
                 if (!node.transform.finite())

@@ -75,20 +75,10 @@ bool Parser::parse_poly(const Token& kw, PovObject& o) {
             coefficients->c[poly_term(terms[t][0], terms[t][1], terms[t][2])] = c[t];
         }
     } else {
-        // POV-Ray's order for any degree n: the power of x falls from n, then y's, then z's.
-        size_t count = 0;
-        for (int i = order; i >= 0; --i)
-            for (int j = order - i; j >= 0; --j) count += size_t(order - i - j + 1);
-        const std::vector<double> c = parse_coefficients(kw, count);
-        size_t at = 0;
-        for (int i = order; i >= 0; --i)
-            for (int j = order - i; j >= 0; --j)
-                for (int z = order - i - j; z >= 0; --z)
-                    coefficients->c[poly_term(i, j, z)] = c[at++];
+        const std::vector<double> c = parse_coefficients(kw, poly_coefficient_count(order));
+        *coefficients = poly_from_pov_order(order, c.data());
     }
-    bool any = false;
-    for (double c : coefficients->c) any |= c != 0;
-    if (!any) error_at(kw, "every coefficient of the " + k + " is zero");
+    if (poly_is_zero(*coefficients)) error_at(kw, "every coefficient of the " + k + " is zero");
     o.kind = PovKind::Shape;
     o.shape = Shape{ShapeKind::Poly};
     o.poly = std::move(coefficients);

@@ -157,23 +157,13 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
             std::vector<float> c;
             a.require("coefficients");
             a.get_numbers("coefficients", c);
-            // POV-Ray's order: the power of x falls from `order`, then y's, then z's.
-            size_t count = 0;
-            for (int i = order; i >= 0; --i) count += size_t(order - i + 1) * (order - i + 2) / 2;
+            const size_t count = poly_coefficient_count(order);
             if (c.size() != count)
                 fail_attr("coefficients", "order " + std::to_string(order) + " needs " +
                                               std::to_string(count) + " coefficients, not " +
                                               std::to_string(c.size()));
-            auto poly = std::make_shared<PolyCoeffs>();
-            size_t at = 0;
-            bool any = false;
-            for (int i = order; i >= 0; --i)
-                for (int j = order - i; j >= 0; --j)
-                    for (int k = order - i - j; k >= 0; --k) {
-                        any |= c[at] != 0;
-                        poly->c[poly_term(i, j, k)] = c[at++];
-                    }
-            if (!any) fail_attr("coefficients", "every coefficient is zero");
+            auto poly = std::make_shared<PolyCoeffs>(poly_from_pov_order(order, c.data()));
+            if (poly_is_zero(*poly)) fail_attr("coefficients", "every coefficient is zero");
             s.kind = ShapeKind::Poly;
             n.poly = std::move(poly);
         } else { // torus

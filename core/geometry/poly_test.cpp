@@ -122,12 +122,12 @@ TEST(Poly, SameSpansAsTheShapesTheyDescribe) {
     std::mt19937 g(11);
     for (int which = 0; which < 2; ++which) {
         Shape s{ShapeKind::Poly};
-        s.poly = uint32_t(which);
+        s.index = uint32_t(which);
         int hits = 0;
         for (int k = 0; k < 2000; ++k) {
             const Ray r = random_ray(g);
             Span a[kMaxShapeSpans], b[kMaxShapeSpans];
-            const int na = shape_spans(s, r, a, polys), nb = shape_spans(same[which], r, b);
+            const int na = shape_spans(s, r, a, {polys}), nb = shape_spans(same[which], r, b);
             ASSERT_EQ(na, nb) << "shape " << which << " ray " << k;
             hits += na > 0;
             for (int i = 0; i < na; ++i) {
@@ -152,11 +152,11 @@ TEST(Poly, SpansFollowTheSignOfUnboundedSurfaces) {
     std::mt19937 g(12);
     for (uint32_t which = 0; which < std::size(polys); ++which) {
         Shape s{ShapeKind::Poly};
-        s.poly = which;
+        s.index = which;
         for (int k = 0; k < 300; ++k) {
             const Ray r = random_ray(g);
             Span sp[kMaxShapeSpans];
-            const int n = shape_spans(s, r, sp, polys);
+            const int n = shape_spans(s, r, sp, {polys});
             for (int i = 0; i + 1 < n; ++i) EXPECT_LT(sp[i].t1, sp[i + 1].t0);
             for (float t = -4.0f; t <= 4.0f; t += 0.01f) {
                 const Vec3 p = ray_at(r, t);
@@ -184,19 +184,19 @@ TEST(Poly, RaysAlongAnInfiniteCylinder) {
     Shape s{ShapeKind::Poly};
     Span sp[kMaxShapeSpans];
     Ray inside{Vec3(0.2f, 0.1f, -5), 0, Vec3(0, 0, 1), 1e30f};
-    ASSERT_EQ(shape_spans(s, inside, sp, &cyl), 1); // inside all along
+    ASSERT_EQ(shape_spans(s, inside, sp, {&cyl}), 1); // inside all along
     EXPECT_EQ(sp[0].t0, -FLT_MAX);
     EXPECT_EQ(sp[0].t1, FLT_MAX);
     Ray outside{Vec3(2, 0, -5), 0, Vec3(0, 0, 1), 1e30f};
-    EXPECT_EQ(shape_spans(s, outside, sp, &cyl), 0);
+    EXPECT_EQ(shape_spans(s, outside, sp, {&cyl}), 0);
     Ray across{Vec3(-3, 0, 7), 0, Vec3(1, 0, 0), 1e30f};
-    ASSERT_EQ(shape_spans(s, across, sp, &cyl), 1);
+    ASSERT_EQ(shape_spans(s, across, sp, {&cyl}), 1);
     EXPECT_NEAR(sp[0].t0, 2.0f, 1e-6f);
     EXPECT_NEAR(sp[0].t1, 4.0f, 1e-6f);
     EXPECT_GT(dot(normalize(sp[0].n0), Vec3(-1, 0, 0)), 0.9999f);
     // Nearly along the axis: the far crossings are found, not lost to rounding.
     Ray slant{Vec3(0, 0, 0), 0, normalize(Vec3(1e-4f, 0, 1)), 1e30f};
-    ASSERT_EQ(shape_spans(s, slant, sp, &cyl), 1);
+    ASSERT_EQ(shape_spans(s, slant, sp, {&cyl}), 1);
     EXPECT_NEAR(sp[0].t1, 1e4f, 1.0f);
     // Without coefficients a poly shape is never hit.
     EXPECT_EQ(shape_spans(s, across, sp), 0);

@@ -10,11 +10,14 @@
 //   plane     the half-space z <= 0 (unbounded)
 //   torus     major radius 1 around z in the plane z = 0, minor radius r
 //   poly      P(x, y, z) < 0 for a polynomial of degree <= 4 (core/geometry/poly.h), whose
-//             coefficients the scene keeps apart: Shape::poly indexes them
+//             coefficients the scene keeps apart: Shape::index names them
 //   superellipsoid  POV-Ray's, exponents e = a and n = b, inside [-1, 1]^3
 //             (core/geometry/superellipsoid.h)
+//   glyph     a character's outline in the x-y plane swept from z = 0 to z = 1
+//             (core/geometry/glyph.h); the scene keeps the outlines: Shape::index names one
 #pragma once
 
+#include "core/geometry/glyph.h"
 #include "core/geometry/poly.h"
 #include "core/geometry/ray.h"
 #include "core/geometry/superellipsoid.h"
@@ -34,7 +37,8 @@ enum class ShapeKind : uint32_t {
     Plane,
     Torus,
     Poly,
-    Superellipsoid
+    Superellipsoid,
+    Glyph
 };
 
 struct Shape {
@@ -42,7 +46,16 @@ struct Shape {
     float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius;
                         // superellipsoid: e, n
     bool open = false;  // cylinder and cone without caps
-    uint32_t poly = 0;  // poly: index of its coefficients in the prepared scene's polys
+    uint32_t index = 0; // poly: its coefficients in the scene's polys; glyph: its outline in
+                        // the scene's glyphs
+};
+
+/// What shapes of some kinds read from the scene beside their Shape: poly coefficients and
+/// glyph outlines. A table a scene lacks is null, and its shapes then have no spans.
+struct ShapeTables {
+    const PolyCoeffs* polys = nullptr;
+    const GlyphRef* glyphs = nullptr;
+    const GlyphSegment* glyph_segments = nullptr;
 };
 
 /// One span [t0, t1] of a ray inside a solid, with the local normals at both ends (pointing
@@ -209,12 +222,21 @@ SHEAF_HD_NOINLINE int superellipsoid_spans(const Shape& s, const Ray& r, Span* o
     return count;
 }
 
+SHEAF_HD_INLINE int glyph_spans(const GlyphRef& g, const GlyphSegment* segs, const Ray& r,
+                                Span* out) {
+    double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
+    Vec3 n0[kMaxShapeSpans], n1[kMaxShapeSpans];
+    const int count = glyph_pieces(g, segs, r, t0, t1, n0, n1, kMaxShapeSpans);
+    for (int i = 0; i < count; ++i) out[i] = Span{float(t0[i]), float(t1[i]), n0[i], n1[i]};
+    return count;
+}
+
 } // namespace shape_detail
 
-/// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `polys` holds
-/// the coefficients of poly shapes (none without them).
+/// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `tables` holds
+/// what poly and glyph shapes read (without it they have no spans).
 SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
-                                const PolyCoeffs* polys = nullptr) {
+                                const ShapeTables& tables = {}) {
     using namespace shape_detail;
     const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
     const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
@@ -318,9 +340,12 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
         return n;
     }
     case ShapeKind::Poly:
-        return polys ? poly_spans(polys[s.poly], r, out) : 0;
+        return tables.polys ? poly_spans(tables.polys[s.index], r, out) : 0;
     case ShapeKind::Superellipsoid:
         return superellipsoid_spans(s, r, out);
+    case ShapeKind::Glyph:
+        return tables.glyphs ? glyph_spans(tables.glyphs[s.index], tables.glyph_segments, r, out)
+                             : 0;
     }
     return 0;
 }

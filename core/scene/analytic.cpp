@@ -14,7 +14,7 @@ PlacedShape place_shape(const Shape& shape, const Affine& local_to_world) {
 
 namespace {
 
-Sphere local_bound(const Shape& s) {
+Sphere local_bound(const PreparedScene& scene, const Shape& s) {
     switch (s.kind) {
     case ShapeKind::Sphere:
         return {Vec3(0.0f), 1.0f};
@@ -36,6 +36,11 @@ Sphere local_bound(const Shape& s) {
         return {Vec3(0.0f), INFINITY};
     case ShapeKind::Superellipsoid:
         return {Vec3(0.0f), std::sqrt(3.0f)};
+    case ShapeKind::Glyph: { // around its box, z from 0 to 1
+        const GlyphRef& g = scene.glyphs[s.index];
+        const Vec3 lo(g.lo_x, g.lo_y, 0), hi(g.hi_x, g.hi_y, 1);
+        return {(lo + hi) * 0.5f, length(hi - lo) * 0.5f};
+    }
     }
     return {Vec3(0.0f), INFINITY};
 }
@@ -47,7 +52,7 @@ Sphere csg_bound(const PreparedScene& scene, uint32_t node) {
     if (n.inverse) return {Vec3(0.0f), INFINITY};
     if (n.op == CsgOp::Leaf) {
         const PlacedShape& ps = scene.shapes[n.first];
-        const Sphere l = local_bound(ps.shape);
+        const Sphere l = local_bound(scene, ps.shape);
         if (!std::isfinite(l.radius)) return l;
         const Affine to_world = ps.to_local.inverse();
         const Vec3 c = to_world.point(l.center);

@@ -70,7 +70,7 @@ SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const 
     if (n.op == CsgOp::Leaf) {
         const PlacedShape& ps = scene.shapes[n.first];
         Span spans[kMaxShapeSpans];
-        const int count = shape_spans(ps.shape, to_local_ray(ps, ray), spans, scene.polys);
+        const int count = shape_spans(ps.shape, to_local_ray(ps, ray), spans, scene.shape_tables());
         for (int i = 0; i < count; ++i)
             out.push({CsgEnd{spans[i].t0, n.first, spans[i].n0, false},
                       CsgEnd{spans[i].t1, n.first, spans[i].n1, false}});

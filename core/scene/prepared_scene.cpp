@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
+#include <map>
 #include <utility>
 
 namespace sheaf {
@@ -17,6 +19,30 @@ namespace {
 // Puts triangles [b, e) of one object in the Morton order of their centroids within the
 // object's box (ties in the mesh's order), so that runs of consecutive primitives are compact
 // whatever order the mesh came in: cull.cluster culls such runs (core/rsh/cull_units.h).
+/// The index of outline `g` among p.glyphs, added on its first use (a text's repeated
+/// characters share one outline).
+uint32_t glyph_index(PreparedScene& p, const GlyphOutline& g,
+                     std::map<const GlyphOutline*, uint32_t>& seen) {
+    const auto found = seen.find(&g);
+    if (found != seen.end()) return found->second;
+    GlyphRef r;
+    r.first = uint32_t(p.glyph_segments.size());
+    r.count = uint32_t(g.segments.size());
+    r.lo_x = r.lo_y = FLT_MAX, r.hi_x = r.hi_y = -FLT_MAX;
+    for (const GlyphSegment& s : g.segments) {
+        for (float x : {s.x0, s.x1, s.x2})
+            r.lo_x = std::fmin(r.lo_x, x), r.hi_x = std::fmax(r.hi_x, x);
+        for (float y : {s.y0, s.y1, s.y2})
+            r.lo_y = std::fmin(r.lo_y, y), r.hi_y = std::fmax(r.hi_y, y);
+        p.glyph_segments.push_back(s);
+    }
+    if (g.segments.empty()) r.lo_x = r.lo_y = r.hi_x = r.hi_y = 0;
+    const uint32_t index = uint32_t(p.glyphs.size());
+    p.glyphs.push_back(r);
+    seen.emplace(&g, index);
+    return index;
+}
+
 void spatial_order(PreparedScene& p, size_t b, size_t e) {
     if (e - b < 3) return;
     auto centroid = [&](size_t i) {
@@ -130,6 +156,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_name.push_back(obj.name);
     }
     // Analytic objects: one primitive each, its CSG tree flattened into the scene's arrays.
+    std::map<const GlyphOutline*, uint32_t> glyphs_seen;
     for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
         const ShapeObject& obj = scene.shape_objects[so];
         const uint32_t base = uint32_t(p.csg.size());
@@ -146,9 +173,11 @@ PreparedScene prepare_scene(const Scene& scene) {
                 out.count = 0;
                 Shape shape = node.shape;
                 if (shape.kind == ShapeKind::Poly) {
-                    shape.poly = uint32_t(p.polys.size());
+                    shape.index = uint32_t(p.polys.size());
                     p.polys.push_back(*node.poly);
                 }
+                if (shape.kind == ShapeKind::Glyph)
+                    shape.index = glyph_index(p, *node.glyph, glyphs_seen);
                 p.shapes.push_back(place_shape(shape, obj.transform * node.transform));
                 p.shape_material.push_back(node.material);
                 if (!have_material) first_material = node.material, have_material = true;

@@ -58,7 +58,9 @@ struct PreparedScene {
     std::vector<std::string> object_name;
 
     std::vector<PlacedShape> shapes;      // every leaf of every analytic object
-    std::vector<PolyCoeffs> polys;        // of the poly leaves, indexed by Shape::poly
+    std::vector<PolyCoeffs> polys;        // of the poly leaves, indexed by Shape::index
+    std::vector<GlyphRef> glyphs;         // of the glyph leaves, indexed by Shape::index
+    std::vector<GlyphSegment> glyph_segments; // the glyphs' outlines
     std::vector<uint32_t> shape_material; // per placed shape
     std::vector<PreparedCsgNode> csg;
     std::vector<uint32_t> csg_children;

@@ -139,6 +139,16 @@ void Scene::validate() const {
                     if (poly_is_zero(*node.poly))
                         throw SceneError(name + ": a poly shape whose coefficients are all zero");
                 }
+                if (s.kind == ShapeKind::Glyph) {
+                    if (!node.glyph) throw SceneError(name + ": a glyph shape without an outline");
+                    if (node.glyph->segments.size() > kMaxGlyphSegments)
+                        throw SceneError(name + ": a glyph of more than " +
+                                         std::to_string(kMaxGlyphSegments) + " segments");
+                    for (const GlyphSegment& g : node.glyph->segments)
+                        for (float v : {g.x0, g.y0, g.x1, g.y1, g.x2, g.y2})
+                            if (!std::isfinite(v))
+                                throw SceneError(name + ": a glyph's outline is not finite");
+                }
                 if (!node.transform.finite())
                     throw SceneError(name + ": a shape's transform is not finite");
                 if (!(std::fabs(node.transform.determinant()) >= 1e-20f))

@@ -130,7 +130,8 @@ enum class CsgOp : uint8_t { Leaf, Union, Merge, Intersection, Difference, Clip 
 struct CsgNode {
     CsgOp op = CsgOp::Leaf;
     Shape shape;           // leaf
-    std::shared_ptr<const PolyCoeffs> poly; // leaf of kind Poly: its coefficients
+    std::shared_ptr<const PolyCoeffs> poly;    // leaf of kind Poly: its coefficients
+    std::shared_ptr<const GlyphOutline> glyph; // leaf of kind Glyph: its outline
     Affine transform;      // leaf: shape space -> object space
     uint32_t material = 0; // leaf
     bool inverse = false;

@@ -29,6 +29,8 @@ struct SceneView {
 
     const PlacedShape* shapes = nullptr;
     const PolyCoeffs* polys = nullptr;
+    const GlyphRef* glyphs = nullptr;
+    const GlyphSegment* glyph_segments = nullptr;
     const uint32_t* shape_material = nullptr;
     const PreparedCsgNode* csg = nullptr;
     const uint32_t* csg_children = nullptr;
@@ -61,7 +63,8 @@ struct SceneView {
           prim_flags(p.prim_flags.data()), prim_flag_count(uint32_t(p.prim_flags.size())),
           object_begin(p.object_begin.data()), object_sphere(p.object_sphere.data()),
           object_material(p.object_material.data()), object_count(uint32_t(p.object_sphere.size())),
-          shapes(p.shapes.data()), polys(p.polys.data()), shape_material(p.shape_material.data()),
+          shapes(p.shapes.data()), polys(p.polys.data()), glyphs(p.glyphs.data()),
+          glyph_segments(p.glyph_segments.data()), shape_material(p.shape_material.data()),
           csg(p.csg.data()), csg_children(p.csg_children.data()),
           analytic_root(p.analytic_root.data()), materials(p.materials.data()),
           pigments(p.pigments.data()), pigment_entries(p.pigment_entries.data()),
@@ -70,6 +73,8 @@ struct SceneView {
           lights(p.lights.data()), light_count(uint32_t(p.lights.size())), background(p.background),
           textures(p.textures.data()), sampler(p.sampler.get()) {}
 
+    /// What poly and glyph shapes read beside their Shape.
+    SHEAF_HD ShapeTables shape_tables() const { return {polys, glyphs, glyph_segments}; }
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
     SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }
     /// Whether primitive `prim`'s object has ObjectFlag `flag` (or kPrimMayPass).

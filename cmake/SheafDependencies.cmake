@@ -48,6 +48,9 @@ if(SHEAF_BUILD_BENCHMARKS)
   sheaf_find(benchmark REQUIRED)
 endif()
 sheaf_find(CLI11 REQUIRED)
+# Fonts for the text object (io/font): glyph outlines, advances and kerning (Debian:
+# libfreetype-dev, which OpenImageIO's own package already pulls in).
+sheaf_find(Freetype REQUIRED)
 
 # Debian's package configs name include directories that do not exist: OpenImageIO lists
 # /usr/include/opencv4 even without OpenCV's headers, and OpenColorIO's config, installed in

@@ -122,6 +122,7 @@ struct Builder {
             n.op = CsgOp::Leaf;
             n.shape = o.shape;
             n.poly = o.poly;
+            n.glyph = o.glyph;
             n.transform = o.local;
             n.material = material(tex, in);
             n.inverse = o.inverse;

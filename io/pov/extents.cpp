@@ -53,6 +53,16 @@ Box shape_box(const PovObject& o) {
     case ShapeKind::Plane:
     case ShapeKind::Poly:
         return unbounded();
+    case ShapeKind::Glyph: { // its outline's control points, z from 0 to 1
+        Vec3 lo(kHuge), hi(-kHuge);
+        if (o.glyph)
+            for (const GlyphSegment& g : o.glyph->segments)
+                for (int i = 0; i < 3; ++i) {
+                    const float* p = &g.x0 + 2 * i;
+                    lo = vmin(lo, Vec3(p[0], p[1], 0)), hi = vmax(hi, Vec3(p[0], p[1], 1));
+                }
+        return lo.x <= hi.x ? transformed(o.local, lo, hi) : Box();
+    }
     }
     return unbounded();
 }

@@ -140,7 +140,8 @@ enum class PovKind { Shape, Mesh, Csg, Light };
 struct PovObject {
     PovKind kind = PovKind::Shape;
     Shape shape;
-    std::shared_ptr<const PolyCoeffs> poly; // shape of kind Poly: its coefficients
+    std::shared_ptr<const PolyCoeffs> poly;    // shape of kind Poly: its coefficients
+    std::shared_ptr<const GlyphOutline> glyph; // shape of kind Glyph: its outline
     std::shared_ptr<const Mesh> mesh;
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;

@@ -18,15 +18,15 @@ const std::set<std::string>& supported_objects() {
         "sphere",      "box",      "cylinder",        "cone",       "disc",   "plane",
         "torus",       "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
         "union",       "merge",    "intersection",    "difference", "object", "light_source",
-        "light_group", "quadric",  "cubic",           "quartic",    "poly",   "superellipsoid"};
+        "light_group", "quadric",  "cubic",           "quartic",    "poly",   "superellipsoid",
+        "text"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
     static const std::set<std::string> s = {
-        "blob",          "height_field", "isosurface",   "julia_fractal", "lathe",
-        "prism",         "sor",          "sphere_sweep", "text",          "parametric",
-        "bicubic_patch", "polynomial",   "ovus",         "lemon"};
+        "blob",         "height_field", "isosurface",    "julia_fractal", "lathe", "prism", "sor",
+        "sphere_sweep", "parametric",   "bicubic_patch", "polynomial",    "ovus",  "lemon"};
     return s;
 }
 
@@ -107,6 +107,10 @@ bool Parser::parse_object(PovObject& o) {
         return true;
     }
     if (k == "quadric" || k == "cubic" || k == "quartic" || k == "poly") return parse_poly(kw, o);
+    if (k == "text") {
+        parse_text(kw, o);
+        return true;
+    }
     parse_shape(kw, o);
     return true;
 }

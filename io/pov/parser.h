@@ -4,6 +4,7 @@
 // (textures.cpp), camera, lights and settings (camera_lights.cpp). One instance reads one scene.
 #pragma once
 
+#include "io/font/font.h"
 #include "io/pov/function.h"
 #include "io/pov/lexer.h"
 #include "io/pov/model.h"
@@ -215,6 +216,9 @@ class Parser {
     /// '<' exactly `count` float coefficients '>'.
     std::vector<double> parse_coefficients(const Token& kw, size_t count);
     void parse_csg(const Token& kw, PovObject& o);
+    /// text { ttf FONT STRING THICKNESS, OFFSET modifiers }: a union of glyph shapes.
+    void parse_text(const Token& kw, PovObject& o);
+    std::map<std::string, std::shared_ptr<Font>> fonts_; // by resolved path
     void parse_triangle(const Token& kw, PovObject& o, bool smooth);
     void parse_mesh(const Token& kw, PovObject& o);
     void parse_mesh2(const Token& kw, PovObject& o);

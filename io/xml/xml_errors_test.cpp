@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 namespace sheaf {
 namespace {
 
@@ -98,6 +100,38 @@ TEST(XmlErrors, PolyLoadsInPovRaysTermOrder) {
     EXPECT_EQ(n.poly->c[poly_term(0, 0, 2)], 1);
     EXPECT_EQ(n.poly->c[poly_term(0, 0, 0)], -1);
     EXPECT_NO_THROW(s.validate());
+}
+
+TEST(XmlErrors, TextIsAUnionOfGlyphsInItsFont) {
+    const std::string font = "/usr/share/povray-3.7/include/timrom.ttf";
+    EXPECT_ERROR("<scene><text string=\"A\"/></scene>", "1:8", "'font'");
+    EXPECT_ERROR("<scene>\n <text font=\"missing.ttf\" string=\"A\"/></scene>", "2:14",
+                 "cannot read font 'missing.ttf': cannot open resource");
+    if (!std::filesystem::exists(font)) GTEST_SKIP() << "povray-includes is not installed";
+    // Relative to the scene's folder; timrom's "I" and "A" (POV-Ray's metrics: the first
+    // character's ink at x = 0, kerning), extruded from z = 0 to the thickness.
+    const io::SceneFile f = io::parse_xml_scene(
+        "<scene><text font=\"timrom.ttf\" string=\"I A\" thickness=\"0.25\" offset=\"0 0.5 0\">"
+        "<translate value=\"1 0 0\"/></text></scene>",
+        "/usr/share/povray-3.7/include/scene.xml");
+    const Scene& s = f.scene;
+    ASSERT_EQ(s.shape_objects.size(), 1u);
+    const ShapeObject& o = s.shape_objects[0];
+    ASSERT_EQ(o.nodes.size(), 3u);
+    EXPECT_EQ(o.nodes[0].op, CsgOp::Union);
+    ASSERT_EQ(o.nodes[1].shape.kind, ShapeKind::Glyph);
+    ASSERT_TRUE(o.nodes[1].glyph);
+    const Vec3 a = o.transform.point(o.nodes[2].transform.point({0, 0, 1}));
+    EXPECT_NEAR(a.x, 1 - 0.023f + 0.342f + 0.254f, 1e-5);
+    EXPECT_NEAR(a.y, 1.0f, 1e-6); // two offsets: after the I and after the space
+    EXPECT_NEAR(a.z, 0.25f, 1e-6);
+    EXPECT_NO_THROW(s.validate());
+    const std::string at = "<scene><text font=\"" + font + "\" ";
+    EXPECT_ERROR(at + "string=\"A\" thickness=\"0\"/></scene>",
+                 "1:" + std::to_string(at.size() + 23),
+                 "thickness must be a finite number other than 0");
+    EXPECT_ERROR(at + "string=\" \"/></scene>", "1:" + std::to_string(at.size() + 9),
+                 "no visible character");
 }
 
 TEST(XmlErrors, ReferencesMustBeDefinedFirstAndOnce) {

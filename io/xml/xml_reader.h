@@ -8,6 +8,7 @@
 
 #include "core/math/affine.h"
 #include "core/scene/scene.h"
+#include "io/font/font.h"
 #include "io/xml/xml_context.h"
 
 #include <map>
@@ -30,6 +31,7 @@ class SceneReader {
         ptrdiff_t offset;
     };
     using NameTable = std::map<std::string, Named, std::less<>>;
+    std::map<std::string, std::shared_ptr<Font>> fonts_; // <text>'s fonts, by resolved path
 
     // xml_reader.cpp
     void define(NameTable& table, const char* kind, const std::string& name,

@@ -1,7 +1,8 @@
 // Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus>, <poly>,
-// <superellipsoid> and <union>, <merge>, <intersection>, <difference> over them. The geometric
-// attributes (centre, radius, base and cap, ...) become the transform from the core's canonical
-// shape (core/geometry/shape.h); transform elements then place the node.
+// <superellipsoid>, <text> and <union>, <merge>, <intersection>, <difference> over them. The
+// geometric attributes (centre, radius, base and cap, ...) become the transform from the core's
+// canonical shape (core/geometry/shape.h); transform elements then place the node. A <text> is
+// a union of glyph shapes, one per character with ink, laid out by io/font.
 #include "io/xml/xml_reader.h"
 
 #include <cmath>
@@ -12,8 +13,8 @@ namespace {
 constexpr int kMaxCsgDepth = kMaxCsgNesting;
 
 const std::vector<std::string> kShapeElements = {
-    "sphere",         "box",   "cylinder", "cone",         "disc",      "plane", "torus", "poly",
-    "superellipsoid", "union", "merge",    "intersection", "difference"};
+    "sphere",         "box",  "cylinder", "cone",  "disc",         "plane",     "torus", "poly",
+    "superellipsoid", "text", "union",    "merge", "intersection", "difference"};
 
 /// The transform taking local z from `base` to `cap`, with local x and y scaled by `radius`.
 Affine axis_frame(Vec3 base, Vec3 cap, float radius) {
@@ -82,6 +83,7 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
     if (leaf) {
         Affine frame;
         Shape& s = n.shape;
+        std::vector<PlacedGlyph> glyphs; // <text>
         auto fail_attr = [&](const char* attr, const std::string& why) {
             ctx_.fail(node, node.attribute(attr), tag(node) + ": " + why);
         };
@@ -166,6 +168,29 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
             if (poly_is_zero(*poly)) fail_attr("coefficients", "every coefficient is zero");
             s.kind = ShapeKind::Poly;
             n.poly = std::move(poly);
+        } else if (kind == "text") {
+            std::string font_name, text;
+            float thickness = 1;
+            Vec3 offset(0);
+            a.require("font");
+            a.require("string");
+            a.get("font", font_name);
+            a.get("string", text);
+            a.get("thickness", thickness);
+            a.get("offset", offset);
+            if (!(std::isfinite(thickness) && thickness != 0))
+                fail_attr("thickness", "the thickness must be a finite number other than 0");
+            const std::string path = ctx_.resolve(font_name);
+            try {
+                std::shared_ptr<Font>& font = fonts_[path];
+                if (!font) font = std::make_shared<Font>(path);
+                glyphs = layout_text(*font, text, offset);
+            } catch (const FontError& e) {
+                fonts_.erase(path);
+                fail_attr("font", e.what());
+            }
+            if (glyphs.empty()) fail_attr("string", "the text has no visible character");
+            frame = Affine::scale(Vec3(1, 1, thickness));
         } else { // torus
             Vec3 centre;
             float major = 1, minor = 0.25f;
@@ -182,9 +207,25 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
         n.material = material_of(a, material);
         a.finish();
         read_children();
-        n.op = CsgOp::Leaf;
-        n.transform = top_level ? frame : placement * own * frame;
         if (top_level) o.transform = own;
+        const Affine place = top_level ? Affine{} : placement * own;
+        if (kind == "text") { // a union of its glyphs
+            n.op = CsgOp::Union;
+            o.nodes.push_back(n);
+            for (const PlacedGlyph& g : glyphs) {
+                CsgNode leaf_node;
+                leaf_node.op = CsgOp::Leaf;
+                leaf_node.shape.kind = ShapeKind::Glyph;
+                leaf_node.glyph = g.outline;
+                leaf_node.material = n.material;
+                leaf_node.transform = place * Affine::translate(g.position) * frame;
+                o.nodes[index].children.push_back(uint32_t(o.nodes.size()));
+                o.nodes.push_back(std::move(leaf_node));
+            }
+            return;
+        }
+        n.op = CsgOp::Leaf;
+        n.transform = place * frame;
         o.nodes.push_back(n);
         return;
     }

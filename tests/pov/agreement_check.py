@@ -38,6 +38,7 @@ SCENES = [
     ("examples/objects/quartic/piriform.pov", "exact"),
     ("examples/objects/superel3.pov", "exact"),
     ("scenes/surfaces.pov", "exact"),
+    ("scenes/text.pov", "exact"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

@@ -1,8 +1,10 @@
-// text { ttf FONT STRING THICKNESS, OFFSET }: POV-Ray's text object, one glyph shape per
-// character with ink (core/geometry/glyph.h), laid out by io/font: the em square 1 wide, the
+// text { ttf FONT | internal N, STRING THICKNESS, OFFSET }: POV-Ray's text object, one glyph shape
+// per character with ink (core/geometry/glyph.h), laid out by io/font: the em square 1 wide, the
 // baseline on y = 0, the first character's origin at the origin, extruded from z = 0 to
 // z = THICKNESS; each next character starts at the last one's advance plus OFFSET's x and y
-// (a float is <f, f, f>, as POV-Ray promotes it; POV-Ray ignores the z).
+// (a float is <f, f, f>, as POV-Ray promotes it; POV-Ray ignores the z). POV-Ray's internal
+// fonts 0 to 3 are its font files povlogo, timrom, cyrvetic and crystal (checked: the same
+// pictures).
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
@@ -14,10 +16,21 @@ namespace sheaf::io::pov {
 void Parser::parse_text(const Token& kw, PovObject& o) {
     expect_sym("{");
     const Token ttf = peek();
-    if (!is_kw_tok(ttf, "ttf")) error_expected(ttf, "'ttf' and the font file's name");
+    if (!is_kw_tok(ttf, "ttf") && !is_kw_tok(ttf, "internal"))
+        error_expected(ttf, "'ttf' and the font file's name, or 'internal' and a font number");
     next();
     const Token font_at = peek();
-    const std::string font_name = parse_string();
+    std::string font_name;
+    if (ttf.text == "internal") { // POV-Ray's built-in fonts: its own font files
+        const double n = parse_float();
+        static const char* const kInternal[] = {"povlogo.ttf", "timrom.ttf", "cyrvetic.ttf",
+                                                "crystal.ttf"};
+        if (!(n >= 0 && n <= 3) || n != std::floor(n))
+            error_at(font_at, "an internal font is a number from 0 to 3");
+        font_name = kInternal[int(n)];
+    } else {
+        font_name = parse_string();
+    }
     accept_sym(",");
     const Token text_at = peek();
     const std::string text = parse_string();

@@ -93,10 +93,22 @@ TEST(PovText, FontsAreFoundWithoutTheirExtensionAndModifiersApply) {
     EXPECT_NEAR(first_hit(r, {0.05f, o_top, -5}, {0, 0, 1}), 5.0f, 1e-5);
 }
 
+TEST(PovText, InternalFontsAreTheFontFilesPovRayShips) {
+    if (!have_fonts()) GTEST_SKIP() << "POV-Ray's fonts are not installed (povray-includes)";
+    const PovResult a = load_text("text { internal 1 \"AV\" 1, 0 }");
+    const PovResult b = load_text("text { ttf \"timrom.ttf\" \"AV\" 1, 0 }");
+    ASSERT_EQ(a.scene.shape_objects.size(), 2u);
+    EXPECT_EQ(a.scene.shape_objects[1].nodes[0].glyph->segments.size(),
+              b.scene.shape_objects[1].nodes[0].glyph->segments.size());
+    EXPECT_NEAR(glyph_origin(a, 1).x, glyph_origin(b, 1).x, 1e-7);
+}
+
 TEST(PovText, ErrorsNameTheirPlace) {
     EXPECT_EQ(error_of("text { \"timrom.ttf\" \"A\" 1, 0 }"),
               "scene.pov:1:8: error: found '\"timrom.ttf\"', expected 'ttf' and the font file's "
-              "name");
+              "name, or 'internal' and a font number");
+    EXPECT_EQ(error_of("text { internal 4 \"A\" 1, 0 }"),
+              "scene.pov:1:17: error: an internal font is a number from 0 to 3");
     const std::string missing = error_of("text { ttf \"nofont.ttf\" \"A\" 1, 0 }");
     EXPECT_EQ(missing.rfind("scene.pov:1:12: error: cannot find font 'nofont.ttf'", 0), 0u)
         << missing;

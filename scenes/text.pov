@@ -1,8 +1,9 @@
-// Text: TrueType glyphs extruded into solids (POV-Ray's text object) and used like any other
-// shape. A stone plaque with a word engraved in it (difference), a word in red glass standing
-// before it, and gold letters stepping up a stair of offsets. The fonts are POV-Ray's own
-// (Debian's povray-includes); the shadows and the polished floor show that secondary rays meet
-// the exact glyph outlines too.
+// Text and prisms: TrueType glyphs and spline outlines extruded into solids (POV-Ray's text
+// and prism objects) and used like any other shape. A stone plaque with a word engraved in it
+// (difference), a word in red glass standing before it, gold letters stepping up a stair of
+// offsets, and a rounded blue frame (a quadratic_spline prism whose inner contour is a hole).
+// The fonts are POV-Ray's own (Debian's povray-includes); the shadows and the polished floor
+// show that secondary rays meet the exact outlines too.
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 5 }
 
@@ -53,4 +54,16 @@ text {
   translate <0.6, 0, -2.3>
   pigment { color rgb <0.95, 0.7, 0.25> }
   finish { diffuse 0.5 specular 0.7 roughness 0.02 reflection 0.25 metallic }
+}
+
+// A rounded frame lying on the floor: two quadratic_spline contours, the inner one a hole.
+prism {
+  quadratic_spline
+  0, 0.15, 12,
+  <0, -1>, <1, 0>, <0, 1>, <-1, 0>, <0, -1>, <1, 0>,
+  <0, -0.55>, <0.55, 0>, <0, 0.55>, <-0.55, 0>, <0, -0.55>, <0.55, 0>
+  scale 0.55
+  translate <2.3, 0, -0.3>
+  pigment { color rgb <0.25, 0.45, 0.9> }
+  finish { diffuse 0.7 specular 0.5 roughness 0.02 }
 }

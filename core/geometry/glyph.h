@@ -1,6 +1,7 @@
-// An extruded glyph (one character of POV-Ray's text object): the region of the x-y plane that
-// a closed outline of quadratic Bézier segments encloses, by the nonzero winding rule (as
-// TrueType fills), swept from z = 0 to z = 1. Exact: a ray's line in the plane meets each
+// An extruded outline (one character of POV-Ray's text object, or a prism): the region of the
+// x-y plane that closed contours of quadratic Bézier segments enclose, by the nonzero winding
+// rule (as TrueType fills) or the even-odd rule (as POV-Ray fills a prism), swept from z = 0 to
+// z = 1; open, only its sides (a prism's `open`). Exact: a ray's line in the plane meets each
 // segment where a quadratic in the segment's parameter vanishes, and the winding number along
 // the line changes by one at each such crossing, so the pieces of the line inside the region
 // are where the running sum is not zero; those pieces, cut to the slab 0 <= z <= 1, are the
@@ -25,17 +26,48 @@ struct GlyphSegment {
 };
 
 /// A glyph of a prepared scene: segments [first, first + count) of the scene's glyph segments,
-/// and the box in the x-y plane that holds their control points.
+/// the box in the x-y plane that holds their control points, and its fill rule.
 struct GlyphRef {
     uint32_t first = 0, count = 0;
     float lo_x = 0, lo_y = 0, hi_x = 0, hi_y = 0;
+    uint32_t even_odd = 0; // 1: inside where the winding number is odd; 0: where it is not 0
 };
 
 /// A glyph's outline as the scene model holds it (host only): closed contours, each a chain of
 /// segments whose last end point is its first start point.
 struct GlyphOutline {
     std::vector<GlyphSegment> segments;
+    bool even_odd = false; // the fill rule: even-odd (a prism) or nonzero (a font's glyph)
 };
+
+/// A cubic Bézier from p0 to p3 (controls p1, p2) as `pieces` quadratic segments appended to
+/// `out`, each through the ends of its share of the cubic with the control point that matches
+/// its mean end tangent: exact for a cubic that is a quadratic, otherwise off by at most
+/// sqrt(3) / 36 |p0 - 3 p1 + 3 p2 - p3| / pieces^3 (measured: a cubic of size 1.4 with a third
+/// difference of 7.4 is 6.9e-4 away at 8 pieces, 8.6e-5 at 16).
+inline void cubic_to_quadratics(const double p[4][2], int pieces, std::vector<GlyphSegment>& out) {
+    auto at = [&](double t, int k) {
+        const double u = 1 - t;
+        return u * u * u * p[0][k] + 3 * u * u * t * p[1][k] + 3 * u * t * t * p[2][k] +
+               t * t * t * p[3][k];
+    };
+    auto slope = [&](double t, int k) {
+        const double u = 1 - t;
+        return 3 * (u * u * (p[1][k] - p[0][k]) + 2 * u * t * (p[2][k] - p[1][k]) +
+                    t * t * (p[3][k] - p[2][k]));
+    };
+    for (int i = 0; i < pieces; ++i) {
+        const double t0 = double(i) / pieces, t1 = double(i + 1) / pieces, h = t1 - t0;
+        double c[2];
+        for (int k = 0; k < 2; ++k)
+            c[k] = 0.5 * ((at(t0, k) + slope(t0, k) * h / 2) + (at(t1, k) - slope(t1, k) * h / 2));
+        // The ends exactly where the cubic's are, so that contours stay closed.
+        const double x0 = i == 0 ? p[0][0] : at(t0, 0), y0 = i == 0 ? p[0][1] : at(t0, 1);
+        const double x1 = i + 1 == pieces ? p[3][0] : at(t1, 0);
+        const double y1 = i + 1 == pieces ? p[3][1] : at(t1, 1);
+        out.push_back({float(x0), float(y0), float(c[0]), float(c[1]), float(x1), float(y1)});
+    }
+}
 
 /// The most segments one glyph may have (a font's glyphs have tens to a few hundred).
 constexpr size_t kMaxGlyphSegments = 1 << 16;
@@ -125,12 +157,12 @@ SHEAF_HD_INLINE int crossings(const GlyphSegment* segs, uint32_t count, double o
 }
 
 /// Whether (x, y) lies in the glyph (on its outline counts as in); `xs` is scratch space.
-SHEAF_HD_INLINE bool contains(const GlyphSegment* segs, uint32_t count, double x, double y,
-                              Crossing* xs) {
+SHEAF_HD_INLINE bool contains(const GlyphSegment* segs, uint32_t count, uint32_t even_odd, double x,
+                              double y, Crossing* xs) {
     const int n = crossings(segs, count, x, y, 1, 0, xs);
     int w = 0;
     for (int i = 0; i < n && xs[i].t < 0; ++i) w += xs[i].delta;
-    if (w != 0) return true;
+    if ((w & (even_odd ? 1 : -1)) != 0) return true;
     for (int i = 0; i < n; ++i)
         if (xs[i].t == 0) return true;
     return false;
@@ -153,10 +185,12 @@ SHEAF_HD_INLINE bool clip_slab(double o, double d, double lo_b, double hi_b, dou
 } // namespace glyph_detail
 
 /// The pieces of the local ray inside the extruded glyph, sorted, at most `max`: piece i is
-/// [t0[i], t1[i]] with outward normals n0[i], n1[i] at its ends. Out of line on the device, so
-/// that CSG's per-level frame does not carry the crossing list.
-SHEAF_HD_NOINLINE int glyph_pieces(const GlyphRef& g, const GlyphSegment* segs, const Ray& r,
-                                   double* t0, double* t1, Vec3* n0, Vec3* n1, int max) {
+/// [t0[i], t1[i]] with outward normals n0[i], n1[i] at its ends. `open`: the sides only, each
+/// crossing inside the slab a piece of zero length facing the ray. Out of line on the device,
+/// so that CSG's per-level frame does not carry the crossing list.
+SHEAF_HD_NOINLINE int glyph_pieces(const GlyphRef& g, const GlyphSegment* segs, bool open,
+                                   const Ray& r, double* t0, double* t1, Vec3* n0, Vec3* n1,
+                                   int max) {
     using namespace glyph_detail;
     const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
     const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
@@ -182,22 +216,33 @@ SHEAF_HD_NOINLINE int glyph_pieces(const GlyphRef& g, const GlyphSegment* segs, 
     const double len2 = dx * dx + dy * dy;
     Crossing xs[kMaxGlyphCrossings];
     if (len2 <= 1e-24 * dz * dz) { // along z: in or out all the way through
-        if (max < 1 || !contains(s, g.count, ox, oy, xs)) return 0;
+        if (open || max < 1 || !contains(s, g.count, g.even_odd, ox, oy, xs)) return 0;
         t0[0] = z0, t1[0] = z1, n0[0] = zn0, n1[0] = zn1;
         return 1;
     }
     const int nx = crossings(s, g.count, ox, oy, dx, dy, xs);
     int count = 0, w = 0;
+    if (open) {
+        for (int i = 0; i < nx && count < max; ++i) {
+            if (xs[i].t < z0 || xs[i].t > z1) continue;
+            Vec3 n(xs[i].nx, xs[i].ny, 0);
+            if (dot(n, side_dir) > 0) n = -n;
+            t0[count] = t1[count] = xs[i].t, n0[count] = n1[count] = n;
+            ++count;
+        }
+        return count;
+    }
+    const int mask = g.even_odd ? 1 : -1; // the winding numbers that are inside: w & mask
     double enter = 0;
     Vec3 enter_n;
     for (int i = 0; i < nx && count < max; ++i) {
         const int before = w;
         w += xs[i].delta;
         Vec3 n(xs[i].nx, xs[i].ny, 0);
-        if (before == 0 && w != 0) {
+        if ((before & mask) == 0 && (w & mask) != 0) {
             enter = xs[i].t;
             enter_n = dot(n, side_dir) > 0 ? -n : n;
-        } else if (before != 0 && w == 0) {
+        } else if ((before & mask) != 0 && (w & mask) == 0) {
             if (dot(n, side_dir) < 0) n = -n;
             const double a = enter > z0 ? enter : z0, b = xs[i].t < z1 ? xs[i].t : z1;
             if (a <= b) {

@@ -44,8 +44,9 @@ struct Glyphs {
         }
     }
     /// Ends the glyph begun after the last finish().
-    uint32_t finish() {
+    uint32_t finish(bool even_odd = false) {
         GlyphRef r;
+        r.even_odd = even_odd ? 1 : 0;
         r.first = refs.empty() ? 0 : refs.back().first + refs.back().count;
         r.count = uint32_t(segments.size()) - r.first;
         r.lo_x = r.lo_y = 1e30f, r.hi_x = r.hi_y = -1e30f;
@@ -87,7 +88,8 @@ struct Glyphs {
         return w;
     }
     bool inside(uint32_t glyph, Vec3 p) const {
-        return p.z >= 0 && p.z <= 1 && winding(glyph, p.x, p.y) != 0;
+        const int w = winding(glyph, p.x, p.y);
+        return p.z >= 0 && p.z <= 1 && (refs[glyph].even_odd ? (w & 1) != 0 : w != 0);
     }
 };
 
@@ -205,6 +207,91 @@ TEST(Glyph, HolesOverlapsAndCurvesAgreeWithTheWindingNumber) {
     ASSERT_EQ(shape_spans(glyph_shape(overlap), ray({0.45f, 0.45f, 2}, {0, 0, -1}), sp, g.tables()),
               1);
     EXPECT_EQ(sp[0].n0.z, 1);
+}
+
+TEST(Glyph, EvenOddFillsWhatOverlapsTwiceAsAHole) {
+    // POV-Ray's prism: a square inside a square, both the same way round, is a hole; the same
+    // overlapping squares as above leave their overlap out.
+    Glyphs g;
+    g.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+    g.polygon({{0.25f, 0.25f}, {0.75f, 0.25f}, {0.75f, 0.75f}, {0.25f, 0.75f}});
+    const uint32_t frame = g.finish(true);
+    g.polygon({{0, 0}, {0.6f, 0}, {0.6f, 0.6f}, {0, 0.6f}});
+    g.polygon({{0.3f, 0.3f}, {0.9f, 0.3f}, {0.9f, 0.9f}, {0.3f, 0.9f}});
+    const uint32_t overlap = g.finish(true);
+    g.circle(0.5f, 0.5f, 0.5f, 8);
+    g.circle(0.5f, 0.5f, 0.3f, 8);
+    const uint32_t ring = g.finish(true); // both circles counter-clockwise: still a ring
+    Span sp[kMaxShapeSpans];
+    ASSERT_EQ(shape_spans(glyph_shape(frame), ray({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
+    EXPECT_NEAR(sp[0].t1, 1.25f, 1e-6f);
+    EXPECT_NEAR(sp[1].t0, 1.75f, 1e-6f);
+    EXPECT_EQ(shape_spans(glyph_shape(frame), ray({0.5f, 0.5f, -1}, {0, 0, 1}), sp, g.tables()), 0);
+    EXPECT_EQ(shape_spans(glyph_shape(overlap), ray({0.45f, 0.45f, -1}, {0, 0, 1}), sp, g.tables()),
+              0);
+    check_against_reference(g, frame, 21, 200);
+    check_against_reference(g, overlap, 22, 200);
+    check_against_reference(g, ring, 23, 200);
+}
+
+TEST(Glyph, OpenShowsOnlyTheSides) {
+    Glyphs g;
+    g.polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+    const uint32_t sq = g.finish(true);
+    Shape open = glyph_shape(sq);
+    open.open = true;
+    Span sp[kMaxShapeSpans];
+    // Across: both walls, each a surface facing the ray.
+    ASSERT_EQ(shape_spans(open, ray({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
+    EXPECT_NEAR(sp[0].t0, 1, 1e-6f);
+    EXPECT_EQ(sp[0].t0, sp[0].t1);
+    EXPECT_NEAR(sp[1].t0, 2, 1e-6f);
+    EXPECT_LT(normalize(sp[0].n0).x, -0.999f);
+    EXPECT_LT(normalize(sp[1].n0).x, -0.999f);
+    // Down through the open top: nothing; from above at a slant: the far wall only.
+    EXPECT_EQ(shape_spans(open, ray({0.5f, 0.5f, 2}, {0, 0, -1}), sp, g.tables()), 0);
+    const float k = float(1 / std::sqrt(2.0));
+    ASSERT_EQ(shape_spans(open, ray({0.5f, 0.5f, 1.2f}, {k, 0, -k}), sp, g.tables()), 1);
+    EXPECT_NEAR(sp[0].t0, 0.5f * std::sqrt(2.0f), 1e-5f);
+}
+
+TEST(Glyph, CubicsBecomeCloseQuadratics) {
+    // A wiggly cubic (its third difference 7.4 against a size of about 1.4): the distance from
+    // each quadratic piece to the cubic falls with the cube of the number of pieces.
+    const double p[4][2] = {{0, 0}, {0.2, 1.5}, {1.3, -0.5}, {1, 1}};
+    auto cubic = [&](double t, double& x, double& y) {
+        const double v = 1 - t;
+        x = v * v * v * p[0][0] + 3 * v * v * t * p[1][0] + 3 * v * t * t * p[2][0] +
+            t * t * t * p[3][0];
+        y = v * v * v * p[0][1] + 3 * v * v * t * p[1][1] + 3 * v * t * t * p[2][1] +
+            t * t * t * p[3][1];
+    };
+    for (const auto& [pieces, limit] : {std::pair{8, 7e-4}, std::pair{16, 9e-5}}) {
+        std::vector<GlyphSegment> q;
+        cubic_to_quadratics(p, pieces, q);
+        ASSERT_EQ(q.size(), size_t(pieces));
+        EXPECT_EQ(q.front().x0, 0.0f);
+        EXPECT_EQ(q.back().x2, 1.0f);
+        EXPECT_EQ(q.back().y2, 1.0f);
+        double worst = 0;
+        for (int i = 0; i < pieces; ++i) {
+            if (i + 1 < pieces) EXPECT_EQ(q[i].x2, q[i + 1].x0); // chained
+            for (int k = 0; k <= 20; ++k) { // the nearest point of the cubic to each sample
+                const double s = k / 20.0, u = 1 - s;
+                const double qx = u * u * q[i].x0 + 2 * s * u * q[i].x1 + s * s * q[i].x2;
+                const double qy = u * u * q[i].y0 + 2 * s * u * q[i].y1 + s * s * q[i].y2;
+                double nearest = 1e30;
+                for (int j = -400; j <= 400; ++j) {
+                    const double t = (i + s) / pieces + j * 1e-6;
+                    double cx, cy;
+                    cubic(std::clamp(t, 0.0, 1.0), cx, cy);
+                    nearest = std::min(nearest, std::hypot(qx - cx, qy - cy));
+                }
+                worst = std::max(worst, nearest);
+            }
+        }
+        EXPECT_LT(worst, limit) << pieces << " pieces";
+    }
 }
 
 TEST(Glyph, AcrossTheRingGivesTwoSpansWithOutwardNormals) {

@@ -13,8 +13,9 @@
 //             coefficients the scene keeps apart: Shape::index names them
 //   superellipsoid  POV-Ray's, exponents e = a and n = b, inside [-1, 1]^3
 //             (core/geometry/superellipsoid.h)
-//   glyph     a character's outline in the x-y plane swept from z = 0 to z = 1
-//             (core/geometry/glyph.h); the scene keeps the outlines: Shape::index names one
+//   glyph     an outline in the x-y plane (a character, a prism's splines) swept from z = 0 to
+//             z = 1 (core/geometry/glyph.h); the scene keeps the outlines: Shape::index names
+//             one; open: its sides only (a surface)
 #pragma once
 
 #include "core/geometry/glyph.h"
@@ -45,7 +46,7 @@ struct Shape {
     ShapeKind kind = ShapeKind::Sphere;
     float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius;
                         // superellipsoid: e, n
-    bool open = false;  // cylinder and cone without caps
+    bool open = false;  // cylinder, cone and glyph without caps
     uint32_t index = 0; // poly: its coefficients in the scene's polys; glyph: its outline in
                         // the scene's glyphs
 };
@@ -222,11 +223,13 @@ SHEAF_HD_NOINLINE int superellipsoid_spans(const Shape& s, const Ray& r, Span* o
     return count;
 }
 
-SHEAF_HD_INLINE int glyph_spans(const GlyphRef& g, const GlyphSegment* segs, const Ray& r,
-                                Span* out) {
+// Out of line on the device, like poly_spans: its arrays would otherwise grow every level of
+// csg_spans' recursion (by 160 bytes on sm_90).
+SHEAF_HD_NOINLINE int glyph_spans(const GlyphRef& g, const GlyphSegment* segs, bool open,
+                                const Ray& r, Span* out) {
     double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
     Vec3 n0[kMaxShapeSpans], n1[kMaxShapeSpans];
-    const int count = glyph_pieces(g, segs, r, t0, t1, n0, n1, kMaxShapeSpans);
+    const int count = glyph_pieces(g, segs, open, r, t0, t1, n0, n1, kMaxShapeSpans);
     for (int i = 0; i < count; ++i) out[i] = Span{float(t0[i]), float(t1[i]), n0[i], n1[i]};
     return count;
 }
@@ -344,8 +347,9 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
     case ShapeKind::Superellipsoid:
         return superellipsoid_spans(s, r, out);
     case ShapeKind::Glyph:
-        return tables.glyphs ? glyph_spans(tables.glyphs[s.index], tables.glyph_segments, r, out)
-                             : 0;
+        return tables.glyphs
+                   ? glyph_spans(tables.glyphs[s.index], tables.glyph_segments, s.open, r, out)
+                   : 0;
     }
     return 0;
 }

@@ -37,6 +37,7 @@ uint32_t glyph_index(PreparedScene& p, const GlyphOutline& g,
         p.glyph_segments.push_back(s);
     }
     if (g.segments.empty()) r.lo_x = r.lo_y = r.hi_x = r.hi_y = 0;
+    r.even_odd = g.even_odd ? 1 : 0;
     const uint32_t index = uint32_t(p.glyphs.size());
     p.glyphs.push_back(r);
     seen.emplace(&g, index);

@@ -73,35 +73,16 @@ int conic_to(const FT_Vector* control, const FT_Vector* to, void* user) {
     return 0;
 }
 
-// A cubic (OpenType's CFF outlines) as four quadratics, each through the ends of a quarter of
-// the cubic with the control point that matches the quarter's mean tangent.
+// A cubic (OpenType's CFF outlines) as eight quadratics (core/geometry/glyph.h).
 int cubic_to(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* user) {
     auto& c = *static_cast<Collector*>(user);
     const double p[4][2] = {{c.x, c.y},
                             {double(c1->x), double(c1->y)},
                             {double(c2->x), double(c2->y)},
                             {double(to->x), double(to->y)}};
-    auto at = [&](double t, int k) {
-        const double u = 1 - t;
-        return u * u * u * p[0][k] + 3 * u * u * t * p[1][k] + 3 * u * t * t * p[2][k] +
-               t * t * t * p[3][k];
-    };
-    auto slope = [&](double t, int k) {
-        const double u = 1 - t;
-        return 3 * (u * u * (p[1][k] - p[0][k]) + 2 * u * t * (p[2][k] - p[1][k]) +
-                    t * t * (p[3][k] - p[2][k]));
-    };
-    constexpr int kPieces = 4;
-    for (int i = 0; i < kPieces; ++i) {
-        const double t0 = double(i) / kPieces, t1 = double(i + 1) / kPieces, h = t1 - t0;
-        // The quadratic's control point: where the end tangents would meet, approximated by
-        // the mean of the two one-sided estimates (exact for a cubic that is a quadratic).
-        double ctrl[2];
-        for (int k = 0; k < 2; ++k)
-            ctrl[k] =
-                0.5 * ((at(t0, k) + slope(t0, k) * h / 2) + (at(t1, k) - slope(t1, k) * h / 2));
-        c.quad(ctrl[0], ctrl[1], at(t1, 0), at(t1, 1));
-    }
+    std::vector<GlyphSegment> pieces;
+    cubic_to_quadratics(p, 8, pieces);
+    for (const GlyphSegment& q : pieces) c.quad(q.x1, q.y1, q.x2, q.y2);
     return 0;
 }
 

@@ -50,8 +50,8 @@ TEST(Font, OutlinesAreClosedAndFillByWinding) {
     GlyphRef ref;
     ref.count = uint32_t(o.outline->segments.size());
     glyph_detail::Crossing xs[kMaxGlyphCrossings];
-    EXPECT_FALSE(glyph_detail::contains(o.outline->segments.data(), ref.count, 0.36, 0.33, xs));
-    EXPECT_TRUE(glyph_detail::contains(o.outline->segments.data(), ref.count, 0.06, 0.33, xs));
+    EXPECT_FALSE(glyph_detail::contains(o.outline->segments.data(), ref.count, 0, 0.36, 0.33, xs));
+    EXPECT_TRUE(glyph_detail::contains(o.outline->segments.data(), ref.count, 0, 0.06, 0.33, xs));
     EXPECT_FALSE(font.glyph(' ').outline); // a space has no ink, only an advance
     EXPECT_NEAR(font.glyph(' ').advance, 0.254, 1e-9);
     // A character the font lacks gets its missing-character glyph (index 0).

@@ -19,13 +19,13 @@ const std::set<std::string>& supported_objects() {
         "torus",       "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
         "union",       "merge",    "intersection",    "difference", "object", "light_source",
         "light_group", "quadric",  "cubic",           "quartic",    "poly",   "superellipsoid",
-        "text"};
+        "text",        "prism"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
     static const std::set<std::string> s = {
-        "blob",         "height_field", "isosurface",    "julia_fractal", "lathe", "prism", "sor",
+        "blob",         "height_field", "isosurface",    "julia_fractal", "lathe", "sor",
         "sphere_sweep", "parametric",   "bicubic_patch", "polynomial",    "ovus",  "lemon"};
     return s;
 }
@@ -107,6 +107,7 @@ bool Parser::parse_object(PovObject& o) {
         return true;
     }
     if (k == "quadric" || k == "cubic" || k == "quartic" || k == "poly") return parse_poly(kw, o);
+    if (k == "prism") return parse_prism(kw, o);
     if (k == "text") {
         parse_text(kw, o);
         return true;

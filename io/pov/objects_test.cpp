@@ -389,3 +389,81 @@ TEST(PovObjects, CsgNestingIsLimited) {
 
 } // namespace
 } // namespace sheaf::io::pov
+
+namespace sheaf::io::pov {
+namespace {
+
+TEST(PovObjects, PrismSweepsItsSplinesAlongY) {
+    // A 2 x 2 square with a square hole (even-odd: the inner contour need not run the other
+    // way), from y = 0 to 1; heights given the other way round are swapped, as POV-Ray does.
+    const std::string square_ring = "10, <0, 0>, <2, 0>, <2, 2>, <0, 2>, <0, 0>, <0.5, 0.5>, "
+                                    "<1.5, 0.5>, <1.5, 1.5>, <0.5, 1.5>, <0.5, 0.5>";
+    PovResult r = load_text("prism { linear_sweep linear_spline 1, 0, " + square_ring + " }");
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    EXPECT_EQ(r.scene.shape_objects[0].nodes[0].shape.kind, ShapeKind::Glyph);
+    EXPECT_NEAR(first_hit(r, {0.25f, 5, 0.25f}, {0, -1, 0}), 4.0f, 1e-5); // the top
+    EXPECT_LT(first_hit(r, {1, 5, 1}, {0, -1, 0}), 0.0f);                 // down the hole
+    EXPECT_NEAR(first_hit(r, {-5, 0.5f, 1}, {1, 0, 0}), 5.0f, 1e-5);      // the outer wall
+    EXPECT_NEAR(first_hit(r, {1, 0.5f, 1}, {1, 0, 0}), 0.5f, 1e-5);       // from the hole
+    EXPECT_NEAR(first_hit(r, {1, -5, 0.25f}, {0, 1, 0}), 5.0f, 1e-5);     // the base
+    // open: no caps, so a ray down inside the wall's footprint passes through; the sides stay.
+    r = load_text("prism { 0, 1, " + square_ring + " open }");
+    EXPECT_LT(first_hit(r, {0.25f, 5, 0.25f}, {0, -1, 0}), 0.0f);
+    EXPECT_NEAR(first_hit(r, {-5, 0.5f, 1}, {1, 0, 0}), 5.0f, 1e-5);
+}
+
+TEST(PovObjects, PrismSplinesFollowPovRaysDefinitions) {
+    // quadratic_spline: each segment runs from the second point of three to the third, leaving
+    // it along (third - first) / 2: a quadratic Bézier with that control point.
+    PovResult r = load_text("prism { quadratic_spline 0, 1, 6, <0, -1>, <1, 0>, <0, 1>, "
+                            "<-1, 0>, <0, -1>, <1, 0> }");
+    EXPECT_TRUE(r.warnings.empty());
+    const auto& g = r.scene.shape_objects.at(0).nodes.at(0).glyph;
+    ASSERT_TRUE(g);
+    EXPECT_TRUE(g->even_odd);
+    ASSERT_EQ(g->segments.size(), 4u);
+    const GlyphSegment& s = g->segments[0];
+    EXPECT_FLOAT_EQ(s.x0, 1); // from <1, 0>
+    EXPECT_FLOAT_EQ(s.y0, 0);
+    EXPECT_FLOAT_EQ(s.x1, 1); // + (<0, 1> - <0, -1>) / 4
+    EXPECT_FLOAT_EQ(s.y1, 0.5f);
+    EXPECT_FLOAT_EQ(s.x2, 0); // to <0, 1>
+    EXPECT_FLOAT_EQ(s.y2, 1);
+    // The rounded diamond's bottom point is <0, -1>, at POV-Ray's z = -1. Its first segment is
+    // (1 - s^2, s): at z = 0.5 it bulges out to x = 0.75, beyond the straight diamond's 0.5.
+    EXPECT_NEAR(first_hit(r, {0, 0.5f, -5}, {0, 0, 1}), 4.0f, 1e-5);
+    EXPECT_NEAR(first_hit(r, {5, 0.5f, 0.5f}, {-1, 0, 0}), 5 - 0.75f, 1e-5);
+    // cubic_spline (Catmull-Rom) and bezier_spline: 16 quadratics for each segment.
+    r = load_text("prism { cubic_spline 0, 1, 7, <0, -1>, <1, 0>, <0, 1>, <-1, 0>, <0, -1>, "
+                  "<1, 0>, <0, 1> }");
+    EXPECT_EQ(r.scene.shape_objects.at(0).nodes.at(0).glyph->segments.size(), 4u * 16);
+    r = load_text("prism { bezier_spline 0, 1, 8, <0, 0>, <0, 1>, <1, 1>, <1, 0>, "
+                  "<1, 0>, <1, -1>, <0, -1>, <0, 0> }");
+    EXPECT_EQ(r.scene.shape_objects.at(0).nodes.at(0).glyph->segments.size(), 2u * 16);
+    EXPECT_NEAR(first_hit(r, {0.5f, 0.5f, -5}, {0, 0, 1}), 5.0f - 0.75f, 1e-3); // its bulge
+}
+
+TEST(PovObjects, PrismErrorsAndConicSweep) {
+    EXPECT_EQ(error_of("prism { 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }"),
+              "scene.pov:1:15: error: the prism's points do not close its last contour (a "
+              "contour ends where a point repeats the contour's first; its first point)");
+    EXPECT_EQ(error_of("prism { 0, 1, 2, <0, 0>, <1, 0> }"),
+              "scene.pov:1:15: error: a prism with this spline needs a whole number of at "
+              "least 3 points");
+    EXPECT_EQ(error_of("prism { bezier_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }"),
+              "scene.pov:1:29: error: a prism's bezier_spline takes its points four at a time");
+    EXPECT_EQ(error_of("prism { 0, 1, 4, <0, 0>, 1, <1, 1>, <0, 0> }"),
+              "scene.pov:1:26: error: found '1', expected the prism's point 2 of 4 (a 2-D "
+              "vector <u, v>)");
+    const PovResult r =
+        load_text("prism { conic_sweep 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }\nsphere { 0, 1 }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:1: warning: unsupported prism with conic_sweep"),
+              std::string::npos)
+        << r.warnings[0];
+    EXPECT_EQ(r.scene.shape_objects.size(), 1u);
+}
+
+} // namespace
+} // namespace sheaf::io::pov

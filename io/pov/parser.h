@@ -216,6 +216,8 @@ class Parser {
     /// '<' exactly `count` float coefficients '>'.
     std::vector<double> parse_coefficients(const Token& kw, size_t count);
     void parse_csg(const Token& kw, PovObject& o);
+    /// prism { ... }: a glyph shape swept along y; false (after a warning) for conic_sweep.
+    bool parse_prism(const Token& kw, PovObject& o);
     /// text { ttf FONT STRING THICKNESS, OFFSET modifiers }: a union of glyph shapes.
     void parse_text(const Token& kw, PovObject& o);
     std::map<std::string, std::shared_ptr<Font>> fonts_; // by resolved path

@@ -194,19 +194,9 @@ SHEAF_HD_NOINLINE int glyph_pieces(const GlyphRef& g, const GlyphSegment* segs, 
     using namespace glyph_detail;
     const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
     const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
-    // The slab 0 <= z <= 1 and its caps' normals.
-    double z0 = -DBL_MAX, z1 = DBL_MAX;
-    Vec3 zn0(0, 0, -1), zn1(0, 0, 1);
-    if (fabs(dz) < 1e-30) {
-        if (oz < 0 || oz > 1) return 0;
-    } else {
-        z0 = -oz / dz, z1 = (1 - oz) / dz;
-        if (z0 > z1) {
-            const double t = z0;
-            z0 = z1, z1 = t;
-            zn0 = Vec3(0, 0, 1), zn1 = Vec3(0, 0, -1);
-        }
-    }
+    double z0, z1; // the slab 0 <= z <= 1 and its caps' normals
+    Vec3 zn0, zn1;
+    if (!unit_slab(oz, dz, z0, z1, zn0, zn1)) return 0;
     // Nothing of the glyph's box along the ray: no crossing to look for.
     double lo = z0, hi = z1;
     if (!clip_slab(ox, dx, g.lo_x, g.hi_x, lo, hi) || !clip_slab(oy, dy, g.lo_y, g.hi_y, lo, hi))

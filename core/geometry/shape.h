@@ -107,19 +107,9 @@ SHEAF_HD_INLINE int frustum_spans(const Ray& r, double r0, double r1, bool open,
         const double z = oz + dz * t;
         return Vec3(float(ox + dx * t), float(oy + dy * t), float(-(r0 + k * z) * k));
     };
-    // The slab between the caps.
-    double z0 = -DBL_MAX, z1 = DBL_MAX;
-    Vec3 zn0(0, 0, -1), zn1(0, 0, 1);
-    if (fabs(dz) < 1e-30) {
-        if (oz < 0 || oz > 1) return 0;
-    } else {
-        z0 = -oz / dz, z1 = (1 - oz) / dz;
-        if (z0 > z1) {
-            const double t = z0;
-            z0 = z1, z1 = t;
-            zn0 = Vec3(0, 0, 1), zn1 = Vec3(0, 0, -1);
-        }
-    }
+    double z0, z1; // the slab between the caps
+    Vec3 zn0, zn1;
+    if (!unit_slab(oz, dz, z0, z1, zn0, zn1)) return 0;
     double t0, t1;
     const bool roots = solve_quadratic(a, b, c, t0, t1);
     if (open) {

@@ -14,6 +14,7 @@ namespace sheaf::io::pov {
 namespace {
 
 using test::error_of;
+using test::first_hit;
 using test::load_text;
 using test::TempDir;
 
@@ -250,17 +251,6 @@ TEST(PovObjects, ClippedByIsAnOpenSurface) {
     EXPECT_FALSE(analytic_first_hit(p, 0, across, h));
 }
 
-/// The first hit of a ray from `from` along `dir` (POV-Ray coordinates) on the scene's only
-/// analytic object; -1 when it misses.
-float first_hit(const PovResult& r, Vec3 from, Vec3 dir) {
-    const PreparedScene p = prepare_scene(r.scene);
-    Ray ray;
-    ray.origin = pov_to_sheaf().point(from), ray.dir = pov_to_sheaf().vector(dir);
-    ray.tmin = 0, ray.tmax = 100;
-    AnalyticHit h;
-    return analytic_first_hit(p, 0, ray, h) ? h.t : -1.0f;
-}
-
 TEST(PovObjects, QuadricCubicQuarticPoly) {
     // A sphere of radius 2 around <0, 1, 0>.
     PovResult r = load_text("quadric { <1, 1, 1>, <0, 0, 0>, <0, -2, 0>, -3 }");
@@ -393,6 +383,8 @@ TEST(PovObjects, CsgNestingIsLimited) {
 namespace sheaf::io::pov {
 namespace {
 
+using test::first_hit;
+
 TEST(PovObjects, PrismSweepsItsSplinesAlongY) {
     // A 2 x 2 square with a square hole (even-odd: the inner contour need not run the other
     // way), from y = 0 to 1; heights given the other way round are swapped, as POV-Ray does.
@@ -407,6 +399,10 @@ TEST(PovObjects, PrismSweepsItsSplinesAlongY) {
     EXPECT_NEAR(first_hit(r, {-5, 0.5f, 1}, {1, 0, 0}), 5.0f, 1e-5);      // the outer wall
     EXPECT_NEAR(first_hit(r, {1, 0.5f, 1}, {1, 0, 0}), 0.5f, 1e-5);       // from the hole
     EXPECT_NEAR(first_hit(r, {1, -5, 0.25f}, {0, 1, 0}), 5.0f, 1e-5);     // the base
+    // Without commas, as POV-Ray's atten2.pov writes it: "4 <-1, ...>" is no comparison.
+    r = load_text("prism { -0.5, 0.5, 4 <-1, -0.3>, <1, 0>, <-1, 0.3>, <-1, -0.3> }");
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_EQ(r.scene.shape_objects.at(0).nodes.at(0).glyph->segments.size(), 3u);
     // open: no caps, so a ray down inside the wall's footprint passes through; the sides stay.
     r = load_text("prism { 0, 1, " + square_ring + " open }");
     EXPECT_LT(first_hit(r, {0.25f, 5, 0.25f}, {0, -1, 0}), 0.0f);

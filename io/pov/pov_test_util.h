@@ -3,6 +3,9 @@
 #pragma once
 
 #include "core/base/error.h"
+#include "core/scene/analytic.h"
+#include "core/scene/prepared_scene.h"
+#include "io/pov/builder.h"
 #include "io/pov/parser.h"
 #include "io/pov/pov_reader.h"
 
@@ -68,6 +71,17 @@ inline Value declared(const std::string& text, const std::string& name) {
     const Value* v = p.lookup(name);
     if (!v) throw SceneError("'" + name + "' was not declared");
     return *v;
+}
+
+/// The first hit of a ray from `from` along `dir` (POV-Ray coordinates) on the scene's first
+/// analytic object; -1 when it misses.
+inline float first_hit(const PovResult& r, Vec3 from, Vec3 dir) {
+    const PreparedScene p = prepare_scene(r.scene);
+    Ray ray;
+    ray.origin = pov_to_sheaf().point(from), ray.dir = pov_to_sheaf().vector(dir);
+    ray.tmin = 0, ray.tmax = 100;
+    AnalyticHit h;
+    return analytic_first_hit(p, 0, ray, h) ? h.t : -1.0f;
 }
 
 inline double num(const std::string& expr) {

@@ -68,7 +68,9 @@ bool Parser::parse_prism(const Token& kw, PovObject& o) {
     double h2 = parse_float();
     accept_sym(",");
     const Token count_at = peek();
+    ++no_lt_; // POV-Ray reads "4 <-1, 0> ..." as the count and the first point
     const double count = parse_float();
+    --no_lt_;
     accept_sym(",");
     const int minimum = spline == Spline::Linear      ? 3
                         : spline == Spline::Quadratic ? 5

@@ -14,6 +14,7 @@ namespace sheaf::io::pov {
 namespace {
 
 using test::error_of;
+using test::first_hit;
 using test::load_text;
 using test::TempDir;
 
@@ -21,16 +22,6 @@ const char* kFonts = "/usr/share/povray-3.7/include";
 
 bool have_fonts() {
     return std::filesystem::exists(std::string(kFonts) + "/timrom.ttf");
-}
-
-/// The first hit on the scene's only object along a ray (POV-Ray coordinates); -1: a miss.
-float first_hit(const PovResult& r, Vec3 from, Vec3 dir) {
-    const PreparedScene p = prepare_scene(r.scene);
-    Ray ray;
-    ray.origin = pov_to_sheaf().point(from), ray.dir = pov_to_sheaf().vector(dir);
-    ray.tmin = 0, ray.tmax = 100;
-    AnalyticHit h;
-    return analytic_first_hit(p, 0, ray, h) ? h.t : -1.0f;
 }
 
 /// Where the glyph of shape object `object` has its origin, in POV-Ray coordinates (a text is

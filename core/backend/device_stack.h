@@ -3,8 +3,10 @@
 // shapes carry a poly index; plus 1,952 (sm_90) or 1,960 (sm_80) under a clipped_by: about
 // 9,000 of the 10 KiB allowed), and the shading, pigment and pattern code needs a base of its
 // own (the largest tracing kernel's frame is 2,704 bytes on both, 2,736 on sm_90 with the
-// ground fog; nested pigments 328 to 344 bytes a level; the out-of-line poly_spans (1,752
-// bytes on sm_90) and superellipsoid_spans (584) are on the stack once, at the leaf). The device reserves the
+// ground fog, 2,752 with glyphs; nested pigments 328 to 344 bytes a level; the out-of-line
+// poly_spans (1,752 bytes on sm_90), superellipsoid_spans (584) and glyph_spans with
+// glyph_pieces (296 + 1,448) are on the stack once, at the leaf; csg_spans stays at 7,064 to
+// 7,080 a level with glyphs). The device reserves the
 // stack for every resident thread (about 270,000 on an H100), so it is capped; a scene nested
 // more deeply renders on the CPU (backend=auto) or is an error (backend=cuda).
 #pragma once

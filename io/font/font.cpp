@@ -161,6 +161,19 @@ double Font::kerning(uint32_t left_index, uint32_t right_index) const {
     return double(k.x) / face_->em;
 }
 
+Font& FontCache::open(const std::string& path) {
+    std::unique_ptr<Font>& font = fonts_[path];
+    if (!font) {
+        try {
+            font = std::make_unique<Font>(path);
+        } catch (const FontError&) {
+            fonts_.erase(path);
+            throw;
+        }
+    }
+    return *font;
+}
+
 std::vector<uint32_t> decode_text(const std::string& text) {
     std::vector<uint32_t> out;
     const auto* s = reinterpret_cast<const unsigned char*>(text.data());

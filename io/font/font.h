@@ -50,6 +50,16 @@ class Font {
     std::map<uint32_t, Glyph> glyphs_; // by code point
 };
 
+/// The fonts a scene's texts use, each opened once by its path. A file that fails to open is
+/// not kept: open() throws FontError again for it.
+class FontCache {
+  public:
+    Font& open(const std::string& path);
+
+  private:
+    std::map<std::string, std::unique_ptr<Font>> fonts_;
+};
+
 /// One character of a laid-out string, with ink: its outline and where its origin goes.
 struct PlacedGlyph {
     std::shared_ptr<const GlyphOutline> outline;

@@ -220,7 +220,7 @@ class Parser {
     bool parse_prism(const Token& kw, PovObject& o);
     /// text { ttf FONT STRING THICKNESS, OFFSET modifiers }: a union of glyph shapes.
     void parse_text(const Token& kw, PovObject& o);
-    std::map<std::string, std::shared_ptr<Font>> fonts_; // by resolved path
+    FontCache fonts_; // text's fonts
     void parse_triangle(const Token& kw, PovObject& o, bool smooth);
     void parse_mesh(const Token& kw, PovObject& o);
     void parse_mesh2(const Token& kw, PovObject& o);

@@ -28,7 +28,7 @@ void line(std::vector<GlyphSegment>& out, const Vec3& a, const Vec3& b) {
     out.push_back({a.x, a.y, 0.5f * (a.x + b.x), 0.5f * (a.y + b.y), b.x, b.y});
 }
 
-/// The cubic c0 + c1 t + c2 t^2 + c3 t^3 (t from 0 to 1) in Bézier form, as quadratics.
+/// The cubic Bézier with control points p0 .. p3, as kCubicPieces quadratics.
 void cubic(std::vector<GlyphSegment>& out, const Vec3& p0, const Vec3& p1, const Vec3& p2,
            const Vec3& p3) {
     const double p[4][2] = {{p0.x, p0.y}, {p1.x, p1.y}, {p2.x, p2.y}, {p3.x, p3.y}};

@@ -46,17 +46,14 @@ void Parser::parse_text(const Token& kw, PovObject& o) {
     const Vec3 offset = off.type == VType::Float
                             ? Vec3(float(off.v[0]))
                             : Vec3(float(off.v[0]), float(off.v[1]), float(off.v[2]));
-    // An object per character: charged before they are made, so that a string built up in a
-    // loop stops at the data budget without first taking the memory.
-    charge(decode_text(text).size() * sizeof(PovObject), text_at);
+    // An object per character (at most one per byte): charged before they are made, so that
+    // a string built up in a loop stops at the data budget without first taking the memory.
+    charge(text.size() * sizeof(PovObject), text_at);
     const std::string path = find_file(font_name, font_at, "font", {".ttf", ".otf", ".ttc"});
-    std::shared_ptr<Font>& font = fonts_[path];
     std::vector<PlacedGlyph> glyphs;
     try {
-        if (!font) font = std::make_shared<Font>(path);
-        glyphs = layout_text(*font, text, offset);
+        glyphs = layout_text(fonts_.open(path), text, offset);
     } catch (const FontError& e) {
-        font.reset();
         error_at(font_at, e.what());
     }
     o.kind = PovKind::Csg, o.op = CsgOp::Union;

@@ -31,7 +31,7 @@ class SceneReader {
         ptrdiff_t offset;
     };
     using NameTable = std::map<std::string, Named, std::less<>>;
-    std::map<std::string, std::shared_ptr<Font>> fonts_; // <text>'s fonts, by resolved path
+    FontCache fonts_; // <text>'s fonts
 
     // xml_reader.cpp
     void define(NameTable& table, const char* kind, const std::string& name,

@@ -182,11 +182,8 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
                 fail_attr("thickness", "the thickness must be a finite number other than 0");
             const std::string path = ctx_.resolve(font_name);
             try {
-                std::shared_ptr<Font>& font = fonts_[path];
-                if (!font) font = std::make_shared<Font>(path);
-                glyphs = layout_text(*font, text, offset);
+                glyphs = layout_text(fonts_.open(path), text, offset);
             } catch (const FontError& e) {
-                fonts_.erase(path);
                 fail_attr("font", e.what());
             }
             if (glyphs.empty()) fail_attr("string", "the text has no visible character");

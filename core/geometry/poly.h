@@ -53,10 +53,11 @@ SHEAF_HD_INLINE double eval(const double* q, int n, double t) {
     return v;
 }
 
-/// The root of q (degree n) in [lo, hi], where q(lo) and q(hi) differ in sign and q is
-/// monotone: Newton steps that stay inside the bracket, bisection otherwise.
+/// The root of q (degree n <= MaxDeg) in [lo, hi], where q(lo) and q(hi) differ in sign and q
+/// is monotone: Newton steps that stay inside the bracket, bisection otherwise.
+template <int MaxDeg = kPolyMaxDegree>
 SHEAF_HD_INLINE double bracketed_root(const double* q, int n, double lo, double hi) {
-    double dq[kPolyMaxDegree];
+    double dq[MaxDeg];
     for (int m = 1; m <= n; ++m) dq[m - 1] = m * q[m];
     const bool rising = eval(q, n, lo) < 0;
     double t = 0.5 * (lo + hi);
@@ -112,10 +113,57 @@ SHEAF_HD_INLINE int ray_polynomial(const PolyCoeffs& p, const Ray& r, double q[5
     return n;
 }
 
-/// The real roots of q (degree n, q[n] != 0) where q changes sign, ascending; returns their
-/// count (at most n).
-SHEAF_HD_INLINE int poly_roots(const double* q, int n, double* roots) {
+/// The real roots of q (degree n <= MaxDeg, q[n] != 0) inside (lo_b, hi_b) where q changes
+/// sign, ascending; returns their count (at most n). A root exactly at lo_b or hi_b is not
+/// reported. The roots of q's derivatives, from the linear one up, split the interval into
+/// pieces where the next one is monotone, so no root is missed however close two lie.
+template <int MaxDeg = kPolyMaxDegree>
+SHEAF_HD_INLINE int poly_roots_in(const double* q, int n, double lo_b, double hi_b, double* roots) {
     using namespace poly_detail;
+    if (n <= 0) return 0;
+    if (n == 1) {
+        const double t = -q[0] / q[1];
+        if (!(t > lo_b && t < hi_b)) return 0;
+        roots[0] = t;
+        return 1;
+    }
+    double d[MaxDeg + 1][MaxDeg + 1];
+    for (int m = 0; m <= n; ++m) d[0][m] = q[m];
+    for (int level = 1; level < n; ++level)
+        for (int m = 0; m + level <= n; ++m) d[level][m] = (m + 1) * d[level - 1][m + 1];
+    double crit[MaxDeg];
+    int ncrit = 0;
+    {
+        const double* lin = d[n - 1]; // degree 1
+        const double t = -lin[0] / lin[1];
+        if (t > lo_b && t < hi_b) crit[ncrit++] = t;
+    }
+    int nroots = 0;
+    for (int level = n - 2; level >= 0; --level) {
+        const int deg = n - level;
+        const double* p = d[level];
+        nroots = 0;
+        double lo = lo_b, flo = eval(p, deg, lo);
+        for (int c = 0; c <= ncrit; ++c) {
+            const double hi = c < ncrit ? crit[c] : hi_b, fhi = eval(p, deg, hi);
+            if (fhi == 0 && c < ncrit) {
+                // A root at a critical point: a sign change only if the sides differ.
+                if ((flo < 0) != (eval(p, deg, c + 1 < ncrit ? crit[c + 1] : hi_b) < 0))
+                    roots[nroots++] = hi;
+            } else if (flo != 0 && (flo < 0) != (fhi < 0)) {
+                roots[nroots++] = bracketed_root<MaxDeg>(p, deg, lo, hi);
+            }
+            lo = hi, flo = fhi;
+        }
+        for (int m = 0; m < nroots; ++m) crit[m] = roots[m];
+        ncrit = nroots;
+    }
+    return nroots;
+}
+
+/// The real roots of q (degree n <= 4, q[n] != 0) where q changes sign, ascending; returns
+/// their count (at most n).
+SHEAF_HD_INLINE int poly_roots(const double* q, int n, double* roots) {
     if (n <= 0) return 0;
     if (n == 1) {
         roots[0] = -q[0] / q[1];
@@ -130,40 +178,7 @@ SHEAF_HD_INLINE int poly_roots(const double* q, int n, double* roots) {
         if (r > bound) bound = r;
     }
     bound = 2 * bound + 1;
-    // The derivatives down to a linear one; then, from the lowest up, each one's roots split
-    // the next one into monotone pieces.
-    double d[kPolyMaxDegree + 1][kPolyMaxDegree + 1];
-    for (int m = 0; m <= n; ++m) d[0][m] = q[m];
-    for (int level = 1; level < n; ++level)
-        for (int m = 0; m + level <= n; ++m) d[level][m] = (m + 1) * d[level - 1][m + 1];
-    double crit[kPolyMaxDegree];
-    int ncrit = 0;
-    {
-        const double* lin = d[n - 1]; // degree 1
-        const double t = -lin[0] / lin[1];
-        if (t > -bound && t < bound) crit[ncrit++] = t;
-    }
-    int nroots = 0;
-    for (int level = n - 2; level >= 0; --level) {
-        const int deg = n - level;
-        const double* p = d[level];
-        nroots = 0;
-        double lo = -bound, flo = eval(p, deg, lo);
-        for (int c = 0; c <= ncrit; ++c) {
-            const double hi = c < ncrit ? crit[c] : bound, fhi = eval(p, deg, hi);
-            if (fhi == 0 && c < ncrit) {
-                // A root at a critical point: a sign change only if the sides differ.
-                if ((flo < 0) != (eval(p, deg, c + 1 < ncrit ? crit[c + 1] : bound) < 0))
-                    roots[nroots++] = hi;
-            } else if (flo != 0 && (flo < 0) != (fhi < 0)) {
-                roots[nroots++] = bracketed_root(p, deg, lo, hi);
-            }
-            lo = hi, flo = fhi;
-        }
-        for (int m = 0; m < nroots; ++m) crit[m] = roots[m];
-        ncrit = nroots;
-    }
-    return nroots;
+    return poly_roots_in(q, n, -bound, bound, roots);
 }
 
 /// The gradient of P at local point (x, y, z): the outward normal (P < 0 inside).

@@ -21,6 +21,7 @@
 #include "core/geometry/glyph.h"
 #include "core/geometry/poly.h"
 #include "core/geometry/ray.h"
+#include "core/geometry/revolution.h"
 #include "core/geometry/superellipsoid.h"
 #include "core/math/affine.h"
 
@@ -39,24 +40,28 @@ enum class ShapeKind : uint32_t {
     Torus,
     Poly,
     Superellipsoid,
-    Glyph
+    Glyph,
+    Revolution
 };
 
 struct Shape {
     ShapeKind kind = ShapeKind::Sphere;
     float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius;
                         // superellipsoid: e, n
-    bool open = false;  // cylinder, cone and glyph without caps
+    bool open = false;  // cylinder, cone and glyph without caps; a revolution's surface only
     uint32_t index = 0; // poly: its coefficients in the scene's polys; glyph: its outline in
-                        // the scene's glyphs
+                        // the scene's glyphs; revolution: its profile in the scene's revolutions
 };
 
-/// What shapes of some kinds read from the scene beside their Shape: poly coefficients and
-/// glyph outlines. A table a scene lacks is null, and its shapes then have no spans.
+/// What shapes of some kinds read from the scene beside their Shape: poly coefficients, glyph
+/// outlines and revolution profiles. A table a scene lacks is null, and its shapes then have
+/// no spans.
 struct ShapeTables {
     const PolyCoeffs* polys = nullptr;
     const GlyphRef* glyphs = nullptr;
     const GlyphSegment* glyph_segments = nullptr;
+    const RevolutionRef* revolutions = nullptr;
+    const RevolutionSegment* revolution_segments = nullptr;
 };
 
 /// One span [t0, t1] of a ray inside a solid, with the local normals at both ends (pointing
@@ -224,6 +229,16 @@ SHEAF_HD_NOINLINE int glyph_spans(const GlyphRef& g, const GlyphSegment* segs, b
     return count;
 }
 
+// Out of line on the device, like glyph_spans.
+SHEAF_HD_NOINLINE int revolution_spans(const RevolutionRef& g, const RevolutionSegment* segs,
+                                       bool open, const Ray& r, Span* out) {
+    double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
+    Vec3 n0[kMaxShapeSpans], n1[kMaxShapeSpans];
+    const int count = revolution_pieces(g, segs, open, r, t0, t1, n0, n1, kMaxShapeSpans);
+    for (int i = 0; i < count; ++i) out[i] = Span{float(t0[i]), float(t1[i]), n0[i], n1[i]};
+    return count;
+}
+
 } // namespace shape_detail
 
 /// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `tables` holds
@@ -340,6 +355,10 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
         return tables.glyphs
                    ? glyph_spans(tables.glyphs[s.index], tables.glyph_segments, s.open, r, out)
                    : 0;
+    case ShapeKind::Revolution:
+        return tables.revolutions ? revolution_spans(tables.revolutions[s.index],
+                                                     tables.revolution_segments, s.open, r, out)
+                                  : 0;
     }
     return 0;
 }

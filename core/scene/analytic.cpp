@@ -41,6 +41,11 @@ Sphere local_bound(const PreparedScene& scene, const Shape& s) {
         const Vec3 lo(g.lo_x, g.lo_y, 0), hi(g.hi_x, g.hi_y, 1);
         return {(lo + hi) * 0.5f, length(hi - lo) * 0.5f};
     }
+    case ShapeKind::Revolution: { // around its cylinder
+        const RevolutionRef& g = scene.revolutions[s.index];
+        const float half = 0.5f * (g.h_hi - g.h_lo);
+        return {Vec3(0, 0, 0.5f * (g.h_lo + g.h_hi)), std::sqrt(g.r_max * g.r_max + half * half)};
+    }
     }
     return {Vec3(0.0f), INFINITY};
 }

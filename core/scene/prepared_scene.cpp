@@ -16,9 +16,6 @@ namespace sheaf {
 
 namespace {
 
-// Puts triangles [b, e) of one object in the Morton order of their centroids within the
-// object's box (ties in the mesh's order), so that runs of consecutive primitives are compact
-// whatever order the mesh came in: cull.cluster culls such runs (core/rsh/cull_units.h).
 /// The index of outline `g` among p.glyphs, added on its first use (a text's repeated
 /// characters share one outline).
 uint32_t glyph_index(PreparedScene& p, const GlyphOutline& g,
@@ -44,6 +41,26 @@ uint32_t glyph_index(PreparedScene& p, const GlyphOutline& g,
     return index;
 }
 
+/// The index of profile `g` among p.revolutions, added on its first use.
+uint32_t revolution_index(PreparedScene& p, const RevolutionProfile& g,
+                          std::map<const RevolutionProfile*, uint32_t>& seen) {
+    const auto found = seen.find(&g);
+    if (found != seen.end()) return found->second;
+    RevolutionRef r;
+    r.first = uint32_t(p.revolution_segments.size());
+    r.count = uint32_t(g.segments.size());
+    r.squared = g.squared ? 1 : 0;
+    revolution_bounds(g, r.r_max, r.h_lo, r.h_hi);
+    p.revolution_segments.insert(p.revolution_segments.end(), g.segments.begin(), g.segments.end());
+    const uint32_t index = uint32_t(p.revolutions.size());
+    p.revolutions.push_back(r);
+    seen.emplace(&g, index);
+    return index;
+}
+
+// Puts triangles [b, e) of one object in the Morton order of their centroids within the
+// object's box (ties in the mesh's order), so that runs of consecutive primitives are compact
+// whatever order the mesh came in: cull.cluster culls such runs (core/rsh/cull_units.h).
 void spatial_order(PreparedScene& p, size_t b, size_t e) {
     if (e - b < 3) return;
     auto centroid = [&](size_t i) {
@@ -158,6 +175,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     }
     // Analytic objects: one primitive each, its CSG tree flattened into the scene's arrays.
     std::map<const GlyphOutline*, uint32_t> glyphs_seen;
+    std::map<const RevolutionProfile*, uint32_t> revolutions_seen;
     for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
         const ShapeObject& obj = scene.shape_objects[so];
         const uint32_t base = uint32_t(p.csg.size());
@@ -179,6 +197,8 @@ PreparedScene prepare_scene(const Scene& scene) {
                 }
                 if (shape.kind == ShapeKind::Glyph)
                     shape.index = glyph_index(p, *node.glyph, glyphs_seen);
+                if (shape.kind == ShapeKind::Revolution)
+                    shape.index = revolution_index(p, *node.revolution, revolutions_seen);
                 p.shapes.push_back(place_shape(shape, obj.transform * node.transform));
                 p.shape_material.push_back(node.material);
                 if (!have_material) first_material = node.material, have_material = true;

@@ -61,6 +61,8 @@ struct PreparedScene {
     std::vector<PolyCoeffs> polys;        // of the poly leaves, indexed by Shape::index
     std::vector<GlyphRef> glyphs;         // of the glyph leaves, indexed by Shape::index
     std::vector<GlyphSegment> glyph_segments; // the glyphs' outlines
+    std::vector<RevolutionRef> revolutions;   // of the revolution leaves, by Shape::index
+    std::vector<RevolutionSegment> revolution_segments; // their profiles
     std::vector<uint32_t> shape_material; // per placed shape
     std::vector<PreparedCsgNode> csg;
     std::vector<uint32_t> csg_children;

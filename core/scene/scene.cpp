@@ -149,6 +149,17 @@ void Scene::validate() const {
                             if (!std::isfinite(v))
                                 throw SceneError(name + ": a glyph's outline is not finite");
                 }
+                if (s.kind == ShapeKind::Revolution) {
+                    if (!node.revolution)
+                        throw SceneError(name + ": a revolution shape without a profile");
+                    for (const RevolutionSegment& g : node.revolution->segments) {
+                        if (g.wdeg < 1 || g.wdeg > 3 || g.hdeg < 1 || g.hdeg > 3)
+                            throw SceneError(name + ": a profile segment of degree not 1 to 3");
+                        for (int i = 0; i < 4; ++i)
+                            if (!std::isfinite(g.w[i]) || !std::isfinite(g.h[i]))
+                                throw SceneError(name + ": a revolution's profile is not finite");
+                    }
+                }
                 if (!node.transform.finite())
                     throw SceneError(name + ": a shape's transform is not finite");
                 if (!(std::fabs(node.transform.determinant()) >= 1e-20f))

@@ -132,6 +132,7 @@ struct CsgNode {
     Shape shape;           // leaf
     std::shared_ptr<const PolyCoeffs> poly;    // leaf of kind Poly: its coefficients
     std::shared_ptr<const GlyphOutline> glyph; // leaf of kind Glyph: its outline
+    std::shared_ptr<const RevolutionProfile> revolution; // leaf of kind Revolution: its profile
     Affine transform;      // leaf: shape space -> object space
     uint32_t material = 0; // leaf
     bool inverse = false;

@@ -31,6 +31,8 @@ struct SceneView {
     const PolyCoeffs* polys = nullptr;
     const GlyphRef* glyphs = nullptr;
     const GlyphSegment* glyph_segments = nullptr;
+    const RevolutionRef* revolutions = nullptr;
+    const RevolutionSegment* revolution_segments = nullptr;
     const uint32_t* shape_material = nullptr;
     const PreparedCsgNode* csg = nullptr;
     const uint32_t* csg_children = nullptr;
@@ -64,17 +66,21 @@ struct SceneView {
           object_begin(p.object_begin.data()), object_sphere(p.object_sphere.data()),
           object_material(p.object_material.data()), object_count(uint32_t(p.object_sphere.size())),
           shapes(p.shapes.data()), polys(p.polys.data()), glyphs(p.glyphs.data()),
-          glyph_segments(p.glyph_segments.data()), shape_material(p.shape_material.data()),
-          csg(p.csg.data()), csg_children(p.csg_children.data()),
-          analytic_root(p.analytic_root.data()), materials(p.materials.data()),
-          pigments(p.pigments.data()), pigment_entries(p.pigment_entries.data()),
-          normal_patterns(p.normal_patterns.data()), material_switches(p.material_switches.data()),
+          glyph_segments(p.glyph_segments.data()), revolutions(p.revolutions.data()),
+          revolution_segments(p.revolution_segments.data()),
+          shape_material(p.shape_material.data()), csg(p.csg.data()),
+          csg_children(p.csg_children.data()), analytic_root(p.analytic_root.data()),
+          materials(p.materials.data()), pigments(p.pigments.data()),
+          pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
+          material_switches(p.material_switches.data()),
           material_entries(p.material_entries.data()), sky(p.sky), fog(p.fog),
           lights(p.lights.data()), light_count(uint32_t(p.lights.size())), background(p.background),
           textures(p.textures.data()), sampler(p.sampler.get()) {}
 
-    /// What poly and glyph shapes read beside their Shape.
-    SHEAF_HD ShapeTables shape_tables() const { return {polys, glyphs, glyph_segments}; }
+    /// What poly, glyph and revolution shapes read beside their Shape.
+    SHEAF_HD ShapeTables shape_tables() const {
+        return {polys, glyphs, glyph_segments, revolutions, revolution_segments};
+    }
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
     SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }
     /// Whether primitive `prim`'s object has ObjectFlag `flag` (or kPrimMayPass).

@@ -47,6 +47,8 @@ template <class Exec> class DeviceScene {
         put(p.polys, v.polys);
         put(p.glyphs, v.glyphs);
         put(p.glyph_segments, v.glyph_segments);
+        put(p.revolutions, v.revolutions);
+        put(p.revolution_segments, v.revolution_segments);
         put(p.shape_material, v.shape_material);
         put(p.csg, v.csg);
         put(p.csg_children, v.csg_children);

@@ -123,6 +123,7 @@ struct Builder {
             n.shape = o.shape;
             n.poly = o.poly;
             n.glyph = o.glyph;
+            n.revolution = o.revolution;
             n.transform = o.local;
             n.material = material(tex, in);
             n.inverse = o.inverse;

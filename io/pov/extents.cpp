@@ -63,6 +63,12 @@ Box shape_box(const PovObject& o) {
                 }
         return lo.x <= hi.x ? transformed(o.local, lo, hi) : Box();
     }
+    case ShapeKind::Revolution: { // its cylinder about z
+        if (!o.revolution) return Box();
+        float r, h_lo, h_hi;
+        revolution_bounds(*o.revolution, r, h_lo, h_hi);
+        return transformed(o.local, Vec3(-r, -r, h_lo), Vec3(r, r, h_hi));
+    }
     }
     return unbounded();
 }

@@ -142,6 +142,7 @@ struct PovObject {
     Shape shape;
     std::shared_ptr<const PolyCoeffs> poly;    // shape of kind Poly: its coefficients
     std::shared_ptr<const GlyphOutline> glyph; // shape of kind Glyph: its outline
+    std::shared_ptr<const RevolutionProfile> revolution; // shape of kind Revolution
     std::shared_ptr<const Mesh> mesh;
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;

@@ -19,14 +19,14 @@ const std::set<std::string>& supported_objects() {
         "torus",       "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
         "union",       "merge",    "intersection",    "difference", "object", "light_source",
         "light_group", "quadric",  "cubic",           "quartic",    "poly",   "superellipsoid",
-        "text",        "prism"};
+        "text",        "prism",    "lathe",           "sor"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
     static const std::set<std::string> s = {
-        "blob",         "height_field", "isosurface",    "julia_fractal", "lathe", "sor",
-        "sphere_sweep", "parametric",   "bicubic_patch", "polynomial",    "ovus",  "lemon"};
+        "blob",       "height_field",  "isosurface", "julia_fractal", "sphere_sweep",
+        "parametric", "bicubic_patch", "polynomial", "ovus",          "lemon"};
     return s;
 }
 
@@ -108,6 +108,8 @@ bool Parser::parse_object(PovObject& o) {
     }
     if (k == "quadric" || k == "cubic" || k == "quartic" || k == "poly") return parse_poly(kw, o);
     if (k == "prism") return parse_prism(kw, o);
+    if (k == "lathe") return parse_lathe(kw, o);
+    if (k == "sor") return parse_sor(kw, o);
     if (k == "text") {
         parse_text(kw, o);
         return true;

@@ -461,5 +461,94 @@ TEST(PovObjects, PrismErrorsAndConicSweep) {
     EXPECT_EQ(r.scene.shape_objects.size(), 1u);
 }
 
+TEST(PovObjects, LatheTurnsItsSplinesAboutY) {
+    // A ring of square section: radius 1 to 2, y from 0 to 1, closed.
+    PovResult r = load_text("lathe { linear_spline 5, <1, 0>, <2, 0>, <2, 1>, <1, 1>, <1, 0> }");
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    const CsgNode& n = r.scene.shape_objects[0].nodes[0];
+    EXPECT_EQ(n.shape.kind, ShapeKind::Revolution);
+    EXPECT_FALSE(n.shape.open);
+    EXPECT_NEAR(first_hit(r, {-5, 0.5f, 0}, {1, 0, 0}), 3.0f, 1e-5);  // the outer wall
+    EXPECT_NEAR(first_hit(r, {0, 0.5f, 0}, {0, 0, 1}), 1.0f, 1e-5);   // from the hole
+    EXPECT_NEAR(first_hit(r, {0, 5, 1.5f}, {0, -1, 0}), 4.0f, 1e-5);  // the top
+    EXPECT_LT(first_hit(r, {0, 5, 0.5f}, {0, -1, 0}), 0.0f);          // down the hole
+    EXPECT_NEAR(first_hit(r, {0, -5, -1.5f}, {0, 1, 0}), 5.0f, 1e-5); // the base
+    // An unclosed curve is the surface POV-Ray draws: a tube open at both ends.
+    r = load_text("lathe { 2, <1, 0>, <1, 1> }");
+    EXPECT_TRUE(r.scene.shape_objects.at(0).nodes.at(0).shape.open);
+    EXPECT_NEAR(first_hit(r, {0, 0.5f, -5}, {0, 0, 1}), 4.0f, 1e-5);
+    EXPECT_NEAR(first_hit(r, {0, 0.5f, 0}, {0, 0, 1}), 1.0f, 1e-5); // from inside
+    EXPECT_LT(first_hit(r, {0, 5, 0}, {0, -1, 0}), 0.0f);           // along the axis
+    // From the axis to the axis is closed (along it): a solid.
+    r = load_text("lathe { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }");
+    EXPECT_FALSE(r.scene.shape_objects.at(0).nodes.at(0).shape.open);
+    EXPECT_NEAR(first_hit(r, {0, 5, 0}, {0, -1, 0}), 4.0f, 1e-5);
+}
+
+TEST(PovObjects, LatheSplinesFollowPovRaysDefinitions) {
+    // quadratic_spline from the second point: (1, 0) to (1, 1) leaving along ((1,1)-(0,-1))/2,
+    // a Bézier with control (1, 0) + (1, 2) / 4.
+    PovResult r = load_text("lathe { quadratic_spline 4, <0, -1>, <1, 0>, <1, 1>, <0, 2> }");
+    const auto& q = r.scene.shape_objects.at(0).nodes.at(0).revolution;
+    ASSERT_TRUE(q);
+    ASSERT_EQ(q->segments.size(), 2u);
+    EXPECT_EQ(q->segments[0].wdeg, 2u);
+    EXPECT_FLOAT_EQ(q->segments[0].w[1], 1.25f);
+    EXPECT_FLOAT_EQ(q->segments[0].h[1], 0.5f);
+    // cubic_spline: Catmull-Rom from the second point to the last but one.
+    r = load_text("lathe { cubic_spline 5, <0, -1>, <1, 0>, <1, 1>, <0, 2>, <0, 3> }");
+    const auto& c = r.scene.shape_objects.at(0).nodes.at(0).revolution;
+    ASSERT_EQ(c->segments.size(), 2u);
+    EXPECT_FLOAT_EQ(c->segments[0].w[1], 1 + 1.0f / 6);
+    EXPECT_FLOAT_EQ(c->segments[0].w[2], 1 + 1.0f / 6); // <1, 1> - (<0, 2> - <1, 0>) / 6
+    // bezier_spline: a quarter-circle-like bulge of radius about 1 from the axis to the axis.
+    r = load_text("lathe { bezier_spline 8, <0, 0>, <0.55, 0>, <1, 0.45>, <1, 1>, "
+                  "<1, 1>, <1, 1.55>, <0.55, 2>, <0, 2> }");
+    EXPECT_FALSE(r.scene.shape_objects.at(0).nodes.at(0).shape.open);
+    EXPECT_NEAR(first_hit(r, {-5, 1, 0}, {1, 0, 0}), 4.0f, 1e-5);
+    EXPECT_NEAR(first_hit(r, {0, 5, 0}, {0, -1, 0}), 3.0f, 1e-5);
+}
+
+TEST(PovObjects, SorIsACubicInTheHeightWithCaps) {
+    // A cylinder of radius 1 from y = 0 to 2 (the points outside steer the slopes to zero).
+    const std::string pts = "5, <1, -1>, <1, 0>, <1, 1>, <1, 2>, <1, 3>";
+    PovResult r = load_text("sor { " + pts + " }");
+    EXPECT_TRUE(r.warnings.empty());
+    const CsgNode& n = r.scene.shape_objects.at(0).nodes.at(0);
+    EXPECT_EQ(n.shape.kind, ShapeKind::Revolution);
+    EXPECT_TRUE(n.revolution->squared);
+    EXPECT_NEAR(first_hit(r, {-5, 1, 0}, {1, 0, 0}), 4.0f, 1e-5);    // the side
+    EXPECT_NEAR(first_hit(r, {0, 5, 0.5f}, {0, -1, 0}), 3.0f, 1e-5); // the cap at y = 2
+    EXPECT_NEAR(first_hit(r, {0, -5, 0}, {0, 1, 0}), 5.0f, 1e-5);    // the base
+    // open: no caps.
+    r = load_text("sor { " + pts + " open }");
+    EXPECT_NEAR(first_hit(r, {0, 5, 0.5f}, {0, -1, 0}), -1.0f, 1e-5);
+    EXPECT_NEAR(first_hit(r, {0, 1, 0}, {1, 0, 0}), 1.0f, 1e-5);
+    // A bulge: r^2 runs through 1 at y = 0 and 1 with slope 2 r dr/dh from the neighbours.
+    r = load_text("sor { 4, <0.5, -1>, <1, 0>, <1, 1>, <0.5, 2> }");
+    // r^2(h) with r^2(0) = r^2(1) = 1 and slopes 2 * 1 * (1 - 0.5) / (1 - (-1)) = 0.5 and
+    // -0.5: at h = 0.5 the Hermite cubic is 1 + (0.5 - (-0.5)) / 8 = 1.125.
+    EXPECT_NEAR(first_hit(r, {-5, 0.5f, 0}, {1, 0, 0}), 5 - std::sqrt(1.125f), 1e-5);
+}
+
+TEST(PovObjects, LatheAndSorErrors) {
+    EXPECT_EQ(error_of("lathe { 1, <0, 0> }"),
+              "scene.pov:1:9: error: a lathe with this spline needs a whole number of at least "
+              "2 points");
+    EXPECT_EQ(error_of("lathe { bezier_spline 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 2> }"),
+              "scene.pov:1:23: error: a lathe's bezier_spline takes its points four at a time");
+    EXPECT_EQ(error_of("lathe { 3, <0, 0>, <-1, 0>, <0, 1> }"),
+              "scene.pov:1:9: error: the lathe's point 2 has a negative radius (x < 0)");
+    EXPECT_EQ(error_of("lathe { 3, <0, 0>, 1, <0, 1> }"),
+              "scene.pov:1:20: error: found '1', expected the lathe's point 2 of 3 (a 2-D vector "
+              "<r, h>)");
+    EXPECT_EQ(error_of("sor { 3, <0, 0>, <1, 1>, <0, 2> }"),
+              "scene.pov:1:7: error: a sor needs a whole number of at least 4 points");
+    EXPECT_EQ(error_of("sor { 5, <0, 0>, <1, 1>, <1, 3>, <1, 2>, <0, 4> }"),
+              "scene.pov:1:7: error: the sor's heights must rise from point to point (point 4 "
+              "is not above point 3)");
+}
+
 } // namespace
 } // namespace sheaf::io::pov

@@ -218,6 +218,10 @@ class Parser {
     void parse_csg(const Token& kw, PovObject& o);
     /// prism { ... }: a glyph shape swept along y; false (after a warning) for conic_sweep.
     bool parse_prism(const Token& kw, PovObject& o);
+    bool parse_lathe(const Token& kw, PovObject& o);
+    bool parse_sor(const Token& kw, PovObject& o);
+    /// N 2-D points <r, h> of a lathe or sor, charged to the data budget first.
+    std::vector<Vec3> parse_profile_points(const Token& count_at, int n, const char* what);
     /// text { ttf FONT STRING THICKNESS, OFFSET modifiers }: a union of glyph shapes.
     void parse_text(const Token& kw, PovObject& o);
     FontCache fonts_; // text's fonts

@@ -39,6 +39,8 @@ SCENES = [
     ("examples/objects/superel3.pov", "exact"),
     ("scenes/surfaces.pov", "exact"),
     ("scenes/text.pov", "exact"),
+    ("scenes/turned.pov", "exact"),
+    ("examples/objects/lathe2.pov", "exact"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

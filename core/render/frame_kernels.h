@@ -4,6 +4,7 @@
 // (core/render/renderer.cpp) and the wavefront pipeline (core/wavefront) call the same ones.
 #pragma once
 
+#include "core/math/hd_math.h"
 #include "core/raster/camera.h"
 #include "core/raster/rasterizer.h"
 #include "core/rays/ray_gen.h"
@@ -164,9 +165,10 @@ struct PixelBuffers {
     uint32_t* tests;
 };
 
-/// Box filter of the aa x aa samples of pixel p; passes from the centre sample.
-SHEAF_HD_INLINE void resolve_pixel(size_t p, int w, int aa, int W, const SampleBuffers& in,
-                                   const PixelBuffers& out) {
+/// Box filter of the aa x aa samples of pixel p, taken from the scene's working space to light
+/// (v^gamma; POV-Ray averages in its working space too); passes from the centre sample.
+SHEAF_HD_INLINE void resolve_pixel(size_t p, int w, int aa, int W, float gamma,
+                                   const SampleBuffers& in, const PixelBuffers& out) {
     const int x = int(p % size_t(w)), y = int(p / size_t(w));
     const float inv = 1.0f / float(aa * aa);
     Vec3 sum(0.0f);
@@ -178,6 +180,8 @@ SHEAF_HD_INLINE void resolve_pixel(size_t p, int w, int aa, int W, const SampleB
         }
     out.tests[p] = uint32_t(tests < 0xFFFFFFFFu ? tests : 0xFFFFFFFFu);
     sum = sum * inv;
+    if (gamma != 1)
+        for (int c = 0; c < 3; ++c) sum[c] = sum[c] > 0 ? hdm::powf(sum[c], gamma) : sum[c];
     out.rgba[4 * p + 0] = sum.x, out.rgba[4 * p + 1] = sum.y, out.rgba[4 * p + 2] = sum.z,
                      out.rgba[4 * p + 3] = 1;
     const size_t c = size_t(y * aa + aa / 2) * W + (x * aa + aa / 2);

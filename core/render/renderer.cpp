@@ -220,11 +220,12 @@ class FramePipeline {
         f_.tests.resize(size_t(w) * h);
         const SampleBuffers in{radiance_.data(), tests_.data(), depth_.data(),
                                normal_.data(),   albedo_.data(), object_.data()};
+        const float gamma = scene_.working_gamma;
         const PixelBuffers out{f_.rgba.data(),   f_.depth.data(),     f_.normal.data(),
                                f_.albedo.data(), f_.object_id.data(), f_.tests.data()};
         parallel_for(
-            "resolve", size_t(w) * h, [&](size_t p) { resolve_pixel(p, w, aa, W_, in, out); },
-            1024);
+            "resolve", size_t(w) * h,
+            [&](size_t p) { resolve_pixel(p, w, aa, W_, gamma, in, out); }, 1024);
     }
 
     const PreparedScene& scene_;

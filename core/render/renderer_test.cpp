@@ -176,6 +176,29 @@ TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
     EXPECT_EQ(f.rgba[0], 0.0f);
 }
 
+TEST(Renderer, AWorkingGammaDecodesTheAveragedPixel) {
+    // The lit quad in a gamma-2.2 working space (POV-Ray's assumed_gamma 2.2): the same
+    // computation, then light = value^2.2, after the anti-aliasing average.
+    Scene s;
+    Material m;
+    m.color = Vec3(0.5f, 0.25f, 1.0f), m.ambient = 0.1f, m.diffuse = 0.6f;
+    s.add_mesh_object("quad", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)), s.add_material(m));
+    s.add_light(Light{Vec3(0, 0, 3), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
+    s.background = Vec3(0.5f, 0, 2);
+    s.working_gamma = 2.2f;
+    const Frame f = render(prepare_scene(s), {{"width", "33"}, {"height", "33"}});
+    const size_t c = (16 * 33 + 16) * 4;
+    EXPECT_NEAR(f.rgba[c + 0], std::pow(0.5f * 0.7f, 2.2f), 1e-5f);
+    EXPECT_NEAR(f.rgba[c + 1], std::pow(0.25f * 0.7f, 2.2f), 1e-5f);
+    EXPECT_NEAR(f.rgba[c + 2], std::pow(1.0f * 0.7f, 2.2f), 1e-5f);
+    EXPECT_NEAR(f.rgba[0], std::pow(0.5f, 2.2f), 1e-6f); // the background
+    EXPECT_EQ(f.rgba[1], 0.0f);
+    EXPECT_NEAR(f.rgba[2], std::pow(2.0f, 2.2f), 1e-5f); // above 1 too, as light
+    s.working_gamma = 0;
+    EXPECT_THROW(prepare_scene(s), SceneError);
+}
+
 // The quad of the analytic test under other lights: the centre pixel's radiance.
 Vec3 centre_radiance(const Light& light, const Material& m, bool occluder = false) {
     Scene s;

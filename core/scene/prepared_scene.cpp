@@ -240,6 +240,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.material_entries = scene.material_entries;
     p.sky = scene.sky;
     p.fog = scene.fog;
+    p.working_gamma = scene.working_gamma;
     p.textures = scene.textures;
     p.lights = scene.lights;
     p.camera = scene.camera;

@@ -87,6 +87,7 @@ struct PreparedScene {
     std::vector<Light> lights;
     Camera camera;
     Vec3 background;
+    float working_gamma = 1; // Scene::working_gamma
     std::map<std::string, std::string> settings;
 
     size_t triangle_count() const { return tris.size(); }

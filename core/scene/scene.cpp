@@ -307,6 +307,8 @@ void Scene::validate_patterns() const {
     if (sky >= int32_t(pigments.size())) throw SceneError("the sky names a missing pigment");
     if (!(fog.distance >= 0) || !is_finite(fog.color))
         throw SceneError("the fog's distance or colour is out of range");
+    if (!(working_gamma >= 0.1f && working_gamma <= 10.0f))
+        throw SceneError("the working gamma is out of range (0.1 to 10)");
 }
 
 } // namespace sheaf

@@ -185,6 +185,10 @@ class Scene {
     Vec3 background{0, 0, 0};
     int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene
     Fog fog;
+    /// The gamma of the space colours are given and computed in (POV-Ray's assumed_gamma): the
+    /// frame's value v is light v^working_gamma, and image textures are read into that space.
+    /// 1: linear light (the default; every format but legacy POV-Ray scenes).
+    float working_gamma = 1.0f;
     /// Settings the scene itself asks for (e.g. trace.depth); a host's explicit settings win.
     std::map<std::string, std::string> settings;
 

@@ -49,6 +49,7 @@ struct SceneView {
     const Light* lights = nullptr;
     uint32_t light_count = 0;
     Vec3 background;
+    float working_gamma = 1; // the frame's value v is light v^working_gamma
 
     // Image textures: host only (OpenImageIO); a device view has none (the backend choice
     // keeps scenes with image textures on the CPU).
@@ -75,7 +76,7 @@ struct SceneView {
           material_switches(p.material_switches.data()),
           material_entries(p.material_entries.data()), sky(p.sky), fog(p.fog),
           lights(p.lights.data()), light_count(uint32_t(p.lights.size())), background(p.background),
-          textures(p.textures.data()), sampler(p.sampler.get()) {}
+          working_gamma(p.working_gamma), textures(p.textures.data()), sampler(p.sampler.get()) {}
 
     /// What poly, glyph and revolution shapes read beside their Shape.
     SHEAF_HD ShapeTables shape_tables() const {

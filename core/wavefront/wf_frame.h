@@ -336,6 +336,7 @@ template <class Exec> class DeviceFrame {
     void resolve() {
         clock_.start("shading");
         const int aa = s_.aa_samples, w = s_.width, h = s_.height, W = W_;
+        const float gamma = scene_.working_gamma;
         const size_t pixels = size_t(w) * h;
         DeviceBuffer<float, Exec> rgba(ex_, 4 * pixels), depth(ex_, pixels);
         DeviceBuffer<Vec3, Exec> normal(ex_, pixels), albedo(ex_, pixels);
@@ -345,7 +346,7 @@ template <class Exec> class DeviceFrame {
         const PixelBuffers out{rgba.data(),   depth.data(),  normal.data(),
                                albedo.data(), object.data(), tests.data()};
         ex_.launch("resolve", pixels,
-                   [=] SHEAF_HD_LAMBDA(size_t p) { resolve_pixel(p, w, aa, W, in, out); });
+                   [=] SHEAF_HD_LAMBDA(size_t p) { resolve_pixel(p, w, aa, W, gamma, in, out); });
         f_.width = w, f_.height = h;
         f_.rgba = rgba.download();
         f_.depth = depth.download();

@@ -31,7 +31,8 @@ OIIO::TextureSystem* texture_system() {
 
 class OiioSampler final : public TextureSampler {
   public:
-    OiioSampler() : ts_(texture_system()) {}
+    /// `gamma`: the scene's working gamma; texels are read into that space (linear^(1/gamma)).
+    explicit OiioSampler(float gamma) : ts_(texture_system()), inv_gamma_(1 / gamma) {}
 
     void add(const Texture& tex) {
         const std::string where = tex.origin.empty() ? "" : " (asked for at " + tex.origin + ")";
@@ -72,6 +73,8 @@ class OiioSampler final : public TextureSampler {
         if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
         if (e.srgb)
             for (float& c : rgb) c = srgb_to_linear(c);
+        if (inv_gamma_ != 1)
+            for (float& c : rgb) c = c > 0 ? std::pow(c, inv_gamma_) : c;
         return {rgb[0], rgb[1], rgb[2]};
     }
 
@@ -82,6 +85,7 @@ class OiioSampler final : public TextureSampler {
         int channels;
     };
     OIIO::TextureSystem* ts_;
+    float inv_gamma_;
     std::vector<Entry> entries_;
 };
 
@@ -89,7 +93,7 @@ class OiioSampler final : public TextureSampler {
 
 void attach_texture_sampler(PreparedScene& scene) {
     if (scene.textures.empty()) return;
-    auto sampler = std::make_shared<OiioSampler>();
+    auto sampler = std::make_shared<OiioSampler>(scene.working_gamma);
     for (const Texture& t : scene.textures) sampler->add(t);
     scene.sampler = std::move(sampler);
 }

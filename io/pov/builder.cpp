@@ -29,9 +29,6 @@ struct Builder {
     std::map<uint32_t, Mesh> loose; // single triangles by material, in Sheaf world space
     size_t names = 0;
 
-    Vec3 decode(const Color5& c) const { return materials.decode(c); }
-    double decode(double c) const { return materials.decode(Color5{c, c, c, 0, 0}).x; }
-
     uint32_t material(const PovTexture& t, const PovInterior* in) {
         return materials.material(t, in);
     }
@@ -50,8 +47,6 @@ struct Builder {
         Light l = pl.light;
         l.spot_falloff = std::clamp(l.spot_falloff, 0.01f, 180.0f);
         l.spot_radius = std::clamp(l.spot_radius, 0.0f, l.spot_falloff);
-        l.color =
-            Vec3(float(decode(l.color.x)), float(decode(l.color.y)), float(decode(l.color.z)));
         const Vec3 aim = pl.point_at - pl.light.position;
         if (!is_finite(pl.light.position) || !is_finite(l.color) || !is_finite(aim) ||
             !is_finite(pl.axis1) || !is_finite(pl.axis2))
@@ -254,18 +249,21 @@ double build_scene(Parser& p, Scene& scene) {
     const double gamma = m.assumed_gamma > 0                    ? m.assumed_gamma
                          : (m.version_given && m.version < 3.7) ? 2.2
                                                                 : 1.0;
-    Builder b{p, scene, MaterialBuilder(p, scene, gamma), pov_to_sheaf(), {}, 0};
+    // POV-Ray computes in its working space: colours stay as written, and the frame's values
+    // are light to the power of the gamma (Scene::working_gamma).
+    scene.working_gamma = float(gamma);
+    Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, 0};
     for (const PovObject& o : m.objects) b.top(o, m.default_texture, nullptr, 0);
     for (auto& [mat, mesh] : b.loose) {
         mesh.normals.clear();
         scene.add_mesh_object("triangles#" + std::to_string(mat), std::move(mesh), mat, {});
     }
     b.camera();
-    scene.background = b.decode(m.background);
+    scene.background = rgb(m.background);
     scene.sky = b.materials.sky(m.sky.pigments, m.sky.local);
     if (m.fog) {
         scene.fog.distance = float(m.fog_distance);
-        scene.fog.color = b.decode(m.fog_color);
+        scene.fog.color = rgb(m.fog_color);
         scene.fog.transmit = float(std::clamp(m.fog_color[4], 0.0, 1.0));
         scene.fog.alt = float(m.fog_alt);
         scene.fog.offset = float(m.fog_offset);

@@ -54,14 +54,6 @@ const PovFinish& layer_finish(const PovTexture& t) {
 
 } // namespace
 
-double MaterialBuilder::decode(double c) const {
-    return gamma_ == 1 || c <= 0 ? c : std::pow(c, gamma_);
-}
-
-Vec3 MaterialBuilder::decode(const Color5& c) const {
-    return Vec3(float(decode(c[0])), float(decode(c[1])), float(decode(c[2])));
-}
-
 Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     Pattern p;
     p.kind = pt.kind;
@@ -104,9 +96,7 @@ PigmentEntry MaterialBuilder::entry(const PovMapEntry& e, const Affine& eff) {
     PigmentEntry out;
     out.value = float(e.value);
     const Color5& c = e.pigment ? e.pigment->color : e.color;
-    const Vec3 rgb = decode(c);
-    out.color[0] = rgb.x, out.color[1] = rgb.y, out.color[2] = rgb.z;
-    out.color[3] = float(c[3]), out.color[4] = float(c[4]);
+    for (int i = 0; i < 5; ++i) out.color[i] = float(c[i]);
     if (e.pigment && e.pigment->patterned) out.pigment = pigment(*e.pigment, eff);
     return out;
 }
@@ -115,9 +105,7 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
     const Affine eff = outer * pg.local;
     Pigment out;
     if (!pg.patterned) {
-        const Vec3 rgb = decode(pg.color);
-        out.color[0] = rgb.x, out.color[1] = rgb.y, out.color[2] = rgb.z;
-        out.color[3] = float(pg.color[3]), out.color[4] = float(pg.color[4]);
+        for (int i = 0; i < 5; ++i) out.color[i] = float(pg.color[i]);
         scene_.pigments.push_back(out);
         return int32_t(scene_.pigments.size() - 1);
     }
@@ -229,7 +217,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         if (top.patterned) {
             m.pigment = pigment(top, eff);
         } else {
-            m.color = decode(top.color);
+            m.color = rgb(top.color);
             m.transmission = float(std::clamp(top.color[3], 0.0, 1.0));
             if (top.color[4] > 0) m.pigment = pigment(top, eff); // transmit needs a pigment
         }
@@ -241,11 +229,11 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         }
     }
     // Emission scales the surface colour; patterned surfaces glow with their mean colour.
-    Vec3 mean = decode(base_color);
+    Vec3 mean = rgb(base_color);
     if (top.patterned && !top.entries.empty()) {
         mean = Vec3(0.0f);
         for (const PovMapEntry& e : top.entries)
-            mean += decode(e.pigment ? e.pigment->color : e.color);
+            mean += rgb(e.pigment ? e.pigment->color : e.color);
         mean = mean / float(top.entries.size());
     }
     m.emission = mean * Vec3(float(f.emission[0]), float(f.emission[1]), float(f.emission[2]));

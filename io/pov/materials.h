@@ -11,18 +11,21 @@
 
 namespace sheaf::io::pov {
 
+/// A colour's red, green and blue, as written: Sheaf computes in the scene's working space
+/// (Scene::working_gamma), as POV-Ray does.
+inline Vec3 rgb(const Color5& c) {
+    return Vec3(float(c[0]), float(c[1]), float(c[2]));
+}
+
 class MaterialBuilder {
   public:
-    MaterialBuilder(Parser& p, Scene& scene, double gamma) : p_(p), scene_(scene), gamma_(gamma) {}
+    MaterialBuilder(Parser& p, Scene& scene) : p_(p), scene_(scene) {}
 
     /// The material of texture `t` (its own transforms included) with interior `in` (may be
     /// null).
     uint32_t material(const PovTexture& t, const PovInterior* in);
     /// The sky_sphere's pigments as one (layered) pigment; -1 when there are none.
     int32_t sky(const std::vector<std::shared_ptr<const PovPigment>>& layers, const Affine& local);
-
-    double gamma() const { return gamma_; }
-    Vec3 decode(const Color5& c) const;
 
   private:
     uint32_t material_in(const PovTexture& t, const PovInterior* in, const Affine& outer,
@@ -33,11 +36,9 @@ class MaterialBuilder {
     int32_t layer_pigment(const std::vector<PigmentEntry>& layers);
     Pattern pattern(const PovPattern& pt, const Affine& eff);
     int32_t image(const PovImage& img, const Affine& to_pattern);
-    double decode(double c) const;
 
     Parser& p_;
     Scene& scene_;
-    double gamma_;
     std::map<std::string, uint32_t> plain_; // materials without patterns, by their values
     std::map<std::string, int32_t> images_; // image textures by file and transform
 };

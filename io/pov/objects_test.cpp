@@ -160,12 +160,15 @@ TEST(PovObjects, TexturesAndMaterials) {
     EXPECT_TRUE(r.warnings.empty());
 }
 
-TEST(PovObjects, GammaDecodesLegacyColours) {
-    const PovResult r = load_text("global_settings { assumed_gamma 2.2 }\n"
-                                  "sphere { 0, 1 pigment { rgb 0.5 } }\nbackground { rgb 0.5 }");
-    EXPECT_NEAR(r.scene.materials[r.scene.shape_objects[0].nodes[0].material].color.x,
-                std::pow(0.5, 2.2), 1e-5);
-    EXPECT_NEAR(r.scene.background.x, std::pow(0.5, 2.2), 1e-5);
+TEST(PovObjects, LegacyGammaComputesInItsOwnSpace) {
+    // As POV-Ray 3.7: colours stay as written and the frame is decoded by the gamma at the end.
+    PovResult r = load_text("global_settings { assumed_gamma 2.2 }\n"
+                            "sphere { 0, 1 pigment { rgb 0.5 } }\nbackground { rgb 0.5 }");
+    EXPECT_FLOAT_EQ(r.scene.materials[r.scene.shape_objects[0].nodes[0].material].color.x, 0.5f);
+    EXPECT_FLOAT_EQ(r.scene.background.x, 0.5f);
+    EXPECT_FLOAT_EQ(r.scene.working_gamma, 2.2f);
+    EXPECT_FLOAT_EQ(load_text("#version 3.6;").scene.working_gamma, 2.2f);
+    EXPECT_FLOAT_EQ(load_text("#version 3.7;").scene.working_gamma, 1.0f);
 }
 
 TEST(PovObjects, UnsupportedPatternsAreAveragedWithAWarning) {

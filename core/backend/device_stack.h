@@ -3,10 +3,12 @@
 // shapes carry a poly index; plus 1,952 (sm_90) or 1,960 (sm_80) under a clipped_by: about
 // 9,000 of the 10 KiB allowed), and the shading, pigment and pattern code needs a base of its
 // own (the largest tracing kernel's frame is 2,704 bytes on both, 2,736 on sm_90 with the
-// ground fog, 2,752 with glyphs; nested pigments 328 to 344 bytes a level; the out-of-line
-// poly_spans (1,752 bytes on sm_90), superellipsoid_spans (584) and glyph_spans with
-// glyph_pieces (296 + 1,448) are on the stack once, at the leaf; csg_spans stays at 7,064 to
-// 7,080 a level with glyphs). The device reserves the
+// ground fog, 2,752 with glyphs, 2,768 with solids of revolution; nested pigments 328 to 344
+// bytes a level; the out-of-line poly_spans (1,752 bytes on sm_90), superellipsoid_spans (584),
+// glyph_spans with glyph_pieces (296 + 1,448) and revolution_spans with revolution_pieces
+// (296 + 2,328) are on the stack once, at the leaf; csg_spans stays at 7,064 to 7,080 a level).
+// A lone lathe: 2,768 + 7,064 + 2,624 = 12,456 bytes, so the base is 13 KiB. The device
+// reserves the
 // stack for every resident thread (about 270,000 on an H100), so it is capped; a scene nested
 // more deeply renders on the CPU (backend=auto) or is an error (backend=cuda).
 #pragma once
@@ -20,7 +22,7 @@
 
 namespace sheaf {
 
-constexpr size_t kDeviceStackBase = size_t(12) << 10;
+constexpr size_t kDeviceStackBase = size_t(13) << 10;
 constexpr size_t kDeviceStackPerCsgLevel = size_t(10) << 10;
 constexpr size_t kDeviceStackCap = size_t(96) << 10;
 

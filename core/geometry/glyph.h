@@ -84,18 +84,6 @@ struct Crossing {
     int delta;    // the winding number's change along the line
 };
 
-SHEAF_HD_INLINE void insert(Crossing* xs, int& n, const Crossing& c) {
-    int at;
-    if (n < kMaxGlyphCrossings)
-        at = n++;
-    else if (c.t < xs[n - 1].t)
-        at = n - 1; // full: the farthest one gives way
-    else
-        return;
-    for (; at > 0 && xs[at - 1].t > c.t; --at) xs[at] = xs[at - 1];
-    xs[at] = c;
-}
-
 /// Adds the crossing of segment g at parameter s (in [0, 1]) to the sorted list.
 SHEAF_HD_INLINE void add_crossing(const GlyphSegment& g, double s, int delta, double ox, double oy,
                                   double dx, double dy, double inv_len2, Crossing* xs, int& n) {
@@ -107,8 +95,9 @@ SHEAF_HD_INLINE void add_crossing(const GlyphSegment& g, double s, int delta, do
     double ty = u * (double(g.y1) - g.y0) + s * (double(g.y2) - g.y1);
     if (tx == 0 && ty == 0) tx = double(g.x2) - g.x0, ty = double(g.y2) - g.y0;
     if (tx == 0 && ty == 0) tx = -dy, ty = dx; // a point: face along the line
-    insert(xs, n,
-           Crossing{((x - ox) * dx + (y - oy) * dy) * inv_len2, float(ty), float(-tx), delta});
+    insert_nearest(
+        xs, n, kMaxGlyphCrossings,
+        Crossing{((x - ox) * dx + (y - oy) * dy) * inv_len2, float(ty), float(-tx), delta});
 }
 
 /// The crossings of the line (ox, oy) + t (dx, dy) with the outline, sorted by t.

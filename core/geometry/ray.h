@@ -19,6 +19,20 @@ SHEAF_HD_INLINE Vec3 ray_at(const Ray& r, float t) {
     return r.origin + r.dir * t;
 }
 
+/// Inserts c into xs, sorted by t, of which n (at most max) are held: when full, the farthest
+/// gives way. The shapes that gather a ray's crossings before pairing them keep the nearest.
+template <class C> SHEAF_HD_INLINE void insert_nearest(C* xs, int& n, int max, const C& c) {
+    int at;
+    if (n < max)
+        at = n++;
+    else if (c.t < xs[n - 1].t)
+        at = n - 1;
+    else
+        return;
+    for (; at > 0 && xs[at - 1].t > c.t; --at) xs[at] = xs[at - 1];
+    xs[at] = c;
+}
+
 /// Where oz + dz t lies in the slab 0 <= z <= 1: [t0, t1] (all of t when the ray runs along
 /// the slab inside it), with the outward normals of the faces it enters and leaves by; false
 /// when it never does. Shared by the shapes with caps at z = 0 and 1.

@@ -98,18 +98,6 @@ SHEAF_HD_INLINE double value(const double* c, uint32_t n, double s, double& slop
     return v;
 }
 
-SHEAF_HD_INLINE void insert(Crossing* xs, int& n, const Crossing& c) {
-    int at;
-    if (n < kMaxRevolutionCrossings)
-        at = n++;
-    else if (c.t < xs[n - 1].t)
-        at = n - 1; // full: the farthest one gives way
-    else
-        return;
-    for (; at > 0 && xs[at - 1].t > c.t; --at) xs[at] = xs[at - 1];
-    xs[at] = c;
-}
-
 /// Makes the roots found inside (0, 1) agree with the signs at the ends, fa and fb (the
 /// vertices' own values, shared with the neighbouring segments): where rounding near an end
 /// found one root too many or too few, the end nearer to zero gets or loses it.
@@ -166,7 +154,7 @@ SHEAF_HD_NOINLINE int revolution_pieces(const RevolutionRef& g, const Revolution
         const double half_dW = sq ? 0.5 * dw : w * dw; // (d/ds W) / 2, W = radius squared
         Vec3 n(float(dh * x), float(dh * y), float(-half_dW));
         if (!(dot(n, n) > 0)) n = Vec3(float(-dx), float(-dy), float(-dz));
-        insert(xs, nx, Crossing{t, n});
+        insert_nearest(xs, nx, kMaxRevolutionCrossings, Crossing{t, n});
     };
     const RevolutionSegment* s0 = segs + g.first;
     for (uint32_t k = 0; k < g.count; ++k) {

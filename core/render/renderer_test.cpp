@@ -155,16 +155,20 @@ TEST(Renderer, StatisticsAddUp) {
     EXPECT_NE(st.to_table().find("level 2"), std::string::npos);
 }
 
-TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
-    // A quad facing the camera, a light on the view axis: the centre pixel receives
-    // ambient + diffuse (cos = 1) and no specular.
+// A quad facing the camera, a light on the view axis: the centre pixel receives ambient +
+// diffuse (cos = 1) and no specular, 0.7 of the colour (0.5, 0.25, 1).
+Scene lit_quad() {
     Scene s;
     Material m;
     m.color = Vec3(0.5f, 0.25f, 1.0f), m.ambient = 0.1f, m.diffuse = 0.6f;
     s.add_mesh_object("quad", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)), s.add_material(m));
     s.add_light(Light{Vec3(0, 0, 3), Vec3(1.0f)});
     s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
-    const PreparedScene scene = prepare_scene(s);
+    return s;
+}
+
+TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
+    const PreparedScene scene = prepare_scene(lit_quad());
     const Frame f = render(scene, {{"width", "33"}, {"height", "33"}});
     const size_t c = (16 * 33 + 16) * 4;
     EXPECT_NEAR(f.rgba[c + 0], 0.5f * 0.7f, 1e-4f);
@@ -179,12 +183,7 @@ TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
 TEST(Renderer, AWorkingGammaDecodesTheAveragedPixel) {
     // The lit quad in a gamma-2.2 working space (POV-Ray's assumed_gamma 2.2): the same
     // computation, then light = value^2.2, after the anti-aliasing average.
-    Scene s;
-    Material m;
-    m.color = Vec3(0.5f, 0.25f, 1.0f), m.ambient = 0.1f, m.diffuse = 0.6f;
-    s.add_mesh_object("quad", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)), s.add_material(m));
-    s.add_light(Light{Vec3(0, 0, 3), Vec3(1.0f)});
-    s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
+    Scene s = lit_quad();
     s.background = Vec3(0.5f, 0, 2);
     s.working_gamma = 2.2f;
     const Frame f = render(prepare_scene(s), {{"width", "33"}, {"height", "33"}});

@@ -542,15 +542,18 @@ TEST(PovObjects, LatheAndSorErrors) {
     EXPECT_EQ(error_of("lathe { bezier_spline 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 2> }"),
               "scene.pov:1:23: error: a lathe's bezier_spline takes its points four at a time");
     EXPECT_EQ(error_of("lathe { 3, <0, 0>, <-1, 0>, <0, 1> }"),
-              "scene.pov:1:9: error: the lathe's point 2 has a negative radius (x < 0)");
+              "scene.pov:1:20: error: the lathe's point 2 has a negative radius (x < 0)");
     EXPECT_EQ(error_of("lathe { 3, <0, 0>, 1, <0, 1> }"),
               "scene.pov:1:20: error: found '1', expected the lathe's point 2 of 3 (a 2-D vector "
               "<r, h>)");
     EXPECT_EQ(error_of("sor { 3, <0, 0>, <1, 1>, <0, 2> }"),
               "scene.pov:1:7: error: a sor needs a whole number of at least 4 points");
     EXPECT_EQ(error_of("sor { 5, <0, 0>, <1, 1>, <1, 3>, <1, 2>, <0, 4> }"),
-              "scene.pov:1:7: error: the sor's heights must rise from point to point (point 4 "
+              "scene.pov:1:34: error: the sor's heights must rise from point to point (point 4 "
               "is not above point 3)");
+    EXPECT_EQ(error_of("sor { 4, <0, 1>, <1, 0>, <1, 1>, <0, 2> }"),
+              "scene.pov:1:10: error: the sor's first and last points must differ in height "
+              "from the curve's second and last but one (they set its slopes there)");
 }
 
 } // namespace

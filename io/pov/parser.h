@@ -220,8 +220,10 @@ class Parser {
     bool parse_prism(const Token& kw, PovObject& o);
     bool parse_lathe(const Token& kw, PovObject& o);
     bool parse_sor(const Token& kw, PovObject& o);
-    /// N 2-D points <r, h> of a lathe or sor, charged to the data budget first.
-    std::vector<Vec3> parse_profile_points(const Token& count_at, int n, const char* what);
+    /// N 2-D points <r, h> of a lathe or sor, charged to the data budget first; `where`: each
+    /// point's first token, for errors about it.
+    std::vector<Vec3> parse_profile_points(const Token& count_at, int n, const char* what,
+                                           std::vector<Token>& where);
     /// text { ttf FONT STRING THICKNESS, OFFSET modifiers }: a union of glyph shapes.
     void parse_text(const Token& kw, PovObject& o);
     FontCache fonts_; // text's fonts

@@ -40,11 +40,14 @@ Affine about_y() {
 
 } // namespace
 
-std::vector<Vec3> Parser::parse_profile_points(const Token& count_at, int n, const char* what) {
-    charge(size_t(n) * (sizeof(Vec3) + sizeof(RevolutionSegment)), count_at);
+std::vector<Vec3> Parser::parse_profile_points(const Token& count_at, int n, const char* what,
+                                               std::vector<Token>& where) {
+    charge(size_t(n) * (sizeof(Vec3) + sizeof(RevolutionSegment) + sizeof(Token)), count_at);
     std::vector<Vec3> p(static_cast<size_t>(n));
+    where.clear();
     for (int i = 0; i < n; ++i) {
         const Token at = peek();
+        where.push_back(at);
         const Value v = parse_expr();
         if (!v.numeric() || v.type == VType::Float)
             error_expected(at, std::string("the ") + what + "'s point " + std::to_string(i + 1) +
@@ -86,7 +89,8 @@ bool Parser::parse_lathe(const Token& kw, PovObject& o) {
     const int n = int(count);
     if (spline == Spline::Bezier && n % 4 != 0)
         error_at(count_at, "a lathe's bezier_spline takes its points four at a time");
-    const std::vector<Vec3> p = parse_profile_points(count_at, n, "lathe");
+    std::vector<Token> where;
+    const std::vector<Vec3> p = parse_profile_points(count_at, n, "lathe", where);
     // The points the curve runs through must not lie left of the axis (POV-Ray's rule).
     for (int i = 0; i < n; ++i) {
         const bool on_curve = spline == Spline::Linear      ? true
@@ -94,8 +98,8 @@ bool Parser::parse_lathe(const Token& kw, PovObject& o) {
                               : spline == Spline::Cubic     ? i > 0 && i < n - 1
                                                             : i % 4 == 0 || i % 4 == 3;
         if (on_curve && p[size_t(i)].x < 0)
-            error_at(count_at, "the lathe's point " + std::to_string(i + 1) +
-                                   " has a negative radius (x < 0)");
+            error_at(where[size_t(i)], "the lathe's point " + std::to_string(i + 1) +
+                                           " has a negative radius (x < 0)");
     }
     auto profile = std::make_shared<RevolutionProfile>();
     std::vector<RevolutionSegment>& s = profile->segments;
@@ -149,20 +153,22 @@ bool Parser::parse_sor(const Token& kw, PovObject& o) {
     if (!(count >= 4 && count <= 1e6) || count != std::floor(count))
         error_at(count_at, "a sor needs a whole number of at least 4 points");
     const int n = int(count);
-    const std::vector<Vec3> p = parse_profile_points(count_at, n, "sor");
+    std::vector<Token> where;
+    const std::vector<Vec3> p = parse_profile_points(count_at, n, "sor", where);
     for (int i = 0; i < n; ++i) {
         if (p[size_t(i)].x < 0)
-            error_at(count_at,
+            error_at(where[size_t(i)],
                      "the sor's point " + std::to_string(i + 1) + " has a negative radius (x < 0)");
         // The curve's points must rise (POV-Ray's rule; the first and last only steer).
         if (i > 1 && i < n - 1 && !(p[size_t(i)].y > p[size_t(i - 1)].y))
-            error_at(count_at, "the sor's heights must rise from point to point (point " +
-                                   std::to_string(i + 1) + " is not above point " +
-                                   std::to_string(i) + ")");
+            error_at(where[size_t(i)], "the sor's heights must rise from point to point (point " +
+                                           std::to_string(i + 1) + " is not above point " +
+                                           std::to_string(i) + ")");
     }
     if (!(p[2].y != p[0].y) || !(p[size_t(n - 1)].y != p[size_t(n - 3)].y))
-        error_at(count_at, "the sor's first and last points must differ in height from the "
-                           "curve's second and last but one (they set its slopes there)");
+        error_at(where[p[2].y != p[0].y ? size_t(n - 1) : 0],
+                 "the sor's first and last points must differ in height from the "
+                 "curve's second and last but one (they set its slopes there)");
     auto profile = std::make_shared<RevolutionProfile>();
     profile->squared = true;
     std::vector<RevolutionSegment>& s = profile->segments;

@@ -224,6 +224,8 @@ class Parser {
     /// point's first token, for errors about it.
     std::vector<Vec3> parse_profile_points(const Token& count_at, int n, const char* what,
                                            std::vector<Token>& where);
+    /// A lathe's or sor's count of points: a whole number of at least `minimum`.
+    int parse_profile_count(const Token& count_at, int minimum, const char* what);
     /// text { ttf FONT STRING THICKNESS, OFFSET modifiers }: a union of glyph shapes.
     void parse_text(const Token& kw, PovObject& o);
     FontCache fonts_; // text's fonts

@@ -134,6 +134,38 @@ TEST(XmlErrors, TextIsAUnionOfGlyphsInItsFont) {
                  "no visible character");
 }
 
+TEST(XmlErrors, LatheAndSorTurnTheirPointsAboutY) {
+    // A ring of square section (radius 1 to 2, height 0 to 1), closed: a solid about y.
+    Scene s = io::parse_xml_scene("<scene><lathe points=\"1 0 2 0 2 1 1 1 1 0\"/>"
+                                  "<lathe spline=\"quadratic\" points=\"0 0 1 0 1 1\"/>"
+                                  "<sor points=\"1 -1 1 0 1 1 1 2\" open=\"true\"/></scene>",
+                                  "scene.xml")
+                  .scene;
+    ASSERT_EQ(s.shape_objects.size(), 3u);
+    const CsgNode& ring = s.shape_objects[0].nodes[0];
+    EXPECT_EQ(ring.shape.kind, ShapeKind::Revolution);
+    EXPECT_FALSE(ring.shape.open);
+    ASSERT_TRUE(ring.revolution);
+    EXPECT_EQ(ring.revolution->segments.size(), 4u);
+    const Vec3 top = ring.transform.point({1.5f, 0, 1}); // the profile's height is y
+    EXPECT_FLOAT_EQ(top.y, 1);
+    EXPECT_FLOAT_EQ(top.x, 1.5f);
+    EXPECT_TRUE(s.shape_objects[1].nodes[0].shape.open); // from the axis, not back to it
+    const CsgNode& sor = s.shape_objects[2].nodes[0];
+    EXPECT_TRUE(sor.revolution->squared);
+    EXPECT_TRUE(sor.shape.open);
+    EXPECT_EQ(sor.revolution->segments.size(), 1u); // open: no caps
+    EXPECT_NO_THROW(s.validate());
+    EXPECT_ERROR("<scene><lathe points=\"0 0 -1 0.5 0 1\"/></scene>", "1:23",
+                 "<lathe>: the lathe's point 2 has a negative radius (x < 0)");
+    EXPECT_ERROR("<scene><lathe points=\"0 0 1\"/></scene>", "1:23",
+                 "pairs of numbers (radius, height)");
+    EXPECT_ERROR("<scene><lathe spline=\"cubic\" points=\"0 0 1 0 1 1\"/></scene>", "1:38",
+                 "needs at least 4 points");
+    EXPECT_ERROR("<scene><sor points=\"0 0 1 1 1 3 1 2 0 4\"/></scene>", "1:21",
+                 "point 4 is not above point 3");
+}
+
 TEST(XmlErrors, ReferencesMustBeDefinedFirstAndOnce) {
     EXPECT_ERROR("<scene>\n<object mesh=\"m\"/>\n</scene>", "2:15",
                  "unknown mesh 'm'; none is defined before this point");

@@ -1,9 +1,12 @@
 // Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus>, <poly>,
-// <superellipsoid>, <text> and <union>, <merge>, <intersection>, <difference> over them. The
+// <superellipsoid>, <text>, <lathe>, <sor> and <union>, <merge>, <intersection>, <difference>
+// over them. The
 // geometric attributes (centre, radius, base and cap, ...) become the transform from the core's
 // canonical shape (core/geometry/shape.h); transform elements then place the node. A <text> is
 // a union of glyph shapes, one per character with ink, laid out by io/font.
 #include "io/xml/xml_reader.h"
+
+#include "core/geometry/revolution_profile.h"
 
 #include <cmath>
 
@@ -13,8 +16,8 @@ namespace {
 constexpr int kMaxCsgDepth = kMaxCsgNesting;
 
 const std::vector<std::string> kShapeElements = {
-    "sphere",         "box",  "cylinder", "cone",  "disc",         "plane",     "torus", "poly",
-    "superellipsoid", "text", "union",    "merge", "intersection", "difference"};
+    "sphere",         "box",  "cylinder", "cone", "disc",  "plane", "torus",        "poly",
+    "superellipsoid", "text", "lathe",    "sor",  "union", "merge", "intersection", "difference"};
 
 /// The transform taking local z from `base` to `cap`, with local x and y scaled by `radius`.
 Affine axis_frame(Vec3 base, Vec3 cap, float radius) {
@@ -168,6 +171,32 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
             if (poly_is_zero(*poly)) fail_attr("coefficients", "every coefficient is zero");
             s.kind = ShapeKind::Poly;
             n.poly = std::move(poly);
+        } else if (kind == "lathe" || kind == "sor") {
+            // The profile's points "r h r h ...", turned about y (the shape's z).
+            std::vector<float> v;
+            a.require("points");
+            a.get_numbers("points", v);
+            if (v.size() % 2 != 0)
+                fail_attr("points", "the points are pairs of numbers (radius, height)");
+            std::vector<Vec3> p;
+            for (size_t i = 0; i + 1 < v.size(); i += 2) p.push_back(Vec3(v[i], v[i + 1], 0));
+            try {
+                if (kind == "lathe") {
+                    int spline = 0;
+                    a.get("spline", spline, {"linear", "quadratic", "cubic", "bezier"});
+                    bool solid = false;
+                    n.revolution = std::make_shared<RevolutionProfile>(
+                        lathe_profile(p, LatheSpline(spline), solid));
+                    s.open = !solid;
+                } else {
+                    a.get("open", s.open);
+                    n.revolution = std::make_shared<RevolutionProfile>(sor_profile(p, s.open));
+                }
+            } catch (const ProfileError& e) {
+                fail_attr("points", e.what());
+            }
+            s.kind = ShapeKind::Revolution;
+            frame.m[1][1] = 0, frame.m[2][2] = 0, frame.m[1][2] = 1, frame.m[2][1] = 1;
         } else if (kind == "text") {
             std::string font_name, text;
             float thickness = 1;

@@ -26,6 +26,16 @@ void check_finite(const std::vector<Vec3>& p) {
             throw ProfileError(int(i), "point " + std::to_string(i + 1) + " is not finite");
 }
 
+/// The segments' control points, computed in double, must fit single precision.
+void check_segments(const RevolutionProfile& prof, const char* what) {
+    for (const RevolutionSegment& s : prof.segments)
+        for (int i = 0; i < 4; ++i)
+            if (!std::isfinite(s.w[i]) || !std::isfinite(s.h[i]))
+                throw ProfileError(-1, std::string("the ") + what +
+                                           "'s points are too large (its curve overflows "
+                                           "single precision)");
+}
+
 } // namespace
 
 int lathe_min_points(LatheSpline spline) {
@@ -82,6 +92,7 @@ RevolutionProfile lathe_profile(const std::vector<Vec3>& p, LatheSpline spline, 
     const bool closed = first.w[0] == last.w[last.wdeg] && first.h[0] == last.h[last.hdeg];
     const bool on_axis = first.w[0] == 0 && last.w[last.wdeg] == 0;
     solid = chained && (closed || on_axis);
+    check_segments(profile, "lathe");
     return profile;
 }
 
@@ -131,6 +142,7 @@ RevolutionProfile sor_profile(const std::vector<Vec3>& p, bool open) {
         s.insert(s.begin(), bottom);
         s.push_back(top);
     }
+    check_segments(profile, "sor");
     return profile;
 }
 

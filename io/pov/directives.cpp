@@ -157,7 +157,16 @@ bool Parser::directive(bool continuation) {
 Value Parser::parse_condition() {
     ++directive_args_;
     try {
-        Value v = parse_expr();
+        // POV-Ray reads a parenthesised condition and stops at its ')': in
+        // "#while (I < 3) <I, 0, 0>, ..." the vector that follows is the loop's first item,
+        // not "(I < 3) < I".
+        Value v;
+        if (accept_sym("(")) {
+            v = parse_expr();
+            expect_sym(")", "')' closing the condition");
+        } else {
+            v = parse_expr();
+        }
         --directive_args_;
         return v;
     } catch (...) {

@@ -82,6 +82,19 @@ TEST(PovDirectives, WhileAndFor) {
                               "S")
                          .v[0],
                      4);
+    // The condition ends at its ')': a vector right after it is the loop's first item (it
+    // was read as "(I < 3) < I", and the loop never ran).
+    const Value v = declared("#declare I = 0; #declare V = array[3] {\n"
+                             "#while (I < 3) <I, 2 * I>, #declare I = I + 1; #end }",
+                             "V");
+    ASSERT_EQ(v.type, VType::Array);
+    EXPECT_DOUBLE_EQ(static_cast<const ArrayValue*>(v.ptr.get())->elements.at(2).v[1], 4);
+    EXPECT_DOUBLE_EQ(declared("#declare A = 1; #declare B = 0;\n"
+                              "#if ((A < 2) & (B < 1)) #declare C = 7; #else #declare C = 8; #end",
+                              "C")
+                         .v[0],
+                     7);
+    EXPECT_DOUBLE_EQ(declared("#declare A = 3; #if (A) #declare C = 7; #end", "C").v[0], 7);
 }
 
 TEST(PovDirectives, Conditionals) {

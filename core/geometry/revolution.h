@@ -49,20 +49,24 @@ struct RevolutionProfile {
     bool squared = false;
 };
 
-/// The bounds a RevolutionRef records, from the profile's control points (each segment lies in
-/// the hull of its own).
+/// Widens w2 (the largest squared radius) and [lo, hi] (the heights) to segment s's control
+/// points: the segment lies in their hull. `squared`: w is the radius squared.
+SHEAF_HD_INLINE void widen_to_segment(const RevolutionSegment& s, bool squared, double& w2,
+                                      double& lo, double& hi) {
+    for (uint32_t i = 0; i <= s.wdeg; ++i) {
+        const double w = s.w[i], ww = squared ? w : w * w;
+        if (ww > w2) w2 = ww;
+    }
+    for (uint32_t i = 0; i <= s.hdeg; ++i) {
+        if (s.h[i] < lo) lo = s.h[i];
+        if (s.h[i] > hi) hi = s.h[i];
+    }
+}
+
+/// The bounds a RevolutionRef records, from the profile's control points.
 inline void revolution_bounds(const RevolutionProfile& p, float& r_max, float& h_lo, float& h_hi) {
     double w2 = 0, lo = INFINITY, hi = -INFINITY;
-    for (const RevolutionSegment& s : p.segments) {
-        for (uint32_t i = 0; i <= s.wdeg; ++i) {
-            const double w = s.w[i], ww = p.squared ? w : w * w;
-            if (ww > w2) w2 = ww;
-        }
-        for (uint32_t i = 0; i <= s.hdeg; ++i) {
-            if (s.h[i] < lo) lo = s.h[i];
-            if (s.h[i] > hi) hi = s.h[i];
-        }
-    }
+    for (const RevolutionSegment& s : p.segments) widen_to_segment(s, p.squared, w2, lo, hi);
     if (p.segments.empty()) lo = hi = 0;
     r_max = float(std::sqrt(w2)) * (1 + 1e-6f), h_lo = float(lo), h_hi = float(hi);
 }
@@ -160,14 +164,7 @@ SHEAF_HD_NOINLINE int revolution_pieces(const RevolutionRef& g, const Revolution
     for (uint32_t k = 0; k < g.count; ++k) {
         const RevolutionSegment& sg = s0[k];
         double wmax2 = 0, hlo = sg.h[0], hhi = sg.h[0];
-        for (uint32_t i = 0; i <= sg.wdeg; ++i) {
-            const double w = sg.w[i], ww = sq ? w : w * w;
-            if (ww > wmax2) wmax2 = ww;
-        }
-        for (uint32_t i = 1; i <= sg.hdeg; ++i) {
-            hlo = sg.h[i] < hlo ? sg.h[i] : hlo;
-            hhi = sg.h[i] > hhi ? sg.h[i] : hhi;
-        }
+        widen_to_segment(sg, sq, wmax2, hlo, hhi);
         // Wholly nearer the axis than the ray ever comes: F > 0 all along, no crossing.
         if (wmax2 < r0sq * (1 - 1e-9)) continue;
         double wc[4], hc[4];

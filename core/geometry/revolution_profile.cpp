@@ -20,10 +20,11 @@ Vec3 toward(const Vec3& a, const Vec3& b, const Vec3& c, double k) {
     return Vec3(float(a.x + (double(b.x) - c.x) * k), float(a.y + (double(b.y) - c.y) * k), 0);
 }
 
-void check_finite(const std::vector<Vec3>& p) {
+void check_finite(const std::vector<Vec3>& p, const char* what) {
     for (size_t i = 0; i < p.size(); ++i)
         if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y))
-            throw ProfileError(int(i), "point " + std::to_string(i + 1) + " is not finite");
+            throw ProfileError(int(i), std::string("the ") + what + "'s point " +
+                                           std::to_string(i + 1) + " is not a finite number");
 }
 
 /// The segments' control points, computed in double, must fit single precision.
@@ -49,7 +50,7 @@ RevolutionProfile lathe_profile(const std::vector<Vec3>& p, LatheSpline spline, 
                                    std::to_string(lathe_min_points(spline)) + " points");
     if (spline == LatheSpline::Bezier && n % 4 != 0)
         throw ProfileError(-1, "a lathe's bezier_spline takes its points four at a time");
-    check_finite(p);
+    check_finite(p, "lathe");
     // The points the curve runs through must not lie left of the axis (POV-Ray's rule).
     for (int i = 0; i < n; ++i) {
         const bool on_curve = spline == LatheSpline::Linear      ? true
@@ -99,7 +100,7 @@ RevolutionProfile lathe_profile(const std::vector<Vec3>& p, LatheSpline spline, 
 RevolutionProfile sor_profile(const std::vector<Vec3>& p, bool open) {
     const int n = int(p.size());
     if (n < 4) throw ProfileError(-1, "a sor needs at least 4 points");
-    check_finite(p);
+    check_finite(p, "sor");
     for (int i = 0; i < n; ++i) {
         if (p[size_t(i)].x < 0)
             throw ProfileError(i, "the sor's point " + std::to_string(i + 1) +

@@ -157,7 +157,11 @@ void Parser::parse_global_settings() {
         const std::string& k = t.text;
         advance();
         if (k == "assumed_gamma") {
+            const Token at = peek();
             model.assumed_gamma = parse_float();
+            // The working space's gamma (Scene::working_gamma): POV-Ray's range of use.
+            if (!(model.assumed_gamma >= 0.1 && model.assumed_gamma <= 10))
+                error_at(at, "assumed_gamma must lie between 0.1 and 10");
         } else if (k == "max_trace_level") {
             model.max_trace_level = int(parse_float());
         } else if (k == "ambient_light") {

@@ -152,6 +152,9 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
     EXPECT_FLOAT_EQ(r.scene.fog.distance, 10);
     EXPECT_FLOAT_EQ(r.scene.fog.color.y, 1);
     EXPECT_TRUE(r.warnings.empty());
+    // A gamma the working space cannot take is an error where it is written.
+    EXPECT_EQ(error_of("global_settings { assumed_gamma 20 }"),
+              "scene.pov:1:33: error: assumed_gamma must lie between 0.1 and 10");
     // Ground fog: its height along up (here -z in POV-Ray, +z in Sheaf after the mirror).
     const PovResult g = load_text(
         "fog { fog_type 2 distance 5 color rgb 1 fog_offset 0.5 fog_alt 2 up y rotate x * 90 }");

@@ -35,9 +35,7 @@ std::vector<Vec3> Parser::parse_profile_points(const Token& count_at, int n, con
         if (!v.numeric() || v.type == VType::Float)
             error_expected(at, std::string("the ") + what + "'s point " + std::to_string(i + 1) +
                                    " of " + std::to_string(n) + " (a 2-D vector <r, h>)");
-        p[size_t(i)] = Vec3(float(v.v[0]), float(v.v[1]), 0);
-        if (!std::isfinite(p[size_t(i)].x) || !std::isfinite(p[size_t(i)].y))
-            error_at(at, std::string("a ") + what + "'s point is not a finite number");
+        p[size_t(i)] = Vec3(float(v.v[0]), float(v.v[1]), 0); // checked by the profile's builder
         accept_sym(",");
     }
     return p;
@@ -73,8 +71,6 @@ bool Parser::parse_lathe(const Token& kw, PovObject& o) {
     }
     const Token count_at = peek();
     const int n = parse_profile_count(count_at, lathe_min_points(spline), "lathe with this spline");
-    if (spline == LatheSpline::Bezier && n % 4 != 0)
-        error_at(count_at, "a lathe's bezier_spline takes its points four at a time");
     std::vector<Token> where;
     const std::vector<Vec3> p = parse_profile_points(count_at, n, "lathe", where);
     bool solid = false;

@@ -1,4 +1,5 @@
 #include "core/geometry/shape.h"
+#include "core/geometry/span_check.h"
 #include "core/geometry/test_support.h"
 
 #include <gtest/gtest.h>
@@ -100,11 +101,7 @@ Shape glyph_shape(uint32_t index) {
     return s;
 }
 
-Ray ray(Vec3 o, Vec3 d) {
-    Ray r;
-    r.origin = o, r.dir = d, r.tmin = 0, r.tmax = 1e30f;
-    return r;
-}
+using test::ray_from;
 
 /// Checks the spans of random rays through the glyph's box against the reference: points well
 /// inside a span are inside, points well inside a gap (or before and after) are outside.
@@ -117,29 +114,14 @@ void check_against_reference(const Glyphs& g, uint32_t glyph, unsigned seed, int
     for (int i = 0; i < rays; ++i) {
         const Vec3 target(ux(rng), uy(rng), uz(rng));
         const Vec3 d = test::random_unit(rng);
-        const Ray l = ray(target - d * 5.0f, d);
+        const Ray l = ray_from(target - d * 5.0f, d);
         Span sp[kMaxShapeSpans];
         const int n = shape_spans(glyph_shape(glyph), l, sp, g.tables());
-        std::vector<float> ends{-1e30f};
-        for (int k = 0; k < n; ++k) {
-            ASSERT_LE(sp[k].t0, sp[k].t1);
-            if (k > 0) ASSERT_LE(sp[k - 1].t1, sp[k].t0);
-            ends.push_back(sp[k].t0), ends.push_back(sp[k].t1);
-        }
-        if (n == kMaxShapeSpans) continue; // more pieces may have been left out
-        ends.push_back(1e30f);
-        // Sample the whole ray; skip samples within 1e-3 of a span end (the reference
-        // flattens the curves).
-        for (float t = 0; t <= 10; t += 0.02f) {
-            bool near_end = false;
-            for (float e : ends) near_end = near_end || std::fabs(e - t) < 2e-3f;
-            if (near_end) continue;
-            bool in_span = false;
-            for (int k = 0; k < n; ++k) in_span = in_span || (sp[k].t0 < t && t < sp[k].t1);
-            ASSERT_EQ(in_span, g.inside(glyph, ray_at(l, t)))
-                << "ray " << i << " at t " << t << " (" << n << " spans)";
-            ++checked;
-        }
+        // The reference flattens the curves: samples near a span's end are left out.
+        const int got = test::check_spans(
+            sp, n, l, [&](Vec3 p) { return g.inside(glyph, p); }, 10, "ray " + std::to_string(i));
+        ASSERT_GE(got, 0);
+        checked += got;
     }
     EXPECT_GT(checked, rays * 250);
 }
@@ -154,11 +136,11 @@ TEST(Glyph, SquareSpansAndNormalsMatchABox) {
         // Aimed at the cube from anywhere around it.
         const Vec3 o = test::random_point(rng, 3.0f);
         const Vec3 d = normalize(test::random_point(rng, 0.6f) + Vec3(0.5f) - o);
-        const Ray l = ray(o, d);
+        const Ray l = ray_from(o, d);
         Span a[kMaxShapeSpans], b[kMaxShapeSpans];
         const int na = shape_spans(glyph_shape(sq), l, a, g.tables());
         // The same unit cube as a box: [-1, 1]^3 moved to [0, 1]^3.
-        const Ray lb = ray((o - Vec3(0.5f)) * 2.0f, d * 2.0f);
+        const Ray lb = ray_from((o - Vec3(0.5f)) * 2.0f, d * 2.0f);
         const int nb = shape_spans({ShapeKind::Box}, lb, b);
         ASSERT_EQ(na, nb) << i;
         if (na == 0) continue;
@@ -198,14 +180,17 @@ TEST(Glyph, HolesOverlapsAndCurvesAgreeWithTheWindingNumber) {
     check_against_reference(g, c, 13, 300);
     // Along z, through the hole and through the ring.
     Span sp[kMaxShapeSpans];
-    EXPECT_EQ(shape_spans(glyph_shape(o), ray({0.5f, 0.5f, -1}, {0, 0, 1}), sp, g.tables()), 0);
-    ASSERT_EQ(shape_spans(glyph_shape(o), ray({0.1f, 0.5f, -1}, {0, 0, 1}), sp, g.tables()), 1);
+    EXPECT_EQ(shape_spans(glyph_shape(o), ray_from({0.5f, 0.5f, -1}, {0, 0, 1}), sp, g.tables()),
+              0);
+    ASSERT_EQ(shape_spans(glyph_shape(o), ray_from({0.1f, 0.5f, -1}, {0, 0, 1}), sp, g.tables()),
+              1);
     EXPECT_FLOAT_EQ(sp[0].t0, 1);
     EXPECT_FLOAT_EQ(sp[0].t1, 2);
     EXPECT_EQ(sp[0].n0.z, -1);
     EXPECT_EQ(sp[0].n1.z, 1);
-    ASSERT_EQ(shape_spans(glyph_shape(overlap), ray({0.45f, 0.45f, 2}, {0, 0, -1}), sp, g.tables()),
-              1);
+    ASSERT_EQ(
+        shape_spans(glyph_shape(overlap), ray_from({0.45f, 0.45f, 2}, {0, 0, -1}), sp, g.tables()),
+        1);
     EXPECT_EQ(sp[0].n0.z, 1);
 }
 
@@ -223,12 +208,15 @@ TEST(Glyph, EvenOddFillsWhatOverlapsTwiceAsAHole) {
     g.circle(0.5f, 0.5f, 0.3f, 8);
     const uint32_t ring = g.finish(true); // both circles counter-clockwise: still a ring
     Span sp[kMaxShapeSpans];
-    ASSERT_EQ(shape_spans(glyph_shape(frame), ray({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
+    ASSERT_EQ(
+        shape_spans(glyph_shape(frame), ray_from({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
     EXPECT_NEAR(sp[0].t1, 1.25f, 1e-6f);
     EXPECT_NEAR(sp[1].t0, 1.75f, 1e-6f);
-    EXPECT_EQ(shape_spans(glyph_shape(frame), ray({0.5f, 0.5f, -1}, {0, 0, 1}), sp, g.tables()), 0);
-    EXPECT_EQ(shape_spans(glyph_shape(overlap), ray({0.45f, 0.45f, -1}, {0, 0, 1}), sp, g.tables()),
-              0);
+    EXPECT_EQ(
+        shape_spans(glyph_shape(frame), ray_from({0.5f, 0.5f, -1}, {0, 0, 1}), sp, g.tables()), 0);
+    EXPECT_EQ(
+        shape_spans(glyph_shape(overlap), ray_from({0.45f, 0.45f, -1}, {0, 0, 1}), sp, g.tables()),
+        0);
     check_against_reference(g, frame, 21, 200);
     check_against_reference(g, overlap, 22, 200);
     check_against_reference(g, ring, 23, 200);
@@ -242,16 +230,16 @@ TEST(Glyph, OpenShowsOnlyTheSides) {
     open.open = true;
     Span sp[kMaxShapeSpans];
     // Across: both walls, each a surface facing the ray.
-    ASSERT_EQ(shape_spans(open, ray({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
+    ASSERT_EQ(shape_spans(open, ray_from({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
     EXPECT_NEAR(sp[0].t0, 1, 1e-6f);
     EXPECT_EQ(sp[0].t0, sp[0].t1);
     EXPECT_NEAR(sp[1].t0, 2, 1e-6f);
     EXPECT_LT(normalize(sp[0].n0).x, -0.999f);
     EXPECT_LT(normalize(sp[1].n0).x, -0.999f);
     // Down through the open top: nothing; from above at a slant: the far wall only.
-    EXPECT_EQ(shape_spans(open, ray({0.5f, 0.5f, 2}, {0, 0, -1}), sp, g.tables()), 0);
+    EXPECT_EQ(shape_spans(open, ray_from({0.5f, 0.5f, 2}, {0, 0, -1}), sp, g.tables()), 0);
     const float k = float(1 / std::sqrt(2.0));
-    ASSERT_EQ(shape_spans(open, ray({0.5f, 0.5f, 1.2f}, {k, 0, -k}), sp, g.tables()), 1);
+    ASSERT_EQ(shape_spans(open, ray_from({0.5f, 0.5f, 1.2f}, {k, 0, -k}), sp, g.tables()), 1);
     EXPECT_NEAR(sp[0].t0, 0.5f * std::sqrt(2.0f), 1e-5f);
 }
 
@@ -300,7 +288,8 @@ TEST(Glyph, AcrossTheRingGivesTwoSpansWithOutwardNormals) {
     g.circle(0.5f, 0.5f, 0.3f, 8, false);
     const uint32_t o = g.finish();
     Span sp[kMaxShapeSpans];
-    ASSERT_EQ(shape_spans(glyph_shape(o), ray({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
+    ASSERT_EQ(shape_spans(glyph_shape(o), ray_from({-1, 0.5f, 0.5f}, {1, 0, 0}), sp, g.tables()),
+              2);
     EXPECT_NEAR(sp[0].t0, 1.0f, 1e-6f);
     EXPECT_NEAR(sp[0].t1, 1.2f, 1e-6f);
     EXPECT_NEAR(sp[1].t0, 1.8f, 1e-6f);
@@ -318,12 +307,12 @@ TEST(Glyph, RaysThroughVerticesCountEachCrossingOnce) {
     Span sp[kMaxShapeSpans];
     // The diagonal passes through two corners, where two segments meet.
     const float k = float(1 / std::sqrt(2.0));
-    ASSERT_EQ(shape_spans(glyph_shape(sq), ray({-1, -1, 0.5f}, {k, k, 0}), sp, g.tables()), 1);
+    ASSERT_EQ(shape_spans(glyph_shape(sq), ray_from({-1, -1, 0.5f}, {k, k, 0}), sp, g.tables()), 1);
     EXPECT_NEAR(sp[0].t0, std::sqrt(2.0f), 1e-5f);
     EXPECT_NEAR(sp[0].t1, 2 * std::sqrt(2.0f), 1e-5f);
     // Along an edge, and through a corner from outside (a touch): never an open span.
-    for (const Ray& l : {ray({-1, 0, 0.5f}, {1, 0, 0}), ray({-1, 1, 0.5f}, {k, -k, 0}),
-                         ray({2, -1, 0.5f}, {-k, k, 0}), ray({1, 2, 0.5f}, {0, -1, 0})}) {
+    for (const Ray& l : {ray_from({-1, 0, 0.5f}, {1, 0, 0}), ray_from({-1, 1, 0.5f}, {k, -k, 0}),
+                         ray_from({2, -1, 0.5f}, {-k, k, 0}), ray_from({1, 2, 0.5f}, {0, -1, 0})}) {
         const int n = shape_spans(glyph_shape(sq), l, sp, g.tables());
         for (int i = 0; i < n; ++i) EXPECT_LT(sp[i].t1, 1e29f);
         EXPECT_LE(n, 1);
@@ -342,21 +331,22 @@ TEST(Glyph, ManyTeethKeepTheNearestCrossings) {
     g.polygon(p);
     const uint32_t comb = g.finish();
     Span sp[kMaxShapeSpans];
-    ASSERT_EQ(shape_spans(glyph_shape(comb), ray({-1, 1.5f, 0.5f}, {1, 0, 0}), sp, g.tables()),
+    ASSERT_EQ(shape_spans(glyph_shape(comb), ray_from({-1, 1.5f, 0.5f}, {1, 0, 0}), sp, g.tables()),
               kMaxShapeSpans);
     for (int i = 0; i < kMaxShapeSpans; ++i) {
         EXPECT_NEAR(sp[i].t0, 1.2f + i, 1e-5f);
         EXPECT_NEAR(sp[i].t1, 1.6f + i, 1e-5f);
     }
     // From the far end, the nearest teeth are the last ones.
-    ASSERT_EQ(shape_spans(glyph_shape(comb), ray({41, 1.5f, 0.5f}, {-1, 0, 0}), sp, g.tables()),
-              kMaxShapeSpans);
+    ASSERT_EQ(
+        shape_spans(glyph_shape(comb), ray_from({41, 1.5f, 0.5f}, {-1, 0, 0}), sp, g.tables()),
+        kMaxShapeSpans);
     EXPECT_NEAR(sp[0].t0, 41 - 39.6f, 1e-4f);
 }
 
 TEST(Glyph, WithoutTablesThereAreNoSpans) {
     Span sp[kMaxShapeSpans];
-    EXPECT_EQ(shape_spans(glyph_shape(0), ray({0, 0, -1}, {0, 0, 1}), sp), 0);
+    EXPECT_EQ(shape_spans(glyph_shape(0), ray_from({0, 0, -1}, {0, 0, 1}), sp), 0);
 }
 
 } // namespace

@@ -161,6 +161,26 @@ SHEAF_HD_INLINE int poly_roots_in(const double* q, int n, double lo_b, double hi
     return nroots;
 }
 
+/// Makes the roots of a polynomial found inside (0, 1) agree with its signs at the ends, fa
+/// and fb (values shared with the neighbouring pieces of a curve or a ray): where rounding near an
+/// end found one root too many or too few, the end nearer to zero gets or loses it.
+SHEAF_HD_INLINE int reconcile_roots(double* roots, int nr, double fa, double fb) {
+    const bool odd = (fa >= 0) != (fb >= 0);
+    if ((nr & 1) == int(odd)) return nr;
+    if (fabs(fa) <= fabs(fb)) {
+        if (nr > 0 && roots[0] < 1e-3) {
+            for (int i = 1; i < nr; ++i) roots[i - 1] = roots[i];
+            return nr - 1;
+        }
+        for (int i = nr; i > 0; --i) roots[i] = roots[i - 1];
+        roots[0] = 0;
+        return nr + 1;
+    }
+    if (nr > 0 && roots[nr - 1] > 1 - 1e-3) return nr - 1;
+    roots[nr] = 1;
+    return nr + 1;
+}
+
 /// The real roots of q (degree n <= 4, q[n] != 0) where q changes sign, ascending; returns
 /// their count (at most n).
 SHEAF_HD_INLINE int poly_roots(const double* q, int n, double* roots) {

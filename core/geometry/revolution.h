@@ -102,26 +102,6 @@ SHEAF_HD_INLINE double value(const double* c, uint32_t n, double s, double& slop
     return v;
 }
 
-/// Makes the roots found inside (0, 1) agree with the signs at the ends, fa and fb (the
-/// vertices' own values, shared with the neighbouring segments): where rounding near an end
-/// found one root too many or too few, the end nearer to zero gets or loses it.
-SHEAF_HD_INLINE int reconcile(double* roots, int nr, double fa, double fb) {
-    const bool odd = (fa >= 0) != (fb >= 0);
-    if ((nr & 1) == int(odd)) return nr;
-    if (fabs(fa) <= fabs(fb)) {
-        if (nr > 0 && roots[0] < 1e-3) {
-            for (int i = 1; i < nr; ++i) roots[i - 1] = roots[i];
-            return nr - 1;
-        }
-        for (int i = nr; i > 0; --i) roots[i] = roots[i - 1];
-        roots[0] = 0;
-        return nr + 1;
-    }
-    if (nr > 0 && roots[nr - 1] > 1 - 1e-3) return nr - 1;
-    roots[nr] = 1;
-    return nr + 1;
-}
-
 } // namespace revolution_detail
 
 /// The pieces of the local ray inside the solid of revolution, sorted, at most `max`: piece i
@@ -181,7 +161,7 @@ SHEAF_HD_NOINLINE int revolution_pieces(const RevolutionRef& g, const Revolution
             int deg = int(he);
             while (deg > 0 && q[deg] == 0) --deg;
             int nr = poly_roots_in<3>(q, deg, 0.0, 1.0, roots);
-            nr = reconcile(roots, nr, double(sg.h[0]) - pz, double(sg.h[he]) - pz);
+            nr = reconcile_roots(roots, nr, double(sg.h[0]) - pz, double(sg.h[he]) - pz);
             for (int i = 0; i < nr; ++i) {
                 double slope;
                 const double w = value(wc, we, roots[i], slope), W = sq ? w : w * w;
@@ -217,7 +197,7 @@ SHEAF_HD_NOINLINE int revolution_pieces(const RevolutionRef& g, const Revolution
         int deg = int(2 * (he > we ? he : we));
         while (deg > 0 && f[deg] == 0) --deg;
         int nr = poly_roots_in<6>(f, deg, 0.0, 1.0, roots);
-        nr = reconcile(roots, nr, fa, fb);
+        nr = reconcile_roots(roots, nr, fa, fb);
         for (int i = 0; i < nr; ++i) {
             double slope;
             const double h = value(hc, he, roots[i], slope);

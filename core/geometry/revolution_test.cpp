@@ -1,4 +1,5 @@
 #include "core/geometry/shape.h"
+#include "core/geometry/span_check.h"
 #include "core/geometry/test_support.h"
 
 #include <gtest/gtest.h>
@@ -96,37 +97,16 @@ Shape revolution_shape(uint32_t index, bool open = false) {
     return s;
 }
 
-Ray ray(Vec3 o, Vec3 d) {
-    Ray r;
-    r.origin = o, r.dir = d, r.tmin = 0, r.tmax = 1e30f;
-    return r;
-}
+using test::ray_from;
 
 /// Checks the spans of one ray against the reference: points well inside a span are inside,
 /// points well inside a gap (or before and after) are outside. Returns the samples checked.
 int check_ray(const Profiles& g, uint32_t k, const Ray& l, const char* what, int i) {
     Span sp[kMaxShapeSpans];
     const int n = shape_spans(revolution_shape(k), l, sp, g.tables());
-    std::vector<float> ends;
-    for (int s = 0; s < n; ++s) {
-        EXPECT_LE(sp[s].t0, sp[s].t1) << what << " ray " << i;
-        if (s > 0) EXPECT_LE(sp[s - 1].t1, sp[s].t0) << what << " ray " << i;
-        ends.push_back(sp[s].t0), ends.push_back(sp[s].t1);
-    }
-    if (n == kMaxShapeSpans) return 0; // more pieces may have been left out
-    int checked = 0;
-    for (float t = 0; t <= 10; t += 0.02f) {
-        bool near_end = false;
-        for (float e : ends) near_end = near_end || std::fabs(e - t) < 2e-3f;
-        if (near_end) continue;
-        bool in_span = false;
-        for (int s = 0; s < n; ++s) in_span = in_span || (sp[s].t0 < t && t < sp[s].t1);
-        EXPECT_EQ(in_span, g.inside(k, ray_at(l, t)))
-            << what << " ray " << i << " at t " << t << " (" << n << " spans)";
-        if (in_span != g.inside(k, ray_at(l, t))) return -1;
-        ++checked;
-    }
-    return checked;
+    return test::check_spans(
+        sp, n, l, [&](Vec3 p) { return g.inside(k, p); }, 10,
+        std::string(what) + " ray " + std::to_string(i));
 }
 
 /// Random rays through the profile's cylinder, checked against the reference.
@@ -141,7 +121,7 @@ void check_against_reference(const Profiles& g, uint32_t k, const char* what, un
         const Vec3 target(uxy(rng), uxy(rng), uz(rng));
         Vec3 d = test::random_unit(rng);
         if (i % 5 == 0) d = normalize(Vec3(d.x, d.y, 0)); // level, as a camera's middle row
-        const int c = check_ray(g, k, ray(target - d * 5.0f, d), what, i);
+        const int c = check_ray(g, k, ray_from(target - d * 5.0f, d), what, i);
         ASSERT_GE(c, 0);
         checked += c;
     }
@@ -160,7 +140,7 @@ TEST(Revolution, RectangleProfileMatchesACylinder) {
         const Vec3 o = test::random_point(rng, 3.0f);
         Vec3 d = normalize(test::random_point(rng, 0.6f) + Vec3(0, 0, 0.5f) - o);
         if (i % 4 == 0) d = normalize(Vec3(d.x, d.y, 0)); // level rays
-        const Ray l = ray(o, d);
+        const Ray l = ray_from(o, d);
         for (const uint32_t k : {cyl, cone}) {
             Span a[kMaxShapeSpans], b[kMaxShapeSpans];
             const int na = shape_spans(revolution_shape(k), l, a, g.tables());
@@ -217,7 +197,7 @@ TEST(Revolution, SquaredRadiusProfileAgreesWithItsCubic) {
     std::mt19937 rng(32);
     for (int i = 0; i < 300; ++i) {
         const Vec3 d = test::random_unit(rng);
-        const Ray l = ray(Vec3(0, 0, 1) - d * 5.0f, d);
+        const Ray l = ray_from(Vec3(0, 0, 1) - d * 5.0f, d);
         Span sp[kMaxShapeSpans];
         const int n = shape_spans(revolution_shape(sor), l, sp, g.tables());
         for (int s = 0; s < n; ++s) {
@@ -246,11 +226,11 @@ TEST(Revolution, NearlyLevelRaysAgreeWithLevelOnes) {
         const Vec3 level = normalize(
             Vec3(-std::cos(a) + 0.2f * std::sin(a), -std::sin(a) - 0.2f * std::cos(a), 0));
         Span a0[kMaxShapeSpans];
-        const int n0 = shape_spans(revolution_shape(torus), ray(o, level), a0, g.tables());
+        const int n0 = shape_spans(revolution_shape(torus), ray_from(o, level), a0, g.tables());
         for (const float tilt : {1e-7f, 1e-6f, 2e-5f, 1e-4f}) {
             const Vec3 d = normalize(level + Vec3(0, 0, tilt));
             Span a1[kMaxShapeSpans];
-            const int n1 = shape_spans(revolution_shape(torus), ray(o, d), a1, g.tables());
+            const int n1 = shape_spans(revolution_shape(torus), ray_from(o, d), a1, g.tables());
             ASSERT_EQ(n0, n1) << i << " tilt " << tilt;
             for (int s = 0; s < n0; ++s) {
                 EXPECT_NEAR(a0[s].t0, a1[s].t0, 1e-3f) << i << " tilt " << tilt;
@@ -273,7 +253,7 @@ TEST(Revolution, RaysThroughVerticesKeepInsideAndOutsideApart) {
         const Vec3 corner = i % 2 ? Vec3(1, 0, 0.5f) : Vec3(0, 0.5f, 0.5f);
         Vec3 d = test::random_unit(rng);
         if (i % 3 == 0) d = normalize(Vec3(d.x, d.y, 0));
-        const int c = check_ray(g, diamond, ray(corner - d * 4.0f, d), "diamond", i);
+        const int c = check_ray(g, diamond, ray_from(corner - d * 4.0f, d), "diamond", i);
         ASSERT_GE(c, 0);
         checked += c;
     }
@@ -285,7 +265,7 @@ TEST(Revolution, OpenProfileGivesItsSurfaceOnly) {
     g.polyline({{1, 0}, {1, 1}}); // a tube without ends
     const uint32_t tube = g.finish();
     Span sp[kMaxShapeSpans];
-    const Ray across = ray(Vec3(-3, 0, 0.5f), Vec3(1, 0, 0));
+    const Ray across = ray_from(Vec3(-3, 0, 0.5f), Vec3(1, 0, 0));
     const int n = shape_spans(revolution_shape(tube, true), across, sp, g.tables());
     ASSERT_EQ(n, 2);
     EXPECT_NEAR(sp[0].t0, 2, 1e-5f);
@@ -294,7 +274,7 @@ TEST(Revolution, OpenProfileGivesItsSurfaceOnly) {
     EXPECT_NEAR(dot(normalize(sp[0].n0), Vec3(-1, 0, 0)), 1, 1e-5f); // facing the ray
     EXPECT_NEAR(dot(normalize(sp[1].n0), Vec3(-1, 0, 0)), 1, 1e-5f);
     // Through the open end, along the axis: nothing.
-    EXPECT_EQ(shape_spans(revolution_shape(tube, true), ray(Vec3(0, 0, -3), Vec3(0, 0, 1)), sp,
+    EXPECT_EQ(shape_spans(revolution_shape(tube, true), ray_from(Vec3(0, 0, -3), Vec3(0, 0, 1)), sp,
                           g.tables()),
               0);
 }

@@ -18,6 +18,7 @@
 //             one; open: its sides only (a surface)
 #pragma once
 
+#include "core/geometry/blob.h"
 #include "core/geometry/glyph.h"
 #include "core/geometry/poly.h"
 #include "core/geometry/ray.h"
@@ -41,7 +42,8 @@ enum class ShapeKind : uint32_t {
     Poly,
     Superellipsoid,
     Glyph,
-    Revolution
+    Revolution,
+    Blob
 };
 
 struct Shape {
@@ -50,18 +52,21 @@ struct Shape {
                         // superellipsoid: e, n
     bool open = false;  // cylinder, cone and glyph without caps; a revolution's surface only
     uint32_t index = 0; // poly: its coefficients in the scene's polys; glyph: its outline in
-                        // the scene's glyphs; revolution: its profile in the scene's revolutions
+                        // the scene's glyphs; revolution: its profile in the scene's
+                        // revolutions; blob: its components in the scene's blobs
 };
 
 /// What shapes of some kinds read from the scene beside their Shape: poly coefficients, glyph
-/// outlines and revolution profiles. A table a scene lacks is null, and its shapes then have
-/// no spans.
+/// outlines, revolution profiles and blob components. A table a scene lacks is null, and its shapes
+/// then have no spans.
 struct ShapeTables {
     const PolyCoeffs* polys = nullptr;
     const GlyphRef* glyphs = nullptr;
     const GlyphSegment* glyph_segments = nullptr;
     const RevolutionRef* revolutions = nullptr;
     const RevolutionSegment* revolution_segments = nullptr;
+    const BlobRef* blobs = nullptr;
+    const BlobElement* blob_elements = nullptr;
 };
 
 /// One span [t0, t1] of a ray inside a solid, with the local normals at both ends (pointing
@@ -239,6 +244,16 @@ SHEAF_HD_NOINLINE int revolution_spans(const RevolutionRef& g, const RevolutionS
     return count;
 }
 
+// Out of line on the device, like glyph_spans.
+SHEAF_HD_NOINLINE int blob_spans(const BlobRef& b, const BlobElement* elements, const Ray& r,
+                                 Span* out) {
+    double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
+    Vec3 n0[kMaxShapeSpans], n1[kMaxShapeSpans];
+    const int count = blob_pieces(b, elements, r, t0, t1, n0, n1, kMaxShapeSpans);
+    for (int i = 0; i < count; ++i) out[i] = Span{float(t0[i]), float(t1[i]), n0[i], n1[i]};
+    return count;
+}
+
 } // namespace shape_detail
 
 /// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `tables` holds
@@ -359,6 +374,8 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
         return tables.revolutions ? revolution_spans(tables.revolutions[s.index],
                                                      tables.revolution_segments, s.open, r, out)
                                   : 0;
+    case ShapeKind::Blob:
+        return tables.blobs ? blob_spans(tables.blobs[s.index], tables.blob_elements, r, out) : 0;
     }
     return 0;
 }

@@ -46,6 +46,10 @@ Sphere local_bound(const PreparedScene& scene, const Shape& s) {
         const float half = 0.5f * (g.h_hi - g.h_lo);
         return {Vec3(0, 0, 0.5f * (g.h_lo + g.h_hi)), std::sqrt(g.r_max * g.r_max + half * half)};
     }
+    case ShapeKind::Blob: { // around its positive components
+        const BlobRef& b = scene.blobs[s.index];
+        return {Vec3(b.bound[0], b.bound[1], b.bound[2]), b.bound[3]};
+    }
     }
     return {Vec3(0.0f), INFINITY};
 }

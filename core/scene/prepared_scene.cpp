@@ -1,5 +1,6 @@
 #include "core/scene/prepared_scene.h"
 
+#include "core/geometry/blob_build.h"
 #include "core/geometry/min_sphere.h"
 #include "core/hash/ray_hash.h"
 #include "core/scene/analytic.h"
@@ -54,6 +55,23 @@ uint32_t revolution_index(PreparedScene& p, const RevolutionProfile& g,
     p.revolution_segments.insert(p.revolution_segments.end(), g.segments.begin(), g.segments.end());
     const uint32_t index = uint32_t(p.revolutions.size());
     p.revolutions.push_back(r);
+    seen.emplace(&g, index);
+    return index;
+}
+
+/// The index of blob `g` among p.blobs, added on its first use.
+uint32_t blob_index(PreparedScene& p, const BlobModel& g,
+                    std::map<const BlobModel*, uint32_t>& seen) {
+    const auto found = seen.find(&g);
+    if (found != seen.end()) return found->second;
+    BlobRef b;
+    b.first = uint32_t(p.blob_elements.size());
+    b.count = uint32_t(g.elements.size());
+    b.threshold = g.threshold;
+    blob_bound(g, b.bound);
+    p.blob_elements.insert(p.blob_elements.end(), g.elements.begin(), g.elements.end());
+    const uint32_t index = uint32_t(p.blobs.size());
+    p.blobs.push_back(b);
     seen.emplace(&g, index);
     return index;
 }
@@ -176,6 +194,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     // Analytic objects: one primitive each, its CSG tree flattened into the scene's arrays.
     std::map<const GlyphOutline*, uint32_t> glyphs_seen;
     std::map<const RevolutionProfile*, uint32_t> revolutions_seen;
+    std::map<const BlobModel*, uint32_t> blobs_seen;
     for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
         const ShapeObject& obj = scene.shape_objects[so];
         const uint32_t base = uint32_t(p.csg.size());
@@ -199,6 +218,8 @@ PreparedScene prepare_scene(const Scene& scene) {
                     shape.index = glyph_index(p, *node.glyph, glyphs_seen);
                 if (shape.kind == ShapeKind::Revolution)
                     shape.index = revolution_index(p, *node.revolution, revolutions_seen);
+                if (shape.kind == ShapeKind::Blob)
+                    shape.index = blob_index(p, *node.blob, blobs_seen);
                 p.shapes.push_back(place_shape(shape, obj.transform * node.transform));
                 p.shape_material.push_back(node.material);
                 if (!have_material) first_material = node.material, have_material = true;

@@ -63,6 +63,8 @@ struct PreparedScene {
     std::vector<GlyphSegment> glyph_segments; // the glyphs' outlines
     std::vector<RevolutionRef> revolutions;   // of the revolution leaves, by Shape::index
     std::vector<RevolutionSegment> revolution_segments; // their profiles
+    std::vector<BlobRef> blobs;                         // of the blob leaves, by Shape::index
+    std::vector<BlobElement> blob_elements;             // their components
     std::vector<uint32_t> shape_material; // per placed shape
     std::vector<PreparedCsgNode> csg;
     std::vector<uint32_t> csg_children;

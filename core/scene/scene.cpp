@@ -160,6 +160,15 @@ void Scene::validate() const {
                                 throw SceneError(name + ": a revolution's profile is not finite");
                     }
                 }
+                if (s.kind == ShapeKind::Blob) {
+                    if (!node.blob) throw SceneError(name + ": a blob shape without components");
+                    if (!(node.blob->threshold > 0) || !std::isfinite(node.blob->threshold))
+                        throw SceneError(name + ": a blob's threshold must be a positive number");
+                    for (const BlobElement& e : node.blob->elements)
+                        if (!e.to_unit.finite() || !std::isfinite(e.strength) ||
+                            !std::isfinite(e.len) || !(e.len >= 0))
+                            throw SceneError(name + ": a blob's component is not finite");
+                }
                 if (!node.transform.finite())
                     throw SceneError(name + ": a shape's transform is not finite");
                 if (!(std::fabs(node.transform.determinant()) >= 1e-20f))

@@ -133,6 +133,7 @@ struct CsgNode {
     std::shared_ptr<const PolyCoeffs> poly;    // leaf of kind Poly: its coefficients
     std::shared_ptr<const GlyphOutline> glyph; // leaf of kind Glyph: its outline
     std::shared_ptr<const RevolutionProfile> revolution; // leaf of kind Revolution: its profile
+    std::shared_ptr<const BlobModel> blob;               // leaf of kind Blob: its components
     Affine transform;      // leaf: shape space -> object space
     uint32_t material = 0; // leaf
     bool inverse = false;

@@ -49,6 +49,8 @@ template <class Exec> class DeviceScene {
         put(p.glyph_segments, v.glyph_segments);
         put(p.revolutions, v.revolutions);
         put(p.revolution_segments, v.revolution_segments);
+        put(p.blobs, v.blobs);
+        put(p.blob_elements, v.blob_elements);
         put(p.shape_material, v.shape_material);
         put(p.csg, v.csg);
         put(p.csg_children, v.csg_children);

@@ -119,6 +119,7 @@ struct Builder {
             n.poly = o.poly;
             n.glyph = o.glyph;
             n.revolution = o.revolution;
+            n.blob = o.blob;
             n.transform = o.local;
             n.material = material(tex, in);
             n.inverse = o.inverse;

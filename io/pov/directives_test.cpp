@@ -370,7 +370,7 @@ using test::load_text;
 // A declaration that is never used warns about nothing; its first use reports what it holds,
 // at the place inside the declaration, once; strict mode fails only at that use.
 TEST(PovDirectives, DeclaredUnsupportedFeaturesWarnWhenUsed) {
-    const std::string decl = "#declare Q = blob { threshold 0.5 sphere { 0, 1, 1 } }\n"
+    const std::string decl = "#declare Q = ovus { 1, 0.5 }\n"
                              "#declare R = Q\n";
     const PovResult unused = load_text(decl + "sphere { 0, 1 }\n");
     EXPECT_TRUE(unused.warnings.empty()) << unused.warnings.front();
@@ -380,7 +380,7 @@ TEST(PovDirectives, DeclaredUnsupportedFeaturesWarnWhenUsed) {
 
     const PovResult used = load_text(decl + "object { R }\nobject { Q translate x }\n");
     ASSERT_EQ(used.warnings.size(), 1u);
-    EXPECT_NE(used.warnings[0].find("scene.pov:1:14: warning: unsupported object 'blob'"),
+    EXPECT_NE(used.warnings[0].find("scene.pov:1:14: warning: unsupported object 'ovus'"),
               std::string::npos)
         << used.warnings[0];
     EXPECT_NE(error_of(decl + "object { R }\n", strict).find("scene.pov:1:14: error: unsupported"),

@@ -5,6 +5,8 @@
 // BOUND_HUGE.
 #include "io/pov/model.h"
 
+#include "core/geometry/blob_build.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -68,6 +70,14 @@ Box shape_box(const PovObject& o) {
         float r, h_lo, h_hi;
         revolution_bounds(*o.revolution, r, h_lo, h_hi);
         return transformed(o.local, Vec3(-r, -r, h_lo), Vec3(r, r, h_hi));
+    }
+    case ShapeKind::Blob: { // the sphere around its positive components
+        if (!o.blob) return Box();
+        float b[4];
+        blob_bound(*o.blob, b);
+        if (!(b[3] > 0)) return Box();
+        const Vec3 c(b[0], b[1], b[2]);
+        return transformed(o.local, c - Vec3(b[3]), c + Vec3(b[3]));
     }
     }
     return unbounded();

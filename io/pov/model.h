@@ -34,6 +34,7 @@ struct PovFinish {
     double reflection_falloff = 1;
     bool reflection_metallic = false;
     bool conserve_energy = false;
+    bool operator==(const PovFinish&) const = default;
 };
 
 /// An image for image_map (and the image pattern): the file and how it is wrapped.
@@ -111,6 +112,11 @@ struct PovTexture {
 /// A texture moved by a transform applied after it (the object's, or the texture's own).
 PovTextureRef transformed(const PovTextureRef& t, const Affine& m);
 
+/// Whether two textures are the same one: the same object, or copies of one (the same pigment
+/// and normal, equal finishes and placements, the same layers); texture maps only as the same
+/// object.
+bool same_texture(const PovTextureRef& a, const PovTextureRef& b);
+
 /// interior { ior fade_distance fade_power fade_color }.
 struct PovInterior {
     double ior = 0; // 0: not set (1)
@@ -143,6 +149,7 @@ struct PovObject {
     std::shared_ptr<const PolyCoeffs> poly;    // shape of kind Poly: its coefficients
     std::shared_ptr<const GlyphOutline> glyph; // shape of kind Glyph: its outline
     std::shared_ptr<const RevolutionProfile> revolution; // shape of kind Revolution
+    std::shared_ptr<const BlobModel> blob;               // shape of kind Blob
     std::shared_ptr<const Mesh> mesh;
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;

@@ -318,17 +318,16 @@ TEST(PovObjects, Superellipsoid) {
 }
 
 TEST(PovObjects, UnsupportedIsAWarningOrStrictError) {
-    const std::string s =
-        "sphere { 0, 1 }\n  blob { threshold 0.5 sphere { 0, 1, 1 } }\nbox { 0, 1 no_shadow }";
+    const std::string s = "sphere { 0, 1 }\n  ovus { 1, 0.5 }\nbox { 0, 1 no_shadow }";
     const PovResult r = load_text(s);
     EXPECT_EQ(r.scene.shape_objects.size(), 2u);
     ASSERT_EQ(r.warnings.size(), 1u);
-    EXPECT_NE(r.warnings[0].find("scene.pov:2:3: warning: unsupported object 'blob'"),
+    EXPECT_NE(r.warnings[0].find("scene.pov:2:3: warning: unsupported object 'ovus'"),
               std::string::npos);
     EXPECT_EQ(r.scene.shape_objects[1].flags, kNoShadow);
     PovOptions strict;
     strict.strict = true;
-    EXPECT_EQ(error_of(s, strict), "scene.pov:2:3: error: unsupported object 'blob'");
+    EXPECT_EQ(error_of(s, strict), "scene.pov:2:3: error: unsupported object 'ovus'");
 }
 
 TEST(PovObjects, SyntaxErrorsNameFileLineColumnAndToken) {
@@ -554,6 +553,59 @@ TEST(PovObjects, LatheAndSorErrors) {
     EXPECT_EQ(error_of("sor { 4, <0, 1>, <1, 0>, <1, 1>, <0, 2> }"),
               "scene.pov:1:10: error: the sor's first and last points must differ in height "
               "from the curve's second and last but one (they set its slopes there)");
+}
+
+TEST(PovObjects, BlobSumsItsComponentsFields) {
+    // One sphere component: S (1 - r^2/R^2)^2 = T at r = R sqrt(1 - sqrt(T / S)).
+    PovResult r = load_text("blob { threshold 0.25 sphere { <0, 1, 0>, 2, strength 1 } }");
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    const CsgNode& n = r.scene.shape_objects[0].nodes[0];
+    EXPECT_EQ(n.shape.kind, ShapeKind::Blob);
+    ASSERT_TRUE(n.blob);
+    EXPECT_FLOAT_EQ(n.blob->threshold, 0.25f);
+    const float radius = 2 * std::sqrt(1 - 0.5f);
+    EXPECT_NEAR(first_hit(r, {-5, 1, 0}, {1, 0, 0}), 5 - radius, 1e-5);
+    // A cylinder has round ends; a negative sphere carves; the old `component` syntax.
+    r = load_text("blob { threshold 0.5 cylinder { <-2, 0, 0>, <2, 0, 0>, 1, 1 }\n"
+                  "component -4, 1, <0, 0, 0> }");
+    const float cr = std::sqrt(1 - std::sqrt(0.5f));
+    EXPECT_NEAR(first_hit(r, {-5, 0, 0}, {1, 0, 0}), 3 - cr, 1e-5);  // the round end
+    EXPECT_NEAR(first_hit(r, {-1, 5, 0}, {0, -1, 0}), 5 - cr, 1e-5); // the side
+    EXPECT_LT(first_hit(r, {0, 5, 0}, {0, -1, 0}), 0.0f);            // carved through
+    // A component's own transforms place it: scaled to an ellipsoid, then moved.
+    r = load_text("blob { threshold 0.25 sphere { 0, 1, 1 scale <2, 1, 1> translate y } "
+                  "translate 3*x }");
+    EXPECT_NEAR(first_hit(r, {-5, 1, 0}, {1, 0, 0}), 8 - 2 * std::sqrt(0.5f), 1e-5);
+    EXPECT_LT(first_hit(r, {-5, 0, 0}, {1, 0, 0}), 0.0f);
+}
+
+TEST(PovObjects, BlobComponentTexturesAndErrors) {
+    // Components sharing one texture give it to the blob; differing ones are warned.
+    PovResult r =
+        load_text("#declare T = texture { pigment { rgb <1, 0, 0> } }\n"
+                  "blob { sphere { 0, 1, 1 texture { T } } sphere { x, 1, 1 texture { T } } }");
+    EXPECT_TRUE(r.warnings.empty());
+    r = load_text("blob { sphere { 0, 1, 1 pigment { rgb 1 } }\n"
+                  "sphere { x, 1, 1 pigment { rgb <0, 1, 0> } } }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:2:1: warning: unsupported blob component textures"),
+              std::string::npos)
+        << r.warnings[0];
+    EXPECT_EQ(error_of("blob { threshold 0 sphere { 0, 1, 1 } }"),
+              "scene.pov:1:18: error: a blob's threshold must be a positive number");
+    EXPECT_EQ(error_of("blob { sphere { 0, -1, 1 } }"),
+              "scene.pov:1:8: error: a blob component's radius must be a positive number");
+    EXPECT_EQ(error_of("blob { sphere { 0, 1, 1 matrix <1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0> } }"),
+              "scene.pov:1:8: error: a blob component is flattened to nothing by its "
+              "transforms");
+    EXPECT_EQ(error_of("blob { box { 0, 1 } }"),
+              "scene.pov:1:8: error: found 'box', expected a blob component (sphere, cylinder, "
+              "component), a modifier or '}'");
+    // No component: nothing can be inside; left out with a warning.
+    r = load_text("blob { threshold 0.5 }\nsphere { 0, 1 }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.scene.shape_objects.size(), 1u);
 }
 
 } // namespace

@@ -220,6 +220,8 @@ class Parser {
     bool parse_prism(const Token& kw, PovObject& o);
     bool parse_lathe(const Token& kw, PovObject& o);
     bool parse_sor(const Token& kw, PovObject& o);
+    /// blob { threshold, components, modifiers } (io/pov/blobs.cpp).
+    bool parse_blob(const Token& kw, PovObject& o);
     /// N 2-D points <r, h> of a lathe or sor, charged to the data budget first; `where`: each
     /// point's first token, for errors about it.
     std::vector<Vec3> parse_profile_points(const Token& count_at, int n, const char* what,

@@ -16,6 +16,19 @@ PovTextureRef transformed(const PovTextureRef& t, const Affine& m) {
     return copy;
 }
 
+bool same_texture(const PovTextureRef& a, const PovTextureRef& b) {
+    if (a == b) return true;
+    if (!a || !b || a->is_map || b->is_map || a->pigment != b->pigment || a->normal != b->normal ||
+        !(a->finish == b->finish) || a->below.size() != b->below.size())
+        return false;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (a->local.m[i][j] != b->local.m[i][j]) return false;
+    for (size_t i = 0; i < a->below.size(); ++i)
+        if (!same_texture(a->below[i], b->below[i])) return false;
+    return true;
+}
+
 bool Parser::starts_expression(const Token& t) const {
     switch (t.kind) {
     case TokKind::Number:

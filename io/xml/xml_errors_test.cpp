@@ -166,6 +166,30 @@ TEST(XmlErrors, LatheAndSorTurnTheirPointsAboutY) {
                  "point 4 is not above point 3");
 }
 
+TEST(XmlErrors, BlobReadsItsComponentsAsNumbers) {
+    Scene s =
+        io::parse_xml_scene("<scene><blob threshold=\"0.5\" spheres=\"0 0 0 1 1  0 1 0 0.5 -2\" "
+                            "cylinders=\"0 0 0 0 0 2 1 1\"/></scene>",
+                            "scene.xml")
+            .scene;
+    ASSERT_EQ(s.shape_objects.size(), 1u);
+    const CsgNode& b = s.shape_objects[0].nodes[0];
+    EXPECT_EQ(b.shape.kind, ShapeKind::Blob);
+    ASSERT_TRUE(b.blob);
+    EXPECT_EQ(b.blob->elements.size(), 3u);
+    EXPECT_FLOAT_EQ(b.blob->threshold, 0.5f);
+    EXPECT_FLOAT_EQ(b.blob->elements[1].strength, -2);
+    EXPECT_FLOAT_EQ(b.blob->elements[2].len, 2);
+    EXPECT_NO_THROW(s.validate());
+    EXPECT_ERROR("<scene><blob spheres=\"0 0 0 1\"/></scene>", "1:23",
+                 "each sphere is 5 numbers: x y z radius strength");
+    EXPECT_ERROR("<scene><blob cylinders=\"0 0 0 1 1 1 0 1\"/></scene>", "1:25",
+                 "radius must be a positive number");
+    EXPECT_ERROR("<scene><blob threshold=\"-1\" spheres=\"0 0 0 1 1\"/></scene>", "1:25",
+                 "the threshold must be a positive number");
+    EXPECT_ERROR("<scene><blob/></scene>", "1:8", "a blob needs at least one sphere or cylinder");
+}
+
 TEST(XmlErrors, ReferencesMustBeDefinedFirstAndOnce) {
     EXPECT_ERROR("<scene>\n<object mesh=\"m\"/>\n</scene>", "2:15",
                  "unknown mesh 'm'; none is defined before this point");

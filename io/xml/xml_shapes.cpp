@@ -6,6 +6,7 @@
 // a union of glyph shapes, one per character with ink, laid out by io/font.
 #include "io/xml/xml_reader.h"
 
+#include "core/geometry/blob_build.h"
 #include "core/geometry/revolution_profile.h"
 
 #include <cmath>
@@ -16,8 +17,9 @@ namespace {
 constexpr int kMaxCsgDepth = kMaxCsgNesting;
 
 const std::vector<std::string> kShapeElements = {
-    "sphere",         "box",  "cylinder", "cone", "disc",  "plane", "torus",        "poly",
-    "superellipsoid", "text", "lathe",    "sor",  "union", "merge", "intersection", "difference"};
+    "sphere", "box",   "cylinder",       "cone",         "disc",      "plane",
+    "torus",  "poly",  "superellipsoid", "text",         "lathe",     "sor",
+    "blob",   "union", "merge",          "intersection", "difference"};
 
 /// The transform taking local z from `base` to `cap`, with local x and y scaled by `radius`.
 Affine axis_frame(Vec3 base, Vec3 cap, float radius) {
@@ -197,6 +199,38 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
             }
             s.kind = ShapeKind::Revolution;
             frame.m[1][1] = 0, frame.m[2][2] = 0, frame.m[1][2] = 1, frame.m[2][1] = 1;
+        } else if (kind == "blob") {
+            // Components as numbers: spheres "x y z radius strength ...", cylinders
+            // "x0 y0 z0 x1 y1 z1 radius strength ...".
+            auto blob = std::make_shared<BlobModel>();
+            a.get("threshold", blob->threshold);
+            if (!(blob->threshold > 0) || !std::isfinite(blob->threshold))
+                fail_attr("threshold", "the threshold must be a positive number");
+            std::vector<float> sp, cy;
+            a.get_numbers("spheres", sp);
+            a.get_numbers("cylinders", cy);
+            if (sp.size() % 5 != 0)
+                fail_attr("spheres", "each sphere is 5 numbers: x y z radius strength");
+            if (cy.size() % 8 != 0)
+                fail_attr("cylinders",
+                          "each cylinder is 8 numbers: x0 y0 z0 x1 y1 z1 radius strength");
+            if (sp.empty() && cy.empty())
+                fail_attr("spheres", "a blob needs at least one sphere or cylinder");
+            const char* at = "spheres";
+            try {
+                for (size_t i = 0; i < sp.size(); i += 5)
+                    add_blob_sphere(*blob, Vec3(sp[i], sp[i + 1], sp[i + 2]), sp[i + 3], sp[i + 4],
+                                    Affine());
+                at = "cylinders";
+                for (size_t i = 0; i < cy.size(); i += 8)
+                    add_blob_cylinder(*blob, Vec3(cy[i], cy[i + 1], cy[i + 2]),
+                                      Vec3(cy[i + 3], cy[i + 4], cy[i + 5]), cy[i + 6], cy[i + 7],
+                                      Affine());
+            } catch (const BlobError& e) {
+                fail_attr(at, e.what());
+            }
+            s.kind = ShapeKind::Blob;
+            n.blob = std::move(blob);
         } else if (kind == "text") {
             std::string font_name, text;
             float thickness = 1;

@@ -41,6 +41,8 @@ SCENES = [
     ("scenes/text.pov", "exact"),
     ("scenes/turned.pov", "exact"),
     ("examples/objects/lathe2.pov", "exact"),
+    ("examples/objects/blob1a.pov", "exact"),
+    ("examples/objects/blob1b.pov", "exact"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

@@ -28,9 +28,19 @@ struct Builder {
     Affine flip = pov_to_sheaf();
     std::map<uint32_t, Mesh> loose; // single triangles by material, in Sheaf world space
     size_t names = 0;
+    bool geometry_only = false; // every surface material 0 (textures not built)
 
     uint32_t material(const PovTexture& t, const PovInterior* in) {
-        return materials.material(t, in);
+        return geometry_only ? 0 : materials.material(t, in);
+    }
+
+    /// The loose triangles as one mesh object per material.
+    void add_loose() {
+        for (auto& [mat, mesh] : loose) {
+            mesh.normals.clear();
+            scene.add_mesh_object("triangles#" + std::to_string(mat), std::move(mesh), mat, {});
+        }
+        loose.clear();
     }
 
     std::string name(const PovObject& o) {
@@ -255,10 +265,7 @@ double build_scene(Parser& p, Scene& scene) {
     scene.working_gamma = float(gamma);
     Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, 0};
     for (const PovObject& o : m.objects) b.top(o, m.default_texture, nullptr, 0);
-    for (auto& [mat, mesh] : b.loose) {
-        mesh.normals.clear();
-        scene.add_mesh_object("triangles#" + std::to_string(mat), std::move(mesh), mat, {});
-    }
+    b.add_loose();
     b.camera();
     scene.background = rgb(m.background);
     scene.sky = b.materials.sky(m.sky.pigments, m.sky.local);
@@ -273,6 +280,20 @@ double build_scene(Parser& p, Scene& scene) {
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));
     return gamma;
+}
+
+void build_object_geometry(Parser& p, const PovObject& o, Scene& scene) {
+    scene.add_material(Material{});
+    p.captures_.emplace_back(); // its warnings were given where it was made
+    Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, 0, true};
+    try {
+        b.top(o, p.model.default_texture, nullptr, 0);
+        b.add_loose();
+    } catch (...) {
+        p.captures_.pop_back();
+        throw;
+    }
+    p.captures_.pop_back();
 }
 
 } // namespace sheaf::io::pov

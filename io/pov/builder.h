@@ -14,4 +14,9 @@ Affine pov_to_sheaf();
 /// Returns the assumed gamma the colours were decoded with.
 double build_scene(Parser& p, Scene& scene);
 
+/// Builds object `o` alone into `scene`, its geometry only (every surface material 0, which
+/// this adds), its warnings dropped: for the queries trace() and inside() make while the
+/// scene is read (io/pov/probe.h).
+void build_object_geometry(Parser& p, const PovObject& o, Scene& scene);
+
 } // namespace sheaf::io::pov

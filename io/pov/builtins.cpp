@@ -4,6 +4,7 @@
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
+#include "io/pov/probe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,9 +88,19 @@ bool Parser::builtin_call(const Token& t, Value& out) {
     }
     std::vector<Value> args;
     std::vector<Token> at;
+    Token normal_var; // trace's fourth argument: the variable its normal is put in
     if (!accept_sym(")")) {
         for (;;) {
             at.push_back(peek());
+            if (n == "trace" && at.size() == 4) {
+                normal_var = peek();
+                if (normal_var.kind != TokKind::Ident)
+                    error_expected(normal_var, "an identifier for the surface's normal");
+                advance();
+                args.emplace_back();
+                expect_sym(")", "')' after trace's normal variable");
+                break;
+            }
             args.push_back(parse_rvalue());
             if (accept_sym(")")) break;
             expect_sym(",", "',' or ')'");
@@ -115,6 +126,13 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         return args[i].str;
     };
     auto vout = [](Vec3 v) { return Value::vec3(v.x, v.y, v.z); };
+    auto set_normal = [&](Vec3 v) { // as #declare, or into the local of that name
+        if (normal_var.kind != TokKind::Ident) return;
+        if (Value* existing = lookup_mut(normal_var.text))
+            *existing = vout(v);
+        else
+            declare(normal_var.text, vout(v), false);
+    };
     if (math) {
         std::vector<double> a;
         for (size_t i = 0; i < args.size(); ++i) a.push_back(num(i));
@@ -233,14 +251,45 @@ bool Parser::builtin_call(const Token& t, Value& out) {
             error_expected(at[0], "an object identifier");
         const Vec3 v = n == "min_extent" ? lo : hi;
         out = Value::vec3(v.x, v.y, v.z);
-    } else if (n == "trace") {
-        unsupported(t, n + " (gives <0,0,0>)");
-        out = Value::vec3(0, 0, 0);
-    } else { // inside, prod, sum, datetime
+    } else if (n == "trace" || n == "inside") {
+        // trace(OBJECT, FROM, DIRECTION [, NORMAL]): the first surface's point (<0,0,0> when
+        // none) and its normal put in NORMAL (<0,0,0> when none); inside(OBJECT, POINT).
+        if (n == "inside")
+            need(2);
+        else if (args.size() != 3 && args.size() != 4)
+            error_at(t, "trace takes 3 or 4 arguments, not " + std::to_string(args.size()));
+        if (args[0].type == VType::Other && args[0].str == "object") {
+            out = n == "inside" ? Value::number(0) : Value::vec3(0, 0, 0); // warned when declared
+            set_normal(Vec3(0.0f));
+            return true;
+        }
+        if (args[0].type != VType::Object) error_expected(at[0], "an object identifier");
+        const ObjectProbe& q = probe(args[0]);
+        if (n == "inside") {
+            out = Value::number(probe_inside(q, vec(1)) ? 1 : 0);
+        } else {
+            Vec3 hit(0.0f), normal(0.0f);
+            if (!probe_trace(q, vec(1), vec(2), hit, normal)) hit = normal = Vec3(0.0f);
+            out = vout(hit);
+            set_normal(normal);
+        }
+    } else { // prod, sum, datetime
         unsupported(t, n + " (gives 0)");
         out = n == "datetime" ? Value::string("") : Value::number(0);
     }
     return true;
+}
+
+const ObjectProbe& Parser::probe(const Value& v) {
+    for (auto it = probes_.begin(); it != probes_.end(); ++it)
+        if (it->first == v.ptr) {
+            std::rotate(it, it + 1, probes_.end()); // most recent last
+            return *probes_.back().second;
+        }
+    constexpr size_t kMaxProbes = 8; // the objects a loop queries in turn
+    if (probes_.size() == kMaxProbes) probes_.erase(probes_.begin());
+    probes_.emplace_back(v.ptr, make_probe(*this, v.as<PovObject>()));
+    return *probes_.back().second;
 }
 
 } // namespace sheaf::io::pov

@@ -162,7 +162,16 @@ Value Parser::parse_condition() {
         // not "(I < 3) < I".
         Value v;
         if (accept_sym("(")) {
-            v = parse_expr();
+            // Inside the parentheses the expression may run on through a macro's #end (a
+            // macro called in it) up to the ')'.
+            --directive_args_;
+            try {
+                v = parse_expr();
+            } catch (...) {
+                ++directive_args_;
+                throw;
+            }
+            ++directive_args_;
             expect_sym(")", "')' closing the condition");
         } else {
             v = parse_expr();
@@ -184,6 +193,9 @@ void Parser::declare_directive(bool local) {
     const Token name = raw();
     if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
     advance();
+    // A #local belongs to the scope it is written in, though a macro the value calls may
+    // still be open when the value ends (its body ends with the value and the ';').
+    const size_t scope = scopes_.size() - 1;
     std::vector<size_t> index;
     while (is_sym_tok(raw(), "[")) {
         advance();
@@ -214,7 +226,10 @@ void Parser::declare_directive(bool local) {
         v.ptr = copy;
     }
     if (index.empty()) {
-        declare(name.text, std::move(v), local);
+        if (local && scope < scopes_.size())
+            declare_in(scope, name.text, std::move(v));
+        else
+            declare(name.text, std::move(v), local);
         return;
     }
     Value* arr = lookup_mut(name.text);

@@ -51,6 +51,45 @@ TEST(PovDirectives, MacrosReturnValuesAndRecurse) {
               std::string::npos);
 }
 
+TEST(PovDirectives, VariablesPassedToMacrosAreReferences) {
+    // As in POV-Ray, an argument that is a variable alone is the variable itself: #local and
+    // #declare of the parameter change it; an expression is a value.
+    const std::string s = "#macro Inc(P) #local P = P + 1; #end\n"
+                          "#macro Set(P) #declare P = 7; #end\n"
+                          "#macro Outer() #local L = 1; Inc(L) Inc(L) #declare Got = L; #end\n"
+                          "#declare A = 1; Inc(A) #declare B = 5; Set(B) Outer()\n"
+                          "#declare C = 1; Inc(C + 0)\n";
+    EXPECT_DOUBLE_EQ(declared(s, "A").v[0], 2);
+    EXPECT_DOUBLE_EQ(declared(s, "B").v[0], 7);
+    EXPECT_DOUBLE_EQ(declared(s, "Got").v[0], 3);
+    EXPECT_DOUBLE_EQ(declared(s, "C").v[0], 1);
+    EXPECT_THROW(declared(s, "L"), SceneError); // Outer's local, gone with it
+    // Passed on through a second macro, still the caller's variable.
+    EXPECT_DOUBLE_EQ(
+        declared("#macro Inc(P) #local P = P + 1; #end #macro Twice(Q) Inc(Q) Inc(Q) #end\n"
+                 "#declare A = 1; Twice(A)",
+                 "A")
+            .v[0],
+        3);
+}
+
+TEST(PovDirectives, AMacroMayEndALocalsValueAndRunOnInACondition) {
+    // The value's ';' is the macro's last token: the #local still belongs to M's scope.
+    EXPECT_DOUBLE_EQ(declared("#macro R() #local Q = 4; Q; #end\n"
+                              "#macro M() #local V = R() #declare Got = V; #end M()",
+                              "Got")
+                         .v[0],
+                     4);
+    // Inside a parenthesised condition the expression runs on past a macro's #end.
+    EXPECT_DOUBLE_EQ(
+        declared("#macro Half() 0.5 #end\n"
+                 "#if (Half() > 0.2 & 1 < 2) #declare Got = 1; #else #declare Got = 0; "
+                 "#end",
+                 "Got")
+            .v[0],
+        1);
+}
+
 TEST(PovDirectives, WhileAndFor) {
     EXPECT_DOUBLE_EQ(declared("#declare S = 0; #declare I = 0;\n"
                               "#while (I < 10) #declare S = S + I; #declare I = I + 1; #end",

@@ -143,6 +143,46 @@ TEST(PovExpressions, MinAndMaxExtent) {
     EXPECT_NE(error_of("#declare E = min_extent(3);"), "");
 }
 
+TEST(PovExpressions, TraceAndInsideQueryAnObject) {
+    auto vec = [](const std::string& text, const char* name) {
+        const Value v = declared(text, name);
+        return Vec3(float(v.v[0]), float(v.v[1]), float(v.v[2]));
+    };
+    auto expect = [](Vec3 a, Vec3 b) {
+        EXPECT_NEAR(a.x, b.x, 1e-5);
+        EXPECT_NEAR(a.y, b.y, 1e-5);
+        EXPECT_NEAR(a.z, b.z, 1e-5);
+    };
+    // A sphere moved up and a box: trace finds the nearer surface and its normal.
+    const std::string o = "#declare O = union { sphere { <0, 2, 0>, 1 } box { <-1, -1, 3>, "
+                          "<1, 1, 4> } }\n";
+    expect(vec(o + "#declare P = trace(O, <0, 10, 0>, -y, N);", "P"), {0, 3, 0});
+    expect(vec(o + "#declare P = trace(O, <0, 10, 0>, -y, N);", "N"), {0, 1, 0});
+    expect(vec(o + "#declare P = trace(O, <0, 0, -5>, z*2);", "P"), {0, 0, 3});   // not the sphere
+    expect(vec(o + "#declare P = trace(O, <0, 0, 3.5>, x, N);", "N"), {1, 0, 0}); // from inside
+    expect(vec(o + "#declare N = 7; #declare P = trace(O, <5, 5, 5>, x, N);", "P"), {0, 0, 0});
+    expect(vec(o + "#declare P = trace(O, <5, 5, 5>, x, N);", "N"), {0, 0, 0}); // missed
+    // A mesh's triangle: the normal faces where the ray came from.
+    expect(vec("#declare M = mesh { triangle { <-1, 0, -1>, <1, 0, -1>, <0, 0, 1> } }\n"
+               "#declare P = trace(M, <0, -3, 0>, y, N);",
+               "N"),
+           {0, -1, 0});
+    // inside: CSG solids, exact, with inverse; meshes enclose nothing.
+    auto inside = [&](const std::string& object, const char* point) {
+        return declared("#declare O = " + object + "\n#declare V = inside(O, " + point + ");", "V")
+            .v[0];
+    };
+    EXPECT_EQ(inside("difference { sphere { 0, 2 } sphere { 0, 1 } }", "<1.5, 0, 0>"), 1);
+    EXPECT_EQ(inside("difference { sphere { 0, 2 } sphere { 0, 1 } }", "<0.5, 0, 0>"), 0);
+    EXPECT_EQ(inside("sphere { 0, 1 inverse }", "<3, 0, 0>"), 1);
+    EXPECT_EQ(inside("blob { threshold 0.5 sphere { <0, 0, 2>, 1, 1 } }", "<0, 0, 2.3>"), 1);
+    EXPECT_EQ(inside("mesh { triangle { 0, x, y } }", "<0.1, 0.1, 0>"), 0);
+    EXPECT_EQ(error_of("#declare V = inside(3, 0);"),
+              "scene.pov:1:21: error: found '3', expected an object identifier");
+    EXPECT_EQ(error_of("#declare O = sphere { 0, 1 }\n#declare V = trace(O, 0);"),
+              "scene.pov:2:14: error: trace takes 3 or 4 arguments, not 2");
+}
+
 TEST(PovExpressions, Arrays) {
     const std::string s = "#declare A = array[2][3] { {1, 2, 3}, {4, 5, 6} };\n"
                           "#declare B = array[4];\n#declare B[2] = 7;\n"

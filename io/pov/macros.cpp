@@ -34,9 +34,22 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
     const Nest nest(*this, name); // an argument may call a macro while its '(' is read
     const Macro m = macro; // the table may change while the arguments are parsed
     std::vector<Value> args;
+    // Arguments that are a declared variable alone are passed by reference, as in POV-Ray:
+    // the macro's assignments to the parameter reach the variable.
+    std::vector<std::pair<size_t, std::pair<size_t, std::string>>> by_ref;
     expect_sym("(", "'(' after macro " + name.text);
     if (!accept_sym(")")) {
         for (;;) {
+            const Token& t = peek();
+            const Frame& fr = frames_.back();
+            if (t.kind == TokKind::Ident && fr.pos + 1 < fr.file->tokens.size()) {
+                const Token& after = fr.file->tokens[fr.pos + 1];
+                size_t scope;
+                std::string target;
+                if ((is_sym_tok(after, ",") || is_sym_tok(after, ")")) &&
+                    find_variable(t.text, scopes_.size() - 1, scope, target))
+                    by_ref.push_back({args.size(), {scope, target}});
+            }
             args.push_back(parse_rvalue());
             if (accept_sym(")")) break;
             accept_sym(","); // POV-Ray lets the comma out after an object argument
@@ -49,7 +62,12 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
         error_at(name, "macro calls nested deeper than " + std::to_string(kMaxMacroDepth) +
                            " (endless recursion?)");
     std::unordered_map<std::string, Value> scope;
+    std::unordered_map<std::string, std::pair<size_t, std::string>> refs;
     for (size_t i = 0; i < args.size(); ++i) scope[m.params[i]] = std::move(args[i]);
+    for (auto& [i, var] : by_ref) {
+        scope.erase(m.params[i]);
+        refs[m.params[i]] = std::move(var);
+    }
     Frame f;
     f.file = m.file;
     f.pos = m.body;
@@ -57,6 +75,7 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
     f.own_scope = true;
     f.where = name;
     scopes_.push_back(std::move(scope));
+    refs_.push_back(std::move(refs));
     frames_.push_back(std::move(f));
     ++macro_depth_;
 }

@@ -44,6 +44,8 @@ constexpr int kMaxFunctionHeight = 10'000;
 /// Array dimensions, as POV-Ray's own limit.
 constexpr size_t kMaxArrayDimensions = 5;
 
+struct ObjectProbe; // io/pov/probe.h
+
 struct Macro {
     std::shared_ptr<const TokenFile> file;
     size_t body = 0; // index of the first body token
@@ -127,6 +129,9 @@ class Parser {
     const Value* lookup(const std::string& name) const;
     Value* lookup_mut(const std::string& name);
     void declare(const std::string& name, Value v, bool local);
+    /// #local in scope `scope`: its own variable, or the one a by-reference parameter of
+    /// that name stands for.
+    void declare_in(size_t scope, const std::string& name, Value v);
     const Macro* find_macro(const std::string& name) const;
 
     // ---- directives (directives.cpp, macros.cpp, files.cpp) ----
@@ -231,6 +236,11 @@ class Parser {
     /// text { ttf FONT STRING THICKNESS, OFFSET modifiers }: a union of glyph shapes.
     void parse_text(const Token& kw, PovObject& o);
     FontCache fonts_; // text's fonts
+    /// The probes trace() and inside() built, most recent last, each with the object it was
+    /// built from (held, so that its address is not reused by another).
+    std::vector<std::pair<std::shared_ptr<void>, std::shared_ptr<const ObjectProbe>>> probes_;
+    /// The probe of object value `v` (built on its first query).
+    const ObjectProbe& probe(const Value& v);
     void parse_triangle(const Token& kw, PovObject& o, bool smooth);
     void parse_mesh(const Token& kw, PovObject& o);
     void parse_mesh2(const Token& kw, PovObject& o);
@@ -310,6 +320,14 @@ class Parser {
     PovOptions options_;
     std::vector<Frame> frames_;
     std::vector<std::unordered_map<std::string, Value>> scopes_;
+    /// Beside each scope, its macro parameters passed by reference (an argument that is a bare
+    /// identifier, as POV-Ray passes it): the scope and the name of the variable they stand
+    /// for. Reading, #declare and #local of the parameter all reach that variable.
+    std::vector<std::unordered_map<std::string, std::pair<size_t, std::string>>> refs_;
+    /// Where variable `name` lives as seen from scope `top` down: (scope, name), references
+    /// followed; false when it is not declared.
+    bool find_variable(const std::string& name, size_t top, size_t& scope,
+                       std::string& target) const;
     std::unordered_map<std::string, Macro> macros_;
     std::map<std::string, bool> warned_; // de-duplication of identical warnings
     int macro_depth_ = 0;

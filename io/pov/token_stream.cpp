@@ -12,6 +12,7 @@ namespace sheaf::io::pov {
 
 Parser::Parser(const PovOptions& options) : options_(options) {
     scopes_.emplace_back();
+    refs_.emplace_back();
 }
 
 std::string Parser::where(const Token& t) const {
@@ -108,13 +109,13 @@ void Parser::push_file(const std::string& path, const Token& where) {
     f.file = load_tokens(path, frames_.empty() ? nullptr : &where);
     f.where = where;
     f.own_scope = !frames_.empty();
-    if (f.own_scope) scopes_.emplace_back();
+    if (f.own_scope) scopes_.emplace_back(), refs_.emplace_back();
     frames_.push_back(std::move(f));
 }
 
 void Parser::pop_frame() {
     Frame& f = frames_.back();
-    if (f.own_scope) scopes_.pop_back();
+    if (f.own_scope) scopes_.pop_back(), refs_.pop_back();
     if (f.macro) --macro_depth_;
     frames_.pop_back();
 }
@@ -220,21 +221,38 @@ void Parser::skip_rest_of_block() {
     }
 }
 
+bool Parser::find_variable(const std::string& name, size_t top, size_t& scope,
+                           std::string& target) const {
+    for (size_t i = top + 1; i-- > 0;) {
+        if (auto r = refs_[i].find(name); r != refs_[i].end()) {
+            scope = r->second.first, target = r->second.second; // resolved when bound
+            return scopes_[scope].count(target) != 0;
+        }
+        if (scopes_[i].count(name)) {
+            scope = i, target = name;
+            return true;
+        }
+    }
+    return false;
+}
+
 const Value* Parser::lookup(const std::string& name) const {
-    for (size_t i = scopes_.size(); i-- > 0;)
-        if (auto it = scopes_[i].find(name); it != scopes_[i].end()) return &it->second;
-    return nullptr;
+    size_t scope;
+    std::string target;
+    if (!find_variable(name, scopes_.size() - 1, scope, target)) return nullptr;
+    return &scopes_[scope].find(target)->second;
 }
 
 Value* Parser::lookup_mut(const std::string& name) {
-    for (size_t i = scopes_.size(); i-- > 0;)
-        if (auto it = scopes_[i].find(name); it != scopes_[i].end()) return &it->second;
-    return nullptr;
+    size_t scope;
+    std::string target;
+    if (!find_variable(name, scopes_.size() - 1, scope, target)) return nullptr;
+    return &scopes_[scope].find(target)->second;
 }
 
 void Parser::declare(const std::string& name, Value v, bool local) {
     if (local) {
-        scopes_.back()[name] = std::move(v);
+        declare_in(scopes_.size() - 1, name, std::move(v));
         return;
     }
     if (Value* existing = lookup_mut(name)) {
@@ -242,6 +260,14 @@ void Parser::declare(const std::string& name, Value v, bool local) {
         return;
     }
     scopes_.front()[name] = std::move(v);
+}
+
+void Parser::declare_in(size_t scope, const std::string& name, Value v) {
+    if (auto r = refs_[scope].find(name); r != refs_[scope].end()) {
+        scopes_[r->second.first][r->second.second] = std::move(v);
+        return;
+    }
+    scopes_[scope][name] = std::move(v);
 }
 
 bool Parser::accept_declared(VType type, Value& out, const std::string& expected) {

@@ -1,0 +1,31 @@
+// Queries of one object while the scene is read: POV-Ray's trace() and inside(). The object
+// is built alone (its geometry only) and prepared once; each query then runs the renderer's
+// own exact tests (core/scene/analytic.h, core/geometry/ray_triangle.h) over its primitives.
+#pragma once
+
+#include "core/scene/prepared_scene.h"
+#include "core/scene/scene.h"
+#include "io/pov/parser.h"
+
+#include <memory>
+
+namespace sheaf::io::pov {
+
+struct ObjectProbe {
+    Scene scene;
+    PreparedScene prepared;
+};
+
+/// The probe of object `o` (its geometry in Sheaf's world space).
+std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o);
+
+/// Whether the point (POV-Ray coordinates) lies inside the object's solids. Meshes and
+/// triangles enclose nothing (as in POV-Ray without inside_vector).
+bool probe_inside(const ObjectProbe& q, Vec3 point);
+
+/// The first surface of the object along the ray from `from` in direction `dir` (POV-Ray
+/// coordinates): its point and its unit normal, out of the solid (a triangle's: facing
+/// `from`); false when it meets none.
+bool probe_trace(const ObjectProbe& q, Vec3 from, Vec3 dir, Vec3& hit, Vec3& normal);
+
+} // namespace sheaf::io::pov

@@ -17,12 +17,18 @@ namespace sheaf {
 
 namespace {
 
-/// The index of outline `g` among p.glyphs, added on its first use (a text's repeated
-/// characters share one outline).
-uint32_t glyph_index(PreparedScene& p, const GlyphOutline& g,
-                     std::map<const GlyphOutline*, uint32_t>& seen) {
-    const auto found = seen.find(&g);
-    if (found != seen.end()) return found->second;
+/// The index of `key`'s entry in `refs`, made by `make()` (which also appends the data the
+/// entry points into) on the key's first use: shapes that share an outline, a profile or a
+/// blob share its tables (a text's repeated characters share one outline).
+template <class Key, class Ref, class Make>
+uint32_t shared_index(std::map<const Key*, uint32_t>& seen, const Key& key, std::vector<Ref>& refs,
+                      Make&& make) {
+    const auto [it, fresh] = seen.emplace(&key, uint32_t(refs.size()));
+    if (fresh) refs.push_back(make());
+    return it->second;
+}
+
+GlyphRef glyph_ref(PreparedScene& p, const GlyphOutline& g) {
     GlyphRef r;
     r.first = uint32_t(p.glyph_segments.size());
     r.count = uint32_t(g.segments.size());
@@ -36,44 +42,27 @@ uint32_t glyph_index(PreparedScene& p, const GlyphOutline& g,
     }
     if (g.segments.empty()) r.lo_x = r.lo_y = r.hi_x = r.hi_y = 0;
     r.even_odd = g.even_odd ? 1 : 0;
-    const uint32_t index = uint32_t(p.glyphs.size());
-    p.glyphs.push_back(r);
-    seen.emplace(&g, index);
-    return index;
+    return r;
 }
 
-/// The index of profile `g` among p.revolutions, added on its first use.
-uint32_t revolution_index(PreparedScene& p, const RevolutionProfile& g,
-                          std::map<const RevolutionProfile*, uint32_t>& seen) {
-    const auto found = seen.find(&g);
-    if (found != seen.end()) return found->second;
+RevolutionRef revolution_ref(PreparedScene& p, const RevolutionProfile& g) {
     RevolutionRef r;
     r.first = uint32_t(p.revolution_segments.size());
     r.count = uint32_t(g.segments.size());
     r.squared = g.squared ? 1 : 0;
     revolution_bounds(g, r.r_max, r.h_lo, r.h_hi);
     p.revolution_segments.insert(p.revolution_segments.end(), g.segments.begin(), g.segments.end());
-    const uint32_t index = uint32_t(p.revolutions.size());
-    p.revolutions.push_back(r);
-    seen.emplace(&g, index);
-    return index;
+    return r;
 }
 
-/// The index of blob `g` among p.blobs, added on its first use.
-uint32_t blob_index(PreparedScene& p, const BlobModel& g,
-                    std::map<const BlobModel*, uint32_t>& seen) {
-    const auto found = seen.find(&g);
-    if (found != seen.end()) return found->second;
+BlobRef blob_ref(PreparedScene& p, const BlobModel& g) {
     BlobRef b;
     b.first = uint32_t(p.blob_elements.size());
     b.count = uint32_t(g.elements.size());
     b.threshold = g.threshold;
     blob_bound(g, b.bound);
     p.blob_elements.insert(p.blob_elements.end(), g.elements.begin(), g.elements.end());
-    const uint32_t index = uint32_t(p.blobs.size());
-    p.blobs.push_back(b);
-    seen.emplace(&g, index);
-    return index;
+    return b;
 }
 
 // Puts triangles [b, e) of one object in the Morton order of their centroids within the
@@ -215,11 +204,14 @@ PreparedScene prepare_scene(const Scene& scene) {
                     p.polys.push_back(*node.poly);
                 }
                 if (shape.kind == ShapeKind::Glyph)
-                    shape.index = glyph_index(p, *node.glyph, glyphs_seen);
+                    shape.index = shared_index(glyphs_seen, *node.glyph, p.glyphs,
+                                               [&] { return glyph_ref(p, *node.glyph); });
                 if (shape.kind == ShapeKind::Revolution)
-                    shape.index = revolution_index(p, *node.revolution, revolutions_seen);
+                    shape.index = shared_index(revolutions_seen, *node.revolution, p.revolutions,
+                                               [&] { return revolution_ref(p, *node.revolution); });
                 if (shape.kind == ShapeKind::Blob)
-                    shape.index = blob_index(p, *node.blob, blobs_seen);
+                    shape.index = shared_index(blobs_seen, *node.blob, p.blobs,
+                                               [&] { return blob_ref(p, *node.blob); });
                 p.shapes.push_back(place_shape(shape, obj.transform * node.transform));
                 p.shape_material.push_back(node.material);
                 if (!have_material) first_material = node.material, have_material = true;

@@ -8,6 +8,8 @@
 #include "core/base/error.h"
 #include "core/geometry/blob_build.h"
 
+#include <optional>
+
 namespace sheaf::io::pov {
 
 bool Parser::parse_blob(const Token& kw, PovObject& o) {
@@ -16,13 +18,11 @@ bool Parser::parse_blob(const Token& kw, PovObject& o) {
     // The components' textures: the first one's, the first given, and where they first differ.
     PovTextureRef first_texture, given;
     size_t components = 0;
-    const Token* differ_at = nullptr;
-    Token differ_token;
+    std::optional<Token> differ_at;
     auto note_texture = [&](const Token& at, const PovTextureRef& t) {
         if (components++ == 0) first_texture = t;
         if (!given) given = t;
-        if (!same_texture(t, first_texture) && !differ_at)
-            differ_token = at, differ_at = &differ_token;
+        if (!same_texture(t, first_texture) && !differ_at) differ_at = at;
     };
     auto component = [&](const Token& at, auto&& add) {
         charge(sizeof(BlobElement), at);

@@ -226,10 +226,10 @@ void Parser::declare_directive(bool local) {
         v.ptr = copy;
     }
     if (index.empty()) {
-        if (local && scope < scopes_.size())
+        if (local)
             declare_in(scope, name.text, std::move(v));
         else
-            declare(name.text, std::move(v), local);
+            declare(name.text, std::move(v), false);
         return;
     }
     Value* arr = lookup_mut(name.text);

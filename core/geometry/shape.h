@@ -20,6 +20,7 @@
 
 #include "core/geometry/blob.h"
 #include "core/geometry/glyph.h"
+#include "core/geometry/isosurface.h"
 #include "core/geometry/poly.h"
 #include "core/geometry/ray.h"
 #include "core/geometry/revolution.h"
@@ -43,7 +44,8 @@ enum class ShapeKind : uint32_t {
     Superellipsoid,
     Glyph,
     Revolution,
-    Blob
+    Blob,
+    Isosurface
 };
 
 struct Shape {
@@ -53,12 +55,13 @@ struct Shape {
     bool open = false;  // cylinder, cone and glyph without caps; a revolution's surface only
     uint32_t index = 0; // poly: its coefficients in the scene's polys; glyph: its outline in
                         // the scene's glyphs; revolution: its profile in the scene's
-                        // revolutions; blob: its components in the scene's blobs
+                        // revolutions; blob: its components in the scene's blobs;
+                        // isosurface: its entry in the scene's isosurfaces
 };
 
 /// What shapes of some kinds read from the scene beside their Shape: poly coefficients, glyph
-/// outlines, revolution profiles and blob components. A table a scene lacks is null, and its shapes
-/// then have no spans.
+/// outlines, revolution profiles, blob components, isosurfaces and the functions they run. A
+/// table a scene lacks is null, and its shapes then have no spans.
 struct ShapeTables {
     const PolyCoeffs* polys = nullptr;
     const GlyphRef* glyphs = nullptr;
@@ -67,6 +70,8 @@ struct ShapeTables {
     const RevolutionSegment* revolution_segments = nullptr;
     const BlobRef* blobs = nullptr;
     const BlobElement* blob_elements = nullptr;
+    const IsoRef* isosurfaces = nullptr;
+    FnView functions;
 };
 
 /// One span [t0, t1] of a ray inside a solid, with the local normals at both ends (pointing
@@ -254,6 +259,15 @@ SHEAF_HD_NOINLINE int blob_spans(const BlobRef& b, const BlobElement* elements, 
     return count;
 }
 
+// Out of line on the device, like glyph_spans.
+SHEAF_HD_NOINLINE int iso_spans(const IsoRef& s, const FnView& fv, const Ray& r, Span* out) {
+    double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
+    Vec3 n0[kMaxShapeSpans], n1[kMaxShapeSpans];
+    const int count = iso_pieces(s, fv, r, t0, t1, n0, n1, kMaxShapeSpans);
+    for (int i = 0; i < count; ++i) out[i] = Span{float(t0[i]), float(t1[i]), n0[i], n1[i]};
+    return count;
+}
+
 } // namespace shape_detail
 
 /// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `tables` holds
@@ -376,6 +390,10 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
                                   : 0;
     case ShapeKind::Blob:
         return tables.blobs ? blob_spans(tables.blobs[s.index], tables.blob_elements, r, out) : 0;
+    case ShapeKind::Isosurface:
+        return tables.isosurfaces && tables.functions.programs
+                   ? iso_spans(tables.isosurfaces[s.index], tables.functions, r, out)
+                   : 0;
     }
     return 0;
 }

@@ -7,6 +7,7 @@
 #include "core/math/hd_math.h"
 #include "core/render/pattern_eval.h"
 #include "core/render/texture.h"
+#include "core/scene/function.h"
 #include "core/scene/scene_view.h"
 
 #include <cfloat>
@@ -45,6 +46,15 @@ SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p,
     texture_coordinates(scene.textures[size_t(image)], p, uv_s, uv_t, s, t);
     return scene.sampler->sample(uint32_t(image), s, t);
 #endif
+}
+
+/// A continuous pattern's value at pattern-space point q; a function pattern runs its program
+/// (a value that is not finite counts as 0).
+SHEAF_HD_INLINE float pattern_value(const SceneView& scene, const Pattern& pt, Vec3 q) {
+    if (pt.kind != PatternKind::Function) return pattern_value_at(pt, q);
+    if (!scene.functions.programs || pt.program < 0) return 0.0f;
+    const float raw = float(fn_eval3(scene.functions, uint32_t(pt.program), q.x, q.y, q.z));
+    return pattern_detail::shape_value(pt, raw - raw == 0 ? raw : 0.0f);
 }
 
 struct Evaluator {
@@ -96,7 +106,7 @@ struct Evaluator {
             const int i = pattern_index_at(pt, q);
             return entry(entries[uint32_t(i) < pg.count ? uint32_t(i) : pg.count - 1], p, depth);
         }
-        const float v = pattern_value_at(pt, q);
+        const float v = pattern_value(scene, pt, q);
         // The map: below the first entry its colour, above the last the last's, between two
         // entries the blend.
         if (v <= entries[0].value) return entry(entries[0], p, depth);
@@ -114,9 +124,9 @@ struct Evaluator {
 
 // The value a pattern gives at a pattern-space point, for slopes: list patterns give their
 // index spread over [0, 1].
-SHEAF_HD_INLINE float slope_value(const Pattern& pt, Vec3 q) {
+SHEAF_HD_INLINE float slope_value(const SceneView& scene, const Pattern& pt, Vec3 q) {
     if (pattern_is_list(pt.kind)) return float(pattern_index_at(pt, q)) * 0.5f;
-    return pattern_value_at(pt, q);
+    return pattern_value(scene, pt, q);
 }
 
 } // namespace texture_detail
@@ -135,7 +145,7 @@ SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t mater
             material = entries[i < ms.count ? i : ms.count - 1].material;
             continue;
         }
-        const float v = pattern_value_at(ms.pattern, q);
+        const float v = pattern_value(scene, ms.pattern, q);
         uint32_t pick = 0;
         for (uint32_t i = 1; i < ms.count; ++i) {
             // The nearer of the two entries around v.
@@ -166,12 +176,13 @@ SHEAF_HD_INLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec
     const Vec3 q = pattern_point(pt, p);
     // The slope of the pattern in pattern space, by central differences.
     const float h = 1e-3f;
-    const Vec3 g((slope_value(pt, q + Vec3(h, 0, 0)) - slope_value(pt, q - Vec3(h, 0, 0))) /
-                     (2 * h),
-                 (slope_value(pt, q + Vec3(0, h, 0)) - slope_value(pt, q - Vec3(0, h, 0))) /
-                     (2 * h),
-                 (slope_value(pt, q + Vec3(0, 0, h)) - slope_value(pt, q - Vec3(0, 0, h))) /
-                     (2 * h));
+    const Vec3 g(
+        (slope_value(scene, pt, q + Vec3(h, 0, 0)) - slope_value(scene, pt, q - Vec3(h, 0, 0))) /
+            (2 * h),
+        (slope_value(scene, pt, q + Vec3(0, h, 0)) - slope_value(scene, pt, q - Vec3(0, h, 0))) /
+            (2 * h),
+        (slope_value(scene, pt, q + Vec3(0, 0, h)) - slope_value(scene, pt, q - Vec3(0, 0, h))) /
+            (2 * h));
     const float slope = length(g);
     if (!(slope > 0) || !(slope <= FLT_MAX)) return n; // zero, NaN or infinite
     // Its direction in the world (gradients transform by the transpose of world -> pattern),

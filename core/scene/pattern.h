@@ -35,6 +35,7 @@ enum class PatternKind : uint8_t {
     Spiral1,     // spiral bands (param[0] arms) around the z axis
     Spiral2,     // two spirals crossing
     Quilted,     // cushion-shaped cells
+    Function,    // a user function's value (core/scene/function.h): Pattern::program
     Image,       // an image's colour (Pigment only): `image` in Scene::textures
     // Discrete patterns: an index into the list of their entries.
     Checker,    // 2 entries
@@ -64,7 +65,8 @@ struct Pattern {
     float wave_exponent = 1.0f; // Wave::Poly
     Vec3 vector{0, 1, 0};       // Gradient: the direction
     float param[4] = {0, 0, 0, 0};
-    int32_t image = -1; // Image: index into Scene::textures
+    int32_t image = -1;   // Image: index into Scene::textures
+    int32_t program = -1; // Function: index into Scene::fn_programs
 };
 
 /// A pigment: a solid colour, or a pattern whose value picks (continuous) or indexes (list

@@ -65,6 +65,15 @@ BlobRef blob_ref(PreparedScene& p, const BlobModel& g) {
     return b;
 }
 
+// An isosurface with the sphere around its container.
+IsoRef iso_ref(const IsoRef& g) {
+    IsoRef r = g;
+    const Vec3 c = g.sphere ? g.lo : (g.lo + g.hi) * 0.5f;
+    const float radius = g.sphere ? g.hi.x : length(g.hi - g.lo) * 0.5f;
+    r.bound[0] = c.x, r.bound[1] = c.y, r.bound[2] = c.z, r.bound[3] = radius;
+    return r;
+}
+
 // Puts triangles [b, e) of one object in the Morton order of their centroids within the
 // object's box (ties in the mesh's order), so that runs of consecutive primitives are compact
 // whatever order the mesh came in: cull.cluster culls such runs (core/rsh/cull_units.h).
@@ -184,6 +193,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     std::map<const GlyphOutline*, uint32_t> glyphs_seen;
     std::map<const RevolutionProfile*, uint32_t> revolutions_seen;
     std::map<const BlobModel*, uint32_t> blobs_seen;
+    std::map<const IsoRef*, uint32_t> isos_seen;
     for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
         const ShapeObject& obj = scene.shape_objects[so];
         const uint32_t base = uint32_t(p.csg.size());
@@ -212,6 +222,9 @@ PreparedScene prepare_scene(const Scene& scene) {
                 if (shape.kind == ShapeKind::Blob)
                     shape.index = shared_index(blobs_seen, *node.blob, p.blobs,
                                                [&] { return blob_ref(p, *node.blob); });
+                if (shape.kind == ShapeKind::Isosurface)
+                    shape.index = shared_index(isos_seen, *node.iso, p.isosurfaces,
+                                               [&] { return iso_ref(*node.iso); });
                 p.shapes.push_back(place_shape(shape, obj.transform * node.transform));
                 p.shape_material.push_back(node.material);
                 if (!have_material) first_material = node.material, have_material = true;
@@ -251,6 +264,9 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.normal_patterns = scene.normal_patterns;
     p.material_switches = scene.material_switches;
     p.material_entries = scene.material_entries;
+    p.fn_programs = scene.fn_programs;
+    p.fn_code = scene.fn_code;
+    p.fn_patterns = scene.fn_patterns;
     p.sky = scene.sky;
     p.fog = scene.fog;
     p.working_gamma = scene.working_gamma;

@@ -65,6 +65,7 @@ struct PreparedScene {
     std::vector<RevolutionSegment> revolution_segments; // their profiles
     std::vector<BlobRef> blobs;                         // of the blob leaves, by Shape::index
     std::vector<BlobElement> blob_elements;             // their components
+    std::vector<IsoRef> isosurfaces;                    // of the isosurface leaves
     std::vector<uint32_t> shape_material; // per placed shape
     std::vector<PreparedCsgNode> csg;
     std::vector<uint32_t> csg_children;
@@ -79,6 +80,9 @@ struct PreparedScene {
     std::vector<NormalPattern> normal_patterns;
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
+    std::vector<FnProgram> fn_programs; // user functions (Scene::fn_programs ...)
+    std::vector<FnInstr> fn_code;
+    std::vector<Pattern> fn_patterns;
     int32_t sky = -1;
     Fog fog;
     std::vector<Texture> textures;

@@ -169,6 +169,20 @@ void Scene::validate() const {
                             !std::isfinite(e.len) || !(e.len >= 0))
                             throw SceneError(name + ": a blob's component is not finite");
                 }
+                if (s.kind == ShapeKind::Isosurface) {
+                    if (!node.iso) throw SceneError(name + ": an isosurface without a function");
+                    const IsoRef& iso = *node.iso;
+                    if (!std::isfinite(iso.threshold) || !(iso.max_gradient > 0) ||
+                        !std::isfinite(iso.max_gradient) || !(iso.accuracy > 0) ||
+                        !std::isfinite(iso.accuracy) || !is_finite(iso.lo) || !is_finite(iso.hi))
+                        throw SceneError(name + ": an isosurface's threshold, max_gradient, "
+                                                "accuracy or container is not a finite number "
+                                                "(max_gradient and accuracy > 0)");
+                    if (iso.sphere
+                            ? !(iso.hi.x > 0)
+                            : !(iso.lo.x < iso.hi.x && iso.lo.y < iso.hi.y && iso.lo.z < iso.hi.z))
+                        throw SceneError(name + ": an isosurface's container is empty");
+                }
                 if (!node.transform.finite())
                     throw SceneError(name + ": a shape's transform is not finite");
                 if (!(std::fabs(node.transform.determinant()) >= 1e-20f))
@@ -238,6 +252,7 @@ void Scene::validate() const {
         if (textures[t].path.empty())
             throw SceneError("texture " + std::to_string(t) + " has no file");
     validate_patterns();
+    validate_functions();
 }
 
 namespace {
@@ -247,12 +262,50 @@ void check_pattern(const Pattern& p, size_t textures, const std::string& name) {
     if (!is_finite(p.turbulence) || !std::isfinite(p.frequency) || !std::isfinite(p.phase) ||
         !is_finite(p.vector) || p.octaves < 1 || p.octaves > 16)
         throw SceneError(name + ": a pattern parameter is out of range");
+    if (p.kind == PatternKind::Function && p.program < 0)
+        throw SceneError(name + ": a function pattern without a function");
     if (p.kind == PatternKind::Image && (p.image < 0 || size_t(p.image) >= textures))
         throw SceneError(name + " names texture " + std::to_string(p.image) +
                          ", which does not exist");
 }
 
 } // namespace
+
+void Scene::validate_functions() const {
+    for (size_t i = 0; i < fn_patterns.size(); ++i) {
+        const Pattern& p = fn_patterns[i];
+        check_pattern(p, textures.size(), "function pattern " + std::to_string(i));
+        if (p.kind == PatternKind::Function || p.kind == PatternKind::Image)
+            throw SceneError("function pattern " + std::to_string(i) +
+                             ": a function's pattern is neither a function nor an image");
+    }
+    for (size_t i = 0; i < fn_programs.size(); ++i) {
+        const std::string why =
+            check_fn_program(fn_programs[i], fn_code.data(), fn_code.size(), fn_patterns.size());
+        if (!why.empty()) throw SceneError("function " + std::to_string(i) + ": " + why);
+    }
+    auto three_params = [&](int32_t program, const std::string& name) {
+        if (program < 0 || size_t(program) >= fn_programs.size())
+            throw SceneError(name + " names function " + std::to_string(program) +
+                             ", which does not exist");
+        if (fn_programs[size_t(program)].params != 3)
+            throw SceneError(name + ": its function must take x, y and z");
+    };
+    auto pattern_function = [&](const Pattern& p, const std::string& name) {
+        if (p.kind == PatternKind::Function) three_params(p.program, name);
+    };
+    for (size_t i = 0; i < pigments.size(); ++i)
+        if (!pigments[i].solid)
+            pattern_function(pigments[i].pattern, "pigment " + std::to_string(i));
+    for (size_t i = 0; i < normal_patterns.size(); ++i)
+        pattern_function(normal_patterns[i].pattern, "normal pattern " + std::to_string(i));
+    for (size_t i = 0; i < material_switches.size(); ++i)
+        pattern_function(material_switches[i].pattern, "material switch " + std::to_string(i));
+    for (const ShapeObject& o : shape_objects)
+        for (const CsgNode& node : o.nodes)
+            if (node.op == CsgOp::Leaf && node.shape.kind == ShapeKind::Isosurface && node.iso)
+                three_params(int32_t(node.iso->program), o.name + ": its isosurface");
+}
 
 void Scene::validate_patterns() const {
     const auto range = [](uint32_t first, uint32_t count, size_t size) {

@@ -134,6 +134,7 @@ struct CsgNode {
     std::shared_ptr<const GlyphOutline> glyph; // leaf of kind Glyph: its outline
     std::shared_ptr<const RevolutionProfile> revolution; // leaf of kind Revolution: its profile
     std::shared_ptr<const BlobModel> blob;               // leaf of kind Blob: its components
+    std::shared_ptr<const IsoRef> iso; // leaf of kind Isosurface (bound computed by prepare)
     Affine transform;      // leaf: shape space -> object space
     uint32_t material = 0; // leaf
     bool inverse = false;
@@ -182,6 +183,11 @@ class Scene {
     std::vector<NormalPattern> normal_patterns;
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
+    // User functions (core/scene/function.h), run by function patterns and isosurfaces:
+    // programs, their code, and the patterns their Pattern instructions read.
+    std::vector<FnProgram> fn_programs;
+    std::vector<FnInstr> fn_code;
+    std::vector<Pattern> fn_patterns;
     Camera camera;
     Vec3 background{0, 0, 0};
     int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene
@@ -199,6 +205,7 @@ class Scene {
 
   private:
     void validate_patterns() const;
+    void validate_functions() const;
 };
 
 } // namespace sheaf

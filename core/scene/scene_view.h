@@ -35,6 +35,7 @@ struct SceneView {
     const RevolutionSegment* revolution_segments = nullptr;
     const BlobRef* blobs = nullptr;
     const BlobElement* blob_elements = nullptr;
+    const IsoRef* isosurfaces = nullptr;
     const uint32_t* shape_material = nullptr;
     const PreparedCsgNode* csg = nullptr;
     const uint32_t* csg_children = nullptr;
@@ -46,6 +47,7 @@ struct SceneView {
     const NormalPattern* normal_patterns = nullptr;
     const MaterialSwitch* material_switches = nullptr;
     const MaterialEntry* material_entries = nullptr;
+    FnView functions; // user functions: function patterns, isosurfaces
     int32_t sky = -1;
     Fog fog;
     const Light* lights = nullptr;
@@ -71,19 +73,23 @@ struct SceneView {
           shapes(p.shapes.data()), polys(p.polys.data()), glyphs(p.glyphs.data()),
           glyph_segments(p.glyph_segments.data()), revolutions(p.revolutions.data()),
           revolution_segments(p.revolution_segments.data()), blobs(p.blobs.data()),
-          blob_elements(p.blob_elements.data()), shape_material(p.shape_material.data()),
-          csg(p.csg.data()), csg_children(p.csg_children.data()),
-          analytic_root(p.analytic_root.data()), materials(p.materials.data()),
-          pigments(p.pigments.data()), pigment_entries(p.pigment_entries.data()),
-          normal_patterns(p.normal_patterns.data()), material_switches(p.material_switches.data()),
-          material_entries(p.material_entries.data()), sky(p.sky), fog(p.fog),
-          lights(p.lights.data()), light_count(uint32_t(p.lights.size())), background(p.background),
-          working_gamma(p.working_gamma), textures(p.textures.data()), sampler(p.sampler.get()) {}
+          blob_elements(p.blob_elements.data()), isosurfaces(p.isosurfaces.data()),
+          shape_material(p.shape_material.data()), csg(p.csg.data()),
+          csg_children(p.csg_children.data()), analytic_root(p.analytic_root.data()),
+          materials(p.materials.data()), pigments(p.pigments.data()),
+          pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
+          material_switches(p.material_switches.data()),
+          material_entries(p.material_entries.data()), functions{p.fn_programs.data(),
+                                                                 p.fn_code.data(),
+                                                                 p.fn_patterns.data()},
+          sky(p.sky), fog(p.fog), lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
+          background(p.background), working_gamma(p.working_gamma), textures(p.textures.data()),
+          sampler(p.sampler.get()) {}
 
-    /// What poly, glyph, revolution and blob shapes read beside their Shape.
+    /// What poly, glyph, revolution, blob and isosurface shapes read beside their Shape.
     SHEAF_HD ShapeTables shape_tables() const {
-        return {polys, glyphs,       glyph_segments, revolutions, revolution_segments,
-                blobs, blob_elements};
+        return {polys, glyphs,        glyph_segments, revolutions, revolution_segments,
+                blobs, blob_elements, isosurfaces,    functions};
     }
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
     SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }

@@ -51,6 +51,10 @@ template <class Exec> class DeviceScene {
         put(p.revolution_segments, v.revolution_segments);
         put(p.blobs, v.blobs);
         put(p.blob_elements, v.blob_elements);
+        put(p.isosurfaces, v.isosurfaces);
+        put(p.fn_programs, v.functions.programs);
+        put(p.fn_code, v.functions.code);
+        put(p.fn_patterns, v.functions.patterns);
         put(p.shape_material, v.shape_material);
         put(p.csg, v.csg);
         put(p.csg_children, v.csg_children);

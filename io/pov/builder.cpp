@@ -43,6 +43,19 @@ struct Builder {
         loose.clear();
     }
 
+    std::map<const IsoRef*, std::shared_ptr<const IsoRef>> isos = {}; // by the parsed one
+
+    /// The isosurface of `o` with its function compiled.
+    std::shared_ptr<const IsoRef> isosurface(const PovObject& o) {
+        auto& done = isos[o.iso.get()];
+        if (!done) {
+            auto iso = std::make_shared<IsoRef>(*o.iso);
+            iso->program = uint32_t(materials.function(*o.iso_function));
+            done = std::move(iso);
+        }
+        return done;
+    }
+
     std::string name(const PovObject& o) {
         return o.where.text + "@" + std::to_string(o.where.line) + "#" + std::to_string(names++);
     }
@@ -130,6 +143,7 @@ struct Builder {
             n.glyph = o.glyph;
             n.revolution = o.revolution;
             n.blob = o.blob;
+            if (o.shape.kind == ShapeKind::Isosurface) n.iso = isosurface(o);
             n.transform = o.local;
             n.material = material(tex, in);
             n.inverse = o.inverse;

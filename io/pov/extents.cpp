@@ -71,6 +71,12 @@ Box shape_box(const PovObject& o) {
         revolution_bounds(*o.revolution, r, h_lo, h_hi);
         return transformed(o.local, Vec3(-r, -r, h_lo), Vec3(r, r, h_hi));
     }
+    case ShapeKind::Isosurface: { // its container
+        if (!o.iso) return Box();
+        if (!o.iso->sphere) return transformed(o.local, o.iso->lo, o.iso->hi);
+        const Vec3 r(o.iso->hi.x);
+        return transformed(o.local, o.iso->lo - r, o.iso->lo + r);
+    }
     case ShapeKind::Blob: { // the sphere around its positive components
         if (!o.blob) return Box();
         float b[4];

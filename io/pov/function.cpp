@@ -1,6 +1,8 @@
 // User-function evaluation and the float built-ins (see function.h).
 #include "io/pov/function.h"
 
+#include "core/scene/function.h"
+
 #include <cmath>
 #include <map>
 
@@ -161,6 +163,14 @@ double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
 } // namespace
 
 double PovFunction::eval(const double* args, int n, uint64_t& steps) const {
+    if (internal >= 0 || pattern) {
+        if (steps == 0) throw FnStepsExceeded{};
+        --steps;
+        double a[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+        for (int i = 0; i < n && i < 8; ++i) a[i] = args[i];
+        return pattern ? fn_pattern(*pattern, a[0], a[1], a[2])
+                       : fn_internal(internal, a[0], a[1], a[2], a + 3);
+    }
     return eval_node(body, args, n, steps);
 }
 

@@ -3,6 +3,9 @@
 // float built-ins (sin, pow, min, select ...) are shared with the scene-language expressions.
 #pragma once
 
+#include "core/scene/pattern.h"
+#include "io/pov/lexer.h"
+
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -48,6 +51,11 @@ struct PovFunction {
     std::vector<std::string> params; // x, y, z when none were given
     FnNode body;
     std::string unsupported; // non-empty: what it uses that the reader cannot evaluate
+    Token where;             // its `function` keyword
+    // Instead of a body: internal(N) (core/scene/function.h's fn_internal) over x, y, z and
+    // its parameters, or a pattern's value at x, y, z (in the function's own space).
+    int internal = -1;
+    std::shared_ptr<const Pattern> pattern;
     /// Evaluates the body; each node evaluated takes one of `steps` (FnStepsExceeded when
     /// none is left).
     double eval(const double* args, int n, uint64_t& steps) const;

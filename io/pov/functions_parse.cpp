@@ -1,9 +1,13 @@
 // `function { ... }` and `function(a, b) { ... }`: the body compiled to an FnNode tree over the
-// parameters; declared floats become constants, declared functions calls. Pattern and pigment
-// functions are accepted and marked unsupported (they evaluate to 0).
+// parameters; declared floats become constants, declared functions calls. `internal(N)` of the
+// internal functions Sheaf knows (core/scene/function.h) and `pattern { ... }` of its
+// patterns are functions too; pigment, spline and transform functions are accepted and marked
+// unsupported (they evaluate to 0).
+#include "io/pov/materials.h"
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
+#include "core/scene/function.h"
 
 #include <algorithm>
 
@@ -11,6 +15,7 @@ namespace sheaf::io::pov {
 
 Value Parser::parse_function(const Token& t) {
     auto f = std::make_shared<PovFunction>();
+    f->where = t;
     if (accept_sym("(")) {
         if (!accept_sym(")")) {
             for (;;) {
@@ -25,9 +30,15 @@ Value Parser::parse_function(const Token& t) {
     const Token& first = peek();
     if (!is_sym_tok(first, "{")) error_expected(first, "'{'");
     advance();
-    const Token& b = peek();
-    if (is_kw_tok(b, "pattern") || is_kw_tok(b, "pigment") || is_kw_tok(b, "internal") ||
-        is_kw_tok(b, "spline") || is_kw_tok(b, "image_map") || is_kw_tok(b, "transform")) {
+    const Token b = peek();
+    if (is_kw_tok(b, "internal")) {
+        parse_internal_function(*f);
+        expect_sym("}", "'}'");
+    } else if (is_kw_tok(b, "pattern")) {
+        parse_pattern_function(*f);
+        expect_sym("}", "'}'");
+    } else if (is_kw_tok(b, "pigment") || is_kw_tok(b, "spline") || is_kw_tok(b, "image_map") ||
+               is_kw_tok(b, "transform")) {
         f->unsupported = b.text + " function";
         int depth = 1;
         while (depth > 0) {
@@ -45,11 +56,43 @@ Value Parser::parse_function(const Token& t) {
         fn_unsupported_ = saved;
         expect_sym("}", "'}' or an operator");
     }
-    (void)t;
     Value v;
     v.type = VType::Function;
     v.ptr = f;
     return v;
+}
+
+void Parser::parse_internal_function(PovFunction& f) {
+    advance();
+    expect_sym("(");
+    const double id = parse_float();
+    expect_sym(")");
+    const int extra = id >= 0 && id < 256 ? fn_internal_extra(int(id)) : -1;
+    if (extra < 0) {
+        f.unsupported = "internal function " + std::to_string(int(id));
+        return;
+    }
+    f.internal = int(id);
+    f.params = {"x", "y", "z"};
+    for (int i = 0; i < extra; ++i) f.params.push_back("p" + std::to_string(i));
+}
+
+void Parser::parse_pattern_function(PovFunction& f) {
+    advance();
+    expect_sym("{");
+    PovPattern pt;
+    Affine local;
+    int list = 0;
+    bool supported = false;
+    const Token name = peek();
+    if (!parse_pattern_name(pt, list, supported)) error_expected(name, "a pattern");
+    while (!accept_sym("}"))
+        if (!parse_pattern_modifier(pt, local)) error_expected(peek(), "a pattern modifier or '}'");
+    if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::Function) {
+        f.unsupported = "pattern function '" + name.text + "'";
+        return;
+    }
+    f.pattern = std::make_shared<const Pattern>(lower_pattern(pt, local));
 }
 
 namespace {
@@ -210,6 +253,16 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
         return n;
     }
     if (t.text == "false" || t.text == "off" || t.text == "no" || t.text == "clock") return n;
+    if (t.text == "tau") {
+        n.value = 2 * M_PI;
+        return n;
+    }
+    if (t.text == "image_width" || t.text == "image_height" || t.text == "version") {
+        n.value = t.text == "image_width"    ? options_.image_width
+                  : t.text == "image_height" ? options_.image_height
+                                             : model.version;
+        return n;
+    }
     if (is_float_builtin(t.text)) {
         n.op = FnNode::Builtin;
         n.name = t.text;

@@ -55,6 +55,22 @@ const PovFinish& layer_finish(const PovTexture& t) {
 } // namespace
 
 Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
+    Pattern p = lower_pattern(pt, eff);
+    // Sheaf world -> POV-Ray world (the z mirror) -> the pattern's own space.
+    p.to_pattern = p.to_pattern * pov_to_sheaf();
+    if (pt.kind == PatternKind::Function && pt.function) p.program = function(*pt.function);
+    return p;
+}
+
+int32_t MaterialBuilder::function(const PovFunction& f) {
+    try {
+        return functions_.program(f);
+    } catch (const FnCompileError& e) {
+        p_.error_at(f.where, e.what());
+    }
+}
+
+Pattern lower_pattern(const PovPattern& pt, const Affine& eff) {
     Pattern p;
     p.kind = pt.kind;
     p.wave = pt.wave;
@@ -66,8 +82,7 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     p.wave_exponent = float(pt.wave_exponent);
     p.vector = pt.vector;
     for (int i = 0; i < 4; ++i) p.param[i] = float(pt.param[i]);
-    // Sheaf world -> POV-Ray world (the z mirror) -> the pattern's own space.
-    if (std::fabs(eff.determinant()) > 1e-30f) p.to_pattern = eff.inverse() * pov_to_sheaf();
+    if (std::fabs(eff.determinant()) > 1e-30f) p.to_pattern = eff.inverse();
     return p;
 }
 

@@ -4,6 +4,7 @@
 // transform from Sheaf's world to their own space (through POV-Ray's mirrored z).
 #pragma once
 
+#include "io/pov/fn_compile.h"
 #include "io/pov/parser.h"
 
 #include <map>
@@ -17,15 +18,22 @@ inline Vec3 rgb(const Color5& c) {
     return Vec3(float(c[0]), float(c[1]), float(c[2]));
 }
 
+/// The core pattern of `pt` in the space `eff` maps to its own (no mirror: a function's
+/// pattern reads POV-Ray coordinates).
+Pattern lower_pattern(const PovPattern& pt, const Affine& eff);
+
 class MaterialBuilder {
   public:
-    MaterialBuilder(Parser& p, Scene& scene) : p_(p), scene_(scene) {}
+    MaterialBuilder(Parser& p, Scene& scene) : p_(p), scene_(scene), functions_(scene) {}
 
     /// The material of texture `t` (its own transforms included) with interior `in` (may be
     /// null).
     uint32_t material(const PovTexture& t, const PovInterior* in);
     /// The sky_sphere's pigments as one (layered) pigment; -1 when there are none.
     int32_t sky(const std::vector<std::shared_ptr<const PovPigment>>& layers, const Affine& local);
+    /// The program of user function `f` (function patterns, isosurfaces); a function that
+    /// cannot be compiled is an error at its place.
+    int32_t function(const PovFunction& f);
 
   private:
     uint32_t material_in(const PovTexture& t, const PovInterior* in, const Affine& outer,
@@ -41,6 +49,7 @@ class MaterialBuilder {
     Scene& scene_;
     std::map<std::string, uint32_t> plain_; // materials without patterns, by their values
     std::map<std::string, int32_t> images_; // image textures by file and transform
+    FnCompiler functions_;
 };
 
 } // namespace sheaf::io::pov

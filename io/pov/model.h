@@ -6,6 +6,7 @@
 #include "core/geometry/shape.h"
 #include "core/math/affine.h"
 #include "core/scene/scene.h"
+#include "io/pov/function.h"
 #include "io/pov/lexer.h"
 
 #include <array>
@@ -60,6 +61,7 @@ struct PovPattern {
     Vec3 vector{0, 1, 0}; // gradient
     double param[4] = {0, 0, 0, 0};
     std::shared_ptr<const PovImage> image;
+    std::shared_ptr<const PovFunction> function; // kind Function
 };
 
 struct PovPigment;
@@ -150,6 +152,8 @@ struct PovObject {
     std::shared_ptr<const GlyphOutline> glyph; // shape of kind Glyph: its outline
     std::shared_ptr<const RevolutionProfile> revolution; // shape of kind Revolution
     std::shared_ptr<const BlobModel> blob;               // shape of kind Blob
+    std::shared_ptr<const IsoRef> iso; // shape of kind Isosurface (its program set when built)
+    std::shared_ptr<const PovFunction> iso_function; // and its function
     std::shared_ptr<const Mesh> mesh;
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;

@@ -19,14 +19,14 @@ const std::set<std::string>& supported_objects() {
         "torus",       "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
         "union",       "merge",    "intersection",    "difference", "object", "light_source",
         "light_group", "quadric",  "cubic",           "quartic",    "poly",   "superellipsoid",
-        "text",        "prism",    "lathe",           "sor",        "blob"};
+        "text",        "prism",    "lathe",           "sor",        "blob",   "isosurface"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
-    static const std::set<std::string> s = {"height_field", "isosurface", "julia_fractal",
-                                            "sphere_sweep", "parametric", "bicubic_patch",
-                                            "polynomial",   "ovus",       "lemon"};
+    static const std::set<std::string> s = {"height_field", "julia_fractal", "sphere_sweep",
+                                            "parametric",   "bicubic_patch", "polynomial",
+                                            "ovus",         "lemon"};
     return s;
 }
 
@@ -111,6 +111,7 @@ bool Parser::parse_object(PovObject& o) {
     if (k == "lathe") return parse_lathe(kw, o);
     if (k == "sor") return parse_sor(kw, o);
     if (k == "blob") return parse_blob(kw, o);
+    if (k == "isosurface") return parse_isosurface(kw, o);
     if (k == "text") {
         parse_text(kw, o);
         return true;

@@ -185,6 +185,9 @@ class Parser {
     bool builtin_call(const Token& t, Value& out);
     Value call_function(const Token& t, const PovFunction& f);
     Value parse_function(const Token& t);
+    /// `internal(N)` and `pattern { ... }` as a function's whole body (into `f`).
+    void parse_internal_function(PovFunction& f);
+    void parse_pattern_function(PovFunction& f);
     FnNode parse_fn(const std::vector<std::string>& params, int level);
     FnNode parse_fn_primary(const std::vector<std::string>& params);
     FnNode parse_fn_atom(const std::vector<std::string>& params);
@@ -227,6 +230,7 @@ class Parser {
     bool parse_sor(const Token& kw, PovObject& o);
     /// blob { threshold, components, modifiers } (io/pov/blobs.cpp).
     bool parse_blob(const Token& kw, PovObject& o);
+    bool parse_isosurface(const Token& kw, PovObject& o);
     /// N 2-D points <r, h> of a lathe or sor, charged to the data budget first; `where`: each
     /// point's first token, for errors about it.
     std::vector<Vec3> parse_profile_points(const Token& count_at, int n, const char* what,

@@ -19,35 +19,21 @@ struct PatternInfo {
 
 const std::map<std::string, PatternInfo>& supported_patterns() {
     static const std::map<std::string, PatternInfo> m = {
-        {"agate", {PatternKind::Agate}},
-        {"boxed", {PatternKind::Boxed}},
-        {"bozo", {PatternKind::Bozo}},
-        {"spotted", {PatternKind::Bozo}},
-        {"bumps", {PatternKind::Bozo}},
-        {"brick", {PatternKind::Brick, 2}},
-        {"cells", {PatternKind::Cells}},
-        {"checker", {PatternKind::Checker, 2}},
-        {"crackle", {PatternKind::Crackle}},
-        {"cylindrical", {PatternKind::Cylindrical}},
-        {"dents", {PatternKind::Dents}},
-        {"gradient", {PatternKind::Gradient}},
-        {"granite", {PatternKind::Granite}},
-        {"hexagon", {PatternKind::Hexagon, 3}},
-        {"leopard", {PatternKind::Leopard}},
-        {"marble", {PatternKind::Marble}},
-        {"onion", {PatternKind::Onion}},
-        {"planar", {PatternKind::Planar}},
-        {"quilted", {PatternKind::Quilted}},
-        {"radial", {PatternKind::Radial}},
-        {"ripples", {PatternKind::Ripples}},
-        {"spherical", {PatternKind::Spherical}},
-        {"spiral1", {PatternKind::Spiral1}},
-        {"spiral2", {PatternKind::Spiral2}},
-        {"square", {PatternKind::Square, 4}},
-        {"triangular", {PatternKind::Triangular, 6}},
-        {"waves", {PatternKind::Waves}},
-        {"wood", {PatternKind::Wood}},
-        {"wrinkles", {PatternKind::Wrinkles}},
+        {"agate", {PatternKind::Agate}},       {"boxed", {PatternKind::Boxed}},
+        {"bozo", {PatternKind::Bozo}},         {"spotted", {PatternKind::Bozo}},
+        {"bumps", {PatternKind::Bozo}},        {"brick", {PatternKind::Brick, 2}},
+        {"cells", {PatternKind::Cells}},       {"checker", {PatternKind::Checker, 2}},
+        {"crackle", {PatternKind::Crackle}},   {"cylindrical", {PatternKind::Cylindrical}},
+        {"dents", {PatternKind::Dents}},       {"gradient", {PatternKind::Gradient}},
+        {"granite", {PatternKind::Granite}},   {"hexagon", {PatternKind::Hexagon, 3}},
+        {"leopard", {PatternKind::Leopard}},   {"marble", {PatternKind::Marble}},
+        {"onion", {PatternKind::Onion}},       {"planar", {PatternKind::Planar}},
+        {"quilted", {PatternKind::Quilted}},   {"radial", {PatternKind::Radial}},
+        {"ripples", {PatternKind::Ripples}},   {"spherical", {PatternKind::Spherical}},
+        {"spiral1", {PatternKind::Spiral1}},   {"spiral2", {PatternKind::Spiral2}},
+        {"square", {PatternKind::Square, 4}},  {"triangular", {PatternKind::Triangular, 6}},
+        {"waves", {PatternKind::Waves}},       {"wood", {PatternKind::Wood}},
+        {"wrinkles", {PatternKind::Wrinkles}}, {"function", {PatternKind::Function}},
     };
     return m;
 }
@@ -55,10 +41,10 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},       {"cubic", 6},    {"density_file", 0}, {"facets", 0},
-        {"function", 0},  {"image_pattern", 0}, {"julia", 0},   {"magnet", 0},
-        {"mandel", 0},    {"object", 2},   {"pavement", 0},     {"pigment_pattern", 0},
-        {"slope", 0},     {"tiling", 0},   {"fractal", 0},      {"tiles", 2},
+        {"aoi", 0},           {"cubic", 6},    {"density_file", 0},    {"facets", 0},
+        {"image_pattern", 0}, {"julia", 0},    {"magnet", 0},          {"mandel", 0},
+        {"object", 2},        {"pavement", 0}, {"pigment_pattern", 0}, {"slope", 0},
+        {"tiling", 0},        {"fractal", 0},  {"tiles", 2},
     };
     return m;
 }
@@ -85,6 +71,13 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
                           ? Wave::Triangle
                           : Wave::Ramp;
         if (k == "gradient") pt.vector = parse_vector();
+        if (k == "function") { // its body, or a declared function called over x, y, z
+            const Value f = parse_function(t);
+            pt.function = std::static_pointer_cast<const PovFunction>(f.ptr);
+            if (pt.function->params.size() != 3 && pt.function->unsupported.empty())
+                error_at(t, "a function pattern's function must take x, y and z");
+            supported = pt.function->unsupported.empty();
+        }
         if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
         if (k == "quilted") { // control0 and control1 follow as modifiers
         }

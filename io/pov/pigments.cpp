@@ -53,6 +53,9 @@ bool Parser::is_color_start(const Token& t) {
         return !lookup(t.text);
     if (t.kind != TokKind::Ident) return starts_expression(t);
     const Value* v = lookup(t.text);
+    if (v && v->type == VType::Array) // an array of colours or numbers
+        for (const Value& e : static_cast<const ArrayValue*>(v->ptr.get())->elements)
+            if (e.type != VType::None) return e.numeric();
     return v && v->numeric();
 }
 

@@ -276,6 +276,12 @@ bool Parser::accept_declared(VType type, Value& out, const std::string& expected
     const Value* v = lookup(t.text);
     if (!v) return false;
     if (v->type != type && v->type != VType::Array) return false;
+    if (v->type == VType::Array) // an array of other values (colours ...) is not one of these
+        for (const Value& e : static_cast<const ArrayValue*>(v->ptr.get())->elements)
+            if (e.type != VType::None) {
+                if (e.type != type) return false;
+                break;
+            }
     advance();
     Value got = *v;
     if (got.type == VType::Array) {

@@ -1,0 +1,81 @@
+// Checking a compiled function before either backend runs it (see function.h).
+#include "core/scene/function.h"
+
+namespace sheaf {
+
+std::string check_fn_program(const FnProgram& p, const FnInstr* code, size_t code_size,
+                             size_t patterns, int* depth_out) {
+    if (size_t(p.first) + p.count > code_size) return "its code lies outside the function code";
+    if (p.count == 0) return "it has no code";
+    if (p.params > uint32_t(kFnStack)) return "it has more parameters than its stack holds";
+    int depth = int(p.params), deepest = depth;
+    for (uint32_t i = 0; i < p.count; ++i) {
+        const FnInstr& in = code[p.first + i];
+        int pops = 0, pushes = 1;
+        switch (in.op) {
+        case FnOp::Const:
+            break;
+        case FnOp::Load:
+            if (int(in.arg) >= depth) return "it reads a slot above its stack";
+            break;
+        case FnOp::Drop:
+            pops = int(in.arg) + 1;
+            break;
+        case FnOp::Neg:
+        case FnOp::Not:
+            pops = 1;
+            break;
+        case FnOp::Math:
+            if (in.arg > uint16_t(FnMath::Radians)) return "it calls an unknown math function";
+            pops = 1;
+            break;
+        case FnOp::Add:
+        case FnOp::Sub:
+        case FnOp::Mul:
+        case FnOp::Div:
+        case FnOp::Lt:
+        case FnOp::Le:
+        case FnOp::Gt:
+        case FnOp::Ge:
+        case FnOp::Eq:
+        case FnOp::Ne:
+        case FnOp::And:
+        case FnOp::Or:
+        case FnOp::Min:
+        case FnOp::Max:
+        case FnOp::Pow:
+        case FnOp::Atan2:
+        case FnOp::Mod:
+        case FnOp::IntDiv:
+            pops = 2;
+            break;
+        case FnOp::Cond:
+        case FnOp::Select3:
+            pops = 3;
+            break;
+        case FnOp::Select4:
+            pops = 4;
+            break;
+        case FnOp::Internal:
+            if (fn_internal_extra(in.arg) < 0 || in.count != 3 + fn_internal_extra(in.arg))
+                return "it calls an unknown internal function";
+            pops = in.count;
+            break;
+        case FnOp::Pattern:
+            if (in.arg >= patterns) return "it names a pattern that does not exist";
+            pops = 3;
+            break;
+        default:
+            return "it has an unknown operation";
+        }
+        if (depth < pops) return "its stack runs out";
+        depth += pushes - pops;
+        if (depth > deepest) deepest = depth;
+        if (deepest > kFnStack) return "it needs a stack deeper than " + std::to_string(kFnStack);
+    }
+    if (depth != 1) return "it does not leave exactly one value";
+    if (depth_out) *depth_out = deepest;
+    return {};
+}
+
+} // namespace sheaf

@@ -1,0 +1,120 @@
+#include "core/scene/function.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace sheaf {
+namespace {
+
+FnInstr op(FnOp o, uint16_t arg = 0, double value = 0, uint8_t count = 0) {
+    FnInstr in;
+    in.op = o, in.arg = arg, in.value = value, in.count = count;
+    return in;
+}
+
+/// One program over `params` arguments, checked, with its view.
+struct Program {
+    std::vector<FnInstr> code;
+    std::vector<Pattern> patterns;
+    FnProgram pg;
+    Program(uint32_t params, std::vector<FnInstr> c) : code(std::move(c)) {
+        pg.first = 0, pg.count = uint32_t(code.size()), pg.params = params;
+    }
+    std::string check() const {
+        return check_fn_program(pg, code.data(), code.size(), patterns.size());
+    }
+    double operator()(std::vector<double> args) const {
+        const FnView v{&pg, code.data(), patterns.data()};
+        return fn_eval(v, 0, args.data());
+    }
+};
+
+TEST(Function, ArithmeticReadsItsParametersWhereTheyLie) {
+    // (x - 2 * y) / z, then drop the three parameters under the result.
+    Program p(3, {op(FnOp::Load, 0), op(FnOp::Const, 0, 2), op(FnOp::Load, 1), op(FnOp::Mul),
+                  op(FnOp::Sub), op(FnOp::Load, 2), op(FnOp::Div), op(FnOp::Drop, 3)});
+    EXPECT_EQ(p.check(), "");
+    EXPECT_DOUBLE_EQ(p({7, 1, 2}), 2.5);
+    EXPECT_DOUBLE_EQ(p({-1, 0.5, 4}), -0.5);
+}
+
+TEST(Function, ConditionsSelectAndMathFollowPovRay) {
+    Program cond(1, {op(FnOp::Load, 0), op(FnOp::Const, 0, 0), op(FnOp::Gt), op(FnOp::Const, 0, 10),
+                     op(FnOp::Const, 0, 20), op(FnOp::Cond), op(FnOp::Drop, 1)});
+    EXPECT_EQ(cond.check(), "");
+    EXPECT_EQ(cond({1}), 10);
+    EXPECT_EQ(cond({-1}), 20);
+    Program sel(1, {op(FnOp::Load, 0), op(FnOp::Const, 0, 1), op(FnOp::Const, 0, 2),
+                    op(FnOp::Const, 0, 3), op(FnOp::Select4), op(FnOp::Drop, 1)});
+    EXPECT_EQ(sel.check(), "");
+    EXPECT_EQ(sel({-5}), 1);
+    EXPECT_EQ(sel({0}), 2);
+    EXPECT_EQ(sel({5}), 3);
+    Program m(2, {op(FnOp::Load, 0), op(FnOp::Math, uint16_t(FnMath::Sin)), op(FnOp::Load, 1),
+                  op(FnOp::Math, uint16_t(FnMath::Log10)), op(FnOp::Add), op(FnOp::Load, 0),
+                  op(FnOp::Load, 1), op(FnOp::Pow), op(FnOp::Max), op(FnOp::Drop, 2)});
+    EXPECT_EQ(m.check(), "");
+    for (double a : {0.3, 1.7})
+        for (double b : {0.5, 3.0})
+            EXPECT_NEAR(m({a, b}), std::max(std::sin(a) + std::log10(b), std::pow(a, b)), 1e-14);
+}
+
+TEST(Function, InternalShapesAndPatterns) {
+    const double r5[1] = {0.5};
+    EXPECT_NEAR(fn_internal(int(FnInternal::Sphere), 0, 2, 0, r5), 1.5, 1e-12);
+    const double torus[2] = {2, 0.5};
+    EXPECT_NEAR(fn_internal(int(FnInternal::Torus), 2, 0, 0, torus), -0.5, 1e-12);
+    EXPECT_NEAR(fn_internal(int(FnInternal::Torus), 0, 0.5, 2, torus), 0, 1e-12);
+    const double box[4] = {0.1, 1, 2, 3};
+    EXPECT_NEAR(fn_internal(int(FnInternal::RoundedBox), 1, 0, 0, box), 0, 1e-12);
+    EXPECT_NEAR(fn_internal(int(FnInternal::RoundedBox), 0, 0, 3.5, box), 0.5, 1e-12);
+    EXPECT_LT(fn_internal(int(FnInternal::RoundedBox), 0, 0, 0, box), 0);
+    // The rounded corner: radius 0.1 around the inner box's corner.
+    const double c = 0.1 / std::sqrt(3.0);
+    EXPECT_NEAR(fn_internal(int(FnInternal::RoundedBox), 0.9 + c, 1.9 + c, 2.9 + c, box), 0, 1e-9);
+    const double none[1] = {0};
+    const double n = fn_internal(int(FnInternal::Noise3d), 0.3, 1.1, -2.4, none);
+    EXPECT_GE(n, 0);
+    EXPECT_LE(n, 1);
+
+    Program p(3, {op(FnOp::Load, 0), op(FnOp::Load, 1), op(FnOp::Load, 2), op(FnOp::Pattern, 0),
+                  op(FnOp::Drop, 3)});
+    Pattern checker;
+    checker.kind = PatternKind::Checker;
+    p.patterns.push_back(checker);
+    EXPECT_EQ(p.check(), "");
+    EXPECT_EQ(p({0.5, 0.5, 0.5}), 0);
+    EXPECT_EQ(p({1.5, 0.5, 0.5}), 1);
+    Program q(3, {op(FnOp::Load, 0), op(FnOp::Load, 1), op(FnOp::Load, 2), op(FnOp::Const, 0, 2),
+                  op(FnOp::Internal, uint16_t(FnInternal::Sphere), 0, 4), op(FnOp::Drop, 3)});
+    EXPECT_EQ(q.check(), "");
+    EXPECT_NEAR(q({3, 0, 4}), 3, 1e-12);
+}
+
+TEST(Function, TheCheckRefusesWhatCouldLeaveTheStack) {
+    EXPECT_NE(Program(1, {op(FnOp::Add)}).check(), "");                        // underflow
+    EXPECT_NE(Program(1, {op(FnOp::Load, 1), op(FnOp::Drop, 1)}).check(), ""); // above the top
+    EXPECT_NE(Program(0, {op(FnOp::Const), op(FnOp::Const)}).check(), "");     // two results
+    EXPECT_NE(Program(3, {op(FnOp::Load, 0), op(FnOp::Load, 1), op(FnOp::Load, 2),
+                          op(FnOp::Pattern, 0), op(FnOp::Drop, 3)})
+                  .check(),
+              "");                                                    // no such pattern
+    EXPECT_NE(Program(3, {op(FnOp::Internal, 5, 0, 3)}).check(), ""); // unknown internal
+    EXPECT_NE(Program(0, {op(FnOp::Math, 200)}).check(), "");         // unknown math
+    std::vector<FnInstr> deep(kFnStack + 1, op(FnOp::Const, 0, 1));
+    for (int i = 0; i < kFnStack; ++i) deep.push_back(op(FnOp::Add));
+    EXPECT_NE(Program(0, deep).check(), "");
+    std::vector<FnInstr> ok(kFnStack, op(FnOp::Const, 0, 1));
+    for (int i = 1; i < kFnStack; ++i) ok.push_back(op(FnOp::Add));
+    const Program full(0, ok);
+    EXPECT_EQ(full.check(), "");
+    EXPECT_EQ(full({}), kFnStack);
+    FnProgram outside;
+    outside.first = 5, outside.count = 2;
+    EXPECT_NE(check_fn_program(outside, ok.data(), 6, 0), "");
+}
+
+} // namespace
+} // namespace sheaf

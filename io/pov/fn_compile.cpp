@@ -1,0 +1,211 @@
+// PovFunction -> FnProgram (see fn_compile.h).
+#include "io/pov/fn_compile.h"
+
+#include <map>
+
+namespace sheaf::io::pov {
+
+namespace {
+
+const std::map<std::string, FnMath>& math_names() {
+    static const std::map<std::string, FnMath> m = {
+        {"sin", FnMath::Sin},         {"cos", FnMath::Cos},     {"tan", FnMath::Tan},
+        {"asin", FnMath::Asin},       {"acos", FnMath::Acos},   {"atan", FnMath::Atan},
+        {"sinh", FnMath::Sinh},       {"cosh", FnMath::Cosh},   {"tanh", FnMath::Tanh},
+        {"asinh", FnMath::Asinh},     {"acosh", FnMath::Acosh}, {"atanh", FnMath::Atanh},
+        {"sqrt", FnMath::Sqrt},       {"exp", FnMath::Exp},     {"log", FnMath::Log10},
+        {"ln", FnMath::Ln},           {"abs", FnMath::Abs},     {"int", FnMath::Int},
+        {"floor", FnMath::Floor},     {"ceil", FnMath::Ceil},   {"degrees", FnMath::Degrees},
+        {"radians", FnMath::Radians},
+    };
+    return m;
+}
+
+FnOp binary(FnNode::Op op) {
+    switch (op) {
+    case FnNode::Add:
+        return FnOp::Add;
+    case FnNode::Sub:
+        return FnOp::Sub;
+    case FnNode::Mul:
+        return FnOp::Mul;
+    case FnNode::Div:
+        return FnOp::Div;
+    case FnNode::Lt:
+        return FnOp::Lt;
+    case FnNode::Le:
+        return FnOp::Le;
+    case FnNode::Gt:
+        return FnOp::Gt;
+    case FnNode::Ge:
+        return FnOp::Ge;
+    case FnNode::Eq:
+        return FnOp::Eq;
+    case FnNode::Ne:
+        return FnOp::Ne;
+    case FnNode::And:
+        return FnOp::And;
+    default:
+        return FnOp::Or;
+    }
+}
+
+} // namespace
+
+void FnCompiler::push(FnOp op, uint16_t arg, double value, uint8_t count) {
+    if (code_.size() >= kMaxFnCode)
+        throw FnCompileError("a function of more than " + std::to_string(kMaxFnCode) +
+                             " operations (its calls written out)");
+    FnInstr in;
+    in.op = op, in.arg = arg, in.value = value, in.count = count;
+    code_.push_back(in);
+    int pops = 0;
+    switch (op) {
+    case FnOp::Const:
+    case FnOp::Load:
+        break;
+    case FnOp::Drop:
+        pops = arg + 1;
+        break;
+    case FnOp::Neg:
+    case FnOp::Not:
+    case FnOp::Math:
+        pops = 1;
+        break;
+    case FnOp::Cond:
+    case FnOp::Select3:
+    case FnOp::Pattern:
+        pops = 3;
+        break;
+    case FnOp::Select4:
+        pops = 4;
+        break;
+    case FnOp::Internal:
+        pops = count;
+        break;
+    default:
+        pops = 2;
+    }
+    depth_ += 1 - pops;
+    deepest_ = std::max(deepest_, depth_);
+    if (deepest_ > kFnStack)
+        throw FnCompileError("a function that needs more than " + std::to_string(kFnStack) +
+                             " values at once (calls nested too deeply)");
+}
+
+uint16_t FnCompiler::pattern(const Pattern& p) {
+    if (auto it = patterns_.find(&p); it != patterns_.end()) return it->second;
+    if (scene_.fn_patterns.size() >= 0xFFFF) throw FnCompileError("too many pattern functions");
+    scene_.fn_patterns.push_back(p);
+    const uint16_t id = uint16_t(scene_.fn_patterns.size() - 1);
+    patterns_.emplace(&p, id);
+    return id;
+}
+
+// The arguments are on the stack; calls f on them.
+void FnCompiler::call(const PovFunction& f, size_t nargs) {
+    if (!f.unsupported.empty()) throw FnCompileError(f.unsupported);
+    if (f.internal >= 0) {
+        push(FnOp::Internal, uint16_t(f.internal), 0, uint8_t(nargs));
+        return;
+    }
+    if (f.pattern) {
+        push(FnOp::Pattern, pattern(*f.pattern));
+        return;
+    }
+    const uint32_t base = uint32_t(depth_ - int(nargs));
+    emit(f.body, base);
+    push(FnOp::Drop, uint16_t(nargs));
+}
+
+void FnCompiler::emit(const FnNode& n, uint32_t base) {
+    switch (n.op) {
+    case FnNode::Const:
+        push(FnOp::Const, 0, n.value);
+        return;
+    case FnNode::Param:
+        push(FnOp::Load, uint16_t(base + uint32_t(n.param)));
+        return;
+    case FnNode::Neg:
+        emit(n.args[0], base);
+        push(FnOp::Neg);
+        return;
+    case FnNode::Not:
+        emit(n.args[0], base);
+        push(FnOp::Not);
+        return;
+    case FnNode::Cond:
+        for (const FnNode& a : n.args) emit(a, base);
+        push(FnOp::Cond);
+        return;
+    case FnNode::Call: {
+        if (!n.fn) throw FnCompileError("a call without its function");
+        const size_t want = n.fn->params.size();
+        if (n.args.size() != want)
+            throw FnCompileError("a call with " + std::to_string(n.args.size()) +
+                                 " arguments of a function that takes " + std::to_string(want));
+        for (const FnNode& a : n.args) emit(a, base);
+        call(*n.fn, n.args.size());
+        return;
+    }
+    case FnNode::Builtin: {
+        const std::string& name = n.name;
+        const size_t k = n.args.size();
+        if (auto it = math_names().find(name); it != math_names().end() && k == 1) {
+            emit(n.args[0], base);
+            push(FnOp::Math, uint16_t(it->second));
+            return;
+        }
+        for (const FnNode& a : n.args) emit(a, base);
+        if ((name == "min" || name == "max") && k >= 1) {
+            for (size_t i = 1; i < k; ++i) push(name == "min" ? FnOp::Min : FnOp::Max);
+        } else if (name == "select" && (k == 3 || k == 4)) {
+            push(k == 3 ? FnOp::Select3 : FnOp::Select4);
+        } else if (k == 2 && (name == "atan" || name == "atan2")) {
+            push(FnOp::Atan2);
+        } else if (k == 2 && name == "pow") {
+            push(FnOp::Pow);
+        } else if (k == 2 && name == "mod") {
+            push(FnOp::Mod);
+        } else if (k == 2 && name == "div") {
+            push(FnOp::IntDiv);
+        } else {
+            throw FnCompileError("'" + name + "' with " + std::to_string(k) + " arguments");
+        }
+        return;
+    }
+    default:
+        emit(n.args[0], base);
+        emit(n.args[1], base);
+        push(binary(n.op));
+        return;
+    }
+}
+
+int32_t FnCompiler::program(const PovFunction& f) {
+    if (auto it = programs_.find(&f); it != programs_.end()) return it->second;
+    code_.clear();
+    const size_t params = f.params.size();
+    if (params > size_t(kFnStack)) throw FnCompileError("a function of too many parameters");
+    depth_ = deepest_ = int(params);
+    if (f.internal >= 0 || f.pattern) { // its parameters, passed on
+        for (size_t i = 0; i < params; ++i) push(FnOp::Load, uint16_t(i));
+        call(f, params);
+    } else {
+        if (!f.unsupported.empty()) throw FnCompileError(f.unsupported);
+        emit(f.body, 0);
+    }
+    // Leave exactly the result: drop the parameters below it.
+    if (params > 0) push(FnOp::Drop, uint16_t(params));
+    FnProgram pg;
+    pg.first = uint32_t(scene_.fn_code.size());
+    pg.count = uint32_t(code_.size());
+    pg.params = uint32_t(params);
+    scene_.fn_code.insert(scene_.fn_code.end(), code_.begin(), code_.end());
+    scene_.fn_programs.push_back(pg);
+    const int32_t id = int32_t(scene_.fn_programs.size() - 1);
+    programs_.emplace(&f, id);
+    return id;
+}
+
+} // namespace sheaf::io::pov

@@ -1,0 +1,116 @@
+// Isosurfaces, function patterns, and the functions they run (internal and pattern ones).
+#include "io/pov/builder.h"
+#include "io/pov/pov_test_util.h"
+
+#include "core/render/surface_texture.h"
+#include "core/scene/analytic.h"
+#include "core/scene/prepared_scene.h"
+
+#include <cmath>
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::error_of;
+using test::first_hit;
+using test::load_text;
+
+const char* kInternals = "#declare f_sphere = function { internal(61) }\n"
+                         "#declare f_torus = function { internal(70) }\n";
+
+TEST(PovIsosurfaces, TheSurfaceIsWhereTheFunctionMeetsTheThreshold) {
+    // An internal function, moved by the object's transform.
+    PovResult r =
+        load_text(std::string(kInternals) + "isosurface { function { f_sphere(x, y, z, 1) } "
+                                            "contained_by { box { -2, 2 } } translate 3*x }");
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_EQ(r.scene.shape_objects.size(), 1u);
+    EXPECT_EQ(r.scene.shape_objects[0].nodes[0].shape.kind, ShapeKind::Isosurface);
+    EXPECT_NEAR(first_hit(r, {-5, 0, 0}, {1, 0, 0}), 7, 1e-4);
+    // A user function called inline, its arguments expressions; the default box {-1, 1}.
+    r = load_text("#declare F = function(a, b) { a * a + b }\n"
+                  "isosurface { function { F(x, y * y + z * z) - 1 } }");
+    EXPECT_NEAR(first_hit(r, {-5, 0, 0}, {1, 0, 0}), 4, 1e-4);
+    // The threshold.
+    r = load_text("isosurface { function { x * x + y * y + z * z } threshold 0.25 }");
+    EXPECT_NEAR(first_hit(r, {-5, 0, 0}, {1, 0, 0}), 4.5, 1e-4);
+    // A sphere container caps a half-space; open, only the function's surface is left.
+    r = load_text("isosurface { function { y } contained_by { sphere { 0, 0.5 } } }");
+    EXPECT_NEAR(first_hit(r, {0, 5, 0}, {0, -1, 0}), 5, 1e-4);
+    EXPECT_NEAR(first_hit(r, {-5, -0.3, 0}, {1, 0, 0}), 5 - 0.4, 1e-4);
+    r = load_text("isosurface { function { y } contained_by { sphere { 0, 0.5 } } open }");
+    EXPECT_NEAR(first_hit(r, {0, 5, 0}, {0, -1, 0}), 5, 1e-4);
+    EXPECT_LT(first_hit(r, {-5, -0.3, 0}, {1, 0, 0}), 0);
+    // A torus around y, and a pattern as a function: the checker's 0 cube is inside.
+    r = load_text(std::string(kInternals) +
+                  "isosurface { function { f_torus(x, y, z, 1, 0.25) } max_gradient 1.2 }");
+    EXPECT_NEAR(first_hit(r, {0, 5, 1}, {0, -1, 0}), 5 - 0.25, 1e-4);
+    EXPECT_LT(first_hit(r, {0, 5, 0}, {0, -1, 0}), 0);
+    r = load_text("#declare P = function { pattern { checker } }\n"
+                  "isosurface { function { P(x, y, z) - 0.5 } "
+                  "contained_by { box { <0.05, 0.05, 0.05>, <1.95, 0.95, 0.95> } } }");
+    EXPECT_NEAR(first_hit(r, {5, 0.5, 0.5}, {-1, 0, 0}), 4, 2e-3);
+}
+
+TEST(PovIsosurfaces, ErrorsAndWhatIsLeftOut) {
+    EXPECT_EQ(error_of("isosurface { contained_by { box { 0, 1 } } }"),
+              "scene.pov:1:1: error: an isosurface needs a function { ... }");
+    EXPECT_EQ(error_of("isosurface { function { x } max_gradient 0 }"),
+              "scene.pov:1:42: error: an isosurface's max_gradient must be a positive number");
+    EXPECT_EQ(error_of("isosurface { function { x } contained_by { box { 0, <1, 0, 1> } } }"),
+              "scene.pov:1:44: error: an isosurface's container box is flat or empty");
+    EXPECT_EQ(error_of("isosurface { function { x } contained_by { cone { 0, 1, x, 2 } } }"),
+              "scene.pov:1:44: error: found 'cone', expected box or sphere");
+    EXPECT_EQ(error_of("isosurface { function(a) { a } }"),
+              "scene.pov:1:14: error: an isosurface's function must take x, y and z");
+    // A function Sheaf cannot run: warned, and the object left out.
+    const PovResult r = load_text("isosurface { function { pigment { rgb 1 } } }\n"
+                                  "isosurface { function { internal(4) } }\nsphere { 0, 1 }");
+    ASSERT_EQ(r.warnings.size(), 2u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:14: warning: unsupported isosurface of a "
+                                 "pigment function (left out)"),
+              std::string::npos)
+        << r.warnings[0];
+    EXPECT_NE(r.warnings[1].find("internal function 4"), std::string::npos) << r.warnings[1];
+    EXPECT_EQ(r.scene.shape_objects.size(), 1u);
+}
+
+TEST(PovIsosurfaces, FunctionPatternsColourByTheFunction) {
+    const PovResult r = load_text(
+        "#declare G = function { pattern { gradient x } }\n"
+        "sphere { 0, 1 pigment { function { x * 0.5 } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+        "sphere { 0, 1 pigment { function { G(x, y, z) } scale 4 "
+        "color_map { [0 rgb 0] [1 rgb 1] } } }");
+    EXPECT_TRUE(r.warnings.empty());
+    const PreparedScene p = prepare_scene(r.scene);
+    auto grey = [&](size_t object, float x) {
+        const uint32_t m = r.scene.shape_objects[object].nodes[0].material;
+        const int32_t pg = r.scene.materials[m].pigment;
+        EXPECT_GE(pg, 0);
+        EXPECT_EQ(r.scene.pigments[size_t(pg)].pattern.kind, PatternKind::Function);
+        return evaluate_pigment(p, uint32_t(pg), Vec3(x, 0.3f, -0.2f), 0, 0).rgb.x;
+    };
+    EXPECT_NEAR(grey(0, 0.5f), 0.25f, 1e-6);
+    EXPECT_NEAR(grey(0, 1.5f), 0.75f, 1e-6);
+    EXPECT_NEAR(grey(0, 2.5f), 0.25f, 1e-6); // 1.25 wraps, as pattern values do
+    EXPECT_NEAR(grey(1, 1.0f), 0.25f, 1e-6); // the pattern scaled with the pigment
+}
+
+TEST(PovIsosurfaces, InternalAndPatternFunctionsEvaluateInTheLanguage) {
+    auto value = [](const std::string& call) {
+        return test::declared("#declare S = function { internal(61) }\n"
+                              "#declare C = function { pattern { checker } }\n"
+                              "#declare V = " +
+                                  call + ";",
+                              "V")
+            .v[0];
+    };
+    EXPECT_NEAR(value("S(3, 4, 0, 1)"), 4, 1e-12);
+    EXPECT_NEAR(value("C(1.5, 0.5, 0.5)"), 1, 1e-12);
+    EXPECT_NEAR(value("C(0.5, 0.5, 0.5)"), 0, 1e-12);
+    EXPECT_EQ(error_of("#declare S = function { internal(61) }\n#declare V = S(1, 2, 3);"),
+              "scene.pov:2:14: error: 'S' takes 4 arguments, not 3");
+}
+
+} // namespace
+} // namespace sheaf::io::pov

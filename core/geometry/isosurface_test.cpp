@@ -30,7 +30,7 @@ struct Isos {
         pg.params = 3;
         FnProgram alone = pg;
         alone.first = 0;
-        EXPECT_EQ(check_fn_program(alone, body.data(), body.size(), 0), "");
+        EXPECT_EQ(check_fn_program(alone, body.data(), body.size(), 0, 0), "");
         code.insert(code.end(), body.begin(), body.end());
         iso.program = uint32_t(programs.size());
         programs.push_back(pg);

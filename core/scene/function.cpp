@@ -4,7 +4,7 @@
 namespace sheaf {
 
 std::string check_fn_program(const FnProgram& p, const FnInstr* code, size_t code_size,
-                             size_t patterns, int* depth_out) {
+                             size_t patterns, size_t pigments, int* depth_out) {
     if (size_t(p.first) + p.count > code_size) return "its code lies outside the function code";
     if (p.count == 0) return "it has no code";
     if (p.params > uint32_t(kFnStack)) return "it has more parameters than its stack holds";
@@ -63,6 +63,11 @@ std::string check_fn_program(const FnProgram& p, const FnInstr* code, size_t cod
             break;
         case FnOp::Pattern:
             if (in.arg >= patterns) return "it names a pattern that does not exist";
+            pops = 3;
+            break;
+        case FnOp::Pigment:
+            if (in.arg >= pigments) return "it names a pigment that does not exist";
+            if (in.count > uint8_t(FnComponent::Gray)) return "it reads an unknown component";
             pops = 3;
             break;
         default:

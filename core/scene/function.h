@@ -49,7 +49,11 @@ enum class FnOp : uint8_t {
     Math,     // a one-argument function: FnMath `arg`
     Internal, // a built-in shape or noise function (FnInternal `arg`) of `count` arguments
     Pattern,  // pattern `arg` of the program table at the point (pops 3)
+    Pigment,  // component `count` (FnComponent) of function pigment `arg` at the point (pops 3)
 };
+
+/// What a Pigment instruction takes of the colour.
+enum class FnComponent : uint8_t { Red, Green, Blue, Filter, Transmit, Gray };
 
 /// One-argument functions of Math.
 enum class FnMath : uint8_t {
@@ -115,6 +119,15 @@ struct FnInstr {
     double value = 0;  // Const
 };
 
+/// A pigment a function reads (POV-Ray's `function { pigment { ... } }`): a solid colour
+/// (count 0), or function pattern `pattern` choosing among the function pigment entries
+/// [first, first + count): blended by value, or by index when `list`.
+struct FnPigment {
+    uint32_t pattern = 0, first = 0, count = 0;
+    uint32_t list = 0;
+    float color[5] = {0, 0, 0, 0, 0};
+};
+
 /// A compiled function: instructions [first, first + count) of the scene's function code,
 /// reading its `params` arguments from its first slots.
 struct FnProgram {
@@ -130,13 +143,15 @@ constexpr int kFnStack = 48;
 /// instruction naming one of more than `patterns`. Empty when it can; `depth` gets its deepest
 /// stack. Host only.
 std::string check_fn_program(const FnProgram& p, const FnInstr* code, size_t code_size,
-                             size_t patterns, int* depth = nullptr);
+                             size_t patterns, size_t pigments, int* depth = nullptr);
 
 /// A scene's compiled functions as the executing side sees them.
 struct FnView {
     const FnProgram* programs = nullptr;
     const FnInstr* code = nullptr;
     const Pattern* patterns = nullptr; // the patterns Pattern instructions read
+    const FnPigment* pigments = nullptr;           // the pigments Pigment instructions read
+    const PigmentEntry* pigment_entries = nullptr; // their entries (colours only)
 };
 
 namespace fn_detail {
@@ -237,6 +252,38 @@ SHEAF_HD_INLINE double fn_pattern(const Pattern& pt, double x, double y, double 
     return pattern_value_at(pt, q);
 }
 
+/// Component `comp` (FnComponent) of function pigment `pg` at (x, y, z); gray is POV-Ray's
+/// 0.297 red + 0.589 green + 0.114 blue.
+SHEAF_HD_INLINE double fn_pigment(const FnView& fv, const FnPigment& pg, int comp, double x,
+                                  double y, double z) {
+    float c[5];
+    for (int i = 0; i < 5; ++i) c[i] = pg.color[i];
+    if (pg.count > 0) {
+        const Pattern& pt = fv.patterns[pg.pattern];
+        const PigmentEntry* e = fv.pigment_entries + pg.first;
+        const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)));
+        if (pg.list) {
+            const uint32_t i = uint32_t(pattern_index_at(pt, q));
+            for (int k = 0; k < 5; ++k) c[k] = e[i < pg.count ? i : pg.count - 1].color[k];
+        } else {
+            const float v = pattern_value_at(pt, q);
+            uint32_t hi = 0;
+            while (hi < pg.count && e[hi].value < v) ++hi;
+            if (hi == 0 || hi == pg.count) {
+                const uint32_t i = hi == 0 ? 0 : pg.count - 1;
+                for (int k = 0; k < 5; ++k) c[k] = e[i].color[k];
+            } else {
+                const float span = e[hi].value - e[hi - 1].value;
+                const float t = span > 0 ? (v - e[hi - 1].value) / span : 1.0f;
+                for (int k = 0; k < 5; ++k)
+                    c[k] = e[hi - 1].color[k] * (1.0f - t) + e[hi].color[k] * t;
+            }
+        }
+    }
+    if (comp >= 0 && comp < 5) return c[comp];
+    return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+}
+
 /// Runs program `program` on its arguments (params of them). NaN stays NaN.
 SHEAF_HD_NOINLINE double fn_eval(const FnView& fv, uint32_t program, const double* args) {
     using fn_detail::math;
@@ -306,10 +353,12 @@ SHEAF_HD_NOINLINE double fn_eval(const FnView& fv, uint32_t program, const doubl
             sp -= n - 1;
             continue;
         }
-        if (in.op == FnOp::Pattern) {
+        if (in.op == FnOp::Pattern || in.op == FnOp::Pigment) {
             if (sp < 3) return 0;
             double* p = &s[sp - 3];
-            p[0] = fn_pattern(fv.patterns[in.arg], p[0], p[1], p[2]);
+            p[0] = in.op == FnOp::Pattern
+                       ? fn_pattern(fv.patterns[in.arg], p[0], p[1], p[2])
+                       : fn_pigment(fv, fv.pigments[in.arg], in.count, p[0], p[1], p[2]);
             sp -= 2;
             continue;
         }

@@ -18,15 +18,17 @@ FnInstr op(FnOp o, uint16_t arg = 0, double value = 0, uint8_t count = 0) {
 struct Program {
     std::vector<FnInstr> code;
     std::vector<Pattern> patterns;
+    std::vector<FnPigment> pigments;
+    std::vector<PigmentEntry> entries;
     FnProgram pg;
     Program(uint32_t params, std::vector<FnInstr> c) : code(std::move(c)) {
         pg.first = 0, pg.count = uint32_t(code.size()), pg.params = params;
     }
     std::string check() const {
-        return check_fn_program(pg, code.data(), code.size(), patterns.size());
+        return check_fn_program(pg, code.data(), code.size(), patterns.size(), pigments.size());
     }
     double operator()(std::vector<double> args) const {
-        const FnView v{&pg, code.data(), patterns.data()};
+        const FnView v{&pg, code.data(), patterns.data(), pigments.data(), entries.data()};
         return fn_eval(v, 0, args.data());
     }
 };
@@ -93,6 +95,38 @@ TEST(Function, InternalShapesAndPatterns) {
     EXPECT_NEAR(q({3, 0, 4}), 3, 1e-12);
 }
 
+TEST(Function, PigmentsGiveAComponentOfTheirMapsColour) {
+    // gradient x with black at 0 and (1, 0.5, 0.25) at 1; and a solid colour.
+    Program p(3, {op(FnOp::Load, 0), op(FnOp::Load, 1), op(FnOp::Load, 2),
+                  op(FnOp::Pigment, 0, 0, uint8_t(FnComponent::Green)), op(FnOp::Drop, 3)});
+    Pattern gradient;
+    gradient.kind = PatternKind::Gradient;
+    gradient.vector = Vec3(1, 0, 0);
+    p.patterns.push_back(gradient);
+    PigmentEntry black, orange;
+    orange.value = 1, orange.color[0] = 1, orange.color[1] = 0.5f, orange.color[2] = 0.25f;
+    p.entries = {black, orange};
+    FnPigment map;
+    map.count = 2;
+    p.pigments.push_back(map);
+    EXPECT_EQ(p.check(), "");
+    EXPECT_NEAR(p({0.5, 7, 7}), 0.25, 1e-6);
+    EXPECT_NEAR(p({0.8, 0, 0}), 0.4, 1e-6);
+    const FnView v{&p.pg, p.code.data(), p.patterns.data(), p.pigments.data(), p.entries.data()};
+    EXPECT_NEAR(fn_pigment(v, map, int(FnComponent::Gray), 0.5, 0, 0),
+                0.5 * (0.297 + 0.589 * 0.5 + 0.114 * 0.25), 1e-6);
+    FnPigment solid;
+    solid.color[3] = 0.75f;
+    EXPECT_EQ(fn_pigment(v, solid, int(FnComponent::Filter), 3, 2, 1), 0.75);
+    // A list pattern indexes its entries.
+    Pattern checker;
+    checker.kind = PatternKind::Checker;
+    p.patterns[0] = checker;
+    p.pigments[0].list = 1;
+    EXPECT_NEAR(p({0.5, 0.5, 0.5}), 0, 1e-9);
+    EXPECT_NEAR(p({1.5, 0.5, 0.5}), 0.5, 1e-9);
+}
+
 TEST(Function, TheCheckRefusesWhatCouldLeaveTheStack) {
     EXPECT_NE(Program(1, {op(FnOp::Add)}).check(), "");                        // underflow
     EXPECT_NE(Program(1, {op(FnOp::Load, 1), op(FnOp::Drop, 1)}).check(), ""); // above the top
@@ -113,7 +147,11 @@ TEST(Function, TheCheckRefusesWhatCouldLeaveTheStack) {
     EXPECT_EQ(full({}), kFnStack);
     FnProgram outside;
     outside.first = 5, outside.count = 2;
-    EXPECT_NE(check_fn_program(outside, ok.data(), 6, 0), "");
+    EXPECT_NE(check_fn_program(outside, ok.data(), 6, 0, 0), "");
+    EXPECT_NE(Program(3, {op(FnOp::Load, 0), op(FnOp::Load, 1), op(FnOp::Load, 2),
+                          op(FnOp::Pigment, 0), op(FnOp::Drop, 3)})
+                  .check(),
+              ""); // no such pigment
 }
 
 } // namespace

@@ -267,6 +267,8 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.fn_programs = scene.fn_programs;
     p.fn_code = scene.fn_code;
     p.fn_patterns = scene.fn_patterns;
+    p.fn_pigments = scene.fn_pigments;
+    p.fn_pigment_entries = scene.fn_pigment_entries;
     p.sky = scene.sky;
     p.fog = scene.fog;
     p.working_gamma = scene.working_gamma;

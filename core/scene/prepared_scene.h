@@ -83,6 +83,8 @@ struct PreparedScene {
     std::vector<FnProgram> fn_programs; // user functions (Scene::fn_programs ...)
     std::vector<FnInstr> fn_code;
     std::vector<Pattern> fn_patterns;
+    std::vector<FnPigment> fn_pigments;
+    std::vector<PigmentEntry> fn_pigment_entries;
     int32_t sky = -1;
     Fog fog;
     std::vector<Texture> textures;

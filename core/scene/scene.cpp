@@ -279,9 +279,18 @@ void Scene::validate_functions() const {
             throw SceneError("function pattern " + std::to_string(i) +
                              ": a function's pattern is neither a function nor an image");
     }
+    for (size_t i = 0; i < fn_pigments.size(); ++i) {
+        const FnPigment& pg = fn_pigments[i];
+        const std::string name = "function pigment " + std::to_string(i);
+        if (pg.count > 0 && (pg.pattern >= fn_patterns.size() ||
+                             size_t(pg.first) + pg.count > fn_pigment_entries.size()))
+            throw SceneError(name + ": its pattern or entries do not exist");
+        if (pg.count > 0 && (pg.list != 0) != pattern_is_list(fn_patterns[pg.pattern].kind))
+            throw SceneError(name + ": a list pattern's entries must be a list");
+    }
     for (size_t i = 0; i < fn_programs.size(); ++i) {
-        const std::string why =
-            check_fn_program(fn_programs[i], fn_code.data(), fn_code.size(), fn_patterns.size());
+        const std::string why = check_fn_program(fn_programs[i], fn_code.data(), fn_code.size(),
+                                                 fn_patterns.size(), fn_pigments.size());
         if (!why.empty()) throw SceneError("function " + std::to_string(i) + ": " + why);
     }
     auto three_params = [&](int32_t program, const std::string& name) {

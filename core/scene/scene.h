@@ -184,10 +184,12 @@ class Scene {
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
     // User functions (core/scene/function.h), run by function patterns and isosurfaces:
-    // programs, their code, and the patterns their Pattern instructions read.
+    // programs, their code, and the patterns and pigments their instructions read.
     std::vector<FnProgram> fn_programs;
     std::vector<FnInstr> fn_code;
     std::vector<Pattern> fn_patterns;
+    std::vector<FnPigment> fn_pigments;           // the pigments they read
+    std::vector<PigmentEntry> fn_pigment_entries; // and those pigments' colours
     Camera camera;
     Vec3 background{0, 0, 0};
     int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene

@@ -81,7 +81,9 @@ struct SceneView {
           material_switches(p.material_switches.data()),
           material_entries(p.material_entries.data()), functions{p.fn_programs.data(),
                                                                  p.fn_code.data(),
-                                                                 p.fn_patterns.data()},
+                                                                 p.fn_patterns.data(),
+                                                                 p.fn_pigments.data(),
+                                                                 p.fn_pigment_entries.data()},
           sky(p.sky), fog(p.fog), lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
           background(p.background), working_gamma(p.working_gamma), textures(p.textures.data()),
           sampler(p.sampler.get()) {}

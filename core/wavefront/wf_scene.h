@@ -55,6 +55,8 @@ template <class Exec> class DeviceScene {
         put(p.fn_programs, v.functions.programs);
         put(p.fn_code, v.functions.code);
         put(p.fn_patterns, v.functions.patterns);
+        put(p.fn_pigments, v.functions.pigments);
+        put(p.fn_pigment_entries, v.functions.pigment_entries);
         put(p.shape_material, v.shape_material);
         put(p.csg, v.csg);
         put(p.csg_children, v.csg_children);

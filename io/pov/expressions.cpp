@@ -525,6 +525,12 @@ Value Parser::call_function(const Token& t, const PovFunction& f) {
     if (args.size() != f.params.size() && f.unsupported.empty())
         error_at(t, "'" + t.text + "' takes " + std::to_string(f.params.size()) +
                         " arguments, not " + std::to_string(args.size()));
+    if (f.pigment && args.size() == 3) { // a pigment function gives its colour
+        ++steps_;
+        Color5 c;
+        for (int i = 0; i < 5; ++i) c[size_t(i)] = f.pigment->at(i, args[0], args[1], args[2]);
+        return Value::color(c);
+    }
     uint64_t left = kMaxParseSteps - std::min(steps_, kMaxParseSteps);
     const uint64_t had = left;
     try {

@@ -75,6 +75,7 @@ void FnCompiler::push(FnOp op, uint16_t arg, double value, uint8_t count) {
     case FnOp::Cond:
     case FnOp::Select3:
     case FnOp::Pattern:
+    case FnOp::Pigment:
         pops = 3;
         break;
     case FnOp::Select4:
@@ -102,9 +103,29 @@ uint16_t FnCompiler::pattern(const Pattern& p) {
     return id;
 }
 
-// The arguments are on the stack; calls f on them.
-void FnCompiler::call(const PovFunction& f, size_t nargs) {
+uint16_t FnCompiler::pigment(const PigmentFunction& p) {
+    if (auto it = pigments_.find(&p); it != pigments_.end()) return it->second;
+    if (scene_.fn_pigments.size() >= 0xFFFF) throw FnCompileError("too many pigment functions");
+    FnPigment pg = p.pigment;
+    if (pg.count > 0) {
+        pg.pattern = pattern(p.pattern);
+        pg.first = uint32_t(scene_.fn_pigment_entries.size());
+        scene_.fn_pigment_entries.insert(scene_.fn_pigment_entries.end(), p.entries.begin(),
+                                         p.entries.end());
+    }
+    scene_.fn_pigments.push_back(pg);
+    const uint16_t id = uint16_t(scene_.fn_pigments.size() - 1);
+    pigments_.emplace(&p, id);
+    return id;
+}
+
+// The arguments are on the stack; calls f on them (a pigment function: its `component`).
+void FnCompiler::call(const PovFunction& f, size_t nargs, int component) {
     if (!f.unsupported.empty()) throw FnCompileError(f.unsupported);
+    if (f.pigment) {
+        push(FnOp::Pigment, pigment(*f.pigment), 0, uint8_t(component));
+        return;
+    }
     if (f.internal >= 0) {
         push(FnOp::Internal, uint16_t(f.internal), 0, uint8_t(nargs));
         return;
@@ -145,7 +166,7 @@ void FnCompiler::emit(const FnNode& n, uint32_t base) {
             throw FnCompileError("a call with " + std::to_string(n.args.size()) +
                                  " arguments of a function that takes " + std::to_string(want));
         for (const FnNode& a : n.args) emit(a, base);
-        call(*n.fn, n.args.size());
+        call(*n.fn, n.args.size(), n.component);
         return;
     }
     case FnNode::Builtin: {
@@ -188,9 +209,9 @@ int32_t FnCompiler::program(const PovFunction& f) {
     const size_t params = f.params.size();
     if (params > size_t(kFnStack)) throw FnCompileError("a function of too many parameters");
     depth_ = deepest_ = int(params);
-    if (f.internal >= 0 || f.pattern) { // its parameters, passed on
+    if (f.internal >= 0 || f.pattern || f.pigment) { // its parameters, passed on
         for (size_t i = 0; i < params; ++i) push(FnOp::Load, uint16_t(i));
-        call(f, params);
+        call(f, params, int(FnComponent::Gray));
     } else {
         if (!f.unsupported.empty()) throw FnCompileError(f.unsupported);
         emit(f.body, 0);

@@ -29,13 +29,15 @@ class FnCompiler {
 
   private:
     void emit(const FnNode& n, uint32_t base);
-    void call(const PovFunction& f, size_t nargs);
+    void call(const PovFunction& f, size_t nargs, int component);
     void push(FnOp op, uint16_t arg = 0, double value = 0, uint8_t count = 0);
     uint16_t pattern(const Pattern& p);
+    uint16_t pigment(const PigmentFunction& p);
 
     Scene& scene_;
     std::map<const PovFunction*, int32_t> programs_;
     std::map<const Pattern*, uint16_t> patterns_;
+    std::map<const PigmentFunction*, uint16_t> pigments_;
     std::vector<FnInstr> code_; // the program being compiled
     int depth_ = 0, deepest_ = 0;
 };

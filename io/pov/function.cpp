@@ -124,6 +124,11 @@ double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
     case FnNode::Call: {
         std::vector<double> a;
         for (const FnNode& c : n.args) a.push_back(eval_node(c, p, np, steps));
+        if (n.fn->pigment && a.size() == 3) {
+            if (steps == 0) throw FnStepsExceeded{};
+            --steps;
+            return n.fn->pigment->at(n.component, a[0], a[1], a[2]);
+        }
         return n.fn->eval(a.data(), int(a.size()), steps);
     }
     default:
@@ -162,12 +167,18 @@ double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
 
 } // namespace
 
+double PigmentFunction::at(int comp, double x, double y, double z) const {
+    const FnView v{nullptr, nullptr, &pattern, &pigment, entries.data()};
+    return fn_pigment(v, pigment, comp, x, y, z);
+}
+
 double PovFunction::eval(const double* args, int n, uint64_t& steps) const {
-    if (internal >= 0 || pattern) {
+    if (internal >= 0 || pattern || pigment) {
         if (steps == 0) throw FnStepsExceeded{};
         --steps;
         double a[8] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (int i = 0; i < n && i < 8; ++i) a[i] = args[i];
+        if (pigment) return pigment->at(int(FnComponent::Gray), a[0], a[1], a[2]);
         return pattern ? fn_pattern(*pattern, a[0], a[1], a[2])
                        : fn_internal(internal, a[0], a[1], a[2], a + 3);
     }

@@ -3,6 +3,7 @@
 // float built-ins (sin, pow, min, select ...) are shared with the scene-language expressions.
 #pragma once
 
+#include "core/scene/function.h"
 #include "core/scene/pattern.h"
 #include "io/pov/lexer.h"
 
@@ -40,8 +41,19 @@ struct FnNode {
     int param = 0;    // Param
     std::string name; // Builtin
     std::shared_ptr<const struct PovFunction> fn;
+    int component = 5; // Call of a pigment function: the FnComponent taken (.red ...; gray)
     std::vector<FnNode> args;
     int height = 1; // levels of the tree below and including this node
+};
+
+/// A pigment function's pigment in the core's terms (core/scene/function.h): its pattern (in
+/// the function's space), the pigment with pattern 0 and first entry 0, its colours.
+struct PigmentFunction {
+    Pattern pattern;
+    FnPigment pigment;
+    std::vector<PigmentEntry> entries;
+    /// Component `comp` (FnComponent) at (x, y, z).
+    double at(int comp, double x, double y, double z) const;
 };
 
 /// Thrown by PovFunction::eval when the steps allowed run out.
@@ -56,6 +68,7 @@ struct PovFunction {
     // its parameters, or a pattern's value at x, y, z (in the function's own space).
     int internal = -1;
     std::shared_ptr<const Pattern> pattern;
+    std::shared_ptr<const PigmentFunction> pigment; // a pigment function (gray when a number)
     /// Evaluates the body; each node evaluated takes one of `steps` (FnStepsExceeded when
     /// none is left).
     double eval(const double* args, int n, uint64_t& steps) const;

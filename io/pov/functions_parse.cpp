@@ -10,6 +10,7 @@
 #include "core/scene/function.h"
 
 #include <algorithm>
+#include <map>
 
 namespace sheaf::io::pov {
 
@@ -37,8 +38,10 @@ Value Parser::parse_function(const Token& t) {
     } else if (is_kw_tok(b, "pattern")) {
         parse_pattern_function(*f);
         expect_sym("}", "'}'");
-    } else if (is_kw_tok(b, "pigment") || is_kw_tok(b, "spline") || is_kw_tok(b, "image_map") ||
-               is_kw_tok(b, "transform")) {
+    } else if (is_kw_tok(b, "pigment")) {
+        parse_pigment_function(*f);
+        expect_sym("}", "'}'");
+    } else if (is_kw_tok(b, "spline") || is_kw_tok(b, "image_map") || is_kw_tok(b, "transform")) {
         f->unsupported = b.text + " function";
         int depth = 1;
         while (depth > 0) {
@@ -93,6 +96,37 @@ void Parser::parse_pattern_function(PovFunction& f) {
         return;
     }
     f.pattern = std::make_shared<const Pattern>(lower_pattern(pt, local));
+}
+
+void Parser::parse_pigment_function(PovFunction& f) {
+    const Token at = next();
+    const std::shared_ptr<const PovPigment> pg = parse_pigment(PovPigment());
+    auto pf = std::make_shared<PigmentFunction>();
+    for (int i = 0; i < 5; ++i) pf->pigment.color[i] = float(pg->color[i]);
+    if (pg->patterned) {
+        const PatternKind k = pg->pattern.kind;
+        if (pg->average || k == PatternKind::Image || k == PatternKind::Function ||
+            pg->entries.empty()) {
+            f.unsupported = "pigment function (of an average, image or function pigment)";
+            return;
+        }
+        for (const PovMapEntry& e : pg->entries) {
+            if (e.pigment && e.pigment->patterned) {
+                f.unsupported = "pigment function (of a pigment map)";
+                return;
+            }
+            PigmentEntry out;
+            out.value = float(e.value);
+            const Color5& c = e.pigment ? e.pigment->color : e.color;
+            for (int i = 0; i < 5; ++i) out.color[i] = float(c[i]);
+            pf->entries.push_back(out);
+        }
+        pf->pattern = lower_pattern(pg->pattern, pg->local);
+        pf->pigment.count = uint32_t(pf->entries.size());
+        pf->pigment.list = pattern_is_list(k) ? 1 : 0;
+    }
+    (void)at;
+    f.pigment = std::move(pf);
 }
 
 namespace {
@@ -182,9 +216,32 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
 
 FnNode Parser::parse_fn_primary(const std::vector<std::string>& params) {
     FnNode n = parse_fn_atom(params);
-    while (is_sym_tok(peek(), ".")) { // F(x,y,z).x of a pigment function: unsupported anyway
+    while (is_sym_tok(peek(), ".")) { // F(x, y, z).red of a pigment function
         advance();
-        expect_ident("a component");
+        const Token c = peek();
+        const std::string name = expect_ident("a component");
+        if (n.op != FnNode::Call || !n.fn || !n.fn->pigment) continue; // of a vector: unsupported
+        static const std::map<std::string, FnComponent> components = {
+            {"x", FnComponent::Red},
+            {"u", FnComponent::Red},
+            {"red", FnComponent::Red},
+            {"y", FnComponent::Green},
+            {"v", FnComponent::Green},
+            {"green", FnComponent::Green},
+            {"z", FnComponent::Blue},
+            {"blue", FnComponent::Blue},
+            {"filter", FnComponent::Filter},
+            {"t", FnComponent::Transmit},
+            {"transmit", FnComponent::Transmit},
+            {"gray", FnComponent::Gray},
+            {"grey", FnComponent::Gray},
+            {"hf", FnComponent::Gray}};
+        const auto it = components.find(name);
+        if (it == components.end())
+            error_at(c, "found '" + name +
+                            "', expected a colour component (red, green, blue, "
+                            "filter, transmit, gray, x, y, z, t)");
+        n.component = int(it->second);
     }
     return n;
 }

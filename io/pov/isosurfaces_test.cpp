@@ -64,11 +64,12 @@ TEST(PovIsosurfaces, ErrorsAndWhatIsLeftOut) {
     EXPECT_EQ(error_of("isosurface { function(a) { a } }"),
               "scene.pov:1:14: error: an isosurface's function must take x, y and z");
     // A function Sheaf cannot run: warned, and the object left out.
-    const PovResult r = load_text("isosurface { function { pigment { rgb 1 } } }\n"
+    const PovResult r = load_text("isosurface { function { pigment { gradient x pigment_map { "
+                                  "[0 checker] [1 rgb 1] } } } }\n"
                                   "isosurface { function { internal(4) } }\nsphere { 0, 1 }");
     ASSERT_EQ(r.warnings.size(), 2u);
     EXPECT_NE(r.warnings[0].find("scene.pov:1:14: warning: unsupported isosurface of a "
-                                 "pigment function (left out)"),
+                                 "pigment function (of a pigment map) (left out)"),
               std::string::npos)
         << r.warnings[0];
     EXPECT_NE(r.warnings[1].find("internal function 4"), std::string::npos) << r.warnings[1];
@@ -94,6 +95,33 @@ TEST(PovIsosurfaces, FunctionPatternsColourByTheFunction) {
     EXPECT_NEAR(grey(0, 1.5f), 0.75f, 1e-6);
     EXPECT_NEAR(grey(0, 2.5f), 0.25f, 1e-6); // 1.25 wraps, as pattern values do
     EXPECT_NEAR(grey(1, 1.0f), 0.25f, 1e-6); // the pattern scaled with the pigment
+}
+
+TEST(PovIsosurfaces, PigmentFunctionsGiveTheirColoursComponents) {
+    const std::string pigment = "#declare P = function { pigment { gradient x "
+                                "color_map { [0 rgb 0] [1 rgb <1, 0.5, 0.25>] } } }\n";
+    // The isosurface where red exceeds 0.3: x > 0.3.
+    PovResult r = load_text(pigment + "isosurface { function { 0.3 - P(x, y, z).red } "
+                                      "contained_by { box { <0, -1, -1>, <0.99, 1, 1> } } }");
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_NEAR(first_hit(r, {-5, 0, 0}, {1, 0, 0}), 5.3, 1e-4);
+    r = load_text(pigment + "isosurface { function { 0.1 - P(x, y, z).blue } "
+                            "contained_by { box { <0, -1, -1>, <0.99, 1, 1> } } }");
+    EXPECT_NEAR(first_hit(r, {-5, 0, 0}, {1, 0, 0}), 5.4, 1e-4);
+    // In the language, the colour, and its components.
+    const Value c = test::declared(pigment + "#declare C = P(0.5, 0, 0);", "C");
+    EXPECT_NEAR(c.v[0], 0.5, 1e-6);
+    EXPECT_NEAR(c.v[1], 0.25, 1e-6);
+    EXPECT_NEAR(test::declared(pigment + "#declare G = P(0.8, 0, 0).green;", "G").v[0], 0.4, 1e-6);
+    // What Sheaf cannot take apart is warned where it is used.
+    r = load_text("#declare Q = function { pigment { gradient x pigment_map { [0 checker] "
+                  "[1 rgb 1] } } }\nisosurface { function { Q(x, y, z).red } }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("pigment function (of a pigment map)"), std::string::npos)
+        << r.warnings[0];
+    EXPECT_EQ(error_of(pigment + "isosurface { function { P(x, y, z).alpha } }"),
+              "scene.pov:2:36: error: found 'alpha', expected a colour component (red, green, "
+              "blue, filter, transmit, gray, x, y, z, t)");
 }
 
 TEST(PovIsosurfaces, InternalAndPatternFunctionsEvaluateInTheLanguage) {

@@ -188,6 +188,7 @@ class Parser {
     /// `internal(N)` and `pattern { ... }` as a function's whole body (into `f`).
     void parse_internal_function(PovFunction& f);
     void parse_pattern_function(PovFunction& f);
+    void parse_pigment_function(PovFunction& f);
     FnNode parse_fn(const std::vector<std::string>& params, int level);
     FnNode parse_fn_primary(const std::vector<std::string>& params);
     FnNode parse_fn_atom(const std::vector<std::string>& params);

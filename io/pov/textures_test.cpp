@@ -188,8 +188,8 @@ TEST(PovTextures, ImageMapsAreTextures) {
 
 TEST(PovTextures, UnsupportedPatternsAndWarpsWarn) {
     const PovResult r = load_text(
-        "sphere { 0, 1 pigment { function { pigment { rgb 1 } } color_map { [0 rgb 0] [1 rgb 1] "
-        "} } }\n"
+        "sphere { 0, 1 pigment { function { pigment { bozo pigment_map { [0 checker] [1 rgb 1] } "
+        "} } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
         "sphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n"
         "sphere { 0, 1 normal { bump_map { png \"x.png\" } } }\n");
     ASSERT_EQ(r.warnings.size(), 3u);

@@ -51,6 +51,9 @@ sheaf_find(CLI11 REQUIRED)
 # Fonts for the text object (io/font): glyph outlines, advances and kerning (Debian:
 # libfreetype-dev, which OpenImageIO's own package already pulls in).
 sheaf_find(Freetype REQUIRED)
+# Palette indices of PNG height fields (io/pov/height_fields.cpp), which OpenImageIO expands to
+# colours (Debian: libpng-dev).
+sheaf_find(PNG REQUIRED)
 
 # Debian's package configs name include directories that do not exist: OpenImageIO lists
 # /usr/include/opencv4 even without OpenCV's headers, and OpenColorIO's config, installed in

@@ -1,5 +1,6 @@
 #include "core/geometry/shape.h"
 #include "core/geometry/span_check.h"
+#include "core/scene/function_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -10,11 +11,7 @@
 namespace sheaf {
 namespace {
 
-FnInstr op(FnOp o, uint16_t arg = 0, double value = 0, uint8_t count = 0) {
-    FnInstr in;
-    in.op = o, in.arg = arg, in.value = value, in.count = count;
-    return in;
-}
+using test::op;
 
 /// Isosurfaces over programs of x, y, z, with the tables shape_spans reads.
 struct Isos {

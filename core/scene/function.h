@@ -138,6 +138,10 @@ struct FnProgram {
 /// The largest stack a program may use, in slots.
 constexpr int kFnStack = 48;
 
+/// The values instruction `in` takes from the stack (it leaves one); -1 for an unknown
+/// operation. Host only.
+int fn_pops(const FnInstr& in);
+
 /// Why program `p` over code[0, code_size) cannot run safely: its code outside the table, a
 /// stack deeper than kFnStack or read below its bottom, an unknown operation, a Pattern
 /// instruction naming one of more than `patterns`. Empty when it can; `depth` gets its deepest

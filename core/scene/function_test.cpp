@@ -1,4 +1,5 @@
 #include "core/scene/function.h"
+#include "core/scene/function_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +9,7 @@
 namespace sheaf {
 namespace {
 
-FnInstr op(FnOp o, uint16_t arg = 0, double value = 0, uint8_t count = 0) {
-    FnInstr in;
-    in.op = o, in.arg = arg, in.value = value, in.count = count;
-    return in;
-}
+using test::op;
 
 /// One program over `params` arguments, checked, with its view.
 struct Program {

@@ -59,34 +59,7 @@ void FnCompiler::push(FnOp op, uint16_t arg, double value, uint8_t count) {
     FnInstr in;
     in.op = op, in.arg = arg, in.value = value, in.count = count;
     code_.push_back(in);
-    int pops = 0;
-    switch (op) {
-    case FnOp::Const:
-    case FnOp::Load:
-        break;
-    case FnOp::Drop:
-        pops = arg + 1;
-        break;
-    case FnOp::Neg:
-    case FnOp::Not:
-    case FnOp::Math:
-        pops = 1;
-        break;
-    case FnOp::Cond:
-    case FnOp::Select3:
-    case FnOp::Pattern:
-    case FnOp::Pigment:
-        pops = 3;
-        break;
-    case FnOp::Select4:
-        pops = 4;
-        break;
-    case FnOp::Internal:
-        pops = count;
-        break;
-    default:
-        pops = 2;
-    }
+    const int pops = fn_pops(in);
     depth_ += 1 - pops;
     deepest_ = std::max(deepest_, depth_);
     if (deepest_ > kFnStack)

@@ -7,6 +7,7 @@
 #include "core/scene/prepared_scene.h"
 
 #include <cmath>
+#include <fstream>
 
 namespace sheaf::io::pov {
 namespace {
@@ -122,6 +123,62 @@ TEST(PovIsosurfaces, PigmentFunctionsGiveTheirColoursComponents) {
     EXPECT_EQ(error_of(pigment + "isosurface { function { P(x, y, z).alpha } }"),
               "scene.pov:2:36: error: found 'alpha', expected a colour component (red, green, "
               "blue, filter, transmit, gray, x, y, z, t)");
+}
+
+/// The height at (x, z) of the scene's meshes (their own coordinates: POV-Ray's, the
+/// object's transform apart), -1 when no vertex lies there.
+float height_at(const PovResult& r, float x, float z) {
+    for (const Mesh& m : r.scene.meshes)
+        for (const Vec3& p : m.positions)
+            if (std::fabs(p.x - x) < 1e-5f && std::fabs(p.z - z) < 1e-5f) return p.y;
+    return -1;
+}
+
+TEST(PovHeightFields, HeightsFromGreyImagesAndFunctions) {
+    test::TempDir d;
+    // The image's top row lies at z = 1.
+    d.write("hf.pgm", "P2\n3 2\n255\n0 0 255\n255 0 0\n");
+    PovResult r =
+        load_pov_scene(d.write("scene.pov", "height_field { pgm \"hf.pgm\" smooth }"), {});
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    EXPECT_EQ(r.scene.meshes[0].triangle_count(), 4u);
+    EXPECT_EQ(r.scene.meshes[0].normals.size(), 6u);
+    EXPECT_NEAR(height_at(r, 0, 0), 1, 1e-6);
+    EXPECT_NEAR(height_at(r, 1, 1), 1, 1e-6);
+    EXPECT_NEAR(height_at(r, 0, 1), 0, 1e-6);
+    EXPECT_NEAR(height_at(r, 0.5f, 0), 0, 1e-6);
+    // A function of (x, y) over the grid, y = 1 at the far edge as an image's top row.
+    r = load_text("height_field { function 3, 5 { x * 0.5 + y * 0.25 } }");
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    EXPECT_EQ(r.scene.meshes[0].positions.size(), 15u);
+    EXPECT_NEAR(height_at(r, 1, 0), 0.75, 1e-6);
+    EXPECT_NEAR(height_at(r, 0, 0), 0.25, 1e-6);
+    EXPECT_NEAR(height_at(r, 0, 1), 0, 1e-6);
+    EXPECT_NEAR(height_at(r, 0.5f, 0.75f), 0.5 * 0.5 + 0.25 * (1 - 0.75), 1e-6);
+    // Cells wholly under the water level are left out.
+    r = load_text("height_field { function 3, 3 { x } water_level 0.6 }");
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    EXPECT_EQ(r.scene.meshes[0].triangle_count(), 4u);
+    // Errors and what is left out.
+    EXPECT_EQ(error_of("height_field { function 1, 5 { x } }"),
+              "scene.pov:1:25: error: a height field function's grid must be at least 2 x 2 "
+              "and at most 16777216 samples");
+    r = load_text("height_field { pot \"x.pot\" }\nsphere { 0, 1 }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("unsupported height_field from a pot file"), std::string::npos);
+}
+
+TEST(PovHeightFields, PalettePngsGiveTheirIndices) {
+    const std::string path = "/usr/share/povray-3.7/include/fract003.png";
+    if (!std::ifstream(path)) GTEST_SKIP() << path << " (povray-includes) is not installed";
+    const PovResult r = load_text("height_field { png \"" + path + "\" }");
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    // Index 1 is the sea: 32,221 of the 320 x 200 pixels (its palette repeats colours, so
+    // the colours alone could not give the index).
+    size_t sea = 0;
+    for (const Vec3& p : r.scene.meshes[0].positions) sea += std::fabs(p.y - 1 / 255.0f) < 1e-6f;
+    EXPECT_EQ(sea, 32221u);
 }
 
 TEST(PovIsosurfaces, InternalAndPatternFunctionsEvaluateInTheLanguage) {

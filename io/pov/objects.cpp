@@ -19,14 +19,15 @@ const std::set<std::string>& supported_objects() {
         "torus",       "triangle", "smooth_triangle", "mesh",       "mesh2",  "polygon",
         "union",       "merge",    "intersection",    "difference", "object", "light_source",
         "light_group", "quadric",  "cubic",           "quartic",    "poly",   "superellipsoid",
-        "text",        "prism",    "lathe",           "sor",        "blob",   "isosurface"};
+        "text",        "prism",    "lathe",           "sor",        "blob",   "isosurface",
+        "height_field"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
-    static const std::set<std::string> s = {"height_field", "julia_fractal", "sphere_sweep",
-                                            "parametric",   "bicubic_patch", "polynomial",
-                                            "ovus",         "lemon"};
+    static const std::set<std::string> s = {"julia_fractal", "sphere_sweep", "parametric",
+                                            "bicubic_patch", "polynomial",   "ovus",
+                                            "lemon"};
     return s;
 }
 
@@ -112,6 +113,7 @@ bool Parser::parse_object(PovObject& o) {
     if (k == "sor") return parse_sor(kw, o);
     if (k == "blob") return parse_blob(kw, o);
     if (k == "isosurface") return parse_isosurface(kw, o);
+    if (k == "height_field") return parse_height_field(kw, o);
     if (k == "text") {
         parse_text(kw, o);
         return true;

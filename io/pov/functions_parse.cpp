@@ -99,7 +99,7 @@ void Parser::parse_pattern_function(PovFunction& f) {
 }
 
 void Parser::parse_pigment_function(PovFunction& f) {
-    const Token at = next();
+    advance();
     const std::shared_ptr<const PovPigment> pg = parse_pigment(PovPigment());
     auto pf = std::make_shared<PigmentFunction>();
     for (int i = 0; i < 5; ++i) pf->pigment.color[i] = float(pg->color[i]);
@@ -125,7 +125,6 @@ void Parser::parse_pigment_function(PovFunction& f) {
         pf->pigment.count = uint32_t(pf->entries.size());
         pf->pigment.list = pattern_is_list(k) ? 1 : 0;
     }
-    (void)at;
     f.pigment = std::move(pf);
 }
 

@@ -10,13 +10,8 @@
 
 #include "core/base/error.h"
 
-#include <OpenImageIO/imageio.h>
-#include <png.h>
-
 #include <algorithm>
 #include <cmath>
-#include <csetjmp>
-#include <cstdio>
 #include <set>
 
 namespace sheaf::io::pov {
@@ -25,44 +20,6 @@ namespace {
 
 /// The most samples a height field may have (a 4096 x 4096 image).
 constexpr size_t kMaxHeightSamples = size_t(4096) * 4096;
-
-/// The palette indices of an 8-bit palette PNG, row by row from the top (libpng: OpenImageIO
-/// expands palettes to colours, and palettes often repeat colours); empty for any other file.
-std::vector<uint8_t> png_indices(const std::string& path, int& w, int& h) {
-    FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return {};
-    png_byte sig[8];
-    if (std::fread(sig, 1, 8, f) != 8 || png_sig_cmp(sig, 0, 8) != 0) {
-        std::fclose(f);
-        return {};
-    }
-    std::vector<uint8_t> out;
-    // Quiet: a damaged file is reported by OpenImageIO, which reads it first.
-    png_structp png = png_create_read_struct(
-        PNG_LIBPNG_VER_STRING, nullptr, [](png_structp p, png_const_charp) { png_longjmp(p, 1); },
-        [](png_structp, png_const_charp) {});
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (png && info && setjmp(png_jmpbuf(png)) == 0) {
-        png_init_io(png, f);
-        png_set_sig_bytes(png, 8);
-        png_read_info(png, info);
-        if (png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE &&
-            png_get_bit_depth(png, info) == 8 &&
-            png_get_interlace_type(png, info) == PNG_INTERLACE_NONE) {
-            w = int(png_get_image_width(png, info)), h = int(png_get_image_height(png, info));
-            if (w > 0 && h > 0 && size_t(w) * size_t(h) <= kMaxHeightSamples) {
-                out.resize(size_t(w) * size_t(h));
-                for (int row = 0; row < h; ++row)
-                    png_read_row(png, &out[size_t(row) * size_t(w)], nullptr);
-            }
-        }
-    } else {
-        out.clear(); // libpng reported an error: OpenImageIO's message is given instead
-    }
-    png_destroy_read_struct(png ? &png : nullptr, info ? &info : nullptr, nullptr);
-    std::fclose(f);
-    return out;
-}
 
 } // namespace
 
@@ -120,33 +77,24 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
         const std::string path = find_file(file, name, "image file",
                                            {".png", ".pgm", ".ppm", ".tga", ".tif", ".tiff", ".exr",
                                             ".hdr", ".gif", ".jpg", ".jpeg", ".bmp"});
-        auto in = OIIO::ImageInput::open(path);
-        if (!in) error_at(name, "cannot read image file '" + file + "': " + OIIO::geterror());
-        const OIIO::ImageSpec spec = in->spec();
-        w = spec.width, h = spec.height;
-        const int nc = spec.nchannels;
-        if (w < 2 || h < 2 || size_t(w) * size_t(h) > kMaxHeightSamples || nc < 1)
-            error_at(name, "a height field image must be at least 2 x 2 and at most " +
-                               std::to_string(kMaxHeightSamples) + " pixels");
-        charge(size_t(w) * size_t(h) * (size_t(nc) + 1) * sizeof(float), name);
-        std::vector<float> px(size_t(w) * size_t(h) * size_t(nc));
-        if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, px.data()))
-            error_at(name, "cannot read image file '" + file + "': " + in->geterror());
-        int pw = 0, ph = 0;
-        const std::vector<uint8_t> indices = png_indices(path, pw, ph);
-        const bool palette = !indices.empty() && pw == w && ph == h;
+        if (!options_.read_raster)
+            error_at(name, "height_field image '" + file + "': this program reads no images");
+        Raster img;
+        try {
+            img = options_.read_raster(path, kMaxHeightSamples);
+        } catch (const RenderError& e) {
+            error_at(name, "cannot read image file '" + file + "': " + e.what());
+        }
+        w = img.width, h = img.height;
+        const size_t nc = size_t(img.channels);
+        charge(img.pixels.size() * sizeof(float), name);
         heights.resize(size_t(w) * size_t(h));
         for (int row = 0; row < h; ++row)
             for (int i = 0; i < w; ++i) {
-                const float* p = &px[(size_t(row) * size_t(w) + size_t(i)) * size_t(nc)];
-                float v = p[0];
-                if (palette) {
-                    v = float(indices[size_t(row) * size_t(w) + size_t(i)]) / 255.0f;
-                } else if (nc >= 3 && (p[1] != p[0] || p[2] != p[0])) {
-                    colour_image = true;
-                }
+                const float* p = &img.pixels[(size_t(row) * size_t(w) + size_t(i)) * nc];
+                if (nc >= 3 && (p[1] != p[0] || p[2] != p[0])) colour_image = true;
                 // The image's top row is the far edge (z = 1).
-                heights[size_t(h - 1 - row) * size_t(w) + size_t(i)] = v;
+                heights[size_t(h - 1 - row) * size_t(w) + size_t(i)] = p[0];
             }
         if (colour_image) {
             unsupported(src, "height_field from a colour image (left out; grey and 8-bit "

@@ -136,10 +136,12 @@ float height_at(const PovResult& r, float x, float z) {
 
 TEST(PovHeightFields, HeightsFromGreyImagesAndFunctions) {
     test::TempDir d;
+    PovOptions images;
+    images.read_raster = &read_raster;
     // The image's top row lies at z = 1.
     d.write("hf.pgm", "P2\n3 2\n255\n0 0 255\n255 0 0\n");
     PovResult r =
-        load_pov_scene(d.write("scene.pov", "height_field { pgm \"hf.pgm\" smooth }"), {});
+        load_pov_scene(d.write("scene.pov", "height_field { pgm \"hf.pgm\" smooth }"), images);
     EXPECT_TRUE(r.warnings.empty());
     ASSERT_EQ(r.scene.meshes.size(), 1u);
     EXPECT_EQ(r.scene.meshes[0].triangle_count(), 4u);
@@ -148,6 +150,17 @@ TEST(PovHeightFields, HeightsFromGreyImagesAndFunctions) {
     EXPECT_NEAR(height_at(r, 1, 1), 1, 1e-6);
     EXPECT_NEAR(height_at(r, 0, 1), 0, 1e-6);
     EXPECT_NEAR(height_at(r, 0.5f, 0), 0, 1e-6);
+    // A program that passes no image reader (the CUDA test) gets an error at the file name.
+    try {
+        load_pov_scene(d.path() + "/scene.pov", {});
+        ADD_FAILURE() << "a height field image loaded without an image reader";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find(
+                      "scene.pov:1:20: error: height_field image 'hf.pgm': this program reads "
+                      "no images"),
+                  std::string::npos)
+            << e.what();
+    }
     // A function of (x, y) over the grid, y = 1 at the far edge as an image's top row.
     r = load_text("height_field { function 3, 5 { x * 0.5 + y * 0.25 } }");
     ASSERT_EQ(r.scene.meshes.size(), 1u);
@@ -172,7 +185,9 @@ TEST(PovHeightFields, HeightsFromGreyImagesAndFunctions) {
 TEST(PovHeightFields, PalettePngsGiveTheirIndices) {
     const std::string path = "/usr/share/povray-3.7/include/fract003.png";
     if (!std::ifstream(path)) GTEST_SKIP() << path << " (povray-includes) is not installed";
-    const PovResult r = load_text("height_field { png \"" + path + "\" }");
+    PovOptions images;
+    images.read_raster = &read_raster;
+    const PovResult r = load_text("height_field { png \"" + path + "\" }", images);
     ASSERT_EQ(r.scene.meshes.size(), 1u);
     // Index 1 is the sea: 32,221 of the 320 x 200 pixels (its palette repeats colours, so
     // the colours alone could not give the index).

@@ -29,6 +29,7 @@ SceneFile read_pov(const std::string& path, const SceneFileOptions& options) {
     po.strict = options.strict;
     po.image_width = options.image_width;
     po.image_height = options.image_height;
+    po.read_raster = options.read_raster;
     pov::PovResult r = pov::load_pov_scene(path, po);
     return {std::move(r.scene), std::move(r.warnings)};
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/scene/scene.h"
+#include "io/image/raster.h"
 
 #include <string>
 #include <vector>
@@ -15,6 +16,8 @@ struct SceneFileOptions {
     bool strict = false;                    // an unsupported feature is an error, not a warning
     int image_width = 512, image_height = 512; // the size the scene will be rendered at, for
                                                // scenes that ask (POV-Ray's image_width)
+    RasterReader read_raster = nullptr;        // images a scene builds geometry from (POV-Ray's
+                                               // height_field): io::read_raster, or none (an error)
 };
 
 struct SceneFile {

@@ -8,6 +8,7 @@
 #include "core/scene/prepared_scene.h"
 #include "core/scene/scene.h"
 #include "core/settings/settings.h"
+#include "io/image/raster.h"
 #include "io/image/texture_sampler.h"
 #include "io/scene/scene_file.h"
 
@@ -70,7 +71,11 @@ struct SheafSceneT : SheafRefCounted {
     sheaf::Scene scene;
     /// How sheafSceneLoadFile reads files (sheafSceneSetLoadOption), and what the last load
     /// warned about.
-    sheaf::io::SceneFileOptions load_options;
+    sheaf::io::SceneFileOptions load_options = [] {
+        sheaf::io::SceneFileOptions o;
+        o.read_raster = &sheaf::io::read_raster; // height fields from images (OpenImageIO)
+        return o;
+    }();
     bool subdivision_limit = false;
     int subdivision_boundary = 0; // sheaf::io::SubdivBoundary
     std::vector<std::string> warnings;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace sheaf {
@@ -98,6 +99,22 @@ TEST(Patterns, ContinuousPatternsStayInTheUnitInterval) {
         }
         EXPECT_GT(hi - lo, 0.2f) << "pattern " << k << " hardly varies";
     }
+}
+
+TEST(Patterns, MapSpansBlendBetweenEntriesAndClampOutside) {
+    PigmentEntry e[3];
+    e[0].value = 0.2f, e[1].value = 0.6f, e[2].value = 0.6f; // a sharp step at 0.6
+    auto same = [](MapSpan m, uint32_t i) { return m.lo == i && m.hi == i && m.t == 0.0f; };
+    EXPECT_TRUE(same(map_span(e, 3, 0.1f), 0)); // below the first entry
+    EXPECT_TRUE(same(map_span(e, 3, 0.2f), 0)); // on it
+    EXPECT_TRUE(same(map_span(e, 3, 0.9f), 2)); // above the last
+    EXPECT_TRUE(same(map_span(e, 3, 0.6f), 1)); // on the step: the first of the two
+    EXPECT_TRUE(same(map_span(e, 3, std::nanf("")), 0));
+    EXPECT_TRUE(same(map_span(e, 1, 0.5f), 0)); // one entry
+    const MapSpan m = map_span(e, 3, 0.3f);
+    EXPECT_EQ(m.lo, 0u);
+    EXPECT_EQ(m.hi, 1u);
+    EXPECT_FLOAT_EQ(m.t, 0.25f);
 }
 
 TEST(Noise, DeterministicSmoothAndZeroOnTheLattice) {

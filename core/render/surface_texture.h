@@ -106,19 +106,9 @@ struct Evaluator {
             const int i = pattern_index_at(pt, q);
             return entry(entries[uint32_t(i) < pg.count ? uint32_t(i) : pg.count - 1], p, depth);
         }
-        const float v = pattern_value(scene, pt, q);
-        // The map: below the first entry its colour, above the last the last's, between two
-        // entries the blend.
-        if (v <= entries[0].value) return entry(entries[0], p, depth);
-        for (uint32_t i = 1; i < pg.count; ++i) {
-            if (v > entries[i].value) continue;
-            const float span = entries[i].value - entries[i - 1].value;
-            const float t = span > 0 ? (v - entries[i - 1].value) / span : 1.0f;
-            if (t <= 0) return entry(entries[i - 1], p, depth);
-            if (t >= 1) return entry(entries[i], p, depth);
-            return mix(entry(entries[i - 1], p, depth), entry(entries[i], p, depth), t);
-        }
-        return entry(entries[pg.count - 1], p, depth);
+        const MapSpan m = map_span(entries, pg.count, pattern_value(scene, pt, q));
+        if (m.lo == m.hi) return entry(entries[m.lo], p, depth);
+        return mix(entry(entries[m.lo], p, depth), entry(entries[m.hi], p, depth), m.t);
     }
 };
 

@@ -270,18 +270,9 @@ SHEAF_HD_INLINE double fn_pigment(const FnView& fv, const FnPigment& pg, int com
             const uint32_t i = uint32_t(pattern_index_at(pt, q));
             for (int k = 0; k < 5; ++k) c[k] = e[i < pg.count ? i : pg.count - 1].color[k];
         } else {
-            const float v = pattern_value_at(pt, q);
-            uint32_t hi = 0;
-            while (hi < pg.count && e[hi].value < v) ++hi;
-            if (hi == 0 || hi == pg.count) {
-                const uint32_t i = hi == 0 ? 0 : pg.count - 1;
-                for (int k = 0; k < 5; ++k) c[k] = e[i].color[k];
-            } else {
-                const float span = e[hi].value - e[hi - 1].value;
-                const float t = span > 0 ? (v - e[hi - 1].value) / span : 1.0f;
-                for (int k = 0; k < 5; ++k)
-                    c[k] = e[hi - 1].color[k] * (1.0f - t) + e[hi].color[k] * t;
-            }
+            const MapSpan m = map_span(e, pg.count, pattern_value_at(pt, q));
+            for (int k = 0; k < 5; ++k)
+                c[k] = e[m.lo].color[k] * (1.0f - m.t) + e[m.hi].color[k] * m.t;
         }
     }
     if (comp >= 0 && comp < 5) return c[comp];

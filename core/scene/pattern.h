@@ -88,6 +88,26 @@ struct PigmentEntry {
     int32_t pigment = -1;
 };
 
+/// Where a continuous pattern's value falls in a map of `count` (> 0) entries sorted by
+/// value: the blend (1 - t) * lo + t * hi, or one entry (lo == hi) below the first entry,
+/// above the last, on an entry, or for NaN (the first). One lookup for pigments and for
+/// pigment functions.
+struct MapSpan {
+    uint32_t lo, hi;
+    float t;
+};
+SHEAF_HD_INLINE MapSpan map_span(const PigmentEntry* e, uint32_t count, float v) {
+    uint32_t hi = 0;
+    while (hi < count && e[hi].value < v) ++hi;
+    if (hi == 0) return {0, 0, 0.0f};
+    if (hi == count) return {count - 1, count - 1, 0.0f};
+    const float span = e[hi].value - e[hi - 1].value;
+    const float t = span > 0 ? (v - e[hi - 1].value) / span : 1.0f;
+    if (t <= 0) return {hi - 1, hi - 1, 0.0f};
+    if (t >= 1) return {hi, hi, 0.0f};
+    return {hi - 1, hi, t};
+}
+
 /// A normal perturbation: the shading normal tilts along the pattern's gradient, `amount`
 /// (POV-Ray's bump size) times its slope.
 struct NormalPattern {

@@ -7,20 +7,6 @@ namespace sheaf::io::pov {
 
 namespace {
 
-const std::map<std::string, FnMath>& math_names() {
-    static const std::map<std::string, FnMath> m = {
-        {"sin", FnMath::Sin},         {"cos", FnMath::Cos},     {"tan", FnMath::Tan},
-        {"asin", FnMath::Asin},       {"acos", FnMath::Acos},   {"atan", FnMath::Atan},
-        {"sinh", FnMath::Sinh},       {"cosh", FnMath::Cosh},   {"tanh", FnMath::Tanh},
-        {"asinh", FnMath::Asinh},     {"acosh", FnMath::Acosh}, {"atanh", FnMath::Atanh},
-        {"sqrt", FnMath::Sqrt},       {"exp", FnMath::Exp},     {"log", FnMath::Log10},
-        {"ln", FnMath::Ln},           {"abs", FnMath::Abs},     {"int", FnMath::Int},
-        {"floor", FnMath::Floor},     {"ceil", FnMath::Ceil},   {"degrees", FnMath::Degrees},
-        {"radians", FnMath::Radians},
-    };
-    return m;
-}
-
 FnOp binary(FnNode::Op op) {
     switch (op) {
     case FnNode::Add:
@@ -145,7 +131,7 @@ void FnCompiler::emit(const FnNode& n, uint32_t base) {
     case FnNode::Builtin: {
         const std::string& name = n.name;
         const size_t k = n.args.size();
-        if (auto it = math_names().find(name); it != math_names().end() && k == 1) {
+        if (auto it = math_builtins().find(name); it != math_builtins().end() && k == 1) {
             emit(n.args[0], base);
             push(FnOp::Math, uint16_t(it->second));
             return;

@@ -10,33 +10,57 @@ namespace sheaf::io::pov {
 
 namespace {
 
-using Fn1 = double (*)(double);
-
-const std::map<std::string, Fn1>& unary() {
-    static const std::map<std::string, Fn1> m = {
-        {"sin", [](double a) { return std::sin(a); }},
-        {"cos", [](double a) { return std::cos(a); }},
-        {"tan", [](double a) { return std::tan(a); }},
-        {"asin", [](double a) { return std::asin(a); }},
-        {"acos", [](double a) { return std::acos(a); }},
-        {"sinh", [](double a) { return std::sinh(a); }},
-        {"cosh", [](double a) { return std::cosh(a); }},
-        {"tanh", [](double a) { return std::tanh(a); }},
-        {"asinh", [](double a) { return std::asinh(a); }},
-        {"acosh", [](double a) { return std::acosh(a); }},
-        {"atanh", [](double a) { return std::atanh(a); }},
-        {"sqrt", [](double a) { return std::sqrt(a); }},
-        {"exp", [](double a) { return std::exp(a); }},
-        {"log", [](double a) { return std::log10(a); }},
-        {"ln", [](double a) { return std::log(a); }},
-        {"abs", [](double a) { return std::fabs(a); }},
-        {"int", [](double a) { return std::trunc(a); }},
-        {"floor", [](double a) { return std::floor(a); }},
-        {"ceil", [](double a) { return std::ceil(a); }},
-        {"degrees", [](double a) { return a * 180.0 / M_PI; }},
-        {"radians", [](double a) { return a * M_PI / 180.0; }},
-    };
-    return m;
+/// The language's float built-ins of one argument, as the C library computes them (a scene's
+/// #declare X = log(1000) must give 3 exactly, as in POV-Ray); compiled programs use the
+/// shared host-and-device math of core/scene/function.h instead.
+double std_math(FnMath m, double a) {
+    switch (m) {
+    case FnMath::Sin:
+        return std::sin(a);
+    case FnMath::Cos:
+        return std::cos(a);
+    case FnMath::Tan:
+        return std::tan(a);
+    case FnMath::Asin:
+        return std::asin(a);
+    case FnMath::Acos:
+        return std::acos(a);
+    case FnMath::Atan:
+        return std::atan(a);
+    case FnMath::Sinh:
+        return std::sinh(a);
+    case FnMath::Cosh:
+        return std::cosh(a);
+    case FnMath::Tanh:
+        return std::tanh(a);
+    case FnMath::Asinh:
+        return std::asinh(a);
+    case FnMath::Acosh:
+        return std::acosh(a);
+    case FnMath::Atanh:
+        return std::atanh(a);
+    case FnMath::Sqrt:
+        return std::sqrt(a);
+    case FnMath::Exp:
+        return std::exp(a);
+    case FnMath::Log10:
+        return std::log10(a);
+    case FnMath::Ln:
+        return std::log(a);
+    case FnMath::Abs:
+        return std::fabs(a);
+    case FnMath::Int:
+        return std::trunc(a);
+    case FnMath::Floor:
+        return std::floor(a);
+    case FnMath::Ceil:
+        return std::ceil(a);
+    case FnMath::Degrees:
+        return a * 180.0 / M_PI;
+    case FnMath::Radians:
+        return a * M_PI / 180.0;
+    }
+    return std::nan("");
 }
 
 bool truth(double d) {
@@ -45,25 +69,34 @@ bool truth(double d) {
 
 } // namespace
 
+const std::map<std::string, FnMath>& math_builtins() {
+    static const std::map<std::string, FnMath> m = {
+        {"sin", FnMath::Sin},         {"cos", FnMath::Cos},     {"tan", FnMath::Tan},
+        {"asin", FnMath::Asin},       {"acos", FnMath::Acos},   {"atan", FnMath::Atan},
+        {"sinh", FnMath::Sinh},       {"cosh", FnMath::Cosh},   {"tanh", FnMath::Tanh},
+        {"asinh", FnMath::Asinh},     {"acosh", FnMath::Acosh}, {"atanh", FnMath::Atanh},
+        {"sqrt", FnMath::Sqrt},       {"exp", FnMath::Exp},     {"log", FnMath::Log10},
+        {"ln", FnMath::Ln},           {"abs", FnMath::Abs},     {"int", FnMath::Int},
+        {"floor", FnMath::Floor},     {"ceil", FnMath::Ceil},   {"degrees", FnMath::Degrees},
+        {"radians", FnMath::Radians},
+    };
+    return m;
+}
+
 bool is_float_builtin(const std::string& name) {
-    return unary().count(name) || name == "atan" || name == "atan2" || name == "pow" ||
+    return math_builtins().count(name) || name == "atan" || name == "atan2" || name == "pow" ||
            name == "mod" || name == "div" || name == "min" || name == "max" || name == "select";
 }
 
 bool eval_builtin(const std::string& name, const std::vector<double>& a, double& out) {
     const size_t n = a.size();
-    if (auto it = unary().find(name); it != unary().end()) {
-        if (n != 1) return false;
-        out = it->second(a[0]);
+    if (auto it = math_builtins().find(name); it != math_builtins().end() && n == 1) {
+        out = std_math(it->second, a[0]);
         return true;
     }
-    if (name == "atan") {
-        if (n == 1)
-            out = std::atan(a[0]);
-        else if (n == 2)
-            out = std::atan2(a[0], a[1]);
-        else
-            return false;
+    if (name == "atan") { // atan(y, x) is atan2
+        if (n != 2) return false;
+        out = std::atan2(a[0], a[1]);
         return true;
     }
     if (name == "atan2" || name == "pow" || name == "mod" || name == "div") {

@@ -8,6 +8,7 @@
 #include "io/pov/lexer.h"
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -79,5 +80,8 @@ struct PovFunction {
 bool eval_builtin(const std::string& name, const std::vector<double>& args, double& out);
 /// Whether `name` is a float built-in with `n` arguments (min/max/select: variadic).
 bool is_float_builtin(const std::string& name);
+/// The float built-ins of one argument and the operations programs run them with (sin,
+/// sqrt, log ...): one table for the language's evaluation and the function compiler.
+const std::map<std::string, FnMath>& math_builtins();
 
 } // namespace sheaf::io::pov

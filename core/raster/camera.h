@@ -47,6 +47,7 @@ inline CameraFrame make_camera_frame(const Camera& c, int width, int height) {
     f.forward = normalize(c.look_at - c.position);
     f.right = normalize(cross(f.forward, c.up));
     f.up = cross(f.right, f.forward);
+    if (c.mirror) f.right = -f.right; // x across the image runs the other way
     f.ortho = c.projection == Projection::Orthographic;
     f.half_y = f.ortho ? 0.5f * c.ortho_height : tanf(c.fov_y_degrees * kPi / 360.0f);
     f.half_x = f.half_y * (c.aspect > 0 ? c.aspect : float(width) / float(height));

@@ -229,7 +229,15 @@ TEST(Renderer, LightTypesFollowTheirFormulas) {
     EXPECT_NEAR(centre_radiance(spot, m).x, 0.7f, 1e-4f); // on the axis: full
     spot.direction = Vec3(1, 0, -1);                      // 45 degrees away: outside the falloff
     EXPECT_NEAR(centre_radiance(spot, m).x, 0.1f, 1e-4f);
-    spot.direction = Vec3(std::tan(15 * kPi / 180), 0, -1); // halfway: smoothstep(0.5) = 0.5
+    // 15 degrees away, between the cosines of radius and falloff: POV-Ray's cubic of t.
+    spot.direction = Vec3(std::tan(15 * kPi / 180), 0, -1);
+    const double cr = std::cos(10 * kPi / 180), cf = std::cos(20 * kPi / 180);
+    const double t = (std::cos(15 * kPi / 180) - cf) / (cr - cf);
+    EXPECT_NEAR(centre_radiance(spot, m).x, 0.1f + 0.6f * (3 - 2 * t) * t * t, 1e-3f);
+    // A radius of 90 degrees or more is no cone: only cos^tightness (POV-Ray's radius -90
+    // falloff 90 tightness 1, a cosine falloff), and nothing behind the light.
+    spot.spot_radius = 90, spot.spot_falloff = 90, spot.spot_tightness = 1;
+    spot.direction = Vec3(std::tan(60 * kPi / 180), 0, -1);
     EXPECT_NEAR(centre_radiance(spot, m).x, 0.1f + 0.6f * 0.5f, 1e-3f);
 
     Light faded{Vec3(0, 0, 3), Vec3(1.0f)};

@@ -79,18 +79,23 @@ struct LightSample {
     Vec3 origin;
 };
 
-/// Spot-light factor in POV-Ray's manner: full inside `radius`, smoothly to zero at `falloff`,
-/// times cos(angle)^tightness.
+/// Spot-light factor as POV-Ray computes it, from the cosine c of the angle to the axis:
+/// nothing behind the light's plane (c <= 0), else c^tightness; inside a cone (radius under 90
+/// degrees) also full within `radius`, nothing beyond `falloff`, and between them a cubic
+/// (3 - 2t) t^2 of t running from 0 at cos(falloff) to 1 at cos(radius).
 SHEAF_HD_INLINE float spot_factor(const Light& l, Vec3 light_to_point) {
-    const float angle = angle_between(normalize(l.direction), light_to_point) * (180.0f / kPi);
-    if (angle >= l.spot_falloff) return 0.0f;
-    float f = 1.0f;
-    if (angle > l.spot_radius) {
-        const float u = (l.spot_falloff - angle) / hdm::fmaxf(l.spot_falloff - l.spot_radius, 1e-6f);
-        f = u * u * (3.0f - 2.0f * u);
+    const float c = dot(normalize(l.direction), light_to_point);
+    if (!(c > 0.0f)) return 0.0f;
+    float f = l.spot_tightness > 0 ? hdm::powf(c, l.spot_tightness) : 1.0f;
+    if (l.spot_radius < 90.0f) {
+        const float cr = hdm::cosf(l.spot_radius * (kPi / 180.0f));
+        const float cf = hdm::cosf(l.spot_falloff * (kPi / 180.0f));
+        if (c < cf) return 0.0f;
+        if (c < cr) {
+            const float t = (c - cf) / (cr - cf);
+            f *= (3.0f - 2.0f * t) * t * t;
+        }
     }
-    if (l.spot_tightness > 0)
-        f *= hdm::powf(hdm::fmaxf(hdm::cosf(angle * kPi / 180.0f), 0.0f), l.spot_tightness);
     return f;
 }
 

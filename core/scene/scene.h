@@ -111,6 +111,8 @@ struct Camera {
     // |right| / |up|: an image of another shape shows it stretched, as POV-Ray does); 0: the
     // image's own width over height.
     float aspect = 0;
+    // The image mirrored left to right (POV-Ray's right-handed cameras: right -x).
+    bool mirror = false;
 };
 
 struct Object {

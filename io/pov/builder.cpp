@@ -68,8 +68,13 @@ struct Builder {
             top(placed, p.model.default_texture, nullptr, 0);
         }
         Light l = pl.light;
-        l.spot_falloff = std::clamp(l.spot_falloff, 0.01f, 180.0f);
-        l.spot_radius = std::clamp(l.spot_radius, 0.0f, l.spot_falloff);
+        // POV-Ray keeps the cosines: a radius whose cosine is not positive (radius -90 of the
+        // "cosine falloff" idiom) makes no cone at all, which Sheaf's radius 90 means.
+        l.spot_falloff = std::clamp(std::fabs(l.spot_falloff), 0.01f, 180.0f);
+        if (std::cos(double(l.spot_radius) * M_PI / 180) <= 1e-9)
+            l.spot_radius = 90;
+        else
+            l.spot_radius = std::min(std::fabs(l.spot_radius), l.spot_falloff);
         const Vec3 aim = pl.point_at - pl.light.position;
         if (!is_finite(pl.light.position) || !is_finite(l.color) || !is_finite(aim) ||
             !is_finite(pl.axis1) || !is_finite(pl.axis2))
@@ -224,6 +229,9 @@ struct Builder {
     void camera() {
         const PovCamera& c = p.model.camera;
         Vec3 loc = c.location, dir = c.direction, right = c.right, up = c.up;
+        // POV-Ray keeps the camera's handedness through look_at: right -x (a right-handed
+        // camera) shows the image mirrored.
+        const bool left_handed = dot(cross(up, dir), right) >= 0;
         if (c.angle > 0 && c.angle < 180 && !c.orthographic)
             dir = normalize(dir) * (0.5f * length(right) / std::tan(float(c.angle * M_PI / 360)));
         if (c.has_look_at && length(c.look_at - loc) > 0) {
@@ -231,8 +239,8 @@ struct Builder {
             dir = normalize(c.look_at - loc) * dl;
             Vec3 r = cross(c.sky, dir);
             if (length(r) == 0) r = Vec3(1, 0, 0);
-            right = normalize(r) * rl;
-            up = normalize(cross(dir, right)) * ul;
+            right = normalize(r) * (left_handed ? rl : -rl);
+            up = normalize(cross(dir, r)) * ul;
         }
         loc = c.transform.point(loc);
         dir = c.transform.vector(dir);
@@ -241,6 +249,7 @@ struct Builder {
         out.position = flip.point(loc);
         out.look_at = flip.point(loc + dir);
         out.up = length(up) > 0 ? normalize(flip.vector(up)) : Vec3(0, 1, 0);
+        out.mirror = dot(cross(up, dir), c.transform.vector(right)) < 0;
         // POV-Ray maps |right| across the image and |up| down it, whatever the image's shape.
         // A ratio equal to image_width / image_height (right x * image_width / image_height)
         // follows the image the host renders, also when the host did not say its size.

@@ -26,6 +26,27 @@ TEST(PovCamera, PerspectiveFromAngleAndLookAt) {
     EXPECT_NEAR(c.fov_y_degrees, 2 * std::atan(0.75) * 180 / M_PI, 1e-3);
 }
 
+TEST(PovCamera, RightHandedCamerasMirrorThePicture) {
+    // right -x makes a right-handed camera; POV-Ray keeps that through look_at.
+    EXPECT_FALSE(load_text("camera { location <0, 2, -5> look_at 0 }").scene.camera.mirror);
+    EXPECT_TRUE(load_text("camera { location <0, 2, -5> right -x look_at 0 angle 40 }")
+                    .scene.camera.mirror);
+    EXPECT_TRUE(load_text("camera { location <0, 0, -5> right <-1, 0, 0> }").scene.camera.mirror);
+    const PovResult r = load_text("camera { location <0, 2, -5> right -x up y look_at 0 }");
+    EXPECT_NEAR(r.scene.camera.up.y, 0.93, 0.01); // up still points up
+    // A mirrored camera draws x the other way: the same scene, the image flipped.
+    const std::string scene = "light_source { <0, 5, -5> rgb 1 }\n"
+                              "sphere { <-1, 0, 0>, 0.5 pigment { rgb <1, 0, 0> } }\n";
+    const PreparedScene a = prepare_scene(
+        load_text("camera { location <0, 0, -5> look_at 0 }\n" + scene).scene);
+    const PreparedScene b = prepare_scene(
+        load_text("camera { location <0, 0, -5> right -x * 4/3 look_at 0 }\n" + scene).scene);
+    const CameraFrame fa = make_camera_frame(a.camera, 40, 30);
+    const CameraFrame fb = make_camera_frame(b.camera, 40, 30);
+    EXPECT_NEAR(dot(fa.right, fb.right), -1, 1e-5);
+    EXPECT_NEAR(dot(fa.up, fb.up), 1, 1e-5);
+}
+
 TEST(PovCamera, DirectionWithoutAngleAndSky) {
     const PovResult r = load_text("camera { location 0 direction z * 2 up y right x sky y }");
     EXPECT_NEAR(r.scene.camera.fov_y_degrees, 2 * std::atan(0.25) * 180 / M_PI, 1e-3);

@@ -168,7 +168,7 @@ typedef struct SheafLightDesc {
     float position[3];    /* point and spot */
     float direction[3];   /* spot: the cone's axis; parallel: the way the light travels */
     float color[3];       /* linear RGB intensity */
-    float spot_radius;    /* spot: degrees from the axis at full intensity */
+    float spot_radius;    /* spot: degrees from the axis at full intensity (>= 90: no cone) */
     float spot_falloff;   /* spot: degrees from the axis where the light reaches zero */
     float spot_tightness; /* spot: intensity times cos(angle)^tightness; 0 for none */
     float fade_distance;  /* > 0: intensity times 2 / (1 + (d / fade_distance)^fade_power) */

@@ -10,8 +10,9 @@
 
 namespace sheaf {
 
-enum class RayType : uint8_t { Shadow = 0, Reflection = 1, Refraction = 2, Ao = 3 };
-constexpr int kRayTypeCount = 4;
+/// Diffuse: radiosity's gather rays (closest hit, like reflection and refraction).
+enum class RayType : uint8_t { Shadow = 0, Reflection = 1, Refraction = 2, Ao = 3, Diffuse = 4 };
+constexpr int kRayTypeCount = 5;
 
 inline const char* ray_type_name(RayType t) {
     switch (t) {
@@ -23,6 +24,8 @@ inline const char* ray_type_name(RayType t) {
         return "refraction";
     case RayType::Ao:
         return "ao";
+    case RayType::Diffuse:
+        return "diffuse";
     }
     return "?";
 }
@@ -43,12 +46,14 @@ struct RayBatch {
     // Shadow and AO rays: radiance added to the pixel when nothing is hit.
     // Reflection and refraction rays: the throughput carried to what they hit.
     TrackedVector<Vec3> weight;
-    TrackedVector<uint32_t> light; // shadow rays: the light index (the crsh key uses it)
+    // Shadow rays: the light index (the crsh key uses it). Diffuse rays: the path tag the
+    // point they find carries (SurfaceHit::gather).
+    TrackedVector<uint32_t> light;
 
     size_t size() const { return rays.size(); }
     void resize(size_t n) {
         rays.resize(n), pixel.resize(n), weight.resize(n);
-        if (type == RayType::Shadow) light.resize(n);
+        if (type == RayType::Shadow || type == RayType::Diffuse) light.resize(n);
     }
 };
 

@@ -26,14 +26,22 @@ RaySlots slots(RayBatch& b) {
 
 } // namespace
 
+ShadowLayout shadow_layout(const SceneView& scene, const std::vector<SurfaceHit>& hits) {
+    ShadowLayout l;
+    l.hits = hits.size();
+    while (l.camera < l.hits && hits[l.camera].gather == 0) ++l.camera;
+    l.lights = scene.light_count;
+    return l;
+}
+
 void generate_shadow_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
                           const RayGenParams& p, RayBatch& out) {
-    const size_t n = hits.size();
+    const ShadowLayout layout = shadow_layout(scene, hits);
     emit(
-        n * scene.light_count, out,
-        [&](size_t k) { return shadow_ray_count(scene, hits.data(), n, k, p); },
-        [&](size_t k, uint32_t slot) {
-            shadow_ray_fill(scene, hits.data(), n, k, slot, p, slots(out));
+        layout.elements(), out,
+        [&](size_t e) { return shadow_ray_count(scene, hits.data(), layout, e, p); },
+        [&](size_t e, uint32_t slot) {
+            shadow_ray_fill(scene, hits.data(), layout, e, slot, p, slots(out));
         });
 }
 
@@ -61,6 +69,19 @@ void generate_bounce_rays(const SceneView& scene, const std::vector<SurfaceHit>&
     emit(
         hits.size(), refr, [&](size_t i) { return refract_ray_count(splits[i], p); },
         [&](size_t i, uint32_t slot) { refract_ray_fill(hits[i], splits[i], slot, p, slots(refr)); });
+}
+
+void generate_diffuse_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
+                           const RayGenParams& p, RayBatch& out) {
+    std::vector<uint32_t> count(hits.size());
+    parallel_for(
+        "raygen.diffuse_count", hits.size(),
+        [&](size_t i) { count[i] = diffuse_ray_count(scene, hits[i], p); }, 1024);
+    emit(
+        hits.size(), out, [&](size_t i) { return count[i]; },
+        [&](size_t i, uint32_t slot) {
+            diffuse_ray_fill(scene, hits[i], count[i], slot, p, slots(out));
+        });
 }
 
 } // namespace sheaf

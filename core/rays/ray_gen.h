@@ -22,7 +22,10 @@ struct RayGenParams {
     float far = 1e4f;      // beyond the scene: where parallel lights' shadow rays start
     int ao_samples = 0;
     float ao_distance = 1.0f;
-    float min_weight = 1e-3f; // reflection/refraction rays carrying less are not traced
+    float min_weight = 1e-3f;  // reflection/refraction/gather rays carrying less are not traced
+    int radiosity_samples = 0; // gather rays per camera-path point (0: no radiosity)
+    int radiosity_depth = 2;   // diffuse bounces of a gathered path
+    float radiosity_brightness = 1.0f;
 };
 
 /// Where generated rays go: structure-of-arrays slots (light only for shadow rays).
@@ -63,23 +66,71 @@ SHEAF_HD_INLINE void basis(Vec3 n, Vec3& t, Vec3& b) {
     b = Vec3(c, s + n.y * n.y * a, -n.y);
 }
 
+/// Points on a gathered (radiosity) path are lit by this many of the scene's lights at most,
+/// a different share at each point (an area light is many lights: its 81 shadow rays at
+/// every gathered point would cost far more than the gathering).
+constexpr uint32_t kGatherLights = 4;
+
 } // namespace raygen_detail
 
-// Shadow rays, light-major: element k of n * lights is light k / n at hit k % n. All rays of
-// light 0 in hit order, then light 1, ...: rays that leave the same light towards
-// neighbouring pixels sit side by side even unsorted (rah).
+/// Which (hit, light) pairs a wave's shadow rays come from. The wave's first `camera` hits
+/// (camera, reflection and refraction paths) take every light, light-major: element k <
+/// camera * lights is light k / camera at hit k % camera, so rays that leave the same light
+/// towards neighbouring pixels sit side by side even unsorted (rah). The rest are points on
+/// gathered radiosity paths (a wave lists them last), hit-major, kGatherLights elements each:
+/// element j of such a hit is light offset + j * stride, stride = ceil(lights /
+/// kGatherLights), offset drawn per hit from a hash of its sample and path, so each light has
+/// chance 1 / stride and its rays carry stride times its light.
+struct ShadowLayout {
+    size_t hits = 0, camera = 0;
+    uint32_t lights = 0;
 
-SHEAF_HD_INLINE uint32_t shadow_ray_count(const SceneView& scene, const SurfaceHit* hits, size_t n,
-                                          size_t k, const RayGenParams& p) {
-    const Light& l = scene.lights[k / n];
-    return !l.shadowless && lights_point(l, hits[k % n], p) ? 1u : 0u;
+    SHEAF_HD size_t elements() const {
+        if (lights == 0) return 0;
+        return camera * lights + (hits - camera) * raygen_detail::kGatherLights;
+    }
+    SHEAF_HD uint32_t stride() const {
+        const uint32_t k = raygen_detail::kGatherLights;
+        return lights <= k ? 1u : (lights + k - 1) / k;
+    }
+    /// Element e's hit and light, and the factor on its light; false when it has none.
+    SHEAF_HD bool pair(const SurfaceHit* h, size_t e, size_t& hit, uint32_t& light,
+                       float& scale) const {
+        const size_t lit = camera * lights;
+        if (e < lit) {
+            hit = e % camera, light = uint32_t(e / camera), scale = 1.0f;
+            return true;
+        }
+        const size_t g = e - lit;
+        hit = camera + g / raygen_detail::kGatherLights;
+        const uint32_t j = uint32_t(g % raygen_detail::kGatherLights), s = stride();
+        uint32_t x = h[hit].pixel * 0x9E3779B9u ^ (h[hit].gather * 0x85EBCA6Bu);
+        x ^= x >> 16, x *= 0x7FEB352Du, x ^= x >> 15, x *= 0x846CA68Bu, x ^= x >> 16;
+        light = x % s + j * s;
+        scale = float(s);
+        return light < lights;
+    }
+};
+
+SHEAF_HD_INLINE uint32_t shadow_ray_count(const SceneView& scene, const SurfaceHit* hits,
+                                          const ShadowLayout& layout, size_t e,
+                                          const RayGenParams& p) {
+    size_t hit;
+    uint32_t li;
+    float scale;
+    if (!layout.pair(hits, e, hit, li, scale)) return 0;
+    const Light& l = scene.lights[li];
+    return !l.shadowless && lights_point(l, hits[hit], p) ? 1u : 0u;
 }
 
-SHEAF_HD_INLINE void shadow_ray_fill(const SceneView& scene, const SurfaceHit* hits, size_t n,
-                                     size_t k, uint32_t slot, const RayGenParams& p,
-                                     const RaySlots& out) {
-    const SurfaceHit& h = hits[k % n];
-    const uint32_t li = uint32_t(k / n);
+SHEAF_HD_INLINE void shadow_ray_fill(const SceneView& scene, const SurfaceHit* hits,
+                                     const ShadowLayout& layout, size_t e, uint32_t slot,
+                                     const RayGenParams& p, const RaySlots& out) {
+    size_t hit;
+    uint32_t li;
+    float scale;
+    if (!layout.pair(hits, e, hit, li, scale)) return;
+    const SurfaceHit& h = hits[hit];
     const Light& l = scene.lights[li];
     if (l.shadowless || !lights_point(l, h, p)) return;
     // The ray starts at the light and ends just above the surface.
@@ -92,8 +143,8 @@ SHEAF_HD_INLINE void shadow_ray_fill(const SceneView& scene, const SurfaceHit* h
     r.tmax = ls.distance;
     out.rays[slot] = r;
     out.pixel[slot] = h.pixel;
-    out.weight[slot] =
-        h.throughput * direct_light(scene.materials[h.material], h, ls.to_light, ls.radiance);
+    out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h, ls.to_light,
+                                                   ls.radiance * scale);
     out.light[slot] = li;
 }
 
@@ -133,6 +184,9 @@ struct BounceSplit {
 SHEAF_HD_INLINE BounceSplit bounce_split(const SceneView& scene, const SurfaceHit& h) {
     const Material& m = scene.materials[h.material];
     BounceSplit s{};
+    // Points on a gathered (radiosity) path send no mirror rays: they bring their light,
+    // not their reflections (see diffuse_ray_count).
+    if (h.gather != 0) return s;
     // Light passing through: tinted by the colour (filter) or not (transmit).
     const Vec3 pass = h.albedo * h.filter + Vec3(h.transmit);
     const Vec3 mirror = mirror_weight(m, h);
@@ -193,7 +247,76 @@ SHEAF_HD_INLINE void refract_ray_fill(const SurfaceHit& h, const BounceSplit& s,
     bounce_ray_fill(h, s.refract_dir, s.refract_weight, -1.0f, slot, p, out);
 }
 
-/// Shadow rays for every lit (hit, light) pair of the lights that cast shadows.
+namespace raygen_detail {
+
+/// The gather weight of hit h per ray when it sends `n`: what the surface's diffuse reflects
+/// of the light arriving, averaged over the cosine-weighted rays (POV-Ray's radiosity adds
+/// colour x diffuse x the mean radiance gathered, times brightness).
+SHEAF_HD_INLINE Vec3 gather_weight(const SceneView& scene, const SurfaceHit& h, uint32_t n,
+                                   const RayGenParams& p) {
+    const Material& m = scene.materials[h.material];
+    return h.throughput * h.albedo * (m.diffuse * opacity(h) * p.radiosity_brightness / float(n));
+}
+
+/// The Halton bases of the gather directions at diffuse depth d (a pair per depth, after AO's
+/// 2 and 3, so the dimensions of a path are not correlated).
+SHEAF_HD_INLINE void gather_bases(uint32_t d, uint32_t& b1, uint32_t& b2) {
+    constexpr uint32_t primes[18] = {5,  7,  11, 13, 17, 19, 23, 29, 31,
+                                     37, 41, 43, 47, 53, 59, 61, 67, 71};
+    const uint32_t i = d < 9 ? d : 8;
+    b1 = primes[2 * i], b2 = primes[2 * i + 1];
+}
+
+} // namespace raygen_detail
+
+/// Radiosity's gather rays from hit h: `radiosity_samples` on a camera, reflection or
+/// refraction path (gather 0), one to continue a gathered path until `radiosity_depth`
+/// diffuse bounces; none from surfaces without diffuse or when the weight is too small.
+SHEAF_HD_INLINE uint32_t diffuse_ray_count(const SceneView& scene, const SurfaceHit& h,
+                                           const RayGenParams& p) {
+    if (p.radiosity_samples <= 0) return 0;
+    const uint32_t depth = h.gather & 0xFFu;
+    if (depth >= uint32_t(p.radiosity_depth)) return 0;
+    const uint32_t n = depth == 0 ? uint32_t(p.radiosity_samples) : 1u;
+    if (!(max_component(raygen_detail::gather_weight(scene, h, 1, p)) > p.min_weight)) return 0;
+    return n;
+}
+
+/// The gather rays of hit h from `slot` on (`n` of them, diffuse_ray_count's), cosine-weighted
+/// about the geometric normal from Halton points: on a camera path sample s of pixel i takes
+/// index i * n + s + 1; a gathered path goes on with the index it began with, in the next
+/// pair of bases. Each ray's tag is the path's: one more bounce, the same sample.
+SHEAF_HD_INLINE void diffuse_ray_fill(const SceneView& scene, const SurfaceHit& h, uint32_t n,
+                                      uint32_t slot, const RayGenParams& p, const RaySlots& out) {
+    if (n == 0) return;
+    const uint32_t depth = h.gather & 0xFFu;
+    const Vec3 w = raygen_detail::gather_weight(scene, h, n, p);
+    uint32_t b1, b2;
+    raygen_detail::gather_bases(depth, b1, b2);
+    Vec3 t, b;
+    raygen_detail::basis(h.geo_normal, t, b);
+    for (uint32_t s = 0; s < n; ++s) {
+        const uint32_t sample = depth == 0 ? s : h.gather >> 8;
+        const uint32_t index = h.pixel * uint32_t(p.radiosity_samples) + sample + 1;
+        const float u1 = radical_inverse(index, b1), u2 = radical_inverse(index, b2);
+        const float r = sqrtf(u1), phi = 2.0f * kPi * u2;
+        const Vec3 d = t * (r * hdm::cosf(phi)) + b * (r * hdm::sinf(phi)) +
+                       h.geo_normal * sqrtf(hdm::fmaxf(0.0f, 1.0f - u1));
+        Ray ray;
+        ray.origin = h.position + h.geo_normal * p.epsilon;
+        ray.dir = normalize(d);
+        ray.tmin = 0.0f;
+        ray.tmax = FLT_MAX;
+        out.rays[slot + s] = ray;
+        out.pixel[slot + s] = h.pixel;
+        out.weight[slot + s] = w;
+        out.light[slot + s] = (sample << 8) | (depth + 1);
+    }
+}
+
+/// The shadow layout of a wave: its leading hits with gather 0 take every light.
+ShadowLayout shadow_layout(const SceneView& scene, const std::vector<SurfaceHit>& hits);
+/// Shadow rays for the (hit, light) pairs of the layout, lights that cast shadows.
 void generate_shadow_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
                           const RayGenParams& p, RayBatch& out);
 /// `ao_samples` rays per hit; each hit's Halton points start at its pixel index times the count.
@@ -202,5 +325,8 @@ void generate_ao_rays(const SceneView& scene, const std::vector<SurfaceHit>& hit
 /// Reflection rays go to `refl`, refraction rays to `refr`.
 void generate_bounce_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
                           const RayGenParams& p, RayBatch& refl, RayBatch& refr);
+/// Radiosity's gather rays (diffuse_ray_count per hit), in hit order.
+void generate_diffuse_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
+                           const RayGenParams& p, RayBatch& out);
 
 } // namespace sheaf

@@ -9,8 +9,8 @@
 namespace sheaf {
 
 void declare_frame_keys(Stats& st) {
-    for (const char* k :
-         {"rays.primary", "rays.shadow", "rays.reflection", "rays.refraction", "rays.ao"})
+    for (const char* k : {"rays.primary", "rays.shadow", "rays.reflection", "rays.refraction",
+                          "rays.ao", "rays.diffuse"})
         st.set(k, 0);
     for (const char* k :
          {"time_ms.raster", "time_ms.gbuffer", "time_ms.ray_creation", "time_ms.hashing",
@@ -33,6 +33,9 @@ RayGenParams frame_ray_params(const PreparedScene& scene, const RenderSettings& 
     p.far = 4.0f * scene_extent(scene);
     p.ao_samples = s.ao_samples;
     p.ao_distance = s.ao_distance;
+    p.radiosity_samples = s.radiosity_samples;
+    p.radiosity_depth = s.radiosity_depth;
+    p.radiosity_brightness = s.radiosity_brightness;
     return p;
 }
 
@@ -45,7 +48,8 @@ void frame_totals(Stats& st, const PreparedScene& scene, const RenderSettings& s
         objects += st.get(p + "objects.tests");
     }
     st.set("rays.secondary", st.get("rays.shadow") + st.get("rays.reflection") +
-                                 st.get("rays.refraction") + st.get("rays.ao"));
+                                 st.get("rays.refraction") + st.get("rays.ao") +
+                                 st.get("rays.diffuse"));
     st.set("tests.total", total);
     st.set("tests.objects", objects);
     st.set("tests.brute_force", brute);

@@ -140,7 +140,8 @@ class FramePipeline {
         for (size_t i = 0; i < batch.size(); ++i) tests_[batch.pixel[i]] += r.tests[i];
     }
 
-    // Shades one wave of hits; returns the hits of its reflection and refraction rays.
+    // Shades one wave of hits; returns the hits of its reflection, refraction and radiosity
+    // gather rays, in that order.
     std::vector<SurfaceHit> shade_wave(const std::vector<SurfaceHit>& hits, int bounce) {
         RayBatch shadow(RayType::Shadow, memory_), ao(RayType::Ao, memory_);
         const bool trace_ao = bounce == 0 && s_.ao_samples > 0;
@@ -171,12 +172,15 @@ class FramePipeline {
         if (bounce >= s_.trace_depth) return {};
 
         RayBatch refl(RayType::Reflection, memory_), refr(RayType::Refraction, memory_);
+        RayBatch diffuse(RayType::Diffuse, memory_);
         {
             PhaseTimer t(st_, "time_ms.ray_creation");
             generate_bounce_rays(view_, hits, params_, refl, refr);
+            generate_diffuse_rays(view_, hits, params_, diffuse);
         }
         std::vector<SurfaceHit> next;
-        for (RayBatch* b : {&refl, &refr}) {
+        for (RayBatch* b : {&refl, &refr, &diffuse}) {
+            if (b == &diffuse && params_.radiosity_samples == 0) continue;
             trace_batch(scene_, *units_, *b, s_, st_, memory_, r);
             PhaseTimer t(st_, "time_ms.shading");
             count_tests(*b, r);
@@ -197,8 +201,10 @@ class FramePipeline {
                 "shade.next", b->size(),
                 [&](size_t i) {
                     if (r.closest[i] == kNoHit) return;
-                    next[base + slot[i]] = bounce_hit(view_, b->rays[i], r.closest[i],
-                                                      b->pixel[i], b->weight[i], fog_[slot[i]]);
+                    SurfaceHit& h = next[base + slot[i]];
+                    h = bounce_hit(view_, b->rays[i], r.closest[i], b->pixel[i], b->weight[i],
+                                   fog_[slot[i]]);
+                    if (b->type == RayType::Diffuse) h.gather = b->light[i];
                 },
                 1024);
             if (scene_.fog.distance > 0) // in ray order: sums stay the same on every accel

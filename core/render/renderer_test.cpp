@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
 
 namespace sheaf {
@@ -178,6 +179,79 @@ TEST(Renderer, ALitQuadHasTheAnalyticRadiance) {
     EXPECT_NEAR(f.normal[16 * 33 + 16].z, 1.0f, 1e-5f);
     // The corner sees the background (black).
     EXPECT_EQ(f.rgba[0], 0.0f);
+}
+
+TEST(Renderer, RadiosityInAFurnaceIsTheDiffuseColourTimesTheEmission) {
+    // A box lit only by the inside of an enclosure that emits 1 everywhere: every gather ray
+    // finds radiance 1, so the box's face shows colour x diffuse x brightness (POV-Ray's
+    // radiosity gives the same), whatever the number of rays or the depth.
+    Scene s;
+    Material wall;
+    wall.color = Vec3(1.0f), wall.emission = Vec3(1.0f), wall.diffuse = 0, wall.ambient = 0;
+    Material box;
+    box.color = Vec3(0.5f, 0.25f, 1.0f), box.ambient = 0.3f, box.diffuse = 0.6f;
+    s.add_mesh_object("enclosure", make_box(Vec3(-10), Vec3(10)), s.add_material(wall));
+    s.add_mesh_object("box", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)), s.add_material(box));
+    s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
+    const PreparedScene scene = prepare_scene(s);
+    const size_t c = (8 * 17 + 8) * 4;
+    for (const char* n : {"1", "7"})
+        for (const char* depth : {"1", "3"}) {
+            const Frame f = render(scene, {{"width", "17"},
+                                           {"height", "17"},
+                                           {"radiosity.samples", n},
+                                           {"radiosity.depth", depth},
+                                           {"radiosity.brightness", "0.5"}});
+            // The ambient term stays: the scene reader drops it where POV-Ray does.
+            EXPECT_NEAR(f.rgba[c + 0], 0.5f * (0.6f * 0.5f + 0.3f), 1e-5f) << n << " " << depth;
+            EXPECT_NEAR(f.rgba[c + 1], 0.25f * (0.6f * 0.5f + 0.3f), 1e-5f);
+            EXPECT_NEAR(f.rgba[c + 2], 1.0f * (0.6f * 0.5f + 0.3f), 1e-5f);
+            // n rays from each pixel that sees the box; the enclosure has no diffuse to gather.
+            double box_pixels = 0;
+            for (uint32_t id : f.object_id) box_pixels += id == 1;
+            EXPECT_EQ(f.stats.get("rays.diffuse"), box_pixels * std::atoi(n));
+        }
+    const Frame off = render(scene, {{"width", "17"}, {"height", "17"}});
+    EXPECT_NEAR(off.rgba[c + 0], 0.5f * 0.3f, 1e-6f);
+    EXPECT_EQ(off.stats.get("rays.diffuse"), 0);
+}
+
+TEST(Renderer, RadiosityBringsTheColourOfNearbyWalls) {
+    // A white floor beside a red wall under one light: with radiosity the floor near the wall
+    // turns red (more red than green), and a second bounce adds light.
+    Scene s;
+    Material white, red;
+    white.color = Vec3(0.8f), white.ambient = 0;
+    red.color = Vec3(0.9f, 0.05f, 0.05f), red.ambient = 0;
+    s.add_mesh_object("floor", make_box(Vec3(-3, -1.1f, -3), Vec3(3, -1, 3)),
+                      s.add_material(white));
+    s.add_mesh_object("wall", make_box(Vec3(-3.1f, -1, -3), Vec3(-3, 3, 3)), s.add_material(red));
+    s.add_light(Light{Vec3(0, 4, 2), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 2, 6), s.camera.look_at = Vec3(-1, -1, 0);
+    const PreparedScene scene = prepare_scene(s);
+    auto floor_tint = [&](const Frame& f) {
+        double r = 0, g = 0;
+        for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x)
+                if (f.object_id[size_t(y) * f.width + x] == 0) { // the floor
+                    r += f.rgba[(size_t(y) * f.width + x) * 4 + 0];
+                    g += f.rgba[(size_t(y) * f.width + x) * 4 + 1];
+                }
+        return std::make_pair(r, g);
+    };
+    const auto [r0, g0] = floor_tint(render(scene, {{"width", "48"}, {"height", "36"}}));
+    EXPECT_NEAR(r0, g0, 1e-3 * r0); // a white floor under a white light
+    const auto [r1, g1] = floor_tint(render(scene, {{"width", "48"},
+                                                    {"height", "36"},
+                                                    {"radiosity.samples", "16"},
+                                                    {"radiosity.depth", "1"}}));
+    EXPECT_GT(r1, g1 * 1.02);
+    EXPECT_GT(g1, g0); // the wall reflects a little green too
+    const auto [r2, g2] = floor_tint(render(scene, {{"width", "48"},
+                                                    {"height", "36"},
+                                                    {"radiosity.samples", "16"},
+                                                    {"radiosity.depth", "2"}}));
+    EXPECT_GT(r2, r1);
 }
 
 TEST(Renderer, AWorkingGammaDecodesTheAveragedPixel) {

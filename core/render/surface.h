@@ -1,4 +1,5 @@
-// A shaded surface point: a primary hit from the G-buffer or a reflection/refraction hit.
+// A shaded surface point: a primary hit from the G-buffer, or what a reflection, refraction or
+// radiosity gather ray found.
 #pragma once
 
 #include "core/math/vec3.h"
@@ -21,6 +22,9 @@ struct SurfaceHit {
     float transmit = 0; // share of light passing through untinted
     float t = 0;       // distance along the incoming ray
     bool front = true; // the ray arrived on the side the winding calls outside
+    /// Radiosity: 0 on camera, reflection and refraction paths; on a gathered path, the
+    /// diffuse bounces so far (low 8 bits) and the gather sample the path began with (above).
+    uint32_t gather = 0;
 };
 
 } // namespace sheaf

@@ -230,7 +230,10 @@ int static3d_keys(const RayBatch& batch, const RenderSettings& s, std::vector<ui
     const uint64_t grid_w = uint64_t(s.width) * uint64_t(s.aa_samples);
     const uint64_t grid_h = uint64_t(s.height) * uint64_t(s.aa_samples);
     const uint64_t tiles_x = (grid_w + 7) / 8, tiles = tiles_x * ((grid_h + 15) / 16);
-    const uint64_t per_pixel = batch.type == RayType::Ao ? uint64_t(std::max(1, s.ao_samples)) : 1;
+    const uint64_t per_pixel = batch.type == RayType::Ao ? uint64_t(std::max(1, s.ao_samples))
+                               : batch.type == RayType::Diffuse
+                                   ? uint64_t(std::max(1, s.radiosity_samples))
+                                   : 1;
     keys.resize(n * 2);
     parallel_for(
         "hash.static3d", n,

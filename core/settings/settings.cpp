@@ -113,6 +113,29 @@ const std::vector<SettingSpec>& setting_specs() {
          1e30,
          {},
          "ambient-occlusion ray length in scene units"},
+        {"radiosity.samples",
+         K::Int,
+         "0",
+         0,
+         1024,
+         {},
+         "diffuse interreflection (POV-Ray's radiosity): rays gathered at each point seen from "
+         "the camera or in a mirror, 0 for none; POV-Ray scenes with radiosity set their count"},
+        {"radiosity.depth",
+         K::Int,
+         "2",
+         1,
+         8,
+         {},
+         "diffuse bounces a gathered path takes (POV-Ray's recursion_limit); past the first, one "
+         "ray per point"},
+        {"radiosity.brightness",
+         K::Float,
+         "1",
+         0,
+         100,
+         {},
+         "scale of the gathered light (POV-Ray's radiosity brightness)"},
         {"output.display",
          K::String,
          "",
@@ -326,6 +349,9 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.threads = i("threads");
     r.ao_samples = i("ao.samples");
     r.ao_distance = std::stof(v.at("ao.distance"));
+    r.radiosity_samples = i("radiosity.samples");
+    r.radiosity_depth = i("radiosity.depth");
+    r.radiosity_brightness = std::stof(v.at("radiosity.brightness"));
     r.batch_pairs = std::stoll(v.at("traversal.batch"));
     return r;
 }

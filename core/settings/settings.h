@@ -70,6 +70,9 @@ struct RenderSettings {
     int threads = 0;    // 0: all cores
     int ao_samples = 0;
     float ao_distance = 1.0f;
+    int radiosity_samples = 0; // gather rays per camera-path point; 0: no radiosity
+    int radiosity_depth = 2;   // diffuse bounces of a gathered path
+    float radiosity_brightness = 1.0f;
     long long batch_pairs = 1 << 22; // candidate pairs held at once per level
 
     /// Explicit values win over the scene's, which win over the defaults.

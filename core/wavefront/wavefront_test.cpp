@@ -92,6 +92,27 @@ TEST(Wavefront, GlassMirrorsAndAmbientOcclusionAreIdentical) {
     expect_identical(scene, "glass", {{"aa.samples", "3"}, {"trace.depth", "7"}}, 24, 20);
 }
 
+TEST(Wavefront, RadiosityIsIdentical) {
+    // Gather rays from camera, mirror and glass paths, gathered paths going on (depth 2 and 3),
+    // under every accel, hash, sort, depth and arity.
+    const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
+    for (SettingList kv : variants()) {
+        kv.push_back({"radiosity.samples", "3"});
+        expect_identical(scene, "glass", kv, 24, 20);
+    }
+    const Frame f = expect_identical(
+        scene, "glass",
+        {{"radiosity.samples", "4"}, {"radiosity.depth", "3"}, {"ao.samples", "2"}});
+    EXPECT_GT(f.stats.get("rays.diffuse"), 0);
+    EXPECT_GT(f.stats.get("tests.diffuse.total"), 0);
+    expect_identical(scene, "glass",
+                     {{"radiosity.samples", "2"},
+                      {"aa.samples", "2"},
+                      {"radiosity.brightness", "0.5"},
+                      {"trace.depth", "1"}},
+                     16, 12);
+}
+
 TEST(Wavefront, EveryLightKindIsIdentical) {
     for (bool ortho : {false, true}) {
         const PreparedScene scene = prepare_scene(test::lights_scene(ortho));

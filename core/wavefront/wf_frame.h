@@ -23,6 +23,7 @@ namespace sheaf::wavefront {
 template <class Exec> struct DeviceHits {
     DeviceBuffer<SurfaceHit, Exec> h;
     size_t n = 0;
+    size_t camera = 0; // the first hits, with gather 0; the rest are on gathered paths
 };
 
 template <class Exec> class DeviceFrame {
@@ -123,7 +124,7 @@ template <class Exec> class DeviceFrame {
             [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return vis[i] != kEmptyPixel ? 1u : 0u; });
         DeviceHits<Exec> hits;
         hits.h = DeviceBuffer<SurfaceHit, Exec>(ex_, count);
-        hits.n = count;
+        hits.n = hits.camera = count;
         depth_ = DeviceBuffer<float, Exec>(ex_, samples);
         normal_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
         albedo_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
@@ -147,8 +148,8 @@ template <class Exec> class DeviceFrame {
         return hits;
     }
 
-    // Shadow and AO rays, traced and added; returns the hits of the reflection and refraction
-    // rays (reflections first, each in ray order).
+    // Shadow and AO rays, traced and added; returns the hits of the reflection, refraction and
+    // radiosity gather rays (in that order, each in ray order).
     DeviceHits<Exec> shade_wave(const DeviceHits<Exec>& hits, int bounce) {
         const bool trace_ao = bounce == 0 && s_.ao_samples > 0;
         const SceneView scene = scene_;
@@ -191,11 +192,39 @@ template <class Exec> class DeviceFrame {
             refr = bounce_rays(hits, split, RayType::Refraction);
             clock_.stop("ray_creation");
         }
+        const bool radiosity = params_.radiosity_samples > 0;
+        DeviceBatch<Exec> diffuse(ex_, RayType::Diffuse, 0);
+        if (radiosity) diffuse = diffuse_rays(hits);
         DeviceHits<Exec> next;
-        next.h = DeviceBuffer<SurfaceHit, Exec>(ex_, refl.n + refr.n);
+        next.h = DeviceBuffer<SurfaceHit, Exec>(ex_, refl.n + refr.n + diffuse.n);
         next_hits(refl, next);
         next_hits(refr, next);
+        next.camera = next.n;
+        if (radiosity) next_hits(diffuse, next);
         return next;
+    }
+
+    DeviceBatch<Exec> diffuse_rays(const DeviceHits<Exec>& hits) {
+        clock_.start("ray_creation");
+        const SceneView scene = scene_;
+        const RayGenParams params = params_;
+        const SurfaceHit* h = hits.h.data();
+        DeviceBuffer<uint32_t, Exec> count_buf(ex_, hits.n), offset_buf(ex_, hits.n);
+        uint32_t* count = count_buf.data();
+        uint32_t* offset = offset_buf.data();
+        ex_.launch("raygen.diffuse_count", hits.n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            count[i] = diffuse_ray_count(scene, h[i], params);
+        });
+        const uint32_t total =
+            count_and_scan(ex_, "raygen.count", hits.n, offset,
+                           [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return count[i]; });
+        DeviceBatch<Exec> out(ex_, RayType::Diffuse, total);
+        const RaySlots slots = out.slots();
+        ex_.launch("raygen.fill", hits.n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            diffuse_ray_fill(scene, h[i], count[i], offset[i], params, slots);
+        });
+        clock_.stop("ray_creation");
+        return out;
     }
 
     DeviceBatch<Exec> shadow_rays(const DeviceHits<Exec>& hits) {
@@ -203,17 +232,20 @@ template <class Exec> class DeviceFrame {
         const SceneView scene = scene_;
         const RayGenParams params = params_;
         const SurfaceHit* h = hits.h.data();
-        const size_t n = hits.n, k = n * host_.lights.size();
+        ShadowLayout layout;
+        layout.hits = hits.n, layout.camera = hits.camera;
+        layout.lights = uint32_t(host_.lights.size());
+        const size_t k = layout.elements();
         DeviceBuffer<uint32_t, Exec> offset_buf(ex_, k);
         uint32_t* offset = offset_buf.data();
-        const uint32_t total = count_and_scan(ex_, "raygen.count", k, offset,
-                                              [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
-                                                  return shadow_ray_count(scene, h, n, i, params);
-                                              });
+        const uint32_t total = count_and_scan(
+            ex_, "raygen.count", k, offset, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
+                return shadow_ray_count(scene, h, layout, i, params);
+            });
         DeviceBatch<Exec> out(ex_, RayType::Shadow, total);
         const RaySlots slots = out.slots();
         ex_.launch("raygen.fill", k, [=] SHEAF_HD_LAMBDA(size_t i) {
-            shadow_ray_fill(scene, h, n, i, offset[i], params, slots);
+            shadow_ray_fill(scene, h, layout, i, offset[i], params, slots);
         });
         clock_.stop("ray_creation");
         return out;
@@ -286,7 +318,7 @@ template <class Exec> class DeviceFrame {
         });
     }
 
-    // Traces a reflection or refraction batch: misses bring the sky, hits become surface
+    // Traces a reflection, refraction or gather batch: misses bring the sky, hits become surface
     // points of the next wave, appended to `next` in ray order, with the fog on their way.
     void next_hits(const DeviceBatch<Exec>& b, DeviceHits<Exec>& next) {
         DeviceTraceResult<Exec> r;
@@ -314,10 +346,12 @@ template <class Exec> class DeviceFrame {
         DeviceBuffer<Vec3, Exec> fog_buf(ex_, count);
         Vec3* fog = fog_buf.data();
         SurfaceHit* out = next.h.data() + next.n;
+        const uint32_t* tag = b.type == RayType::Diffuse ? b.light.data() : nullptr;
         ex_.launch("shade.next", b.n, [=] SHEAF_HD_LAMBDA(size_t i) {
             if (closest[i] == kNoHit) return;
             out[slot[i]] =
                 bounce_hit(scene, rays[i], closest[i], pixel[i], weight[i], fog[slot[i]]);
+            if (tag) out[slot[i]].gather = tag[i];
         });
         if (host_.fog.distance > 0) // in ray order: sums stay the same on every accel
             accumulate_in_order(

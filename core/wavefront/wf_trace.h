@@ -26,13 +26,14 @@ template <class Exec> struct DeviceBatch {
     DeviceBuffer<Ray, Exec> rays;
     DeviceBuffer<uint32_t, Exec> pixel;
     DeviceBuffer<Vec3, Exec> weight;
-    DeviceBuffer<uint32_t, Exec> light; // shadow rays only
+    DeviceBuffer<uint32_t, Exec> light; // shadow rays: the light; diffuse rays: the path tag
 
     DeviceBatch(Exec& ex, RayType t, size_t count) : type(t), n(count) {
         rays = DeviceBuffer<Ray, Exec>(ex, n);
         pixel = DeviceBuffer<uint32_t, Exec>(ex, n);
         weight = DeviceBuffer<Vec3, Exec>(ex, n);
-        if (t == RayType::Shadow) light = DeviceBuffer<uint32_t, Exec>(ex, n);
+        if (t == RayType::Shadow || t == RayType::Diffuse)
+            light = DeviceBuffer<uint32_t, Exec>(ex, n);
     }
     RaySlots slots() const { return {rays.data(), pixel.data(), weight.data(), light.data()}; }
 };
@@ -254,8 +255,10 @@ template <class Exec> class DeviceTracer {
             const uint64_t grid_w = uint64_t(s_.width) * uint64_t(s_.aa_samples);
             const uint64_t grid_h = uint64_t(s_.height) * uint64_t(s_.aa_samples);
             const uint64_t tiles_x = (grid_w + 7) / 8, tiles = tiles_x * ((grid_h + 15) / 16);
-            const uint64_t per_pixel =
-                batch.type == RayType::Ao ? uint64_t(s_.ao_samples > 1 ? s_.ao_samples : 1) : 1;
+            const int per = batch.type == RayType::Ao        ? s_.ao_samples
+                            : batch.type == RayType::Diffuse ? s_.radiosity_samples
+                                                             : 1;
+            const uint64_t per_pixel = uint64_t(per > 1 ? per : 1);
             const bool shadow = batch.type == RayType::Shadow;
             keys = DeviceBuffer<uint32_t, Exec>(ex_, 2 * n);
             uint32_t* k = keys.data();

@@ -5,6 +5,7 @@
 
 #include "core/base/error.h"
 #include "core/scenes/shapes.h"
+#include "core/settings/settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -302,6 +303,12 @@ double build_scene(Parser& p, Scene& scene) {
     }
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));
+    if (m.radiosity) {
+        scene.settings["radiosity.samples"] = std::to_string(m.radiosity_count);
+        scene.settings["radiosity.depth"] = std::to_string(m.radiosity_depth);
+        scene.settings["radiosity.brightness"] =
+            canonical_setting("radiosity.brightness", std::to_string(m.radiosity_brightness));
+    }
     return gamma;
 }
 

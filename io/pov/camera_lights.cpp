@@ -5,6 +5,7 @@
 #include "core/base/error.h"
 
 #include <cmath>
+#include <set>
 
 namespace sheaf::io::pov {
 
@@ -167,7 +168,9 @@ void Parser::parse_global_settings() {
         } else if (k == "ambient_light") {
             const Color5 c = parse_color();
             model.ambient_light = {c[0], c[1], c[2]};
-        } else if (k == "radiosity" || k == "photons" || k == "subsurface") {
+        } else if (k == "radiosity") {
+            parse_radiosity();
+        } else if (k == "photons" || k == "subsurface") {
             unsupported(t, k);
             if (is_sym_tok(peek(), "{")) skip_block();
         } else if (k == "irid_wavelength") {
@@ -179,6 +182,59 @@ void Parser::parse_global_settings() {
             if (starts_expression(peek())) parse_expr();
         } else {
             error_expected(t, "a global setting (assumed_gamma, max_trace_level ...)");
+        }
+    }
+}
+
+void Parser::parse_radiosity() {
+    // Sheaf gathers at every point (no irradiance cache), so the cache's settings change
+    // nothing and are read and dropped; what changes the picture is kept or warned.
+    static const std::set<std::string> cache = {
+        "pretrace_start", "pretrace_end",  "error_bound",     "low_error_factor",
+        "minimum_reuse",  "maximum_reuse", "nearest_count",   "always_sample",
+        "max_sample",     "adc_bailout",   "distance_maximum"};
+    model.radiosity = true;
+    expect_sym("{");
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        if (t.kind != TokKind::Ident) error_expected(t, "a radiosity setting or '}'");
+        const std::string k = t.text;
+        advance();
+        if (k == "count") {
+            const Token at = peek();
+            const double c = parse_float();
+            if (!(c >= 1 && c <= 1024))
+                error_at(at, "a radiosity count must lie between 1 and 1024");
+            model.radiosity_count = int(c);
+            if (accept_sym(",")) parse_float(); // the number of directions to draw from
+        } else if (k == "recursion_limit") {
+            const Token at = peek();
+            const double d = parse_float();
+            if (!(d >= 1 && d <= 8))
+                error_at(at, "a radiosity recursion_limit must lie between 1 and 8");
+            model.radiosity_depth = int(d);
+        } else if (k == "brightness") {
+            const Token at = peek();
+            model.radiosity_brightness = parse_float();
+            if (!(model.radiosity_brightness >= 0 && model.radiosity_brightness <= 100))
+                error_at(at, "a radiosity brightness must lie between 0 and 100");
+        } else if (k == "gray_threshold") {
+            const Token at = peek();
+            if (parse_float() != 0) unsupported(at, "radiosity gray_threshold (ignored)");
+        } else if (k == "normal" || k == "media" || k == "subsurface") {
+            if (parse_bool_opt(true)) unsupported(t, "radiosity " + k + " on (ignored)");
+        } else if (k == "save_file" || k == "load_file") {
+            parse_string();
+        } else if (cache.count(k)) {
+            if (k == "always_sample") {
+                parse_bool_opt(true);
+            } else {
+                parse_float();
+                if (k == "nearest_count" && accept_sym(",")) parse_float();
+            }
+        } else {
+            error_expected(t, "a radiosity setting (count, recursion_limit, brightness ...)");
         }
     }
 }

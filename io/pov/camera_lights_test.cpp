@@ -161,6 +161,36 @@ TEST(PovLights, LightsInsideObjectsMoveWithThem) {
     EXPECT_FLOAT_EQ(r.scene.lights[0].position.y, 2);
 }
 
+TEST(PovSettings, RadiosityBecomesSettingsAndDropsTheAmbientIn37) {
+    const std::string scene =
+        "global_settings { radiosity { pretrace_start 0.08 pretrace_end 0.01 count 200, 1000 "
+        "recursion_limit 3 nearest_count 10, 5 error_bound 0.5 brightness 0.8 "
+        "always_sample off normal off save_file \"x.rad\" } }\n"
+        "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0.4 } }";
+    PovResult r = load_text("#version 3.7;\n" + scene);
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+    EXPECT_EQ(r.scene.settings.at("radiosity.samples"), "200");
+    EXPECT_EQ(r.scene.settings.at("radiosity.depth"), "3");
+    EXPECT_EQ(r.scene.settings.at("radiosity.brightness"), "0.8");
+    EXPECT_EQ(r.scene.materials.back().ambient, 0); // the gathered light replaces it
+    r = load_text("#version 3.6;\n" + scene);       // older scenes keep both
+    EXPECT_FLOAT_EQ(r.scene.materials.back().ambient, 0.4f);
+    // POV-Ray's defaults; no radiosity, no settings.
+    r = load_text("global_settings { radiosity { } }");
+    EXPECT_EQ(r.scene.settings.at("radiosity.samples"), "35");
+    EXPECT_EQ(r.scene.settings.at("radiosity.depth"), "2");
+    EXPECT_EQ(load_text("sphere { 0, 1 }").scene.settings.count("radiosity.samples"), 0u);
+    // What Sheaf does not do is warned; bad values are errors where they are written.
+    r = load_text("global_settings { radiosity { gray_threshold 0.5 media on } }");
+    ASSERT_EQ(r.warnings.size(), 2u);
+    EXPECT_NE(r.warnings[0].find("unsupported radiosity gray_threshold"), std::string::npos);
+    EXPECT_EQ(error_of("global_settings { radiosity { count 0 } }"),
+              "scene.pov:1:37: error: a radiosity count must lie between 1 and 1024");
+    EXPECT_EQ(error_of("global_settings { radiosity { bogus 1 } }"),
+              "scene.pov:1:31: error: found 'bogus', expected a radiosity setting (count, "
+              "recursion_limit, brightness ...)");
+}
+
 TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
     const PovResult r = load_text("global_settings { assumed_gamma 1 max_trace_level 3 "
                                   "ambient_light rgb 0.5 }\n"

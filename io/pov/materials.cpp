@@ -170,6 +170,9 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
     const auto& al = p_.model.ambient_light;
     m.ambient =
         float((f.ambient[0] + f.ambient[1] + f.ambient[2]) / 3 * (al[0] + al[1] + al[2]) / 3);
+    // With radiosity, POV-Ray 3.7 drops the classic ambient term: the gathered light takes its
+    // place (older #versions keep both).
+    if (p_.model.radiosity && p_.model.version >= 3.695) m.ambient = 0;
     m.diffuse = float(f.diffuse);
     m.brilliance = float(f.brilliance);
     if (f.phong > 0) {

@@ -192,6 +192,11 @@ struct PovModel {
     bool version_given = false;
     std::array<double, 3> ambient_light{1, 1, 1};
     int max_trace_level = -1;
+    /// global_settings { radiosity { ... } }: on, its count (gather rays), recursion_limit
+    /// and brightness (POV-Ray 3.7's defaults).
+    bool radiosity = false;
+    int radiosity_count = 35, radiosity_depth = 2;
+    double radiosity_brightness = 1;
     PovTexture default_texture;
     PovSky sky; // no pigments: no sky_sphere
     /// Fog: constant (fog_type 1) or ground fog (fog_type 2: fog_alt > 0).

@@ -287,6 +287,7 @@ class Parser {
     void parse_camera(PovCamera& c);
     void parse_light(const Token& kw, PovObject& o);
     void parse_global_settings();
+    void parse_radiosity();
     void parse_background();
     void parse_atmospheric(const Token& kw);
     PovSky parse_sky_sphere(); // after the keyword sky_sphere

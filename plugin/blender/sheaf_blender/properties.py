@@ -26,6 +26,8 @@ PANEL_KEYS = (
     "trace.depth",
     "ao.samples",
     "ao.distance",
+    "radiosity.samples",
+    "radiosity.depth",
     "aa.samples",
     "backend",
 )

@@ -58,7 +58,8 @@ class SHEAF_RENDER_PT_settings(SheafPanel, bpy.types.Panel):
             row.label(text=properties._status["preset_error"], icon='ERROR')
         groups = (
             ("Rays", ("accel", "hierarchy.depth", "hierarchy.arity", "hash.mode", "sort.mode")),
-            ("Shading", ("trace.depth", "ao.samples", "ao.distance", "aa.samples")),
+            ("Shading", ("trace.depth", "ao.samples", "ao.distance", "radiosity.samples",
+                         "radiosity.depth", "aa.samples")),
             ("Device", ("backend",)),
         )
         for title, keys in groups:

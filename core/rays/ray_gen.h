@@ -71,6 +71,17 @@ SHEAF_HD_INLINE void basis(Vec3 n, Vec3& t, Vec3& b) {
 /// every gathered point would cost far more than the gathering).
 constexpr uint32_t kGatherLights = 4;
 
+/// The cosine-weighted direction about unit n (with t and b around it) of Halton point
+/// `index` in bases b1 and b2.
+SHEAF_HD_INLINE Vec3 cosine_direction(Vec3 n, Vec3 t, Vec3 b, uint32_t index, uint32_t b1,
+                                      uint32_t b2) {
+    const float u1 = radical_inverse(index, b1), u2 = radical_inverse(index, b2);
+    const float r = sqrtf(u1), phi = 2.0f * kPi * u2;
+    const Vec3 d = t * (r * hdm::cosf(phi)) + b * (r * hdm::sinf(phi)) +
+                   n * sqrtf(hdm::fmaxf(0.0f, 1.0f - u1));
+    return normalize(d);
+}
+
 } // namespace raygen_detail
 
 /// Which (hit, light) pairs a wave's shadow rays come from. The wave's first `camera` hits
@@ -159,14 +170,9 @@ SHEAF_HD_INLINE void ao_ray_fill(const SceneView& scene, const SurfaceHit& h, ui
     raygen_detail::basis(h.geo_normal, t, b);
     for (uint32_t s = 0; s < n; ++s) {
         // Cosine-weighted hemisphere from the Halton points (bases 2 and 3).
-        const uint32_t index = h.pixel * n + s + 1;
-        const float u1 = radical_inverse(index, 2), u2 = radical_inverse(index, 3);
-        const float r = sqrtf(u1), phi = 2.0f * kPi * u2;
-        const Vec3 d = t * (r * hdm::cosf(phi)) + b * (r * hdm::sinf(phi)) +
-                       h.geo_normal * sqrtf(hdm::fmaxf(0.0f, 1.0f - u1));
         Ray ray;
         ray.origin = h.position + h.geo_normal * p.epsilon;
-        ray.dir = normalize(d);
+        ray.dir = raygen_detail::cosine_direction(h.geo_normal, t, b, h.pixel * n + s + 1, 2, 3);
         ray.tmin = 0.0f;
         ray.tmax = p.ao_distance;
         out.rays[slot + s] = ray;
@@ -298,13 +304,9 @@ SHEAF_HD_INLINE void diffuse_ray_fill(const SceneView& scene, const SurfaceHit& 
     for (uint32_t s = 0; s < n; ++s) {
         const uint32_t sample = depth == 0 ? s : h.gather >> 8;
         const uint32_t index = h.pixel * uint32_t(p.radiosity_samples) + sample + 1;
-        const float u1 = radical_inverse(index, b1), u2 = radical_inverse(index, b2);
-        const float r = sqrtf(u1), phi = 2.0f * kPi * u2;
-        const Vec3 d = t * (r * hdm::cosf(phi)) + b * (r * hdm::sinf(phi)) +
-                       h.geo_normal * sqrtf(hdm::fmaxf(0.0f, 1.0f - u1));
         Ray ray;
         ray.origin = h.position + h.geo_normal * p.epsilon;
-        ray.dir = normalize(d);
+        ray.dir = raygen_detail::cosine_direction(h.geo_normal, t, b, index, b1, b2);
         ray.tmin = 0.0f;
         ray.tmax = FLT_MAX;
         out.rays[slot + s] = ray;

@@ -279,6 +279,10 @@ class Parser {
     bool parse_pattern_modifier(PovPattern& pt, Affine& local);
     void skip_to_block_end(); // after '{' was read: up to and including its '}'
     bool is_color_start(const Token& t);
+    /// Whether a map entry (`[value ...]`) starts with its value: a number, a declared float
+    /// (which is_color_start also accepts, as floats promote to colours), or another
+    /// expression that is not a colour; average maps may leave the value out.
+    bool starts_map_value(const Token& t);
     void parse_finish(PovFinish& f);
     PovInterior parse_interior(const PovInterior& base);
     PovTexture current_default() const { return model.default_texture; }

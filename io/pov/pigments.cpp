@@ -59,6 +59,14 @@ bool Parser::is_color_start(const Token& t) {
     return v && v->numeric();
 }
 
+bool Parser::starts_map_value(const Token& t) {
+    if (t.kind == TokKind::Number) return true;
+    if (t.kind == TokKind::Ident)
+        if (const Value* v = lookup(t.text)) return v->type == VType::Float;
+    if (is_sym_tok(t, "<")) return false; // a colour vector
+    return starts_expression(t) && (t.kind != TokKind::Ident || !is_color_start(t));
+}
+
 std::shared_ptr<const PovPigment> Parser::parse_pigment(const PovPigment& base) {
     expect_sym("{");
     PovPigment pg = base;
@@ -204,8 +212,7 @@ std::vector<PovMapEntry> Parser::parse_pigment_map() {
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
         PovMapEntry entry;
         entry.value = 1; // average maps may leave the weight out
-        if (peek().kind == TokKind::Number || (starts_expression(peek()) && !is_color_start(peek())))
-            entry.value = parse_float();
+        if (starts_map_value(peek())) entry.value = parse_float();
         accept_sym(",");
         PovPigment p;
         if (accept_kw("pigment")) {

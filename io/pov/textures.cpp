@@ -168,8 +168,7 @@ std::vector<std::pair<double, PovTextureRef>> Parser::parse_texture_map() {
         const Token e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
         double v = 1; // average maps may leave the weight out
-        if (peek().kind == TokKind::Number || (starts_expression(peek()) && !is_color_start(peek())))
-            v = parse_float();
+        if (starts_map_value(peek())) v = parse_float();
         accept_sym(",");
         PovTextureRef tex;
         if (accept_kw("texture")) {

@@ -42,6 +42,23 @@ TEST(PovTextures, PatternsBecomePigmentsInTheirOwnSpace) {
     EXPECT_NEAR(evaluate_pigment(p, uint32_t(m.pigment), Vec3(4, 0, 0), 0, 0).rgb.x, 0.5f, 1e-5);
 }
 
+TEST(PovTextures, MapEntriesMayStartWithADeclaredFloat) {
+    // wallstucco.pov's [L2, PWrink]: a declared float is the entry's value, not a grey colour.
+    const PovResult r = load_text(
+        "#declare L = 0.4; #declare P = pigment { rgb <1, 0, 0> }\n"
+        "#declare T = texture { pigment { rgb 1 } }\n"
+        "sphere { 0, 1 pigment { bozo pigment_map { [L, P] [(L + 0.2) P] [1, rgb 1] } } }\n"
+        "sphere { 0, 1 texture { bozo texture_map { [L T] [L * 2, T] } } }\n"
+        "sphere { 0, 1 pigment { average pigment_map { [P] [rgb 1] } } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Pigment& bozo = r.scene.pigments[size_t(shape_material(r, 0).pigment)];
+    ASSERT_EQ(bozo.count, 3u);
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[bozo.first].value, 0.4f);
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[bozo.first + 1].value, 0.6f);
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[bozo.first].color[0], 1);
+    EXPECT_FLOAT_EQ(r.scene.pigment_entries[bozo.first].color[1], 0);
+}
+
 TEST(PovTextures, ListsDefaultsAndPigmentMaps) {
     const PovResult r = load_text(
         "sphere { 0, 1 pigment { checker rgb 1, rgb 0 } }\n"

@@ -43,6 +43,8 @@ class FramePipeline {
             hits = shade_wave(hits, bounce);
             report(0.1f + 0.9f * float(bounce + 1) / float(s_.trace_depth + 1));
         }
+        memory_.sub(hit_bytes_);
+        hit_bytes_ = 0;
         resolve();
         frame_timer.stop();
         frame_totals(st_, scene_, s_, memory_.peak());
@@ -179,6 +181,7 @@ class FramePipeline {
             generate_diffuse_rays(view_, hits, params_, diffuse);
         }
         std::vector<SurfaceHit> next;
+        int64_t gathered_bytes = 0; // the gathered points among them, which the memory guard counts
         for (RayBatch* b : {&refl, &refr, &diffuse}) {
             if (b == &diffuse && params_.radiosity_samples == 0) continue;
             trace_batch(scene_, *units_, *b, s_, st_, memory_, r);
@@ -195,6 +198,10 @@ class FramePipeline {
                         leave_scene(view_, b->rays[i].origin, b->rays[i].dir, b->weight[i]);
             }
             const size_t base = next.size();
+            if (b == &diffuse) { // as many as the rays gathered: refused before they are taken
+                memory_.add(int64_t(count * sizeof(SurfaceHit)));
+                gathered_bytes += int64_t(count * sizeof(SurfaceHit));
+            }
             next.resize(base + count);
             fog_.assign(count, Vec3(0.0f));
             parallel_for(
@@ -210,6 +217,8 @@ class FramePipeline {
             if (scene_.fog.distance > 0) // in ray order: sums stay the same on every accel
                 for (size_t k = 0; k < count; ++k) radiance_[next[base + k].pixel] += fog_[k];
         }
+        memory_.sub(hit_bytes_); // the wave shaded here goes when its successor comes back
+        hit_bytes_ = gathered_bytes;
         return next;
     }
 
@@ -250,6 +259,7 @@ class FramePipeline {
     std::vector<Vec3> fog_; // fog colour brought by each hit of the wave being built
     std::vector<uint32_t> object_;
     std::vector<uint32_t> tests_;
+    int64_t hit_bytes_ = 0; // the current wave's gathered points, counted by memory_
 };
 
 } // namespace

@@ -1,7 +1,11 @@
 #include "core/rays/ray_gen.h"
 
+#include "core/base/error.h"
 #include "core/base/parallel.h"
 #include "core/sort/radix_sort.h"
+
+#include <algorithm>
+#include <string>
 
 namespace sheaf {
 
@@ -26,6 +30,14 @@ RaySlots slots(RayBatch& b) {
 
 } // namespace
 
+void check_batch_bound(uint64_t most, RayType type) {
+    if (most <= 0xFFFFFFFFull) return;
+    throw OutOfMemory(std::string("a wave of up to ") + std::to_string(most) + " " +
+                      ray_type_name(type) +
+                      " rays: Sheaf traces at most 4294967295 rays in one batch; a smaller "
+                      "frame, fewer aa.samples, ao.samples or radiosity.samples need fewer");
+}
+
 ShadowLayout shadow_layout(const SceneView& scene, const std::vector<SurfaceHit>& hits) {
     ShadowLayout l;
     l.hits = hits.size();
@@ -37,6 +49,7 @@ ShadowLayout shadow_layout(const SceneView& scene, const std::vector<SurfaceHit>
 void generate_shadow_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
                           const RayGenParams& p, RayBatch& out) {
     const ShadowLayout layout = shadow_layout(scene, hits);
+    check_batch_bound(layout.elements(), RayType::Shadow);
     emit(
         layout.elements(), out,
         [&](size_t e) { return shadow_ray_count(scene, hits.data(), layout, e, p); },
@@ -52,6 +65,7 @@ void generate_ao_rays(const SceneView& scene, const std::vector<SurfaceHit>& hit
         out.resize(0);
         return;
     }
+    check_batch_bound(uint64_t(hits.size()) * n, RayType::Ao);
     emit(
         hits.size(), out, [&](size_t) { return n; },
         [&](size_t i, uint32_t slot) { ao_ray_fill(scene, hits[i], slot, p, slots(out)); });
@@ -73,6 +87,8 @@ void generate_bounce_rays(const SceneView& scene, const std::vector<SurfaceHit>&
 
 void generate_diffuse_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
                            const RayGenParams& p, RayBatch& out) {
+    check_batch_bound(uint64_t(hits.size()) * uint64_t(std::max(p.radiosity_samples, 1)),
+                      RayType::Diffuse);
     std::vector<uint32_t> count(hits.size());
     parallel_for(
         "raygen.diffuse_count", hits.size(),

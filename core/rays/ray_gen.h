@@ -316,6 +316,11 @@ SHEAF_HD_INLINE void diffuse_ray_fill(const SceneView& scene, const SurfaceHit& 
     }
 }
 
+/// Rays of a batch are indexed with 32 bits: a batch that could hold more than 4,294,967,295
+/// rays (`most`, an upper bound known before any is made) is refused with OutOfMemory naming
+/// the ray type, before its counts would wrap.
+void check_batch_bound(uint64_t most, RayType type);
+
 /// The shadow layout of a wave: its leading hits with gather 0 take every light.
 ShadowLayout shadow_layout(const SceneView& scene, const std::vector<SurfaceHit>& hits);
 /// Shadow rays for the (hit, light) pairs of the layout, lights that cast shadows.

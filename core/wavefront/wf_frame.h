@@ -209,6 +209,7 @@ template <class Exec> class DeviceFrame {
         const SceneView scene = scene_;
         const RayGenParams params = params_;
         const SurfaceHit* h = hits.h.data();
+        check_batch_bound(uint64_t(hits.n) * uint64_t(params_.radiosity_samples), RayType::Diffuse);
         DeviceBuffer<uint32_t, Exec> count_buf(ex_, hits.n), offset_buf(ex_, hits.n);
         uint32_t* count = count_buf.data();
         uint32_t* offset = offset_buf.data();
@@ -236,6 +237,7 @@ template <class Exec> class DeviceFrame {
         layout.hits = hits.n, layout.camera = hits.camera;
         layout.lights = uint32_t(host_.lights.size());
         const size_t k = layout.elements();
+        check_batch_bound(k, RayType::Shadow);
         DeviceBuffer<uint32_t, Exec> offset_buf(ex_, k);
         uint32_t* offset = offset_buf.data();
         const uint32_t total = count_and_scan(
@@ -257,6 +259,7 @@ template <class Exec> class DeviceFrame {
         const RayGenParams params = params_;
         const SurfaceHit* h = hits.h.data();
         const uint32_t per = uint32_t(params_.ao_samples);
+        check_batch_bound(uint64_t(hits.n) * per, RayType::Ao);
         DeviceBatch<Exec> out(ex_, RayType::Ao, hits.n * per);
         const RaySlots slots = out.slots();
         ex_.launch("raygen.ao", hits.n, [=] SHEAF_HD_LAMBDA(size_t i) {

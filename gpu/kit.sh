@@ -3,8 +3,9 @@
 # build's libraries installed (the lent device machine has CUDA but not Debian's OpenColorIO,
 # Assimp, oneTBB ...): the module, the CUDA test, both benchmarks, the sample scenes,
 # POV-Ray's includes, and every shared library they need beyond the C/C++ runtime: about
-# 40 MB, under the device tool's 64 MiB carry. (Not libsheaf and the CLI: OpenImageIO
-# brings some 350 MB of libraries with it; the test checks backend selection itself.)
+# 48 MiB, under the device tool's 64 MiB carry (the script fails past it). (Not libsheaf and
+# the CLI: OpenImageIO brings some 350 MB of libraries with it, which is why the scene
+# readers take their image reader from the host; the test checks backend selection itself.)
 #
 # usage: gpu/kit.sh BUILD_DIR KIT_DIR     (e.g. gpu/kit.sh build build/gpu-kit)
 # then, on the GPU machine: KIT_DIR/run.sh [OUT_DIR]   (docs/performance.md, "On a GPU")
@@ -30,3 +31,10 @@ if [ -d /usr/share/povray-3.7/include ]; then cp -r /usr/share/povray-3.7/includ
 cp "$src/gpu/kit_run.sh" "$kit/run.sh"
 chmod +x "$kit/run.sh"
 du -sh "$kit"
+# The device tool carries 64 MiB at most: a kit past it cannot reach the GPU machine.
+bytes=$(du -sb "$kit" | cut -f1)
+if [ "$bytes" -gt $((64 * 1024 * 1024)) ]; then
+  echo "kit.sh: $kit is $((bytes / 1048576)) MiB, over the device tool's 64 MiB carry;" \
+       "a new library dependency of the kit's programs (ldd $build/gpu/sheaf_cuda_tests)?" >&2
+  exit 1
+fi

@@ -190,14 +190,14 @@ const SettingSpec* find_setting(std::string_view key) {
     return nullptr;
 }
 
-namespace {
-
 std::string format_number(double v) {
     std::ostringstream os;
     os.precision(9);
     os << v;
     return os.str();
 }
+
+namespace {
 
 std::string known_keys() {
     std::string out;

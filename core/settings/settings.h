@@ -27,6 +27,8 @@ const std::vector<SettingSpec>& setting_specs();
 const SettingSpec* find_setting(std::string_view key);
 /// What a key accepts, in words ("an integer in 2..64", "one of none, crsh").
 std::string describe_allowed(const SettingSpec& spec);
+/// A number as settings print it (9 significant digits, no trailing zeros).
+std::string format_number(double v);
 /// Checks `value` against the key and returns its canonical text ("on" -> "true", "08" -> "8").
 /// Throws SettingsError naming the key and the allowed values.
 std::string canonical_setting(std::string_view key, std::string_view value);

@@ -3,6 +3,7 @@
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
+#include "core/settings/settings.h"
 
 #include <cmath>
 #include <set>
@@ -186,6 +187,20 @@ void Parser::parse_global_settings() {
     }
 }
 
+double Parser::radiosity_in_range(const Token& at, const std::string& name, std::string_view key,
+                                  double v) {
+    // POV-Ray takes any positive count and recursion_limit (and clamps them itself); Sheaf
+    // renders what the settings registry allows, so a larger value is clamped with a warning
+    // naming the range, and a NaN is an error.
+    const SettingSpec* spec = find_setting(key);
+    if (!std::isfinite(v)) error_at(at, "a radiosity " + name + " must be a finite number");
+    if (v <= spec->max) return v;
+    warn(at, "radiosity " + name + " " + format_number(v) + " is clamped to " +
+                 format_number(spec->max) + " (" + std::string(key) + " is " +
+                 describe_allowed(*spec) + ")");
+    return spec->max;
+}
+
 void Parser::parse_radiosity() {
     // Sheaf gathers at every point (no irradiance cache), so the cache's settings change
     // nothing and are read and dropped; what changes the picture is kept or warned.
@@ -204,21 +219,19 @@ void Parser::parse_radiosity() {
         if (k == "count") {
             const Token at = peek();
             const double c = parse_float();
-            if (!(c >= 1 && c <= 1024))
-                error_at(at, "a radiosity count must lie between 1 and 1024");
-            model.radiosity_count = int(c);
+            if (!(c >= 1)) error_at(at, "a radiosity count must be a positive number");
+            model.radiosity_count = int(radiosity_in_range(at, "count", "radiosity.samples", c));
             if (accept_sym(",")) parse_float(); // the number of directions to draw from
         } else if (k == "recursion_limit") {
             const Token at = peek();
             const double d = parse_float();
-            if (!(d >= 1 && d <= 8))
-                error_at(at, "a radiosity recursion_limit must lie between 1 and 8");
-            model.radiosity_depth = int(d);
+            if (!(d >= 1)) error_at(at, "a radiosity recursion_limit must be a positive number");
+            model.radiosity_depth = int(radiosity_in_range(at, k, "radiosity.depth", d));
         } else if (k == "brightness") {
             const Token at = peek();
-            model.radiosity_brightness = parse_float();
-            if (!(model.radiosity_brightness >= 0 && model.radiosity_brightness <= 100))
-                error_at(at, "a radiosity brightness must lie between 0 and 100");
+            const double v = parse_float();
+            if (!(v >= 0)) error_at(at, "a radiosity brightness must not be negative");
+            model.radiosity_brightness = radiosity_in_range(at, k, "radiosity.brightness", v);
         } else if (k == "gray_threshold") {
             const Token at = peek();
             if (parse_float() != 0) unsupported(at, "radiosity gray_threshold (ignored)");

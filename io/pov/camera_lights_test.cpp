@@ -185,7 +185,20 @@ TEST(PovSettings, RadiosityBecomesSettingsAndDropsTheAmbientIn37) {
     ASSERT_EQ(r.warnings.size(), 2u);
     EXPECT_NE(r.warnings[0].find("unsupported radiosity gray_threshold"), std::string::npos);
     EXPECT_EQ(error_of("global_settings { radiosity { count 0 } }"),
-              "scene.pov:1:37: error: a radiosity count must lie between 1 and 1024");
+              "scene.pov:1:37: error: a radiosity count must be a positive number");
+    EXPECT_EQ(error_of("global_settings { radiosity { brightness -1 } }"),
+              "scene.pov:1:42: error: a radiosity brightness must not be negative");
+    // POV-Ray takes larger values than Sheaf renders; they are clamped to the settings
+    // registry's range, and the warning says so.
+    r = load_text("global_settings { radiosity { count 5000 recursion_limit 20 brightness 200 } }");
+    ASSERT_EQ(r.warnings.size(), 3u);
+    EXPECT_NE(r.warnings[0].find("radiosity count 5000 is clamped to 1024 (radiosity.samples is "
+                                 "an integer in 0..1024)"),
+              std::string::npos)
+        << r.warnings[0];
+    EXPECT_EQ(r.scene.settings.at("radiosity.samples"), "1024");
+    EXPECT_EQ(r.scene.settings.at("radiosity.depth"), "8");
+    EXPECT_EQ(r.scene.settings.at("radiosity.brightness"), "100");
     EXPECT_EQ(error_of("global_settings { radiosity { bogus 1 } }"),
               "scene.pov:1:31: error: found 'bogus', expected a radiosity setting (count, "
               "recursion_limit, brightness ...)");

@@ -292,6 +292,10 @@ class Parser {
     void parse_light(const Token& kw, PovObject& o);
     void parse_global_settings();
     void parse_radiosity();
+    /// A radiosity value within the settings registry's range of `key`; larger ones are
+    /// clamped with a warning.
+    double radiosity_in_range(const Token& at, const std::string& name, std::string_view key,
+                              double v);
     void parse_background();
     void parse_atmospheric(const Token& kw);
     PovSky parse_sky_sphere(); // after the keyword sky_sphere

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/math/hd_math.h"
+#include "core/render/fractal_pattern.h"
 #include "core/render/noise.h"
 #include "core/scene/pattern.h"
 
@@ -141,6 +142,9 @@ SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
         const float m = 2.0f * hdm::fmaxf(fabsf(q.x), hdm::fmaxf(fabsf(q.y), fabsf(q.z)));
         return clamp01(m * m * (3.0f - 2.0f * m));
     }
+    case PatternKind::Mandel:
+    case PatternKind::Julia:
+        return fractal_value(pt.fractal, pt.kind == PatternKind::Julia, p);
     default:
         return 0.0f;
     }

@@ -35,6 +35,8 @@ enum class PatternKind : uint8_t {
     Spiral1,     // spiral bands (param[0] arms) around the z axis
     Spiral2,     // two spirals crossing
     Quilted,     // cushion-shaped cells
+    Mandel,      // the Mandelbrot set in the x-y plane (Pattern::fractal)
+    Julia,       // a Julia set in the x-y plane (Pattern::fractal, its c)
     Function,    // a user function's value (core/scene/function.h): Pattern::program
     Image,       // an image's colour (Pigment only): `image` in Scene::textures
     // Discrete patterns: an index into the list of their entries.
@@ -53,6 +55,26 @@ SHEAF_HD_INLINE bool pattern_is_list(PatternKind k) {
 
 enum class Wave : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
 
+/// POV-Ray's fractal patterns: z -> z^exponent + c from z = p (x, y), c = p (mandel) or a
+/// constant (julia), until |z| > 2 or `iterations`. The magnet patterns iterate
+///   magnet 1: z -> ((z^2 + c - 1) / (2z + c - 2))^2,
+///   magnet 2: z -> ((z^3 + 3(c-1)z + (c-1)(c-2)) / (3z^2 + 3(c-2)z + (c-1)(c-2) + 1))^2
+/// from z = 0 (mandel) or p (julia) until |z| > 100 or z comes within 0.01 of 1.
+/// A point that escapes at step i (from 0) takes its exterior value, one that never does its
+/// interior value:
+///   exterior type 0 factor, 1 i / iterations, 2 Re z * factor, 3 Im z * factor,
+///     4 (Re z)^2 * factor, 5 (Im z)^2 * factor, 6 |z| * factor,
+///     7 (i mod factor) / factor, 8 (i mod (factor + 1)) / factor;
+///   interior type 0 factor, 1 the orbit's least |z| * factor, 2..5 as exterior, 6 |z|^2 * factor.
+struct FractalParams {
+    uint16_t iterations = 1;
+    uint8_t exponent = 2; // 2..33
+    uint8_t magnet = 0;   // 0: z^exponent + c; 1, 2: the magnet formulas
+    uint8_t interior_type = 0, exterior_type = 1;
+    float interior_factor = 1.0f, exterior_factor = 1.0f;
+    float c[2] = {0, 0}; // Julia
+};
+
 struct Pattern {
     PatternKind kind = PatternKind::Gradient;
     Wave wave = Wave::Ramp;
@@ -67,6 +89,7 @@ struct Pattern {
     float param[4] = {0, 0, 0, 0};
     int32_t image = -1;   // Image: index into Scene::textures
     int32_t program = -1; // Function: index into Scene::fn_programs
+    FractalParams fractal; // Mandel, Julia
 };
 
 /// A pigment: a solid colour, or a pattern whose value picks (continuous) or indexes (list

@@ -82,6 +82,7 @@ Pattern lower_pattern(const PovPattern& pt, const Affine& eff) {
     p.wave_exponent = float(pt.wave_exponent);
     p.vector = pt.vector;
     for (int i = 0; i < 4; ++i) p.param[i] = float(pt.param[i]);
+    p.fractal = pt.fractal;
     if (std::fabs(eff.determinant()) > 1e-30f) p.to_pattern = eff.inverse();
     return p;
 }

@@ -62,6 +62,7 @@ struct PovPattern {
     double param[4] = {0, 0, 0, 0};
     std::shared_ptr<const PovImage> image;
     std::shared_ptr<const PovFunction> function; // kind Function
+    FractalParams fractal;                       // kinds Mandel and Julia
 };
 
 struct PovPigment;

@@ -173,7 +173,7 @@ TEST(PovObjects, LegacyGammaComputesInItsOwnSpace) {
 
 TEST(PovObjects, UnsupportedPatternsAreAveragedWithAWarning) {
     const PovResult r =
-        load_text("sphere { 0, 1 pigment { mandel 30 color_map { [0 rgb 0] [1 rgb <1, "
+        load_text("sphere { 0, 1 pigment { tiling 12 color_map { [0 rgb 0] [1 rgb <1, "
                   "0.5, 0>] } } }\n"
                   "box { 0, 1 pigment { checker rgb 1, rgb 0 scale 0.5 } normal { bumps 0.3 } }\n");
     const Material& m = r.scene.materials[r.scene.shape_objects[0].nodes[0].material];
@@ -184,7 +184,7 @@ TEST(PovObjects, UnsupportedPatternsAreAveragedWithAWarning) {
     EXPECT_GE(c.pigment, 0); // checker and bumps are supported
     EXPECT_GE(c.normal, 0);
     ASSERT_EQ(r.warnings.size(), 1u);
-    EXPECT_NE(r.warnings[0].find("scene.pov:1:25: warning: unsupported pigment pattern 'mandel'"),
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:25: warning: unsupported pigment pattern 'tiling'"),
               std::string::npos);
 }
 

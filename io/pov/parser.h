@@ -276,6 +276,12 @@ class Parser {
     /// `supported` whether Sheaf can show it. False (nothing read) when no pattern is next.
     bool parse_pattern_name(PovPattern& pt, int& list, bool& supported);
     /// A pattern modifier (turbulence, frequency, waves, warp ...) or a transform (into local).
+    /// The arguments of `mandel`, `julia` or `magnet` (`keyword`): mandel's iterations,
+    /// julia's constant and iterations, a magnet's type, mandel or julia and theirs
+    /// (io/pov/fractal_patterns.cpp).
+    void parse_fractal(PovPattern& pt, const std::string& keyword);
+    /// `exponent N`, `interior TYPE, FACTOR` or `exterior TYPE, FACTOR` after its keyword.
+    void parse_fractal_modifier(const Token& keyword, FractalParams& f);
     bool parse_pattern_modifier(PovPattern& pt, Affine& local);
     void skip_to_block_end(); // after '{' was read: up to and including its '}'
     bool is_color_start(const Token& t);

@@ -34,6 +34,8 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
         {"square", {PatternKind::Square, 4}},  {"triangular", {PatternKind::Triangular, 6}},
         {"waves", {PatternKind::Waves}},       {"wood", {PatternKind::Wood}},
         {"wrinkles", {PatternKind::Wrinkles}}, {"function", {PatternKind::Function}},
+        {"mandel", {PatternKind::Mandel}},     {"julia", {PatternKind::Julia}},
+        {"magnet", {PatternKind::Mandel}}, // magnet 1 mandel 50, magnet 2 julia <c>, 50
     };
     return m;
 }
@@ -41,10 +43,9 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},           {"cubic", 6},    {"density_file", 0},    {"facets", 0},
-        {"image_pattern", 0}, {"julia", 0},    {"magnet", 0},          {"mandel", 0},
-        {"object", 2},        {"pavement", 0}, {"pigment_pattern", 0}, {"slope", 0},
-        {"tiling", 0},        {"fractal", 0},  {"tiles", 2},
+        {"aoi", 0},           {"cubic", 6},  {"density_file", 0}, {"facets", 0},
+        {"image_pattern", 0}, {"object", 2}, {"pavement", 0},     {"pigment_pattern", 0},
+        {"slope", 0},         {"tiling", 0}, {"fractal", 0},      {"tiles", 2},
     };
     return m;
 }
@@ -79,6 +80,7 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
             supported = pt.function->unsupported.empty();
         }
         if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
+        if (k == "mandel" || k == "julia" || k == "magnet") parse_fractal(pt, k);
         if (k == "quilted") { // control0 and control1 follow as modifiers
         }
         return true;
@@ -88,12 +90,7 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
     // Their arguments: a block (function, object, pigment_pattern ...) or numbers.
     if (is_sym_tok(peek(), "{")) {
         skip_block();
-    } else if (k == "julia") {
-        parse_vector();
-        accept_sym(",");
-        parse_float();
-    } else if (k == "mandel" || k == "magnet" || k == "tiling" || k == "pavement") {
-        if (k == "magnet") parse_float();
+    } else if (k == "tiling" || k == "pavement") {
         if (starts_expression(peek())) parse_float();
     } else if (k == "slope" || k == "aoi") {
         if (starts_expression(peek())) {
@@ -189,17 +186,15 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
                 break;
             }
         }
+    } else if (k == "exponent" || k == "interior" || k == "exterior") {
+        advance();
+        parse_fractal_modifier(t, pt.fractal);
     } else if (k == "noise_generator" || k == "form" || k == "metric" || k == "offset" ||
                k == "control0" || k == "control1" || k == "orientation" || k == "dist_exp" ||
-               k == "accuracy" || k == "max_iteration" || k == "exponent" || k == "interpolate" ||
-               k == "interior" || k == "exterior") {
+               k == "accuracy" || k == "max_iteration" || k == "interpolate") {
         // Shape details of patterns Sheaf draws its own way: read and not used.
         advance();
         if (starts_expression(peek())) parse_expr();
-        if (k == "interior" || k == "exterior") {
-            accept_sym(",");
-            if (starts_expression(peek())) parse_expr();
-        }
     } else if (k == "solid") {
         advance();
     } else {

@@ -59,6 +59,51 @@ TEST(PovTextures, MapEntriesMayStartWithADeclaredFloat) {
     EXPECT_FLOAT_EQ(r.scene.pigment_entries[bozo.first].color[1], 0);
 }
 
+TEST(PovTextures, FractalPatternsTakeTheirArgumentsAndModifiers) {
+    const PovResult r = load_text(
+        "#declare M = pigment { magnet 2 mandel 40 }\n"
+        "sphere { 0, 1 pigment { mandel 50 exponent 4 interior 1, 0.5 exterior 6, 0.01 } }\n"
+        "sphere { 0, 1 pigment { julia <0.3, 0.44>, 30 } normal { julia <-.5, .5> 10 0.6 } }\n"
+        "sphere { 0, 1 pigment { magnet 1 julia <0.3, 0.44> 30 } }\n"
+        "sphere { 0, 1 pigment { M mandel 20 } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Pigment& mandel = r.scene.pigments[size_t(shape_material(r, 0).pigment)];
+    EXPECT_EQ(mandel.pattern.kind, PatternKind::Mandel);
+    EXPECT_EQ(mandel.pattern.fractal.iterations, 50);
+    EXPECT_EQ(mandel.pattern.fractal.exponent, 4);
+    EXPECT_EQ(mandel.pattern.fractal.interior_type, 1);
+    EXPECT_FLOAT_EQ(mandel.pattern.fractal.interior_factor, 0.5f);
+    EXPECT_EQ(mandel.pattern.fractal.exterior_type, 6);
+    EXPECT_FLOAT_EQ(mandel.pattern.fractal.exterior_factor, 0.01f);
+    const Material& julia = shape_material(r, 1);
+    const Pigment& jp = r.scene.pigments[size_t(julia.pigment)];
+    EXPECT_EQ(jp.pattern.kind, PatternKind::Julia);
+    EXPECT_EQ(jp.pattern.fractal.iterations, 30);
+    EXPECT_FLOAT_EQ(jp.pattern.fractal.c[0], 0.3f);
+    EXPECT_FLOAT_EQ(jp.pattern.fractal.c[1], 0.44f);
+    ASSERT_GE(julia.normal, 0); // a fractal normal tilts the surface
+    const Pigment& magnet = r.scene.pigments[size_t(shape_material(r, 2).pigment)];
+    EXPECT_EQ(magnet.pattern.kind, PatternKind::Julia);
+    EXPECT_EQ(magnet.pattern.fractal.magnet, 1);
+    // A declared magnet pigment given another pattern is that pattern, not a magnet.
+    const Pigment& redone = r.scene.pigments[size_t(shape_material(r, 3).pigment)];
+    EXPECT_EQ(redone.pattern.fractal.magnet, 0);
+    EXPECT_EQ(redone.pattern.fractal.iterations, 20);
+    // povray refuses these too.
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { mandel 30 interior 7, 1 } }"),
+              "scene.pov:1:44: error: a fractal pattern's interior type must lie between 0 and 6");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { mandel 30 exponent 34 } }"),
+              "scene.pov:1:44: error: a fractal pattern's exponent must lie between 2 and 33");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { magnet 3 mandel 30 } }"),
+              "scene.pov:1:32: error: a magnet pattern's type must be 1 or 2");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { magnet 1 30 } }"),
+              "scene.pov:1:34: error: found '30', expected mandel or julia");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { mandel 0 } }"),
+              "scene.pov:1:32: error: a fractal pattern's iterations must lie between 1 and 65535");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { mandel 9 exterior 7, 0 } }"),
+              "scene.pov:1:46: error: exterior type 7 needs a factor of 1 or more");
+}
+
 TEST(PovTextures, ListsDefaultsAndPigmentMaps) {
     const PovResult r = load_text(
         "sphere { 0, 1 pigment { checker rgb 1, rgb 0 } }\n"

@@ -282,6 +282,22 @@ TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
                  "1:50", "attribute 'wave' of <pigment> belongs to continuous patterns");
     EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"image\"/></scene>", "1:34",
                  "only a <pigment> takes it");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"bozo\" iterations=\"9\"/></scene>", "1:52",
+                 "belongs to the mandel and julia patterns; this pattern is 'bozo'");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" c=\"0 1\"/></scene>", "1:45",
+                 "belongs to the julia pattern");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"julia\"/></scene>", "1:8",
+                 "needs the attribute 'c'");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" interior=\"7 1\"/></scene>", "1:52",
+                 "attribute 'interior' of <normal>: the type must be a whole number from "
+                 "0 to 6");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" exterior=\"7 0.5\"/></scene>",
+                 "1:52", "type 7 needs a factor of 1 or more");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" exponent=\"40\"/></scene>", "1:52",
+                 "attribute 'exponent' of <normal>");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" magnet=\"1\" exponent=\"3\"/>"
+                 "</scene>",
+                 "1:63", "does not apply to the magnet formulas");
 
     // What a pigment is, and what uses pigments, normals and switches.
     EXPECT_ERROR("<scene><pigment name=\"p\"/></scene>", "1:8",

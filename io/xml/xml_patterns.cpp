@@ -39,6 +39,8 @@ const PatternName kPatterns[] = {
     {"spiral1", PatternKind::Spiral1},
     {"spiral2", PatternKind::Spiral2},
     {"quilted", PatternKind::Quilted},
+    {"mandel", PatternKind::Mandel},
+    {"julia", PatternKind::Julia},
     {"checker", PatternKind::Checker},
     {"hexagon", PatternKind::Hexagon},
     {"brick", PatternKind::Brick},
@@ -179,7 +181,64 @@ Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
             fail_value("mortar", "the mortar's width must be > 0");
         pt.param[0] = size.x, pt.param[1] = size.y, pt.param[2] = size.z, pt.param[3] = mortar;
     }
+    read_fractal(a, kind, pt.fractal);
     return pt;
+}
+
+void SceneReader::read_fractal(Attributes& a, PatternKind kind, FractalParams& f) const {
+    const pugi::xml_node& node = a.node();
+    const bool fractal = kind == PatternKind::Mandel || kind == PatternKind::Julia;
+    auto only_for = [&](const char* attribute, bool applies, const std::string& owner) {
+        if (!applies && node.attribute(attribute))
+            ctx_.fail(node, node.attribute(attribute),
+                      "attribute '" + std::string(attribute) + "' of " + tag(node) +
+                          " belongs to " + owner + "; this pattern is " + quote(name_of(kind)));
+    };
+    for (const char* t : {"iterations", "exponent", "magnet", "interior", "exterior"})
+        only_for(t, fractal, "the mandel and julia patterns");
+    only_for("c", kind == PatternKind::Julia, "the julia pattern");
+    if (!fractal) return;
+    int iterations = 30, exponent = 2, magnet = 0;
+    a.get("iterations", iterations, 1, 65535);
+    a.get("exponent", exponent, 2, 33);
+    a.get("magnet", magnet, 0, 2);
+    f.iterations = uint16_t(iterations), f.exponent = uint8_t(exponent);
+    f.magnet = uint8_t(magnet);
+    if (magnet && node.attribute("exponent"))
+        ctx_.fail(node, node.attribute("exponent"),
+                  "attribute 'exponent' of " + tag(node) +
+                      " does not apply to the magnet formulas (magnet=\"" + std::to_string(magnet) +
+                      "\")");
+    std::vector<float> v;
+    if (kind == PatternKind::Julia) {
+        if (!a.get_numbers("c", v)) a.require("c");
+        if (v.size() != 2)
+            ctx_.fail(node, node.attribute("c"),
+                      "attribute 'c' of " + tag(node) +
+                          ": expected two numbers (the complex "
+                          "constant's real and imaginary parts), found " +
+                          std::to_string(v.size()));
+        f.c[0] = v[0], f.c[1] = v[1];
+    }
+    // interior="TYPE FACTOR", exterior="TYPE FACTOR" (core/scene/pattern.h lists the types).
+    for (const bool inside : {true, false}) {
+        const char* name = inside ? "interior" : "exterior";
+        if (!a.get_numbers(name, v)) continue;
+        const int most = inside ? 6 : 8;
+        auto fail = [&](const std::string& why) {
+            ctx_.fail(node, node.attribute(name),
+                      "attribute '" + std::string(name) + "' of " + tag(node) + ": " + why);
+        };
+        if (v.size() != 2)
+            fail("expected a type and a factor, found " + std::to_string(v.size()) + " numbers");
+        if (!(v[0] >= 0 && v[0] <= float(most) && v[0] == std::floor(v[0])))
+            fail("the type must be a whole number from 0 to " + std::to_string(most));
+        if (!inside && ((v[0] == 7 && !(v[1] >= 1)) || (v[0] == 8 && !(v[1] > 0))))
+            fail(v[0] == 7 ? "type 7 needs a factor of 1 or more"
+                           : "type 8 needs a factor above 0");
+        (inside ? f.interior_type : f.exterior_type) = uint8_t(v[0]);
+        (inside ? f.interior_factor : f.exterior_factor) = v[1];
+    }
 }
 
 void SceneReader::place_pattern(const pugi::xml_node& node, const Affine& placement,

@@ -240,6 +240,40 @@ std::string flat_scene(const std::string& defs, const std::string& material) {
 </scene>)";
 }
 
+TEST(XmlPatterns, FractalPatternsTakeTheirAttributes) {
+    const io::SceneFile file = io::parse_xml_scene(R"(<scene>
+  <pigment name="set" pattern="mandel" iterations="50" exponent="3" interior="1 0.5"
+           exterior="6 0.01">
+    <entry value="0" color="0"/> <entry value="1" color="1"/>
+  </pigment>
+  <normal name="field" pattern="julia" c="0.3 0.44" magnet="2" amount="0.3"/>
+  <pigment name="plain" pattern="mandel"><entry value="0" color="0"/></pigment>
+</scene>)",
+                                                   "fractals.xml");
+    const Scene& s = file.scene;
+    ASSERT_EQ(s.pigments.size(), 2u);
+    const FractalParams& f = s.pigments[0].pattern.fractal;
+    EXPECT_EQ(s.pigments[0].pattern.kind, PatternKind::Mandel);
+    EXPECT_EQ(f.iterations, 50);
+    EXPECT_EQ(f.exponent, 3);
+    EXPECT_EQ(f.interior_type, 1);
+    EXPECT_FLOAT_EQ(f.interior_factor, 0.5f);
+    EXPECT_EQ(f.exterior_type, 6);
+    EXPECT_FLOAT_EQ(f.exterior_factor, 0.01f);
+    ASSERT_EQ(s.normal_patterns.size(), 1u);
+    const Pattern& julia = s.normal_patterns[0].pattern;
+    EXPECT_EQ(julia.kind, PatternKind::Julia);
+    EXPECT_EQ(julia.fractal.magnet, 2);
+    EXPECT_FLOAT_EQ(julia.fractal.c[0], 0.3f);
+    EXPECT_FLOAT_EQ(julia.fractal.c[1], 0.44f);
+    // POV-Ray's defaults, with 30 iterations where POV-Ray requires a number.
+    const FractalParams& d = s.pigments[1].pattern.fractal;
+    EXPECT_EQ(d.iterations, 30);
+    EXPECT_EQ(d.exponent, 2);
+    EXPECT_EQ(d.interior_type, 0);
+    EXPECT_EQ(d.exterior_type, 1);
+}
+
 TEST(XmlPatterns, ACheckerPigmentGivesTwoColours) {
     const Frame f = render(flat_scene(R"(<pigment name="grid" pattern="checker">
     <entry color="1 0 0"/> <entry color="0 0 1"/>

@@ -47,6 +47,7 @@ SCENES = [
     ("examples/objects/blob1a.pov", "exact"),
     ("examples/objects/blob1b.pov", "exact"),
     ("examples/objects/isosurfaces.pov", "exact"),
+    ("examples/textures/patterns/mandel.pov", "exact"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

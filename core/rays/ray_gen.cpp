@@ -24,6 +24,38 @@ void emit(size_t hits, RayBatch& out, const Count& count, const Fill& fill) {
         "raygen.fill", hits, [&](size_t i) { fill(i, offset[i]); }, 1024);
 }
 
+// As emit, for elements that give at most one ray each (shadow rays: one per (hit, light)),
+// which can be many times the hits: a byte per element says whether it gives its ray, blocks
+// of elements are counted, scanned and filled in element order, so the rays come out in the
+// order emit gives them, and `fill` runs only where `gives` said yes.
+template <class Gives, class Fill>
+void emit_at_most_one(size_t elements, RayBatch& out, const Gives& gives, const Fill& fill) {
+    constexpr size_t kBlock = 4096;
+    const size_t blocks = (elements + kBlock - 1) / kBlock;
+    std::vector<uint8_t> on(elements);
+    std::vector<uint32_t> first(blocks);
+    parallel_for(
+        "raygen.count", blocks,
+        [&](size_t b) {
+            const size_t end = std::min(elements, (b + 1) * kBlock);
+            uint32_t n = 0;
+            for (size_t e = b * kBlock; e < end; ++e) n += on[e] = gives(e) ? 1 : 0;
+            first[b] = n;
+        },
+        1);
+    const uint32_t total = exclusive_scan_inplace(first);
+    out.resize(total);
+    parallel_for(
+        "raygen.fill", blocks,
+        [&](size_t b) {
+            const size_t end = std::min(elements, (b + 1) * kBlock);
+            uint32_t slot = first[b];
+            for (size_t e = b * kBlock; e < end; ++e)
+                if (on[e]) fill(e, slot++);
+        },
+        1);
+}
+
 RaySlots slots(RayBatch& b) {
     return {b.rays.data(), b.pixel.data(), b.weight.data(), b.light.data()};
 }
@@ -50,11 +82,11 @@ void generate_shadow_rays(const SceneView& scene, const std::vector<SurfaceHit>&
                           const RayGenParams& p, RayBatch& out) {
     const ShadowLayout layout = shadow_layout(scene, hits);
     check_batch_bound(layout.elements(), RayType::Shadow);
-    emit(
+    emit_at_most_one(
         layout.elements(), out,
-        [&](size_t e) { return shadow_ray_count(scene, hits.data(), layout, e, p); },
+        [&](size_t e) { return shadow_ray_count(scene, hits.data(), layout, e, p) != 0; },
         [&](size_t e, uint32_t slot) {
-            shadow_ray_fill(scene, hits.data(), layout, e, slot, p, slots(out));
+            shadow_ray_write(scene, hits.data(), layout, e, slot, p, slots(out));
         });
 }
 

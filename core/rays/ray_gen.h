@@ -134,16 +134,16 @@ SHEAF_HD_INLINE uint32_t shadow_ray_count(const SceneView& scene, const SurfaceH
     return !l.shadowless && lights_point(l, hits[hit], p) ? 1u : 0u;
 }
 
-SHEAF_HD_INLINE void shadow_ray_fill(const SceneView& scene, const SurfaceHit* hits,
-                                     const ShadowLayout& layout, size_t e, uint32_t slot,
-                                     const RayGenParams& p, const RaySlots& out) {
+/// Writes the shadow ray of element e, which shadow_ray_count gave 1.
+SHEAF_HD_INLINE void shadow_ray_write(const SceneView& scene, const SurfaceHit* hits,
+                                      const ShadowLayout& layout, size_t e, uint32_t slot,
+                                      const RayGenParams& p, const RaySlots& out) {
     size_t hit;
     uint32_t li;
     float scale;
-    if (!layout.pair(hits, e, hit, li, scale)) return;
+    layout.pair(hits, e, hit, li, scale);
     const SurfaceHit& h = hits[hit];
     const Light& l = scene.lights[li];
-    if (l.shadowless || !lights_point(l, h, p)) return;
     // The ray starts at the light and ends just above the surface.
     const Vec3 target = h.position + h.geo_normal * p.epsilon;
     const LightSample ls = sample_light(l, target, p.far);
@@ -157,6 +157,13 @@ SHEAF_HD_INLINE void shadow_ray_fill(const SceneView& scene, const SurfaceHit* h
     out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h, ls.to_light,
                                                    ls.radiance * scale);
     out.light[slot] = li;
+}
+
+SHEAF_HD_INLINE void shadow_ray_fill(const SceneView& scene, const SurfaceHit* hits,
+                                     const ShadowLayout& layout, size_t e, uint32_t slot,
+                                     const RayGenParams& p, const RaySlots& out) {
+    if (shadow_ray_count(scene, hits, layout, e, p))
+        shadow_ray_write(scene, hits, layout, e, slot, p, out);
 }
 
 /// The `ao_samples` rays of hit h from `slot` on; its Halton points start at its pixel index

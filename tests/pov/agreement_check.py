@@ -48,6 +48,7 @@ SCENES = [
     ("examples/objects/blob1b.pov", "exact"),
     ("examples/objects/isosurfaces.pov", "exact"),
     ("examples/textures/patterns/mandel.pov", "exact"),
+    ("examples/objects/bezier.pov", "exact"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

@@ -136,7 +136,9 @@ bool Parser::parse_bicubic_patch(const Token& kw, PovObject& o) {
         // the surface is seen from both sides).
         if (!(length_squared(n) > 1e-24f) || !std::isfinite(length_squared(n))) n = face_sum[k];
         if (dot(n, face_sum[k]) < 0) n = -n;
-        n = length_squared(n) > 0 ? normalize(n) : Vec3(0, 1, 0);
+        // Scaled first: a patch thousands of units across overflows float's squares.
+        const float big = std::max({std::fabs(n.x), std::fabs(n.y), std::fabs(n.z)});
+        n = big > 0 && std::isfinite(big) ? normalize(n / big) : Vec3(0, 1, 0);
     }
     o.kind = PovKind::Mesh;
     o.mesh = std::move(mesh);

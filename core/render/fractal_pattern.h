@@ -11,6 +11,12 @@ namespace sheaf {
 
 namespace fractal_detail {
 
+// The whole part of factor k as POV-Ray takes it for the modulo types, within 0 .. 2^32 - 2
+// (a float beyond an unsigned's range has no defined conversion).
+SHEAF_HD_INLINE unsigned whole(double k) {
+    return k >= 1.0 ? (k < 4294967294.0 ? unsigned(k) : 4294967294u) : 0u;
+}
+
 // The value of a point that escaped at step `step` with z = (a, b).
 SHEAF_HD_INLINE double exterior(const FractalParams& f, int step, double a, double b) {
     const double k = f.exterior_factor;
@@ -29,12 +35,11 @@ SHEAF_HD_INLINE double exterior(const FractalParams& f, int step, double a, doub
         return b * b * k;
     case 6:
         return ::sqrt(a * a + b * b) * k;
-    case 7: { // the readers keep the factor at 1 or more
-        const unsigned m = unsigned(k);
-        return m ? double(unsigned(step) % m) / k : 0.0;
+    case 7: // the readers keep the factor at 1 or more
+    case 8: { // and above 0
+        const unsigned m = whole(k) + (f.exterior_type == 8 ? 1u : 0u);
+        return m && k > 0 ? double(unsigned(step) % m) / k : 0.0;
     }
-    case 8:
-        return double(unsigned(step) % (unsigned(k) + 1u)) / k;
     }
     return 0.0;
 }

@@ -17,6 +17,11 @@ SHEAF_HD_INLINE unsigned whole(double k) {
     return k >= 1.0 ? (k < 4294967294.0 ? unsigned(k) : 4294967294u) : 0u;
 }
 
+// Types 2 to 5 of both: the real part of z = (a, b), its imaginary part, their squares.
+SHEAF_HD_INLINE double part(int type, double a, double b) {
+    return type == 2 ? a : type == 3 ? b : type == 4 ? a * a : b * b;
+}
+
 // The value of a point that escaped at step `step` with z = (a, b).
 SHEAF_HD_INLINE double exterior(const FractalParams& f, int step, double a, double b) {
     const double k = f.exterior_factor;
@@ -26,13 +31,10 @@ SHEAF_HD_INLINE double exterior(const FractalParams& f, int step, double a, doub
     case 1:
         return double(step) / double(f.iterations);
     case 2:
-        return a * k;
     case 3:
-        return b * k;
     case 4:
-        return a * a * k;
     case 5:
-        return b * b * k;
+        return part(f.exterior_type, a, b) * k;
     case 6:
         return ::sqrt(a * a + b * b) * k;
     case 7: // the readers keep the factor at 1 or more
@@ -54,13 +56,10 @@ SHEAF_HD_INLINE double interior(const FractalParams& f, double a, double b, doub
     case 1:
         return ::sqrt(least) * k;
     case 2:
-        return a * k;
     case 3:
-        return b * k;
     case 4:
-        return a * a * k;
     case 5:
-        return b * b * k;
+        return part(f.interior_type, a, b) * k;
     case 6:
         return (a * a + b * b) * k;
     }

@@ -181,23 +181,16 @@ Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
             fail_value("mortar", "the mortar's width must be > 0");
         pt.param[0] = size.x, pt.param[1] = size.y, pt.param[2] = size.z, pt.param[3] = mortar;
     }
-    read_fractal(a, kind, pt.fractal);
+    const bool fractal = kind == PatternKind::Mandel || kind == PatternKind::Julia;
+    for (const char* t : {"iterations", "exponent", "magnet", "interior", "exterior"})
+        only_for(t, fractal, "the mandel and julia patterns");
+    only_for("c", kind == PatternKind::Julia, "the julia pattern");
+    if (fractal) read_fractal(a, kind, pt.fractal);
     return pt;
 }
 
 void SceneReader::read_fractal(Attributes& a, PatternKind kind, FractalParams& f) const {
     const pugi::xml_node& node = a.node();
-    const bool fractal = kind == PatternKind::Mandel || kind == PatternKind::Julia;
-    auto only_for = [&](const char* attribute, bool applies, const std::string& owner) {
-        if (!applies && node.attribute(attribute))
-            ctx_.fail(node, node.attribute(attribute),
-                      "attribute '" + std::string(attribute) + "' of " + tag(node) +
-                          " belongs to " + owner + "; this pattern is " + quote(name_of(kind)));
-    };
-    for (const char* t : {"iterations", "exponent", "magnet", "interior", "exterior"})
-        only_for(t, fractal, "the mandel and julia patterns");
-    only_for("c", kind == PatternKind::Julia, "the julia pattern");
-    if (!fractal) return;
     int iterations = 30, exponent = 2, magnet = 0;
     a.get("iterations", iterations, 1, 65535);
     a.get("exponent", exponent, 2, 33);

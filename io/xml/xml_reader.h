@@ -61,7 +61,8 @@ class SceneReader {
     /// phase, wave, wave_exponent and the kind's own (vector, arms, agate_turb, brick_size,
     /// mortar). An attribute of another kind is an error naming the kind it belongs to.
     Pattern read_pattern(Attributes& a, PatternKind kind) const;
-    /// The mandel and julia attributes: iterations, exponent, magnet, c, interior, exterior.
+    /// A mandel or julia pattern's attributes: iterations, exponent, magnet, c, interior,
+    /// exterior (read_pattern has checked that no other pattern has them).
     void read_fractal(Attributes& a, PatternKind kind, FractalParams& f) const;
     /// Sets pattern.to_pattern from the placement (pattern space -> world) the transform
     /// children gave; a singular placement is an error at `node`.

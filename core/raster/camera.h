@@ -1,8 +1,11 @@
 // The camera as the pipeline uses it: an orthonormal basis and the pixel-to-ray mapping shared
-// by the rasteriser and by ray-cast primary rays. Perspective or orthographic, with lens shift.
+// by the rasteriser and by ray-cast primary rays. Perspective or orthographic, with lens shift;
+// POV-Ray's other camera types (fisheye, panoramic, cylinder ...) map pixels to rays that no
+// plane holds, so their primary visibility is traced (`traced`) with the same rays.
 #pragma once
 
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 #include "core/scene/scene.h"
 
 #include <cfloat>
@@ -16,6 +19,12 @@ struct CameraFrame {
     float half_y = 1, half_x = 1;
     float shift_x = 0, shift_y = 0; // in normalised device units (2 = one image width/height)
     int width = 1, height = 1;
+    // Traced projections: which one, the angles in radians and POV-Ray's lengths of right, up
+    // and direction (Camera).
+    Projection projection = Projection::Perspective;
+    bool traced = false;
+    float angle = 0, v_angle = 0;
+    float right_length = 1, up_length = 1, direction_length = 1;
 
     /// Normalised device coordinates of the centre of pixel (x, y); y = 0 is the top row.
     SHEAF_HD void ndc(int x, int y, float& sx, float& sy) const {
@@ -23,20 +32,106 @@ struct CameraFrame {
         sy = (1.0f - 2.0f * (float(y) + 0.5f) / float(height) + shift_y) * half_y;
     }
 
-    /// The primary ray through the centre of pixel (x, y).
-    SHEAF_HD Ray pixel_ray(int x, int y) const {
-        float sx, sy;
-        ndc(x, y, sx, sy);
-        Ray r;
-        if (ortho) {
-            r.origin = origin + right * sx + up * sy;
-            r.dir = forward;
-        } else {
-            r.origin = origin;
-            r.dir = normalize(forward + right * sx + up * sy);
-        }
+    /// The primary ray through the centre of pixel (x, y); false where the projection has none
+    /// (outside a fisheye's circle, below an omnimax dome's edge): the pixel stays black.
+    SHEAF_HD bool camera_ray(int x, int y, Ray& r) const {
         r.tmin = 0.0f;
         r.tmax = FLT_MAX;
+        r.origin = origin;
+        if (!traced) {
+            float sx, sy;
+            ndc(x, y, sx, sy);
+            if (ortho) {
+                r.origin = origin + right * sx + up * sy;
+                r.dir = forward;
+            } else {
+                r.dir = normalize(forward + right * sx + up * sy);
+            }
+            return true;
+        }
+        // u across the image and v up it, each from -1/2 to 1/2 (POV-Ray's x0 and y0).
+        const float u = (float(x) + 0.5f) / float(width) - 0.5f + 0.5f * shift_x;
+        const float v = 0.5f - (float(y) + 0.5f) / float(height) + 0.5f * shift_y;
+        Vec3 d;
+        switch (projection) {
+        case Projection::Fisheye:
+        case Projection::Omnimax: {
+            float px = 2.0f * u, py = 2.0f * v;
+            if (projection == Projection::Fisheye) {
+                px *= right_length, py *= up_length;
+            } else {
+                // POV-Ray fits the dome's circle to the image's aspect ratio.
+                constexpr float kDome = 1.283458f;
+                const float aspect = right_length / up_length;
+                if (aspect > kDome)
+                    px *= aspect / kDome, py = (py - 1.0f) / kDome + 1.0f;
+                else if (aspect > 1.0f)
+                    py = (py - 1.0f) / aspect + 1.0f;
+                else
+                    py /= aspect;
+            }
+            const float rad = sqrtf(px * px + py * py);
+            if (!(rad <= 1.0f)) return false;
+            const float phi = rad > 0 ? hdm::atan2f(py, px) : 0.0f;
+            const float theta =
+                projection == Projection::Fisheye
+                    ? rad * 0.5f * angle
+                    : rad * (1.411269f + rad * rad * (-0.09439f + 0.25674f * rad * rad));
+            const float st = hdm::sinf(theta), ct = hdm::cosf(theta);
+            // An omnimax dome sees no lower than 45 degrees below its axis.
+            if (projection == Projection::Omnimax && hdm::sinf(phi) * st < -ct) return false;
+            d = right * (hdm::cosf(phi) * st) + up * (hdm::sinf(phi) * st) + forward * ct;
+            break;
+        }
+        case Projection::Panoramic: {
+            const float a = (0.5f - u) * kPi, b = v * kPi;
+            const float t =
+                fabsf(0.5f * kPi - fabsf(b)) < 1e-6f ? copysignf(1e7f, b) : hdm::tanf(b);
+            d = right * (hdm::cosf(a) * right_length) + up * (t * up_length) +
+                forward * (hdm::sinf(a) * direction_length);
+            break;
+        }
+        case Projection::UltraWideAngle: {
+            const float a = u * angle, b = v * angle * (up_length / right_length);
+            d = right * hdm::sinf(a) + up * hdm::sinf(b) + forward * (hdm::cosf(a) * hdm::cosf(b));
+            break;
+        }
+        case Projection::Cylinder1:
+        case Projection::Cylinder3: {
+            const float a = u * angle, h = v * up_length;
+            d = right * hdm::sinf(a) + forward * hdm::cosf(a);
+            if (projection == Projection::Cylinder1)
+                d = d + up * h;
+            else
+                r.origin = origin + up * h;
+            break;
+        }
+        case Projection::Cylinder2:
+        case Projection::Cylinder4: {
+            const float b = v * angle, w = u * right_length;
+            d = up * hdm::sinf(b) + forward * hdm::cosf(b);
+            if (projection == Projection::Cylinder2)
+                d = d + right * w;
+            else
+                r.origin = origin + right * w;
+            break;
+        }
+        default: { // Spherical: latitude v, then longitude u about up
+            const float a = u * angle, b = v * v_angle;
+            d = (forward * hdm::cosf(a) + right * hdm::sinf(a)) * hdm::cosf(b) + up * hdm::sinf(b);
+            break;
+        }
+        }
+        const float len = length(d);
+        if (!(len > 0) || !(len <= FLT_MAX)) return false;
+        r.dir = d / len;
+        return true;
+    }
+
+    /// The primary ray through the centre of pixel (x, y) of a projection that has one there.
+    SHEAF_HD Ray pixel_ray(int x, int y) const {
+        Ray r;
+        camera_ray(x, y, r);
         return r;
     }
 };
@@ -55,6 +150,13 @@ inline CameraFrame make_camera_frame(const Camera& c, int width, int height) {
     f.shift_y = 2.0f * c.shift_y;
     f.width = width;
     f.height = height;
+    f.projection = c.projection;
+    f.traced = traced_projection(c.projection);
+    f.angle = c.angle_degrees * kPi / 180.0f;
+    f.v_angle = c.v_angle_degrees * kPi / 180.0f;
+    f.right_length = c.right_length;
+    f.up_length = c.up_length;
+    f.direction_length = c.direction_length;
     return f;
 }
 

@@ -10,9 +10,17 @@
 
 namespace sheaf {
 
-/// Diffuse: radiosity's gather rays (closest hit, like reflection and refraction).
-enum class RayType : uint8_t { Shadow = 0, Reflection = 1, Refraction = 2, Ao = 3, Diffuse = 4 };
-constexpr int kRayTypeCount = 5;
+/// Diffuse: radiosity's gather rays (closest hit, like reflection and refraction). Camera: the
+/// primary rays of the projections that cannot be rasterised (core/raster/camera.h).
+enum class RayType : uint8_t {
+    Shadow = 0,
+    Reflection = 1,
+    Refraction = 2,
+    Ao = 3,
+    Diffuse = 4,
+    Camera = 5
+};
+constexpr int kRayTypeCount = 6;
 
 inline const char* ray_type_name(RayType t) {
     switch (t) {
@@ -26,6 +34,8 @@ inline const char* ray_type_name(RayType t) {
         return "ao";
     case RayType::Diffuse:
         return "diffuse";
+    case RayType::Camera:
+        return "camera";
     }
     return "?";
 }

@@ -80,11 +80,13 @@ struct PrimarySample {
 };
 
 /// Sample i (x = i % W, y = i / W) with visibility key `vis`: the pixel's camera ray meets the
-/// visible triangle's plane (or the analytic primitive) at the exact position.
+/// visible triangle's plane (or the analytic primitive) at the exact position. A sample the
+/// projection has no ray for is black.
 SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const CameraFrame& cam, int W,
                                              size_t i, uint64_t vis) {
     PrimarySample out;
-    const Ray ray = cam.pixel_ray(int(i % size_t(W)), int(i / size_t(W)));
+    Ray ray;
+    if (!cam.camera_ray(int(i % size_t(W)), int(i / size_t(W)), ray)) return out; // black
     if (vis == kEmptyPixel) {
         out.radiance = leave_scene(scene, ray.origin, ray.dir, Vec3(1.0f));
         return out;

@@ -10,7 +10,7 @@ namespace sheaf {
 
 void declare_frame_keys(Stats& st) {
     for (const char* k : {"rays.primary", "rays.shadow", "rays.reflection", "rays.refraction",
-                          "rays.ao", "rays.diffuse"})
+                          "rays.ao", "rays.diffuse", "rays.camera"})
         st.set(k, 0);
     for (const char* k :
          {"time_ms.raster", "time_ms.gbuffer", "time_ms.ray_creation", "time_ms.hashing",

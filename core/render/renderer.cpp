@@ -90,11 +90,45 @@ class FramePipeline {
             256);
     }
 
-    // Rasterised primary visibility, resolved to surface hits and the primary passes.
+    // Projections no plane holds: every sample's camera ray is traced like a reflection ray
+    // (through the ray hierarchy, objects without an image skipped), and its closest hit
+    // becomes the sample's visibility key.
+    void trace_camera(const CameraFrame& cam, std::vector<uint64_t>& vis) {
+        vis.assign(size_t(W_) * H_, kEmptyPixel);
+        RayBatch b(RayType::Camera, memory_);
+        {
+            PhaseTimer t(st_, "time_ms.ray_creation");
+            std::vector<uint32_t> slot(vis.size());
+            std::vector<Ray> rays(vis.size());
+            std::vector<uint8_t> has(vis.size());
+            parallel_for(
+                "camera.rays", vis.size(),
+                [&](size_t i) { has[i] = cam.camera_ray(int(i % W_), int(i / W_), rays[i]); },
+                1024);
+            uint32_t count = 0;
+            for (size_t i = 0; i < vis.size(); ++i) slot[i] = count, count += has[i];
+            b.resize(count);
+            for (size_t i = 0; i < vis.size(); ++i)
+                if (has[i]) {
+                    b.rays[slot[i]] = rays[i];
+                    b.pixel[slot[i]] = uint32_t(i);
+                    b.weight[slot[i]] = Vec3(1.0f);
+                }
+        }
+        TraceResult r;
+        trace_batch(scene_, *units_, b, s_, st_, memory_, r);
+        count_tests(b, r);
+        for (size_t i = 0; i < b.size(); ++i) vis[b.pixel[i]] = r.closest[i];
+    }
+
+    // Primary visibility (rasterised, or traced for the projections that need it), resolved to
+    // surface hits and the primary passes.
     std::vector<SurfaceHit> primary() {
         const CameraFrame cam = make_camera_frame(scene_.camera, W_, H_);
         std::vector<uint64_t> vis;
-        {
+        if (cam.traced) {
+            trace_camera(cam, vis);
+        } else {
             PhaseTimer t(st_, "time_ms.raster");
             rasterize(scene_, cam, vis);
             cast_analytic(cam, vis);

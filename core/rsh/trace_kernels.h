@@ -48,11 +48,13 @@ SHEAF_HD_INLINE bool passes(const SceneView& scene, bool shadow, uint32_t prim) 
 }
 
 /// Objects without shadows let shadow and AO rays pass; objects without reflections are not
-/// seen by reflection rays: the object flags a batch of this type skips.
+/// seen by reflection rays, objects without an image not by camera rays: the object flags a
+/// batch of this type skips.
 SHEAF_HD_INLINE uint8_t skip_flags(RayType type) {
-    return any_hit_query(type)              ? uint8_t(kNoShadow)
+    return any_hit_query(type)           ? uint8_t(kNoShadow)
            : type == RayType::Reflection ? uint8_t(kNoReflection)
-                                           : uint8_t(0);
+           : type == RayType::Camera     ? uint8_t(kNoImage)
+                                         : uint8_t(0);
 }
 
 /// brute: ray i against every primitive; any-hit queries stop at the first opaque hit.

@@ -234,6 +234,15 @@ void Scene::validate() const {
     if (c.projection == Projection::Orthographic &&
         !(c.ortho_height > 0 && std::isfinite(c.ortho_height)))
         throw SceneError("an orthographic camera needs a view height > 0");
+    if (traced_projection(c.projection)) {
+        if (!(c.angle_degrees > 0 && c.angle_degrees <= 3600) ||
+            !(c.v_angle_degrees > 0 && c.v_angle_degrees <= 3600))
+            throw SceneError("the camera's angles must lie in (0, 3600] degrees");
+        for (float l : {c.right_length, c.up_length, c.direction_length})
+            if (!(l > 0 && l < 1e6f))
+                throw SceneError("the camera's right, up and direction lengths must be finite "
+                                 "numbers > 0");
+    }
     if (!std::isfinite(c.shift_x) || !std::isfinite(c.shift_y))
         throw SceneError("the camera's shift is not finite");
     if (!(c.aspect >= 0 && c.aspect < 1e6f))

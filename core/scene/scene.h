@@ -97,7 +97,27 @@ struct Light {
     bool shadowless = false; // lights without shadow rays
 };
 
-enum class Projection { Perspective, Orthographic };
+/// Perspective and orthographic views are rasterised. The others are POV-Ray's camera types
+/// whose pixels do not map to a plane: their primary rays are traced (core/raster/camera.h).
+enum class Projection {
+    Perspective,
+    Orthographic,
+    Fisheye,        // angle: the field of view across the image circle
+    UltraWideAngle, // angle: horizontal; vertical angle * up / right
+    Omnimax,        // a 180-degree fisheye squeezed for a dome
+    Panoramic,      // 180 degrees across, tangent up and down
+    Cylinder1,      // vertical cylinder, fixed eye; angle: horizontal
+    Cylinder2,      // horizontal cylinder, fixed eye; angle: vertical
+    Cylinder3,      // vertical cylinder, eye moving along it
+    Cylinder4,      // horizontal cylinder, eye moving along it
+    Spherical,      // angle: horizontal, v_angle: vertical
+};
+constexpr int kProjectionCount = 11;
+
+/// The projections whose primary visibility is traced rather than rasterised.
+inline bool traced_projection(Projection p) {
+    return p != Projection::Perspective && p != Projection::Orthographic;
+}
 
 struct Camera {
     Vec3 position{0, 0, 5};
@@ -113,6 +133,12 @@ struct Camera {
     float aspect = 0;
     // The image mirrored left to right (POV-Ray's right-handed cameras: right -x).
     bool mirror = false;
+    // Traced projections only. The angles in degrees (POV-Ray's camera `angle`: 90 by default;
+    // spherical: 360 across and 180 up and down), and POV-Ray's lengths of right, up and
+    // direction, which these projections read as the shape of the view.
+    float angle_degrees = 90.0f;
+    float v_angle_degrees = 180.0f;
+    float right_length = 1.0f, up_length = 1.0f, direction_length = 1.0f;
 };
 
 struct Object {

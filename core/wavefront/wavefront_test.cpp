@@ -145,6 +145,25 @@ TEST(Wavefront, ProceduralTexturesFlagsFogAndSkyAreIdentical) {
     EXPECT_GT(mean(f), 0.05);
 }
 
+TEST(Wavefront, TracedProjectionsAreIdentical) {
+    // Camera rays through the ray hierarchy instead of the rasteriser: every projection on
+    // triangles, analytic shapes and CSG, objects without an image, under the variants.
+    for (int p = 2; p < kProjectionCount; ++p) {
+        Scene s = p % 2 ? test::csg_scene() : test::procedural_scene();
+        s.camera.projection = Projection(p);
+        s.camera.angle_degrees = 150;
+        const PreparedScene scene = prepare_scene(s);
+        const Frame f = expect_identical(scene, "projection " + std::to_string(p), {}, 24, 20);
+        EXPECT_GT(f.stats.get("rays.camera"), 0);
+        EXPECT_GT(mean(f), 0.02);
+    }
+    Scene s = test::csg_scene();
+    s.camera.projection = Projection::Fisheye;
+    const PreparedScene fisheye = prepare_scene(s);
+    for (const SettingList& kv : variants()) expect_identical(fisheye, "fisheye", kv, 24, 20);
+    expect_identical(fisheye, "fisheye aa", {{"aa.samples", "2"}}, 16, 12);
+}
+
 TEST(Wavefront, EmptyAndDegenerateFramesAreIdentical) {
     Scene s; // lights and no shadow casters in view, the camera inside the scene
     Material m;

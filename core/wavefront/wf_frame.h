@@ -74,8 +74,41 @@ template <class Exec> class DeviceFrame {
         if (progress_ && !progress_(done)) throw RenderError("cancelled");
     }
 
-    // Rasterised primary visibility with the analytic objects merged in, resolved to surface
-    // hits and the primary passes.
+    // Projections no plane holds: every sample's camera ray is traced through the ray
+    // hierarchy (objects without an image skipped), its closest hit the sample's visibility key.
+    void trace_camera(const CameraFrame& cam, uint64_t* vis) {
+        const size_t samples = size_t(W_) * H_;
+        const int W = W_;
+        clock_.start("ray_creation");
+        fill(ex_, vis, samples, kEmptyPixel);
+        DeviceBuffer<uint32_t, Exec> slot_buf(ex_, samples);
+        uint32_t* slot = slot_buf.data();
+        const uint32_t total = count_and_scan(
+            ex_, "raygen.count", samples, slot, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
+                Ray r;
+                return cam.camera_ray(int(i % size_t(W)), int(i / size_t(W)), r) ? 1u : 0u;
+            });
+        DeviceBatch<Exec> b(ex_, RayType::Camera, total);
+        const RaySlots slots = b.slots();
+        ex_.launch("raygen.camera", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
+            Ray r;
+            if (!cam.camera_ray(int(i % size_t(W)), int(i / size_t(W)), r)) return;
+            slots.rays[slot[i]] = r;
+            slots.pixel[slot[i]] = uint32_t(i);
+            slots.weight[slot[i]] = Vec3(1.0f);
+        });
+        clock_.stop("ray_creation");
+        DeviceTraceResult<Exec> r;
+        tracer_->trace(b, r);
+        count_tests(b, r);
+        const uint32_t* pixel = b.pixel.data();
+        const uint64_t* closest = r.closest.data();
+        ex_.launch("raygen.camera_hits", b.n,
+                   [=] SHEAF_HD_LAMBDA(size_t i) { vis[pixel[i]] = closest[i]; });
+    }
+
+    // Primary visibility, resolved to surface hits and the primary passes: rasterised with the
+    // analytic objects merged in, or traced for the projections that need it.
     DeviceHits<Exec> primary() {
         const CameraFrame cam = make_camera_frame(host_.camera, W_, H_);
         const size_t samples = size_t(W_) * H_;
@@ -83,7 +116,9 @@ template <class Exec> class DeviceFrame {
         const SceneView scene = scene_;
         DeviceBuffer<uint64_t, Exec> vis_buf(ex_, samples);
         uint64_t* vis = vis_buf.data();
-        {
+        if (cam.traced) {
+            trace_camera(cam, vis);
+        } else {
             clock_.start("raster");
             fill(ex_, vis, samples, kEmptyPixel);
             const size_t tris = host_.triangle_count();

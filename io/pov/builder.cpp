@@ -233,7 +233,7 @@ struct Builder {
         // POV-Ray keeps the camera's handedness through look_at: right -x (a right-handed
         // camera) shows the image mirrored.
         const bool left_handed = dot(cross(up, dir), right) >= 0;
-        if (c.angle > 0 && c.angle < 180 && !c.orthographic)
+        if (c.angle > 0 && c.angle < 180 && c.projection == Projection::Perspective)
             dir = normalize(dir) * (0.5f * length(right) / std::tan(float(c.angle * M_PI / 360)));
         if (c.has_look_at && length(c.look_at - loc) > 0) {
             const float dl = length(dir), rl = length(right), ul = length(up);
@@ -259,8 +259,20 @@ struct Builder {
         if (rl > 0 && ul > 0 && std::isfinite(rl / ul) &&
             std::fabs(rl / ul - image) > 1e-3f * image)
             out.aspect = rl / ul;
-        if (c.orthographic) {
-            out.projection = Projection::Orthographic;
+        out.projection = c.projection;
+        if (traced_projection(c.projection)) {
+            // The angle is the projection's own (not a direction's length); the vectors'
+            // lengths shape the view as they are.
+            const bool spherical = c.projection == Projection::Spherical;
+            out.angle_degrees = float(c.angle > 0 ? c.angle : spherical ? 360 : 90);
+            out.v_angle_degrees = float(c.v_angle >= 0 ? c.v_angle
+                                        : c.angle > 0  ? 0.5 * c.angle
+                                                       : 180);
+            if (!(out.v_angle_degrees > 0)) out.v_angle_degrees = 180;
+            out.right_length = rl;
+            out.up_length = ul;
+            out.direction_length = length(dir);
+        } else if (c.projection == Projection::Orthographic) {
             out.ortho_height = length(up) > 0 ? length(up) : 1.0f;
             if (c.angle > 0 && c.angle < 180) {
                 // POV-Ray: the angle sets the width seen at the look_at distance (the
@@ -270,7 +282,6 @@ struct Builder {
                                    std::max(length(right), 1e-6f);
             }
         } else {
-            out.projection = Projection::Perspective;
             out.fov_y_degrees =
                 float(2 * std::atan(0.5 * length(up) / std::max(length(dir), 1e-6f)) * 180 / M_PI);
         }

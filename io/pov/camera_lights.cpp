@@ -10,6 +10,22 @@
 
 namespace sheaf::io::pov {
 
+namespace {
+
+/// The projection a camera type keyword names (cylinder: the first of the four), or null.
+const Projection* camera_type(const std::string& k) {
+    static const std::pair<const char*, Projection> kTypes[] = {
+        {"perspective", Projection::Perspective}, {"orthographic", Projection::Orthographic},
+        {"fisheye", Projection::Fisheye},         {"ultra_wide_angle", Projection::UltraWideAngle},
+        {"omnimax", Projection::Omnimax},         {"panoramic", Projection::Panoramic},
+        {"cylinder", Projection::Cylinder1},      {"spherical", Projection::Spherical}};
+    for (const auto& [name, type] : kTypes)
+        if (k == name) return &type;
+    return nullptr;
+}
+
+} // namespace
+
 void Parser::parse_camera(PovCamera& c) {
     expect_sym("{");
     Value declared;
@@ -25,11 +41,17 @@ void Parser::parse_camera(PovCamera& c) {
         if (t.kind != TokKind::Ident) error_expected(t, "a camera item or '}'");
         const std::string& k = t.text;
         advance();
-        if (k == "perspective")
-            c.orthographic = false;
-        else if (k == "orthographic")
-            c.orthographic = true;
-        else if (k == "location")
+        if (const Projection* type = camera_type(k)) {
+            c.projection = *type;
+            if (k == "cylinder") {
+                const Token at = peek();
+                const double n = parse_float();
+                if (!(n == 1 || n == 2 || n == 3 || n == 4))
+                    error_at(at, "a cylinder camera's type must be 1, 2, 3 or 4, not " +
+                                     format_number(n));
+                c.projection = Projection(int(Projection::Cylinder1) + int(n) - 1);
+            }
+        } else if (k == "location")
             c.location = parse_vector();
         else if (k == "look_at")
             c.look_at = parse_vector(), c.has_look_at = true;
@@ -42,18 +64,22 @@ void Parser::parse_camera(PovCamera& c) {
         else if (k == "sky")
             c.sky = parse_vector();
         else if (k == "angle") {
+            const Token at = peek();
             c.angle = parse_float();
-            if (accept_sym(",")) parse_float(); // spherical: the vertical angle
+            if (c.angle < 0) error_at(at, "a camera's angle must not be negative");
+            if (accept_sym(",")) { // spherical: the vertical angle
+                const Token v = peek();
+                c.v_angle = parse_float();
+                if (c.v_angle < 0) error_at(v, "a camera's vertical angle must not be negative");
+            }
         } else if (k == "focal_point" || k == "aperture" || k == "blur_samples" ||
                    k == "confidence" || k == "variance") {
             unsupported(t, "focal blur ('" + k + "', ignored)");
             parse_expr();
             if (k == "blur_samples" && accept_sym(",")) parse_expr();
-        } else if (k == "fisheye" || k == "ultra_wide_angle" || k == "omnimax" ||
-                   k == "panoramic" || k == "cylinder" || k == "spherical" || k == "mesh_camera") {
-            unsupported(t, "camera type '" + k + "' (a perspective camera is used)");
-            if (k == "cylinder") parse_float();
-            if (k == "mesh_camera") skip_block();
+        } else if (k == "mesh_camera") {
+            unsupported(t, "camera type 'mesh_camera' (a perspective camera is used)");
+            skip_block();
         } else if (k == "normal") {
             unsupported(t, "camera normal");
             skip_block();

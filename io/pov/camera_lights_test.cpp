@@ -63,6 +63,51 @@ TEST(PovCamera, DefaultAndOrthographic) {
     EXPECT_FLOAT_EQ(r.scene.camera.position.z, 10);
 }
 
+TEST(PovCamera, TheOtherCameraTypesAreTracedProjections) {
+    const std::pair<const char*, Projection> kinds[] = {
+        {"fisheye", Projection::Fisheye},      {"ultra_wide_angle", Projection::UltraWideAngle},
+        {"omnimax", Projection::Omnimax},      {"panoramic", Projection::Panoramic},
+        {"cylinder 1", Projection::Cylinder1}, {"cylinder 2", Projection::Cylinder2},
+        {"cylinder 3", Projection::Cylinder3}, {"cylinder 4", Projection::Cylinder4},
+        {"spherical", Projection::Spherical}};
+    for (const auto& [kw, want] : kinds) {
+        const PovResult r =
+            load_text(std::string("camera { ") + kw + " location <0, 1, -5> look_at <0, 1, 0> }");
+        EXPECT_EQ(r.scene.camera.projection, want) << kw;
+        EXPECT_TRUE(r.warnings.empty()) << kw << ": " << r.warnings[0];
+        // POV-Ray's defaults: angle 90 (spherical 360 by 180), right 1.33, up 1.
+        EXPECT_FLOAT_EQ(r.scene.camera.angle_degrees, want == Projection::Spherical ? 360 : 90);
+        EXPECT_NEAR(r.scene.camera.right_length, 1.33f, 1e-5f) << kw;
+        EXPECT_NEAR(r.scene.camera.up_length, 1.0f, 1e-5f) << kw;
+    }
+    // The angle is the projection's own: the direction keeps its length.
+    const Camera c = load_text("camera { fisheye angle 270 right x up y direction 2 * z "
+                               "location 0 look_at z }")
+                         .scene.camera;
+    EXPECT_FLOAT_EQ(c.angle_degrees, 270);
+    EXPECT_NEAR(c.direction_length, 2.0f, 1e-5f);
+    EXPECT_NEAR(c.right_length, 1.0f, 1e-5f);
+    // spherical: the vertical angle after a comma, half the horizontal one by default.
+    EXPECT_FLOAT_EQ(load_text("camera { spherical angle 180, 60 }").scene.camera.v_angle_degrees,
+                    60);
+    EXPECT_FLOAT_EQ(load_text("camera { spherical angle 180 }").scene.camera.v_angle_degrees, 90);
+    EXPECT_FLOAT_EQ(load_text("camera { spherical }").scene.camera.v_angle_degrees, 180);
+    // mesh_camera is still warned and seen as a perspective camera.
+    const PovResult mesh = load_text("camera { mesh_camera { 1 0 } location 0 look_at z }");
+    EXPECT_EQ(mesh.scene.camera.projection, Projection::Perspective);
+    ASSERT_EQ(mesh.warnings.size(), 1u);
+    EXPECT_NE(mesh.warnings[0].find("mesh_camera"), std::string::npos);
+}
+
+TEST(PovCamera, BadCameraTypesAndAnglesAreErrors) {
+    EXPECT_EQ(error_of("camera { cylinder 5 }"),
+              "scene.pov:1:19: error: a cylinder camera's type must be 1, 2, 3 or 4, not 5");
+    EXPECT_EQ(error_of("camera { fisheye angle -10 }"),
+              "scene.pov:1:24: error: a camera's angle must not be negative");
+    EXPECT_EQ(error_of("camera { spherical angle 10, -1 }"),
+              "scene.pov:1:30: error: a camera's vertical angle must not be negative");
+}
+
 TEST(PovCamera, RightOverUpIsTheViewsShape) {
     // POV-Ray maps |right| across the image and |up| down it: the default right (1.33) on a
     // square image is stretched, as POV-Ray stretches it.

@@ -168,11 +168,12 @@ struct PovObject {
 };
 
 struct PovCamera {
-    bool orthographic = false;
+    Projection projection = Projection::Perspective;
     Vec3 location{0, 0, 0}, direction{0, 0, 1}, right{1.33f, 0, 0}, up{0, 1, 0}, sky{0, 1, 0};
     Vec3 look_at{0, 0, 1};
     bool has_look_at = false;
-    double angle = 0; // degrees, 0: not given
+    double angle = 0;    // degrees, 0: not given
+    double v_angle = -1; // spherical: the vertical angle; < 0: not given
     Affine transform; // applied after everything else
 };
 

@@ -76,6 +76,12 @@ TEST(XmlErrors, BadValuesPointAtTheValue) {
                  "must not be 0");
     EXPECT_ERROR("<scene><camera position=\"0 0 0\" look_at=\"0 0 0\"/></scene>", "1:42",
                  "looks at its own position");
+    EXPECT_ERROR("<scene><camera projection=\"fisheye\" angle=\"0\"/></scene>", "1:44",
+                 "the angle must lie in (0, 3600] degrees");
+    EXPECT_ERROR("<scene><camera projection=\"cylinder1\" lengths=\"1 0 1\"/></scene>", "1:48",
+                 "lengths of right, up and direction");
+    EXPECT_ERROR("<scene><camera projection=\"perspective\" angle=\"90\"/></scene>", "1:48",
+                 "unknown attribute 'angle'");
     EXPECT_ERROR("<scene><poly order=\"3\" coefficients=\"1 2 3\"/></scene>", "1:38",
                  "order 3 needs 20 coefficients, not 3");
     EXPECT_ERROR("<scene><poly order=\"5\" coefficients=\"1\"/></scene>", "1:21",

@@ -101,6 +101,27 @@ Vec3 pixel(const Frame& f, float x, float y) {
     return Vec3(p[0], p[1], p[2]);
 }
 
+TEST(XmlScene, TracedProjectionsTakeTheirAngleAndLengths) {
+    const Scene s =
+        io::parse_xml_scene("<scene><camera projection=\"spherical\" angle=\"300\" v_angle=\"120\" "
+                            "lengths=\"1.5 1 2\"/></scene>",
+                            "scene.xml")
+            .scene;
+    EXPECT_EQ(s.camera.projection, Projection::Spherical);
+    EXPECT_FLOAT_EQ(s.camera.angle_degrees, 300);
+    EXPECT_FLOAT_EQ(s.camera.v_angle_degrees, 120);
+    EXPECT_FLOAT_EQ(s.camera.right_length, 1.5f);
+    EXPECT_FLOAT_EQ(s.camera.direction_length, 2);
+    const Scene c =
+        io::parse_xml_scene("<scene><camera projection=\"cylinder3\"/></scene>", "scene.xml").scene;
+    EXPECT_EQ(c.camera.projection, Projection::Cylinder3);
+    EXPECT_FLOAT_EQ(c.camera.angle_degrees, 90);
+    EXPECT_FLOAT_EQ(
+        io::parse_xml_scene("<scene><camera projection=\"spherical\"/></scene>", "scene.xml")
+            .scene.camera.v_angle_degrees,
+        180);
+}
+
 TEST(XmlScene, AFullSceneLoadsAsWritten) {
     const auto dir = test::temp_folder("xml_full");
     test::write_text(dir / "quad.obj", test::kQuadObj);

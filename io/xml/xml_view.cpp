@@ -23,15 +23,30 @@ void SceneReader::read_camera(const pugi::xml_node& node) {
     Attributes a(ctx_, node);
     Camera c;
     int projection = 0;
-    a.get("projection", projection, {"perspective", "orthographic"});
-    c.projection = projection == 1 ? Projection::Orthographic : Projection::Perspective;
+    // In Projection's order.
+    a.get("projection", projection,
+          {"perspective", "orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic",
+           "cylinder1", "cylinder2", "cylinder3", "cylinder4", "spherical"});
+    c.projection = Projection(projection);
     a.get("position", c.position);
     a.get("look_at", c.look_at);
     a.get("up", c.up);
     if (c.projection == Projection::Perspective)
         a.get("fov", c.fov_y_degrees);
-    else
+    else if (c.projection == Projection::Orthographic)
         a.get("ortho_height", c.ortho_height);
+    const bool traced = traced_projection(c.projection);
+    if (traced) {
+        if (c.projection == Projection::Spherical) c.angle_degrees = 360;
+        a.get("angle", c.angle_degrees);
+        if (c.projection == Projection::Spherical) {
+            c.v_angle_degrees = 0.5f * c.angle_degrees;
+            a.get("v_angle", c.v_angle_degrees);
+        }
+        Vec3 lengths(c.right_length, c.up_length, c.direction_length);
+        a.get("lengths", lengths);
+        c.right_length = lengths.x, c.up_length = lengths.y, c.direction_length = lengths.z;
+    }
     std::vector<float> shift;
     if (a.get_numbers("shift", shift)) {
         if (shift.size() != 2)
@@ -49,6 +64,14 @@ void SceneReader::read_camera(const pugi::xml_node& node) {
         ctx_.fail(node, node.attribute("fov"), "the field of view must lie in (0, 180) degrees");
     if (c.projection == Projection::Orthographic && !(c.ortho_height > 0))
         ctx_.fail(node, node.attribute("ortho_height"), "ortho_height must be > 0");
+    if (traced && !(c.angle_degrees > 0 && c.angle_degrees <= 3600))
+        ctx_.fail(node, node.attribute("angle"), "the angle must lie in (0, 3600] degrees");
+    if (traced && !(c.v_angle_degrees > 0 && c.v_angle_degrees <= 3600))
+        ctx_.fail(node, node.attribute("v_angle"), "v_angle must lie in (0, 3600] degrees");
+    if (traced && !(c.right_length > 0 && c.up_length > 0 && c.direction_length > 0 &&
+                    c.right_length < 1e6f && c.up_length < 1e6f && c.direction_length < 1e6f))
+        ctx_.fail(node, node.attribute("lengths"),
+                  "the lengths of right, up and direction must be finite numbers > 0");
     scene_.camera = c;
 }
 

@@ -404,14 +404,13 @@ SHEAF_API SheafError sheafSceneSetCameraDesc(SheafScene scene, const SheafCamera
         require(scene, "scene");
         require(desc, "desc");
         sheaf::Camera c;
-        if (desc->projection == SHEAF_PROJECTION_PERSPECTIVE)
-            c.projection = sheaf::Projection::Perspective;
-        else if (desc->projection == SHEAF_PROJECTION_ORTHOGRAPHIC)
-            c.projection = sheaf::Projection::Orthographic;
-        else
-            throw InvalidArgument(
-                "projection " + std::to_string(int(desc->projection)) +
-                " is not one of SHEAF_PROJECTION_PERSPECTIVE, SHEAF_PROJECTION_ORTHOGRAPHIC");
+        // SheafProjection's values are Projection's, in the same order.
+        if (!(int(desc->projection) >= 0 && int(desc->projection) < sheaf::kProjectionCount))
+            throw InvalidArgument("projection " + std::to_string(int(desc->projection)) +
+                                  " is not a SheafProjection (SHEAF_PROJECTION_PERSPECTIVE .. "
+                                  "SHEAF_PROJECTION_SPHERICAL)");
+        c.projection = sheaf::Projection(int(desc->projection));
+        if (c.projection == sheaf::Projection::Spherical) c.angle_degrees = 360;
         c.position = vec3(desc->position, "position");
         c.look_at = vec3(desc->look_at, "look_at");
         c.up = vec3(desc->up, "up");
@@ -419,6 +418,30 @@ SHEAF_API SheafError sheafSceneSetCameraDesc(SheafScene scene, const SheafCamera
         c.ortho_height = desc->ortho_height;
         c.shift_x = desc->shift[0], c.shift_y = desc->shift[1];
         modify(scene, [&](sheaf::Scene& s) { s.camera = c; });
+    });
+}
+
+SHEAF_API SheafError sheafSceneSetCameraLens(SheafScene scene, float angle_degrees,
+                                             float v_angle_degrees, const float lengths[3]) {
+    return barrier([&] {
+        require(scene, "scene");
+        for (float a : {angle_degrees, v_angle_degrees})
+            if (!(a > 0 && a <= 3600))
+                throw InvalidArgument("a camera angle of " + std::to_string(a) +
+                                      " degrees; expected (0, 3600]");
+        sheaf::Vec3 l(-1.0f);
+        if (lengths) {
+            l = vec3(lengths, "lengths");
+            if (!(l.x > 0 && l.y > 0 && l.z > 0))
+                throw InvalidArgument("the lengths of right, up and direction must be > 0");
+        }
+        modify(scene, [&](sheaf::Scene& s) {
+            s.camera.angle_degrees = angle_degrees;
+            s.camera.v_angle_degrees = v_angle_degrees;
+            if (lengths)
+                s.camera.right_length = l.x, s.camera.up_length = l.y,
+                s.camera.direction_length = l.z;
+        });
     });
 }
 

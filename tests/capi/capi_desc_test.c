@@ -1,6 +1,6 @@
 /* The C ABI's description structs from plain C99: lights (point, spot, parallel, shadowless,
- * fade), cameras (orthographic, shifted) and emissive materials, checked against the radiance
- * they must give; bad enum values are INVALID_ARGUMENT. Exits non-zero on any failure. */
+ * fade), cameras (orthographic, shifted, fisheye) and emissive materials, checked against the
+ * radiance they must give; bad enum values are INVALID_ARGUMENT. Exits non-zero on any failure. */
 #include <sheaf/sheaf.h>
 
 #include <math.h>
@@ -94,8 +94,14 @@ int main(void) {
     CHECK(sheafSceneAddLight(s, &light, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "bad light type");
     CHECK(sheafSceneAddLight(s, NULL, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "NULL light");
     sheafCameraDescInit(&cam);
-    cam.projection = (SheafProjection)5;
+    cam.projection = (SheafProjection)11;
     CHECK(sheafSceneSetCameraDesc(s, &cam) == SHEAF_ERROR_INVALID_ARGUMENT, "bad projection");
+    CHECK(sheafSceneSetCameraLens(s, 0, 180, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "angle 0");
+    {
+        const float flat[3] = {1, 0, 1};
+        CHECK(sheafSceneSetCameraLens(s, 90, 180, flat) == SHEAF_ERROR_INVALID_ARGUMENT,
+              "a zero length");
+    }
     /* A spot with a falloff of 0 is rejected when the scene is committed. */
     sheafLightDescInit(&light);
     light.type = SHEAF_LIGHT_SPOT;
@@ -103,6 +109,39 @@ int main(void) {
     OK(sheafSceneAddLight(s, &light, NULL));
     CHECK(sheafSceneCommit(s) == SHEAF_ERROR_SCENE, "spot with falloff 0");
     sheafSceneRelease(s);
+
+    /* A fisheye camera (a traced projection): 180 degrees across its circle, the quad in the
+     * middle, the grey background around it, and no ray (black) outside the circle. */
+    {
+        SheafRenderer r = NULL;
+        SheafFrame f = NULL;
+        float px[9 * 9 * 4] = {0};
+        const float grey[3] = {0.5f, 0.5f, 0.5f};
+        double camera_rays = 0;
+        sheafMaterialDescInit(&mat);
+        mat.emission[0] = 1.0f;
+        s = quad_scene(&mat);
+        OK(sheafSceneSetBackground(s, grey));
+        sheafCameraDescInit(&cam);
+        cam.projection = SHEAF_PROJECTION_FISHEYE;
+        cam.position[2] = 5;
+        cam.look_at[0] = cam.look_at[1] = cam.look_at[2] = 0;
+        OK(sheafSceneSetCameraDesc(s, &cam));
+        OK(sheafSceneSetCameraLens(s, 180, 180, NULL));
+        OK(sheafRendererNew(&r));
+        OK(sheafRendererSetInt(r, "width", 9));
+        OK(sheafRendererSetInt(r, "height", 9));
+        OK(sheafRender(r, s, &f));
+        OK(sheafFrameGetPass(f, "combined", px, sizeof px / sizeof px[0]));
+        OK(sheafFrameGetStatByName(f, "rays.camera", &camera_rays));
+        CHECK(px[(4 * 9 + 4) * 4] > 0.9f, "the quad at the fisheye's centre");
+        CHECK(fabsf(px[(0 * 9 + 4) * 4] - 0.5f) < 1e-3f, "the background inside the circle");
+        CHECK(px[0] == 0.0f && px[1] == 0.0f && px[2] == 0.0f, "black outside the circle");
+        CHECK(camera_rays > 40 && camera_rays < 81, "camera rays inside the circle only");
+        sheafFrameRelease(f);
+        sheafRendererRelease(r);
+        sheafSceneRelease(s);
+    }
 
     /* Passes as false-colour pictures; an unknown pass is an argument error. */
     {

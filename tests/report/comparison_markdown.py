@@ -8,7 +8,7 @@ import json
 import os
 import sys
 
-TYPES = ["shadow", "reflection", "refraction", "ao", "diffuse"]
+TYPES = ["shadow", "reflection", "refraction", "ao", "diffuse", "camera"]
 PHASES = ["raster", "gbuffer", "ray_creation", "hashing", "compression", "sorting",
           "decompression", "hierarchy", "traversal", "final_tests", "shading"]
 

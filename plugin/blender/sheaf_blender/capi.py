@@ -56,6 +56,15 @@ SHEAF_LIGHT_PARALLEL = 2
 # ---- enum SheafProjection ----
 SHEAF_PROJECTION_PERSPECTIVE = 0
 SHEAF_PROJECTION_ORTHOGRAPHIC = 1
+SHEAF_PROJECTION_FISHEYE = 2
+SHEAF_PROJECTION_ULTRA_WIDE_ANGLE = 3
+SHEAF_PROJECTION_OMNIMAX = 4
+SHEAF_PROJECTION_PANORAMIC = 5
+SHEAF_PROJECTION_CYLINDER_1 = 6
+SHEAF_PROJECTION_CYLINDER_2 = 7
+SHEAF_PROJECTION_CYLINDER_3 = 8
+SHEAF_PROJECTION_CYLINDER_4 = 9
+SHEAF_PROJECTION_SPHERICAL = 10
 
 # ---- enum SheafSubdivScheme (only in libraries that export sheafSceneAddSubdivisionMesh) ----
 SHEAF_SUBDIV_CATMULL_CLARK = 0
@@ -147,6 +156,7 @@ _PROTOTYPES = {
     "sheafSceneAddLight": (c_enum, [SheafScene, POINTER(SheafLightDesc), _u32]),
     "sheafCameraDescInit": (None, [POINTER(SheafCameraDesc)]),
     "sheafSceneSetCameraDesc": (c_enum, [SheafScene, POINTER(SheafCameraDesc)]),
+    "sheafSceneSetCameraLens": (c_enum, [SheafScene, c_float, c_float, _f]),
     "sheafSceneCommit": (c_enum, [SheafScene]),
     "sheafRendererNew": (c_enum, [POINTER(SheafRenderer)]),
     "sheafRendererRetain": (c_enum, [SheafRenderer]),
@@ -517,6 +527,13 @@ class Scene(_Handle):
 
     def set_camera(self, desc):
         self.lib.check(self.lib.sheafSceneSetCameraDesc(self.handle, byref(desc)))
+
+    def set_camera_lens(self, angle_degrees, v_angle_degrees, lengths=None):
+        """The traced projections' angles and POV-Ray's right, up, direction lengths."""
+        l = None if lengths is None else _floats(lengths, 3)
+        self.lib.check(
+            self.lib.sheafSceneSetCameraLens(self.handle, angle_degrees, v_angle_degrees, l)
+        )
 
     def set_background(self, rgb):
         self.lib.check(self.lib.sheafSceneSetBackground(self.handle, _floats(rgb, 3)))

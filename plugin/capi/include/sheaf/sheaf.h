@@ -181,9 +181,20 @@ SHEAF_API void sheafLightDescInit(SheafLightDesc* desc);
 SHEAF_API SheafError sheafSceneAddLight(SheafScene scene, const SheafLightDesc* desc,
                                         uint32_t* out_light_id);
 
+/* Perspective and orthographic views are rasterised; the others are POV-Ray's camera types,
+ * whose primary rays are traced, shaped by sheafSceneSetCameraLens (docs/capi.md). */
 typedef enum SheafProjection {
     SHEAF_PROJECTION_PERSPECTIVE = 0,
-    SHEAF_PROJECTION_ORTHOGRAPHIC = 1
+    SHEAF_PROJECTION_ORTHOGRAPHIC = 1,
+    SHEAF_PROJECTION_FISHEYE = 2,
+    SHEAF_PROJECTION_ULTRA_WIDE_ANGLE = 3,
+    SHEAF_PROJECTION_OMNIMAX = 4,
+    SHEAF_PROJECTION_PANORAMIC = 5,
+    SHEAF_PROJECTION_CYLINDER_1 = 6,
+    SHEAF_PROJECTION_CYLINDER_2 = 7,
+    SHEAF_PROJECTION_CYLINDER_3 = 8,
+    SHEAF_PROJECTION_CYLINDER_4 = 9,
+    SHEAF_PROJECTION_SPHERICAL = 10
 } SheafProjection;
 
 typedef struct SheafCameraDesc {
@@ -197,6 +208,12 @@ typedef struct SheafCameraDesc {
 /* Fills *desc with the engine's default camera. */
 SHEAF_API void sheafCameraDescInit(SheafCameraDesc* desc);
 SHEAF_API SheafError sheafSceneSetCameraDesc(SheafScene scene, const SheafCameraDesc* desc);
+/* The traced projections' shape, for the camera last set (perspective and orthographic ignore
+ * it): the angle in degrees (90 by default, spherical 360) and spherical's vertical angle (180),
+ * each in (0, 3600]; `lengths`: POV-Ray's lengths of right, up and direction (1 1 1 by default;
+ * NULL keeps them). sheafSceneSetCameraDesc resets them to the defaults. */
+SHEAF_API SheafError sheafSceneSetCameraLens(SheafScene scene, float angle_degrees,
+                                             float v_angle_degrees, const float lengths[3]);
 /* Validates the scene and prepares it for rendering. sheafRender commits a scene that was never
  * committed or was changed since. */
 SHEAF_API SheafError sheafSceneCommit(SheafScene scene);

@@ -7,6 +7,7 @@
 
 #include "core/math/affine.h"
 
+#include <cmath>
 #include <cstdint>
 
 namespace sheaf {
@@ -74,6 +75,33 @@ struct FractalParams {
     float interior_factor = 1.0f, exterior_factor = 1.0f;
     float c[2] = {0, 0}; // Julia
 };
+
+/// POV-Ray's ranges of the fractal patterns' values, which both scene readers enforce, each
+/// reporting a broken rule at its own position (povray refuses the same values).
+constexpr int kFractalMaxIterations = 65535; // FractalParams::iterations' 16 bits
+constexpr int kFractalMinExponent = 2, kFractalMaxExponent = 33;
+
+/// The highest interior (`inside`) or exterior colouring type.
+constexpr int fractal_max_type(bool inside) {
+    return inside ? 6 : 8;
+}
+
+/// Why `type` is not an interior (`inside`) or exterior colouring type, or null when it is.
+inline const char* fractal_type_error(bool inside, double type) {
+    if (type >= 0 && type <= fractal_max_type(inside) && type == std::floor(type)) return nullptr;
+    return inside ? "the interior type must be a whole number from 0 to 6"
+                  : "the exterior type must be a whole number from 0 to 8";
+}
+
+/// Why `factor` does not suit colouring type `type` (a valid one), or null when it does:
+/// exterior types 7 and 8 divide the step by it (7: modulo its whole part).
+inline const char* fractal_factor_error(bool inside, double type, double factor) {
+    if (!std::isfinite(factor)) return "the factor must be finite";
+    if (!inside && type == 7 && !(factor >= 1))
+        return "exterior type 7 needs a factor of 1 or more";
+    if (!inside && type == 8 && !(factor > 0)) return "exterior type 8 needs a factor above 0";
+    return nullptr;
+}
 
 struct Pattern {
     PatternKind kind = PatternKind::Gradient;

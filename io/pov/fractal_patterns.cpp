@@ -8,12 +8,6 @@
 
 namespace sheaf::io::pov {
 
-namespace {
-
-constexpr double kMaxIterations = 65535; // FractalParams::iterations
-
-} // namespace
-
 void Parser::parse_fractal(PovPattern& pt, const std::string& keyword) {
     bool julia = keyword == "julia";
     pt.fractal.magnet = 0;
@@ -37,8 +31,9 @@ void Parser::parse_fractal(PovPattern& pt, const std::string& keyword) {
     }
     const Token at = peek();
     const double n = parse_float();
-    if (!(n >= 1 && n <= kMaxIterations))
-        error_at(at, "a fractal pattern's iterations must lie between 1 and 65535");
+    if (!(n >= 1 && n <= kFractalMaxIterations))
+        error_at(at, "a fractal pattern's iterations must lie between 1 and " +
+                         std::to_string(kFractalMaxIterations));
     pt.fractal.iterations = uint16_t(n);
 }
 
@@ -47,26 +42,22 @@ void Parser::parse_fractal_modifier(const Token& keyword, FractalParams& f) {
     if (k == "exponent") {
         const Token at = peek();
         const double e = parse_float();
-        if (!(e >= 2 && e <= 33))
-            error_at(at, "a fractal pattern's exponent must lie between 2 and 33");
+        if (!(e >= kFractalMinExponent && e <= kFractalMaxExponent))
+            error_at(at, "a fractal pattern's exponent must lie between " +
+                             std::to_string(kFractalMinExponent) + " and " +
+                             std::to_string(kFractalMaxExponent));
         f.exponent = uint8_t(e);
         return;
     }
     const bool inside = k == "interior";
     const Token at = peek();
-    const double type = parse_float();
-    const int most = inside ? 6 : 8;
-    if (!(type >= 0 && type <= most))
-        error_at(at, "a fractal pattern's " + k + " type must lie between 0 and " +
-                         std::to_string(most));
+    const double type = std::trunc(parse_float()); // povray takes the whole part too
+    if (const char* why = fractal_type_error(inside, type))
+        error_at(at, std::string("a fractal pattern's ") + (why + 4)); // "the " dropped
     accept_sym(",");
     const Token factor_at = peek();
     const double factor = parse_float();
-    if (!std::isfinite(factor)) error_at(factor_at, "the " + k + " factor must be finite");
-    // Types 7 and 8 divide the step by the factor (7: modulo its whole part).
-    if (!inside && ((type == 7 && !(factor >= 1)) || (type == 8 && !(factor > 0))))
-        error_at(factor_at, "exterior type " + std::to_string(int(type)) + " needs a factor " +
-                                (type == 7 ? "of 1 or more" : "above 0"));
+    if (const char* why = fractal_factor_error(inside, type, factor)) error_at(factor_at, why);
     if (inside) {
         f.interior_type = uint8_t(type);
         f.interior_factor = float(factor);

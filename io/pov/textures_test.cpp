@@ -90,8 +90,10 @@ TEST(PovTextures, FractalPatternsTakeTheirArgumentsAndModifiers) {
     EXPECT_EQ(redone.pattern.fractal.magnet, 0);
     EXPECT_EQ(redone.pattern.fractal.iterations, 20);
     // povray refuses these too.
-    EXPECT_EQ(error_of("sphere { 0, 1 pigment { mandel 30 interior 7, 1 } }"),
-              "scene.pov:1:44: error: a fractal pattern's interior type must lie between 0 and 6");
+    EXPECT_EQ(
+        error_of("sphere { 0, 1 pigment { mandel 30 interior 7, 1 } }"),
+        "scene.pov:1:44: error: a fractal pattern's interior type must be a whole number from "
+        "0 to 6");
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { mandel 30 exponent 34 } }"),
               "scene.pov:1:44: error: a fractal pattern's exponent must lie between 2 and 33");
     EXPECT_EQ(error_of("sphere { 0, 1 pigment { magnet 3 mandel 30 } }"),

@@ -295,7 +295,7 @@ TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
     EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"julia\"/></scene>", "1:8",
                  "needs the attribute 'c'");
     EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" interior=\"7 1\"/></scene>", "1:52",
-                 "attribute 'interior' of <normal>: the type must be a whole number from "
+                 "attribute 'interior' of <normal>: the interior type must be a whole number from "
                  "0 to 6");
     EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" exterior=\"7 0.5\"/></scene>",
                  "1:52", "type 7 needs a factor of 1 or more");

@@ -192,8 +192,8 @@ Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
 void SceneReader::read_fractal(Attributes& a, PatternKind kind, FractalParams& f) const {
     const pugi::xml_node& node = a.node();
     int iterations = 30, exponent = 2, magnet = 0;
-    a.get("iterations", iterations, 1, 65535);
-    a.get("exponent", exponent, 2, 33);
+    a.get("iterations", iterations, 1, kFractalMaxIterations);
+    a.get("exponent", exponent, kFractalMinExponent, kFractalMaxExponent);
     a.get("magnet", magnet, 0, 2);
     f.iterations = uint16_t(iterations), f.exponent = uint8_t(exponent);
     f.magnet = uint8_t(magnet);
@@ -217,18 +217,14 @@ void SceneReader::read_fractal(Attributes& a, PatternKind kind, FractalParams& f
     for (const bool inside : {true, false}) {
         const char* name = inside ? "interior" : "exterior";
         if (!a.get_numbers(name, v)) continue;
-        const int most = inside ? 6 : 8;
         auto fail = [&](const std::string& why) {
             ctx_.fail(node, node.attribute(name),
                       "attribute '" + std::string(name) + "' of " + tag(node) + ": " + why);
         };
         if (v.size() != 2)
             fail("expected a type and a factor, found " + std::to_string(v.size()) + " numbers");
-        if (!(v[0] >= 0 && v[0] <= float(most) && v[0] == std::floor(v[0])))
-            fail("the type must be a whole number from 0 to " + std::to_string(most));
-        if (!inside && ((v[0] == 7 && !(v[1] >= 1)) || (v[0] == 8 && !(v[1] > 0))))
-            fail(v[0] == 7 ? "type 7 needs a factor of 1 or more"
-                           : "type 8 needs a factor above 0");
+        if (const char* why = fractal_type_error(inside, v[0])) fail(why);
+        if (const char* why = fractal_factor_error(inside, v[0], v[1])) fail(why);
         (inside ? f.interior_type : f.exterior_type) = uint8_t(v[0]);
         (inside ? f.interior_factor : f.exterior_factor) = v[1];
     }

@@ -8,6 +8,7 @@
 #include "core/raster/camera.h"
 #include "core/raster/rasterizer.h"
 #include "core/rays/ray_gen.h"
+#include "core/render/media.h"
 #include "core/render/shade.h"
 #include "core/render/surface_hit.h"
 #include "core/render/surface_texture.h"
@@ -49,21 +50,33 @@ SHEAF_HD_INLINE uint64_t cast_analytic_pixel(const SceneView& scene, const Camer
 }
 
 /// What a ray from `origin` leaving the scene along `dir` brings with weight w: the sky,
-/// through the fog.
+/// through the fog, and the light of the media it crosses.
 SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, Vec3 w) {
     float keep;
     Vec3 add;
     fog_over(scene.fog, origin, dir, INFINITY, keep, add);
-    return w * (sky_color(scene, dir) * keep + add);
+    Vec3 media_keep(1.0f), media_add(0.0f);
+    if (scene.media_container_count > 0)
+        media_along(scene, origin, dir, INFINITY, media_keep, media_add);
+    return w * ((sky_color(scene, dir) * keep + add) * media_keep + media_add * keep);
 }
 
 /// The fog between the ray's origin and the hit: scales the hit's throughput, and returns
-/// the fog's own colour the ray brings.
+/// the fog's own colour the ray brings. The media of the containers on the way come first:
+/// they fade the hit and add their own light.
 SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h) {
+    const Vec3 origin = h.position - h.incoming * h.t;
+    Vec3 media(0.0f);
+    if (scene.media_container_count > 0) {
+        Vec3 keep, add;
+        media_along(scene, origin, h.incoming, h.t, keep, add);
+        media = h.throughput * add;
+        h.throughput = h.throughput * keep;
+    }
     float keep;
     Vec3 add;
-    fog_over(scene.fog, h.position - h.incoming * h.t, h.incoming, h.t, keep, add);
-    const Vec3 fog = h.throughput * add;
+    fog_over(scene.fog, origin, h.incoming, h.t, keep, add);
+    const Vec3 fog = h.throughput * add + media * keep;
     h.throughput = h.throughput * keep;
     return fog;
 }

@@ -248,7 +248,8 @@ class FramePipeline {
                     if (b->type == RayType::Diffuse) h.gather = b->light[i];
                 },
                 1024);
-            if (scene_.fog.distance > 0) // in ray order: sums stay the same on every accel
+            if (scene_.fog.distance > 0 ||
+                !scene_.media_containers.empty()) // in ray order: the same sums on every accel
                 for (size_t k = 0; k < count; ++k) radiance_[next[base + k].pixel] += fog_[k];
         }
         memory_.sub(hit_bytes_); // the wave shaded here goes when its successor comes back

@@ -107,6 +107,17 @@ void spatial_order(PreparedScene& p, size_t b, size_t e) {
     permute(p.prim_sphere);
 }
 
+// Whether material m, or a material its texture maps lead to, holds media.
+bool has_media(const Scene& s, uint32_t m, int depth = 0) {
+    const Material& mt = s.materials[m];
+    if (mt.media_count > 0) return true;
+    if (mt.select < 0 || depth > 16) return false;
+    const MaterialSwitch& sw = s.material_switches[size_t(mt.select)];
+    for (uint32_t e = sw.first; e < sw.first + sw.count; ++e)
+        if (has_media(s, s.material_entries[e].material, depth + 1)) return true;
+    return false;
+}
+
 // Whether a pigment has filter or transmit anywhere (entries and nested pigments included).
 bool pigment_may_pass(const Scene& s, int32_t index, int depth = 0) {
     if (index < 0 || depth > 16) return false;
@@ -200,6 +211,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.csg.resize(base + obj.nodes.size());
         uint32_t first_material = 0;
         bool have_material = false;
+        bool holds_media = false; // some leaf's material (or a texture map's) has media
         for (size_t i = 0; i < obj.nodes.size(); ++i) {
             const CsgNode& node = obj.nodes[i];
             PreparedCsgNode& out = p.csg[base + i];
@@ -228,6 +240,7 @@ PreparedScene prepare_scene(const Scene& scene) {
                 p.shapes.push_back(place_shape(shape, obj.transform * node.transform));
                 p.shape_material.push_back(node.material);
                 if (!have_material) first_material = node.material, have_material = true;
+                holds_media = holds_media || has_media(scene, node.material);
             } else {
                 out.first = uint32_t(p.csg_children.size());
                 out.count = uint32_t(node.children.size());
@@ -235,6 +248,7 @@ PreparedScene prepare_scene(const Scene& scene) {
             }
         }
         const uint32_t root = base + obj.root;
+        if (holds_media) p.media_containers.push_back(uint32_t(p.analytic_root.size()));
         p.analytic_root.push_back(root);
         const Sphere bound = csg_bound(p, root);
         p.prim_sphere.push_back(bound);
@@ -244,6 +258,19 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_name.push_back(obj.name);
         p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
+    if (!p.media_containers.empty())
+        for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
+            if (!(scene.shape_objects[so].flags & kSolid)) continue;
+            const Sphere& s = p.prim_sphere[p.tris.size() + so];
+            for (uint32_t c : p.media_containers) {
+                const Sphere& b = p.prim_sphere[p.tris.size() + c];
+                if (!(std::fabs(s.radius) <= FLT_MAX) || !(std::fabs(b.radius) <= FLT_MAX) ||
+                    length(s.center - b.center) <= s.radius + b.radius) {
+                    p.media_solids.push_back(uint32_t(so));
+                    break;
+                }
+            }
+        }
     p.prim_flags.resize(p.prim_count());
     std::vector<char> passes(scene.materials.size());
     for (size_t m = 0; m < passes.size(); ++m) passes[m] = material_may_pass(scene, uint32_t(m));
@@ -264,6 +291,8 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.normal_patterns = scene.normal_patterns;
     p.material_switches = scene.material_switches;
     p.material_entries = scene.material_entries;
+    p.media = scene.media;
+    p.medium_densities = scene.medium_densities;
     p.fn_programs = scene.fn_programs;
     p.fn_code = scene.fn_code;
     p.fn_patterns = scene.fn_patterns;

@@ -80,6 +80,12 @@ struct PreparedScene {
     std::vector<NormalPattern> normal_patterns;
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
+    std::vector<Medium> media;
+    std::vector<uint32_t> medium_densities;
+    // The analytic primitives some of whose shapes hold media (0-based among the analytic
+    // ones; core/render/media.h), and the solid ones (kSolid) that media leave out, of those
+    // whose bounds meet a container's.
+    std::vector<uint32_t> media_containers, media_solids;
     std::vector<FnProgram> fn_programs; // user functions (Scene::fn_programs ...)
     std::vector<FnInstr> fn_code;
     std::vector<Pattern> fn_patterns;

@@ -366,6 +366,22 @@ void Scene::validate_patterns() const {
         if (mt.pigment >= int32_t(pigments.size()) || mt.normal >= int32_t(normal_patterns.size()) ||
             mt.select >= int32_t(material_switches.size()))
             throw SceneError(name + " names a pigment, normal or switch that does not exist");
+        if (!range(mt.media_first, mt.media_count, media.size()))
+            throw SceneError(name + ": its media lie outside the scene's media");
+    }
+    for (size_t i = 0; i < media.size(); ++i) {
+        const Medium& md = media[i];
+        const std::string name = "medium " + std::to_string(i);
+        if (!is_finite(md.emission) || !is_finite(md.absorption) || md.absorption.x < 0 ||
+            md.absorption.y < 0 || md.absorption.z < 0)
+            throw SceneError(name + ": emission must be finite and absorption finite and >= 0");
+        if (md.samples < 1 || md.samples > 1024)
+            throw SceneError(name + ": samples must lie in 1..1024");
+        if (!range(md.density_first, md.density_count, medium_densities.size()))
+            throw SceneError(name + ": its densities lie outside the medium densities");
+        for (uint32_t d = md.density_first; d < md.density_first + md.density_count; ++d)
+            if (medium_densities[d] >= pigments.size())
+                throw SceneError(name + ": a density names a pigment that does not exist");
     }
     // A switch may lead to materials with switches of their own, but never back to itself:
     // depth-first, 1 = on the current path, 2 = done.

@@ -53,6 +53,18 @@ struct Material {
                                // (POV-Ray: reflection only from the finish)
     Vec3 fade_color{0.0f, 0.0f, 0.0f}; // light inside fades to this colour:
     float fade_distance = 0.0f, fade_power = 0.0f; //   1 / (1 + (d / fade_distance)^fade_power)
+    uint32_t media_first = 0, media_count = 0;     // the media inside: Scene::media
+};
+
+/// A participating medium inside an object (POV-Ray's interior media): the light it gives off
+/// (emission) and takes away (absorption) per unit length, each times the product of its
+/// densities' colours at the point (Scene::medium_densities: pigment indices), integrated
+/// along the part of a ray inside the object at `samples` evenly spaced points
+/// (core/render/media.h).
+struct Medium {
+    Vec3 emission{0.0f, 0.0f, 0.0f}, absorption{0.0f, 0.0f, 0.0f};
+    uint32_t density_first = 0, density_count = 0;
+    uint32_t samples = 32;
 };
 
 /// What an object takes part in: bits of Object::flags and ShapeObject::flags.
@@ -60,6 +72,8 @@ enum ObjectFlag : uint8_t {
     kNoShadow = 1,     // casts no shadow (shadow and ambient-occlusion rays pass)
     kNoReflection = 2, // not seen in reflections
     kNoImage = 4,      // not seen by the camera (still in shadows and reflections)
+    kSolid = 8,        // media of objects around it do not fill it (POV-Ray's objects without
+                       // `hollow`; analytic objects only)
 };
 
 /// How a texture finds its (s, t) coordinates at a surface point.
@@ -211,6 +225,8 @@ class Scene {
     std::vector<NormalPattern> normal_patterns;
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
+    std::vector<Medium> media;              // indexed by Material::media_first
+    std::vector<uint32_t> medium_densities; // pigments, indexed by Medium::density_first
     // User functions (core/scene/function.h), run by function patterns and isosurfaces:
     // programs, their code, and the patterns and pigments their instructions read.
     std::vector<FnProgram> fn_programs;

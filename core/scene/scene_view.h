@@ -47,6 +47,12 @@ struct SceneView {
     const NormalPattern* normal_patterns = nullptr;
     const MaterialSwitch* material_switches = nullptr;
     const MaterialEntry* material_entries = nullptr;
+    const Medium* media = nullptr;
+    const uint32_t* medium_densities = nullptr;
+    const uint32_t* media_containers = nullptr; // PreparedScene::media_containers
+    uint32_t media_container_count = 0;
+    const uint32_t* media_solids = nullptr; // PreparedScene::media_solids
+    uint32_t media_solid_count = 0;
     FnView functions; // user functions: function patterns, isosurfaces
     int32_t sky = -1;
     Fog fog;
@@ -79,11 +85,12 @@ struct SceneView {
           materials(p.materials.data()), pigments(p.pigments.data()),
           pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
           material_switches(p.material_switches.data()),
-          material_entries(p.material_entries.data()), functions{p.fn_programs.data(),
-                                                                 p.fn_code.data(),
-                                                                 p.fn_patterns.data(),
-                                                                 p.fn_pigments.data(),
-                                                                 p.fn_pigment_entries.data()},
+          material_entries(p.material_entries.data()), media(p.media.data()),
+          medium_densities(p.medium_densities.data()), media_containers(p.media_containers.data()),
+          media_container_count(uint32_t(p.media_containers.size())),
+          media_solids(p.media_solids.data()), media_solid_count(uint32_t(p.media_solids.size())),
+          functions{p.fn_programs.data(), p.fn_code.data(), p.fn_patterns.data(),
+                    p.fn_pigments.data(), p.fn_pigment_entries.data()},
           sky(p.sky), fog(p.fog), lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
           background(p.background), working_gamma(p.working_gamma), textures(p.textures.data()),
           sampler(p.sampler.get()) {}

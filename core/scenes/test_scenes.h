@@ -185,6 +185,68 @@ inline int32_t add_pigment(Scene& s, PatternKind kind, std::vector<PigmentEntry>
     return int32_t(s.pigments.size() - 1);
 }
 
+/// A clear material (light passes straight through, nothing reflects) holding `media`.
+inline uint32_t add_media_material(Scene& s, std::vector<Medium> media) {
+    Material clear;
+    clear.color = Vec3(1.0f);
+    clear.ambient = 0, clear.diffuse = 0, clear.transmission = 1, clear.ior = 1;
+    clear.fresnel_split = false;
+    clear.media_first = uint32_t(s.media.size());
+    clear.media_count = uint32_t(media.size());
+    s.media.insert(s.media.end(), media.begin(), media.end());
+    return s.add_material(clear);
+}
+
+/// Interior media: a sphere giving off light through a gradient density, a union of two
+/// spheres with media of their own (one absorbing) and a solid ball inside one of them that
+/// media leave out, over a floor, with the camera outside; `inside`: the camera inside the
+/// first sphere.
+inline Scene media_scene(bool inside = false) {
+    Scene s;
+    Material floor;
+    floor.color = Vec3(0.6f, 0.6f, 0.5f);
+    s.add_mesh_object("floor", make_box(Vec3(-6, -1.1f, -6), Vec3(6, -1, 6)),
+                      s.add_material(floor));
+    Medium glow;
+    glow.emission = Vec3(0.4f, 0.2f, 0.1f);
+    glow.density_first = uint32_t(s.medium_densities.size());
+    glow.density_count = 1;
+    s.medium_densities.push_back(
+        uint32_t(add_pigment(s, PatternKind::Gradient,
+                             {pigment_entry(0, Vec3(0.2f)), pigment_entry(1, Vec3(1.0f))}, 2.0f)));
+    s.add_shape("glow", Shape{ShapeKind::Sphere}, add_media_material(s, {glow}),
+                Affine::translate(Vec3(-1.2f, 0, 0)));
+    Medium haze;
+    haze.emission = Vec3(0.1f, 0.3f, 0.3f), haze.absorption = Vec3(0.5f, 0.2f, 0.1f);
+    haze.samples = 16;
+    Medium tint;
+    tint.emission = Vec3(0.2f, 0.0f, 0.2f);
+    ShapeObject pair;
+    pair.name = "pair";
+    CsgNode u;
+    u.op = CsgOp::Union;
+    u.children = {1, 2};
+    CsgNode a, b;
+    a.shape = b.shape = Shape{ShapeKind::Sphere};
+    a.material = add_media_material(s, {haze, tint});
+    b.material = add_media_material(s, {tint});
+    a.transform = Affine::translate(Vec3(1.0f, 0, 0)) * Affine::scale(Vec3(0.8f));
+    b.transform = Affine::translate(Vec3(1.8f, 0.6f, -0.5f)) * Affine::scale(Vec3(0.6f));
+    pair.nodes = {u, a, b};
+    s.add_shape_object(std::move(pair));
+    Material solid_m;
+    solid_m.color = Vec3(0.2f, 0.8f, 0.2f);
+    const uint32_t ball =
+        s.add_shape("ball", Shape{ShapeKind::Sphere}, s.add_material(solid_m),
+                    Affine::translate(Vec3(-1.2f, 0, 0)) * Affine::scale(Vec3(0.3f)));
+    s.shape_objects[ball].flags = kSolid;
+    s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
+    s.camera.position = inside ? Vec3(-1.2f, 0.1f, 0.6f) : Vec3(0, 1, 5);
+    s.camera.look_at = inside ? Vec3(-1.2f, 0, -1) : Vec3(0, 0, 0);
+    s.settings["trace.depth"] = "6";
+    return s;
+}
+
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
 /// normal pattern, variable, Fresnel and metallic reflection, conserve_energy, a texture map,
 /// no_shadow / no_image / no_reflection objects, fog and a sky pigment.

@@ -391,7 +391,8 @@ template <class Exec> class DeviceFrame {
                 bounce_hit(scene, rays[i], closest[i], pixel[i], weight[i], fog[slot[i]]);
             if (tag) out[slot[i]].gather = tag[i];
         });
-        if (host_.fog.distance > 0) // in ray order: sums stay the same on every accel
+        if (host_.fog.distance > 0 ||
+            !host_.media_containers.empty()) // in ray order: the same sums on every accel
             accumulate_in_order(
                 ex_, count, radiance_.data(),
                 [=] SHEAF_HD_LAMBDA(size_t k) -> uint32_t { return out[k].pixel; },

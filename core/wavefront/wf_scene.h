@@ -67,6 +67,10 @@ template <class Exec> class DeviceScene {
         put(p.normal_patterns, v.normal_patterns);
         put(p.material_switches, v.material_switches);
         put(p.material_entries, v.material_entries);
+        put(p.media, v.media);
+        put(p.medium_densities, v.medium_densities);
+        put(p.media_containers, v.media_containers);
+        put(p.media_solids, v.media_solids);
         put(p.lights, v.lights);
         put(units.begin, cull.begin);
         put(units.sphere, cull.sphere);

@@ -223,7 +223,8 @@ struct Builder {
                                     " levels deep; Sheaf renders " +
                                     std::to_string(kMaxCsgNesting) +
                                     " (unions of separate objects do not count)");
-        so.flags = flags;
+        // POV-Ray's objects are solid unless `hollow`: media around them leave them out.
+        so.flags = uint8_t(flags | (o.hollow ? 0 : kSolid));
         scene.add_shape_object(std::move(so));
     }
 

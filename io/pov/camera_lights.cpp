@@ -437,6 +437,16 @@ Value Parser::parse_rvalue() {
             v.str = k;
             return v;
         }
+        if (k == "media") {
+            advance();
+            Value v = Value::boxed(VType::Other, parse_media());
+            v.str = k;
+            return v;
+        }
+        if (k == "density") { // a pigment whose colour multiplies a medium
+            advance();
+            return Value::boxed(VType::Pigment, parse_density());
+        }
         if (k == "texture_map") {
             advance();
             Value v = Value::boxed(VType::Other, parse_texture_map());

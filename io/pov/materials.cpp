@@ -203,6 +203,23 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         m.fade_power = float(std::max(in->fade_power, 0.0));
         m.fade_color =
             Vec3(float(in->fade_color[0]), float(in->fade_color[1]), float(in->fade_color[2]));
+        m.media_first = uint32_t(scene_.media.size());
+        for (const PovMedia& pm : in->media) {
+            Medium md;
+            md.emission = Vec3(float(pm.emission[0]), float(pm.emission[1]), float(pm.emission[2]));
+            md.absorption =
+                Vec3(float(pm.absorption[0]), float(pm.absorption[1]), float(pm.absorption[2]));
+            md.samples = uint32_t(pm.samples);
+            std::vector<uint32_t> densities;
+            for (const auto& d : pm.densities)
+                densities.push_back(uint32_t(pigment(*d, outer * in->local * pm.local)));
+            md.density_first = uint32_t(scene_.medium_densities.size());
+            md.density_count = uint32_t(densities.size());
+            scene_.medium_densities.insert(scene_.medium_densities.end(), densities.begin(),
+                                           densities.end());
+            scene_.media.push_back(md);
+        }
+        m.media_count = uint32_t(in->media.size());
     } else {
         m.ior = 1.0f;
     }
@@ -257,7 +274,8 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
     }
     m.emission = mean * Vec3(float(f.emission[0]), float(f.emission[1]), float(f.emission[2]));
 
-    if (m.pigment < 0 && m.normal < 0) { // plain materials are shared
+    // Plain materials are shared (media are placed with their object: never shared).
+    if (m.pigment < 0 && m.normal < 0 && m.media_count == 0) {
         const std::string key = key_of(m);
         if (auto it = plain_.find(key); it != plain_.end()) return it->second;
         const uint32_t id = scene_.add_material(m);

@@ -120,11 +120,21 @@ PovTextureRef transformed(const PovTextureRef& t, const Affine& m);
 /// object.
 bool same_texture(const PovTextureRef& a, const PovTextureRef& b);
 
-/// interior { ior fade_distance fade_power fade_color }.
+/// media { emission absorption density { ... } samples transforms }: an interior's medium.
+struct PovMedia {
+    std::array<double, 3> emission{0, 0, 0}, absorption{0, 0, 0};
+    std::vector<std::shared_ptr<const PovPigment>> densities; // multiplied
+    int samples = 32; // steps along each ray inside (core/render/media.h)
+    Affine local;     // the medium's own transforms, applied to its densities
+};
+
+/// interior { ior fade_distance fade_power fade_color media }.
 struct PovInterior {
     double ior = 0; // 0: not set (1)
     double fade_distance = 0, fade_power = 0;
     std::array<double, 3> fade_color{0, 0, 0};
+    std::vector<PovMedia> media;
+    Affine local; // the object's transforms after the interior was given (its media's space)
 };
 
 /// material { texture interior }: what a declared material carries.
@@ -162,6 +172,7 @@ struct PovObject {
     PovTextureRef texture;                     // null: inherited (or the default texture)
     std::shared_ptr<const PovInterior> interior; // null: inherited (or none)
     bool inverse = false;
+    bool hollow = false; // media around it fill it (`hollow`; set on a CSG, on its members too)
     uint8_t flags = 0; // ObjectFlag bits: no_shadow, no_reflection, no_image
     PovLight light;
     Token where; // the keyword that started it, for warnings

@@ -11,6 +11,9 @@
 
 namespace sheaf::io::pov {
 
+/// Sets `hollow` on o and on its members, as POV-Ray's `hollow` on a CSG does.
+void set_hollow(PovObject& o, bool hollow);
+
 namespace {
 
 const std::set<std::string>& supported_objects() {
@@ -349,9 +352,12 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
     } else if (k == "open") {
         advance();
         if (o.kind == PovKind::Shape) o.shape.open = parse_bool_opt(true);
-    } else if (k == "hollow" || k == "sturm" || k == "no_radiosity" || k == "double_illuminate" ||
-               k == "split_union" || k == "cutaway_textures" ||
-               k == "hierarchy" || k == "smooth" || k == "global_lights") {
+    } else if (k == "hollow") {
+        advance();
+        set_hollow(o, parse_bool_opt(true));
+    } else if (k == "sturm" || k == "no_radiosity" || k == "double_illuminate" ||
+               k == "split_union" || k == "cutaway_textures" || k == "hierarchy" || k == "smooth" ||
+               k == "global_lights") {
         advance();
         parse_bool_opt(true);
     } else if (k == "uv_mapping") {
@@ -497,8 +503,18 @@ Affine Parser::parse_transform_block() {
     return total;
 }
 
+void set_hollow(PovObject& o, bool hollow) {
+    o.hollow = hollow;
+    for (PovObject& c : o.children) set_hollow(c, hollow);
+}
+
 void Parser::apply_transform(PovObject& o, const Affine& m) {
     o.texture = transformed(o.texture, m);
+    if (o.interior && !o.interior->media.empty()) { // its media move with the object
+        auto in = std::make_shared<PovInterior>(*o.interior);
+        in->local = m * in->local;
+        o.interior = std::move(in);
+    }
     switch (o.kind) {
     case PovKind::Shape:
     case PovKind::Mesh:

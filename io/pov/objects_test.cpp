@@ -324,7 +324,7 @@ TEST(PovObjects, UnsupportedIsAWarningOrStrictError) {
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("scene.pov:2:3: warning: unsupported object 'ovus'"),
               std::string::npos);
-    EXPECT_EQ(r.scene.shape_objects[1].flags, kNoShadow);
+    EXPECT_EQ(r.scene.shape_objects[1].flags & ~kSolid, kNoShadow);
     PovOptions strict;
     strict.strict = true;
     EXPECT_EQ(error_of(s, strict), "scene.pov:2:3: error: unsupported object 'ovus'");

@@ -293,6 +293,8 @@ class Parser {
     bool starts_map_value(const Token& t);
     void parse_finish(PovFinish& f);
     PovInterior parse_interior(const PovInterior& base);
+    PovMedia parse_media();
+    PovPigment parse_density();
     PovTexture current_default() const { return model.default_texture; }
 
     // ---- camera, lights, settings (camera_lights.cpp) ----

@@ -114,7 +114,7 @@ void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
         advance();
         if (k == "color_map" || k == "colour_map") {
             pg.entries = parse_color_map();
-        } else if (k == "pigment_map") {
+        } else if (k == "pigment_map" || k == "density_map") { // colours or declared densities
             pg.entries = parse_pigment_map();
         } else if (k == "pigment" && pg.patterned && list > 0) {
             if (!list_given) pg.entries.clear(), list_given = true;

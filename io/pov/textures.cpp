@@ -270,6 +270,63 @@ void Parser::parse_finish(PovFinish& f) {
     }
 }
 
+PovPigment Parser::parse_density() {
+    PovPigment d;
+    d.color = {1, 1, 1, 0, 0}; // white: the medium as it is
+    expect_sym("{");
+    if (const Token f = peek(); f.kind == TokKind::Ident && f.text == "density_file") {
+        unsupported(f, "density_file (the density is 1)");
+        skip_rest_of_block();
+        return d;
+    }
+    parse_pigment_body(d, "}");
+    return d;
+}
+
+PovMedia Parser::parse_media() {
+    expect_sym("{");
+    PovMedia m;
+    Value declared;
+    if (accept_declared(VType::Other, declared, "a media") && declared.str == "media")
+        m = declared.as<PovMedia>();
+    int intervals = 1, samples = 1;
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) break;
+        Affine tr;
+        if (parse_transform_item(tr)) {
+            m.local = tr * m.local;
+            continue;
+        }
+        if (t.kind != TokKind::Ident) error_expected(t, "a media item or '}'");
+        const std::string& k = t.text;
+        advance();
+        if (k == "emission" || k == "absorption") {
+            const Color5 c = parse_color();
+            (k == "emission" ? m.emission : m.absorption) = {c[0], c[1], c[2]};
+        } else if (k == "density") {
+            m.densities.push_back(std::make_shared<const PovPigment>(parse_density()));
+        } else if (k == "intervals") {
+            intervals = int(std::clamp(parse_float(), 1.0, 1024.0));
+        } else if (k == "samples") {
+            samples = int(std::clamp(parse_float(), 1.0, 1024.0));
+            if (accept_sym(",")) parse_float(); // method 1 and 2's maximum
+        } else if (k == "method" || k == "confidence" || k == "variance" || k == "ratio" ||
+                   k == "jitter" || k == "aa_threshold" || k == "aa_level") {
+            parse_float(); // Sheaf's steps are fixed (core/render/media.h)
+        } else if (k == "scattering") {
+            unsupported(t, "media scattering (the medium only gives off and absorbs light)");
+            skip_block();
+        } else {
+            error_expected(t, "a media item (emission, absorption, density, samples ...)");
+        }
+    }
+    // POV-Ray's method 3 takes `samples` per interval and refines where they differ; fixed
+    // steps need more: at least 32 along each crossing.
+    m.samples = std::clamp(intervals * samples, 32, 1024);
+    return m;
+}
+
 PovInterior Parser::parse_interior(const PovInterior& base) {
     expect_sym("{");
     PovInterior in = base;
@@ -291,8 +348,7 @@ PovInterior Parser::parse_interior(const PovInterior& base) {
                    accept_kw("dispersion_samples")) {
             parse_float();
         } else if (accept_kw("media")) {
-            unsupported(t, "media");
-            skip_block();
+            in.media.push_back(parse_media());
         } else {
             error_expected(t, "ior, caustics, fade_distance, media or '}'");
         }

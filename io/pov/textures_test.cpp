@@ -212,8 +212,8 @@ TEST(PovTextures, SkySphereFogAndFlags) {
     EXPECT_EQ(r.scene.pigments[size_t(r.scene.sky)].pattern.kind, PatternKind::Gradient);
     EXPECT_FLOAT_EQ(r.scene.fog.distance, 30);
     EXPECT_FLOAT_EQ(r.scene.fog.transmit, 0.25f);
-    EXPECT_EQ(r.scene.shape_objects[0].flags, kNoShadow | kNoReflection);
-    EXPECT_EQ(r.scene.shape_objects[1].flags, kNoImage);
+    EXPECT_EQ(r.scene.shape_objects[0].flags & ~kSolid, kNoShadow | kNoReflection);
+    EXPECT_EQ(r.scene.shape_objects[1].flags & ~kSolid, kNoImage);
 }
 
 TEST(PovTextures, ImageMapsAreTextures) {
@@ -285,6 +285,58 @@ TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
     EXPECT_FLOAT_EQ(shape_material(r, 2).ior, 1.2f);
     const Pigment& onion = r.scene.pigments[size_t(shape_material(r, 3).pigment)];
     EXPECT_FLOAT_EQ(r.scene.pigment_entries[onion.first + 1].color[1], 1);
+}
+
+} // namespace
+} // namespace sheaf::io::pov
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::error_of;
+using test::load_text;
+
+TEST(PovMedia, InteriorMediaTheirDensitiesAndDeclarations) {
+    const PovResult r = load_text(R"(
+#declare D = density { spherical density_map { [0 rgb 0] [1 rgb <1, 0.5, 0.2>] } }
+#declare M = media { emission 0.1 absorption <0.2, 0.3, 0.4> }
+sphere { 0, 1 pigment { rgbf 1 } hollow
+  interior { media { M density { D scale 2 } intervals 4 samples 20 method 3 }
+             media { emission rgb <0, 1, 0> } }
+  translate x
+}
+sphere { 0, 1 pigment { rgbf 1 } interior { media { emission 1 } } translate -x })");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Scene& s = r.scene;
+    ASSERT_EQ(s.media.size(), 3u);
+    EXPECT_FLOAT_EQ(s.media[0].emission.y, 0.1f);
+    EXPECT_FLOAT_EQ(s.media[0].absorption.z, 0.4f);
+    EXPECT_EQ(s.media[0].samples, 80u); // intervals x samples
+    EXPECT_EQ(s.media[1].samples, 32u); // at least 32 steps
+    ASSERT_EQ(s.media[0].density_count, 1u);
+    const Pigment& d = s.pigments[s.medium_densities[s.media[0].density_first]];
+    EXPECT_EQ(d.pattern.kind, PatternKind::Spherical);
+    ASSERT_EQ(s.shape_objects.size(), 2u);
+    // Each sphere has its own material: media are placed with their object, never shared.
+    const uint32_t m0 = s.shape_objects[0].nodes[0].material;
+    const uint32_t m1 = s.shape_objects[1].nodes[0].material;
+    EXPECT_NE(m0, m1);
+    EXPECT_EQ(s.materials[m0].media_count, 2u);
+    EXPECT_EQ(s.materials[m1].media_count, 1u);
+    // hollow: media around it fill it; POV-Ray's objects are solid otherwise.
+    EXPECT_FALSE(s.shape_objects[0].flags & kSolid);
+    EXPECT_TRUE(s.shape_objects[1].flags & kSolid);
+}
+
+TEST(PovMedia, ScatteringAndDensityFilesAreWarned) {
+    const PovResult r = load_text("sphere { 0, 1 hollow interior { media { scattering { 1, 0.1 } "
+                                  "density { density_file df3 \"x.df3\" interpolate 1 } } } }");
+    ASSERT_EQ(r.warnings.size(), 2u);
+    EXPECT_NE(r.warnings[0].find("media scattering"), std::string::npos);
+    EXPECT_NE(r.warnings[1].find("density_file"), std::string::npos);
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { glow 1 } } }"),
+              "scene.pov:1:34: error: found 'glow', expected a media item (emission, absorption, "
+              "density, samples ...)");
 }
 
 } // namespace

@@ -54,6 +54,8 @@ SCENES = [
     ("examples/camera/panoramic.pov", "exact"),
     ("examples/camera/spherical.pov", "exact"),
     ("examples/camera/omnimax.pov", "exact"),
+    ("examples/interior/media/media4.pov", "exact"),
+    ("examples/interior/media/media5.pov", "exact"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

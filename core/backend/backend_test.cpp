@@ -105,6 +105,9 @@ TEST(Backend, DeepCsgStaysOnTheCpu) {
     const int most = int((kDeviceStackCap - kDeviceStackBase) / kDeviceStackPerCsgLevel);
     EXPECT_LE(device_stack_bytes(nested_csg(most)), kDeviceStackCap);
     EXPECT_GT(device_stack_bytes(nested_csg(most + 1)), kDeviceStackCap);
+    // Media containers add their span lists on top of the shading frame.
+    EXPECT_EQ(device_stack_bytes(prepare_scene(test::media_scene())),
+              kDeviceStackBase + kDeviceStackPerCsgLevel + kDeviceStackMedia);
 
     CudaBackendStatus device;
     device.usable = true;

@@ -25,6 +25,10 @@ namespace sheaf {
 constexpr size_t kDeviceStackBase = size_t(13) << 10;
 constexpr size_t kDeviceStackPerCsgLevel = size_t(10) << 10;
 constexpr size_t kDeviceStackCap = size_t(96) << 10;
+// Media (core/render/media.h) walk their containers' spans while a hit is shaded: three span
+// lists (772 bytes each), the step loop and a density pigment on top of the shading frame,
+// their csg_spans levels counted as above. Estimated from those sizes, not yet by ptxas.
+constexpr size_t kDeviceStackMedia = size_t(4) << 10;
 
 /// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each
 /// node's height is computed once (roots may share subtrees).
@@ -67,7 +71,8 @@ inline int csg_nesting(const PreparedScene& s) {
 
 /// The stack the device code needs for `s`, in bytes (may exceed kDeviceStackCap).
 inline size_t device_stack_bytes(const PreparedScene& s) {
-    return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel;
+    return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel +
+           (s.media_containers.empty() ? 0 : kDeviceStackMedia);
 }
 
 } // namespace sheaf

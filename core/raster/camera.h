@@ -97,23 +97,21 @@ struct CameraFrame {
             break;
         }
         case Projection::Cylinder1:
-        case Projection::Cylinder3: {
-            const float a = u * angle, h = v * up_length;
-            d = right * hdm::sinf(a) + forward * hdm::cosf(a);
-            if (projection == Projection::Cylinder1)
-                d = d + up * h;
-            else
-                r.origin = origin + up * h;
-            break;
-        }
         case Projection::Cylinder2:
+        case Projection::Cylinder3:
         case Projection::Cylinder4: {
-            const float b = v * angle, w = u * right_length;
-            d = up * hdm::sinf(b) + forward * hdm::cosf(b);
-            if (projection == Projection::Cylinder2)
-                d = d + right * w;
+            // 1 and 3: a vertical cylinder (turning across, running up); 2 and 4: a horizontal
+            // one. 1 and 2 tilt the ray along the axis, 3 and 4 move the eye along it.
+            const bool vertical =
+                projection == Projection::Cylinder1 || projection == Projection::Cylinder3;
+            const Vec3 turn = vertical ? right : up, axis = vertical ? up : right;
+            const float a = (vertical ? u : v) * angle;
+            const float h = vertical ? v * up_length : u * right_length;
+            d = turn * hdm::sinf(a) + forward * hdm::cosf(a);
+            if (projection == Projection::Cylinder1 || projection == Projection::Cylinder2)
+                d = d + axis * h;
             else
-                r.origin = origin + right * w;
+                r.origin = origin + axis * h;
             break;
         }
         default: { // Spherical: latitude v, then longitude u about up

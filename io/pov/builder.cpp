@@ -273,6 +273,10 @@ struct Builder {
             out.right_length = rl;
             out.up_length = ul;
             out.direction_length = length(dir);
+            for (float l : {rl, ul, out.direction_length})
+                if (!(l > 0 && l < 1e6f))
+                    p.error_at(c.type_at, "this camera's right, up and direction need lengths "
+                                          "above 0 and below 1e6");
         } else if (c.projection == Projection::Orthographic) {
             out.ortho_height = length(up) > 0 ? length(up) : 1.0f;
             if (c.angle > 0 && c.angle < 180) {

@@ -43,6 +43,7 @@ void Parser::parse_camera(PovCamera& c) {
         advance();
         if (const Projection* type = camera_type(k)) {
             c.projection = *type;
+            c.type_at = t;
             if (k == "cylinder") {
                 const Token at = peek();
                 const double n = parse_float();
@@ -66,11 +67,13 @@ void Parser::parse_camera(PovCamera& c) {
         else if (k == "angle") {
             const Token at = peek();
             c.angle = parse_float();
-            if (c.angle < 0) error_at(at, "a camera's angle must not be negative");
+            if (!(c.angle >= 0 && c.angle <= 3600))
+                error_at(at, "a camera's angle must lie between 0 and 3600 degrees");
             if (accept_sym(",")) { // spherical: the vertical angle
                 const Token v = peek();
                 c.v_angle = parse_float();
-                if (c.v_angle < 0) error_at(v, "a camera's vertical angle must not be negative");
+                if (!(c.v_angle >= 0 && c.v_angle <= 3600))
+                    error_at(v, "a camera's vertical angle must lie between 0 and 3600 degrees");
             }
         } else if (k == "focal_point" || k == "aperture" || k == "blur_samples" ||
                    k == "confidence" || k == "variance") {

@@ -103,9 +103,15 @@ TEST(PovCamera, BadCameraTypesAndAnglesAreErrors) {
     EXPECT_EQ(error_of("camera { cylinder 5 }"),
               "scene.pov:1:19: error: a cylinder camera's type must be 1, 2, 3 or 4, not 5");
     EXPECT_EQ(error_of("camera { fisheye angle -10 }"),
-              "scene.pov:1:24: error: a camera's angle must not be negative");
-    EXPECT_EQ(error_of("camera { spherical angle 10, -1 }"),
-              "scene.pov:1:30: error: a camera's vertical angle must not be negative");
+              "scene.pov:1:24: error: a camera's angle must lie between 0 and 3600 degrees");
+    EXPECT_EQ(
+        error_of("camera { spherical angle 10, -1 }"),
+        "scene.pov:1:30: error: a camera's vertical angle must lie between 0 and 3600 degrees");
+    EXPECT_EQ(error_of("camera { fisheye angle 1e30 }"),
+              "scene.pov:1:24: error: a camera's angle must lie between 0 and 3600 degrees");
+    EXPECT_EQ(error_of("camera { cylinder 1 up 0 }"),
+              "scene.pov:1:10: error: this camera's right, up and direction need lengths above 0 "
+              "and below 1e6");
 }
 
 TEST(PovCamera, RightOverUpIsTheViewsShape) {

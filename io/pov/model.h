@@ -185,6 +185,7 @@ struct PovCamera {
     bool has_look_at = false;
     double angle = 0;    // degrees, 0: not given
     double v_angle = -1; // spherical: the vertical angle; < 0: not given
+    Token type_at;       // the camera type's keyword, for errors
     Affine transform; // applied after everything else
 };
 

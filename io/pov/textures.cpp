@@ -4,6 +4,7 @@
 
 #include "core/base/error.h"
 
+#include <cmath>
 #include <set>
 
 namespace sheaf::io::pov {
@@ -302,7 +303,12 @@ PovMedia Parser::parse_media() {
         const std::string& k = t.text;
         advance();
         if (k == "emission" || k == "absorption") {
+            const Token at = peek();
             const Color5 c = parse_color();
+            for (int i = 0; i < 3; ++i)
+                if (!(std::fabs(c[i]) <= 1e30) || (k == "absorption" && c[i] < 0))
+                    error_at(at, "a medium's " + k + " must be finite" +
+                                     (k == "absorption" ? " and not negative" : ""));
             (k == "emission" ? m.emission : m.absorption) = {c[0], c[1], c[2]};
         } else if (k == "density") {
             m.densities.push_back(std::make_shared<const PovPigment>(parse_density()));

@@ -334,6 +334,10 @@ TEST(PovMedia, ScatteringAndDensityFilesAreWarned) {
     ASSERT_EQ(r.warnings.size(), 2u);
     EXPECT_NE(r.warnings[0].find("media scattering"), std::string::npos);
     EXPECT_NE(r.warnings[1].find("density_file"), std::string::npos);
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { emission 1e39 } } }"),
+              "scene.pov:1:43: error: a medium's emission must be finite");
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { absorption -1 } } }"),
+              "scene.pov:1:45: error: a medium's absorption must be finite and not negative");
     EXPECT_EQ(error_of("sphere { 0, 1 interior { media { glow 1 } } }"),
               "scene.pov:1:34: error: found 'glow', expected a media item (emission, absorption, "
               "density, samples ...)");

@@ -37,6 +37,14 @@ SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Ve
             emission += md.emission * density;
             absorption += md.absorption * density;
         }
+        // Huge emissions times huge densities overflow: keep both finite (NaN: none), so that
+        // a step that absorbs everything adds nothing rather than 0 x infinity.
+        for (int c = 0; c < 3; ++c) {
+            const float e = emission[c] == emission[c] ? emission[c] : 0.0f;
+            const float a = absorption[c] == absorption[c] ? absorption[c] : 0.0f;
+            emission[c] = hdm::fminf(hdm::fmaxf(e, -1e30f), 1e30f);
+            absorption[c] = hdm::fminf(hdm::fmaxf(a, 0.0f), 1e30f);
+        }
         // Half the step's absorption lies between its middle and its near end.
         const Vec3 half(hdm::expf(-0.5f * absorption.x * step),
                         hdm::expf(-0.5f * absorption.y * step),

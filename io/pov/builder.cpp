@@ -102,6 +102,8 @@ struct Builder {
     }
 
     void mesh(const PovObject& o, const PovTexture& tex, const PovInterior* in, uint8_t flags) {
+        // Media fill the analytic objects that hold them (core/render/media.h).
+        if (in && !in->media.empty()) p.unsupported(o.where, "media in a mesh (ignored)");
         const uint32_t mat = material(tex, in);
         const Affine t = flip * o.local;
         for (const Vec3& v : o.mesh->positions)

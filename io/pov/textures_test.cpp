@@ -334,6 +334,10 @@ TEST(PovMedia, ScatteringAndDensityFilesAreWarned) {
     ASSERT_EQ(r.warnings.size(), 2u);
     EXPECT_NE(r.warnings[0].find("media scattering"), std::string::npos);
     EXPECT_NE(r.warnings[1].find("density_file"), std::string::npos);
+    const PovResult m = load_text("mesh { triangle { 0, x, y } hollow interior { media { "
+                                  "emission 1 } } }");
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_NE(m.warnings[0].find("unsupported media in a mesh"), std::string::npos);
     EXPECT_EQ(error_of("sphere { 0, 1 interior { media { emission 1e39 } } }"),
               "scene.pov:1:43: error: a medium's emission must be finite");
     EXPECT_EQ(error_of("sphere { 0, 1 interior { media { absorption -1 } } }"),

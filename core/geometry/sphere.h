@@ -4,6 +4,8 @@
 #include "core/math/hd_math.h"
 #include "core/math/vec3.h"
 
+#include <cfloat>
+
 namespace sheaf {
 
 struct Sphere {
@@ -23,6 +25,16 @@ SHEAF_HD_INLINE float pad_radius(float r, Vec3 center) {
 
 SHEAF_HD_INLINE bool sphere_contains(const Sphere& s, Vec3 p) {
     return length(p - s.center) <= s.radius;
+}
+
+/// Whether the ray from `origin` along unit `dir` (t >= 0) can meet sphere `s`: it passes
+/// within the radius of the centre, not wholly behind the origin. Always for an unbounded one.
+SHEAF_HD_INLINE bool ray_meets_sphere(const Sphere& s, Vec3 origin, Vec3 dir) {
+    if (!(fabsf(s.radius) <= FLT_MAX)) return true;
+    const Vec3 oc = s.center - origin;
+    const float along = dot(oc, dir);
+    return !(length_squared(oc) - along * along > s.radius * s.radius ||
+             (along < -s.radius && length(oc) > s.radius));
 }
 
 /// Union of two spheres as written in paper 000 (eqs. 7 and 8): centre halfway between the

@@ -30,14 +30,7 @@ SHEAF_HD_INLINE uint64_t cast_analytic_pixel(const SceneView& scene, const Camer
     const float depth_per_t = cam.ortho ? 1.0f : dot(ray.dir, cam.forward);
     for (uint32_t a = 0; a < scene.analytic_count; ++a) {
         if (scene.prim_flag(first + a, kNoImage)) continue;
-        const Sphere& s = scene.prim_sphere[first + a];
-        if (fabsf(s.radius) <= FLT_MAX) { // finite: the bounding sphere first
-            const Vec3 oc = s.center - ray.origin;
-            const float along = dot(oc, ray.dir);
-            if (length_squared(oc) - along * along > s.radius * s.radius ||
-                (along < -s.radius && length(oc) > s.radius))
-                continue;
-        }
+        if (!ray_meets_sphere(scene.prim_sphere[first + a], ray.origin, ray.dir)) continue;
         AnalyticHit h;
         if (!analytic_first_hit(scene, a, ray, h)) continue;
         const float depth = h.t * depth_per_t;

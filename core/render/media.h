@@ -54,16 +54,6 @@ SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Ve
     }
 }
 
-/// Whether the ray from `origin` along unit `dir` can meet bounding sphere `s` (always for an
-/// unbounded one).
-SHEAF_HD_INLINE bool ray_meets_sphere(const Sphere& s, Vec3 origin, Vec3 dir) {
-    if (!(fabsf(s.radius) <= FLT_MAX)) return true;
-    const Vec3 oc = s.center - origin;
-    const float along = dot(oc, dir);
-    return !(length_squared(oc) - along * along > s.radius * s.radius ||
-             (along < -s.radius && length(oc) > s.radius));
-}
-
 /// The media of every container along the ray from `origin` along unit `dir` up to t_end
 /// (infinite for rays that leave the scene): what arrives at `origin` of light from t_end
 /// (`keep`) and the light the media give off on the way (`add`). Parts of different

@@ -97,23 +97,32 @@ class FramePipeline {
         vis.assign(size_t(W_) * H_, kEmptyPixel);
         RayBatch b(RayType::Camera, memory_);
         {
+            // Count, scan, fill (the wavefront's order): a ray for every sample that has one.
             PhaseTimer t(st_, "time_ms.ray_creation");
             std::vector<uint32_t> slot(vis.size());
-            std::vector<Ray> rays(vis.size());
-            std::vector<uint8_t> has(vis.size());
             parallel_for(
-                "camera.rays", vis.size(),
-                [&](size_t i) { has[i] = cam.camera_ray(int(i % W_), int(i / W_), rays[i]); },
+                "camera.count", vis.size(),
+                [&](size_t i) {
+                    Ray r;
+                    slot[i] = cam.camera_ray(int(i % W_), int(i / W_), r) ? 1u : 0u;
+                },
                 1024);
             uint32_t count = 0;
-            for (size_t i = 0; i < vis.size(); ++i) slot[i] = count, count += has[i];
+            for (uint32_t& s : slot) {
+                const uint32_t has = s;
+                s = count, count += has;
+            }
             b.resize(count);
-            for (size_t i = 0; i < vis.size(); ++i)
-                if (has[i]) {
-                    b.rays[slot[i]] = rays[i];
+            parallel_for(
+                "camera.fill", vis.size(),
+                [&](size_t i) {
+                    Ray r;
+                    if (!cam.camera_ray(int(i % W_), int(i / W_), r)) return;
+                    b.rays[slot[i]] = r;
                     b.pixel[slot[i]] = uint32_t(i);
                     b.weight[slot[i]] = Vec3(1.0f);
-                }
+                },
+                1024);
         }
         TraceResult r;
         trace_batch(scene_, *units_, b, s_, st_, memory_, r);

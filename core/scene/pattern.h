@@ -81,14 +81,9 @@ struct FractalParams {
 constexpr int kFractalMaxIterations = 65535; // FractalParams::iterations' 16 bits
 constexpr int kFractalMinExponent = 2, kFractalMaxExponent = 33;
 
-/// The highest interior (`inside`) or exterior colouring type.
-constexpr int fractal_max_type(bool inside) {
-    return inside ? 6 : 8;
-}
-
 /// Why `type` is not an interior (`inside`) or exterior colouring type, or null when it is.
 inline const char* fractal_type_error(bool inside, double type) {
-    if (type >= 0 && type <= fractal_max_type(inside) && type == std::floor(type)) return nullptr;
+    if (type >= 0 && type <= (inside ? 6 : 8) && type == std::floor(type)) return nullptr;
     return inside ? "the interior type must be a whole number from 0 to 6"
                   : "the exterior type must be a whole number from 0 to 8";
 }

@@ -107,17 +107,6 @@ void spatial_order(PreparedScene& p, size_t b, size_t e) {
     permute(p.prim_sphere);
 }
 
-// Whether material m, or a material its texture maps lead to, holds media.
-bool has_media(const Scene& s, uint32_t m, int depth = 0) {
-    const Material& mt = s.materials[m];
-    if (mt.media_count > 0) return true;
-    if (mt.select < 0 || depth > 16) return false;
-    const MaterialSwitch& sw = s.material_switches[size_t(mt.select)];
-    for (uint32_t e = sw.first; e < sw.first + sw.count; ++e)
-        if (has_media(s, s.material_entries[e].material, depth + 1)) return true;
-    return false;
-}
-
 // Whether a pigment has filter or transmit anywhere (entries and nested pigments included).
 bool pigment_may_pass(const Scene& s, int32_t index, int depth = 0) {
     if (index < 0 || depth > 16) return false;
@@ -132,16 +121,28 @@ bool pigment_may_pass(const Scene& s, int32_t index, int depth = 0) {
     return false;
 }
 
-bool material_may_pass(const Scene& s, uint32_t m, int depth = 0) {
+// Whether `test` holds for material m or, when m is a texture map's switch, for any material
+// the switch leads to (16 levels deep at most).
+template <class Test>
+bool any_material(const Scene& s, uint32_t m, const Test& test, int depth = 0) {
     const Material& mt = s.materials[m];
     if (depth > 16) return false;
-    if (mt.select >= 0) {
-        const MaterialSwitch& sw = s.material_switches[size_t(mt.select)];
-        for (uint32_t e = sw.first; e < sw.first + sw.count; ++e)
-            if (material_may_pass(s, s.material_entries[e].material, depth + 1)) return true;
-        return false;
-    }
-    return mt.pigment >= 0 ? pigment_may_pass(s, mt.pigment) : mt.transmission > 0;
+    if (mt.select < 0) return test(mt);
+    const MaterialSwitch& sw = s.material_switches[size_t(mt.select)];
+    for (uint32_t e = sw.first; e < sw.first + sw.count; ++e)
+        if (any_material(s, s.material_entries[e].material, test, depth + 1)) return true;
+    return false;
+}
+
+bool material_may_pass(const Scene& s, uint32_t m) {
+    return any_material(s, m, [&](const Material& mt) {
+        return mt.pigment >= 0 ? pigment_may_pass(s, mt.pigment) : mt.transmission > 0;
+    });
+}
+
+// Whether material m, or a material its texture maps lead to, holds media.
+bool has_media(const Scene& s, uint32_t m) {
+    return any_material(s, m, [](const Material& mt) { return mt.media_count > 0; });
 }
 
 } // namespace

@@ -235,11 +235,10 @@ void Scene::validate() const {
         !(c.ortho_height > 0 && std::isfinite(c.ortho_height)))
         throw SceneError("an orthographic camera needs a view height > 0");
     if (traced_projection(c.projection)) {
-        if (!(c.angle_degrees > 0 && c.angle_degrees <= 3600) ||
-            !(c.v_angle_degrees > 0 && c.v_angle_degrees <= 3600))
+        if (!camera_angle_ok(c.angle_degrees) || !camera_angle_ok(c.v_angle_degrees))
             throw SceneError("the camera's angles must lie in (0, 3600] degrees");
         for (float l : {c.right_length, c.up_length, c.direction_length})
-            if (!(l > 0 && l < 1e6f))
+            if (!camera_length_ok(l))
                 throw SceneError("the camera's right, up and direction lengths must be finite "
                                  "numbers > 0");
     }

@@ -133,6 +133,15 @@ inline bool traced_projection(Projection p) {
     return p != Projection::Perspective && p != Projection::Orthographic;
 }
 
+/// The traced projections' limits, which Scene::validate and every reader enforce: an angle
+/// in (0, 3600] degrees, and lengths of right, up and direction in (0, 1e6).
+inline bool camera_angle_ok(double degrees) {
+    return degrees > 0 && degrees <= 3600;
+}
+inline bool camera_length_ok(double length) {
+    return length > 0 && length < 1e6;
+}
+
 struct Camera {
     Vec3 position{0, 0, 5};
     Vec3 look_at{0, 0, 0};

@@ -276,7 +276,7 @@ struct Builder {
             out.up_length = ul;
             out.direction_length = length(dir);
             for (float l : {rl, ul, out.direction_length})
-                if (!(l > 0 && l < 1e6f))
+                if (!camera_length_ok(l))
                     p.error_at(c.type_at, "this camera's right, up and direction need lengths "
                                           "above 0 and below 1e6");
         } else if (c.projection == Projection::Orthographic) {

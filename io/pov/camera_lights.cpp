@@ -67,12 +67,12 @@ void Parser::parse_camera(PovCamera& c) {
         else if (k == "angle") {
             const Token at = peek();
             c.angle = parse_float();
-            if (!(c.angle >= 0 && c.angle <= 3600))
+            if (!(c.angle == 0 || camera_angle_ok(c.angle))) // 0: not given
                 error_at(at, "a camera's angle must lie between 0 and 3600 degrees");
             if (accept_sym(",")) { // spherical: the vertical angle
                 const Token v = peek();
                 c.v_angle = parse_float();
-                if (!(c.v_angle >= 0 && c.v_angle <= 3600))
+                if (!(c.v_angle == 0 || camera_angle_ok(c.v_angle)))
                     error_at(v, "a camera's vertical angle must lie between 0 and 3600 degrees");
             }
         } else if (k == "focal_point" || k == "aperture" || k == "blur_samples" ||

@@ -64,12 +64,12 @@ void SceneReader::read_camera(const pugi::xml_node& node) {
         ctx_.fail(node, node.attribute("fov"), "the field of view must lie in (0, 180) degrees");
     if (c.projection == Projection::Orthographic && !(c.ortho_height > 0))
         ctx_.fail(node, node.attribute("ortho_height"), "ortho_height must be > 0");
-    if (traced && !(c.angle_degrees > 0 && c.angle_degrees <= 3600))
+    if (traced && !camera_angle_ok(c.angle_degrees))
         ctx_.fail(node, node.attribute("angle"), "the angle must lie in (0, 3600] degrees");
-    if (traced && !(c.v_angle_degrees > 0 && c.v_angle_degrees <= 3600))
+    if (traced && !camera_angle_ok(c.v_angle_degrees))
         ctx_.fail(node, node.attribute("v_angle"), "v_angle must lie in (0, 3600] degrees");
-    if (traced && !(c.right_length > 0 && c.up_length > 0 && c.direction_length > 0 &&
-                    c.right_length < 1e6f && c.up_length < 1e6f && c.direction_length < 1e6f))
+    if (traced && !(camera_length_ok(c.right_length) && camera_length_ok(c.up_length) &&
+                    camera_length_ok(c.direction_length)))
         ctx_.fail(node, node.attribute("lengths"),
                   "the lengths of right, up and direction must be finite numbers > 0");
     scene_.camera = c;

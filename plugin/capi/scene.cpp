@@ -426,14 +426,16 @@ SHEAF_API SheafError sheafSceneSetCameraLens(SheafScene scene, float angle_degre
     return barrier([&] {
         require(scene, "scene");
         for (float a : {angle_degrees, v_angle_degrees})
-            if (!(a > 0 && a <= 3600))
+            if (!sheaf::camera_angle_ok(a))
                 throw InvalidArgument("a camera angle of " + std::to_string(a) +
                                       " degrees; expected (0, 3600]");
         sheaf::Vec3 l(-1.0f);
         if (lengths) {
             l = vec3(lengths, "lengths");
-            if (!(l.x > 0 && l.y > 0 && l.z > 0))
-                throw InvalidArgument("the lengths of right, up and direction must be > 0");
+            if (!(sheaf::camera_length_ok(l.x) && sheaf::camera_length_ok(l.y) &&
+                  sheaf::camera_length_ok(l.z)))
+                throw InvalidArgument(
+                    "the lengths of right, up and direction must be > 0 and below 1e6");
         }
         modify(scene, [&](sheaf::Scene& s) {
             s.camera.angle_degrees = angle_degrees;

@@ -234,8 +234,9 @@ struct Builder {
         const PovCamera& c = p.model.camera;
         Vec3 loc = c.location, dir = c.direction, right = c.right, up = c.up;
         // POV-Ray keeps the camera's handedness through look_at: right -x (a right-handed
-        // camera) shows the image mirrored.
-        const bool left_handed = dot(cross(up, dir), right) >= 0;
+        // camera) shows the image mirrored. Only a positive handedness counts as left-handed:
+        // an up parallel to the direction (up z with the default direction) mirrors too.
+        const bool left_handed = dot(cross(up, dir), right) > 0;
         if (c.angle > 0 && c.angle < 180 && c.projection == Projection::Perspective)
             dir = normalize(dir) * (0.5f * length(right) / std::tan(float(c.angle * M_PI / 360)));
         if (c.has_look_at && length(c.look_at - loc) > 0) {

@@ -32,6 +32,10 @@ TEST(PovCamera, RightHandedCamerasMirrorThePicture) {
     EXPECT_TRUE(load_text("camera { location <0, 2, -5> right -x look_at 0 angle 40 }")
                     .scene.camera.mirror);
     EXPECT_TRUE(load_text("camera { location <0, 0, -5> right <-1, 0, 0> }").scene.camera.mirror);
+    // An up along the default direction has no handedness, which POV-Ray takes as
+    // right-handed (objects/fractal3.pov's camera: up and sky z, looking down y).
+    EXPECT_TRUE(
+        load_text("camera { location <0, 3, 0> up z sky z look_at 0 }").scene.camera.mirror);
     const PovResult r = load_text("camera { location <0, 2, -5> right -x up y look_at 0 }");
     EXPECT_NEAR(r.scene.camera.up.y, 0.93, 0.01); // up still points up
     // A mirrored camera draws x the other way: the same scene, the image flipped.

@@ -108,6 +108,9 @@ TEST(Backend, DeepCsgStaysOnTheCpu) {
     // Media containers add their span lists on top of the shading frame.
     EXPECT_EQ(device_stack_bytes(prepare_scene(test::media_scene())),
               kDeviceStackBase + kDeviceStackPerCsgLevel + kDeviceStackMedia);
+    // So do julia fractals' orbits (julia_scene: one CSG level).
+    EXPECT_EQ(device_stack_bytes(prepare_scene(test::julia_scene())),
+              kDeviceStackBase + kDeviceStackPerCsgLevel + kDeviceStackJulia);
 
     CudaBackendStatus device;
     device.usable = true;

@@ -29,6 +29,10 @@ constexpr size_t kDeviceStackCap = size_t(96) << 10;
 // lists (772 bytes each), the step loop and a density pigment on top of the shading frame,
 // their csg_spans levels counted as above. Estimated from those sizes, not yet by ptxas.
 constexpr size_t kDeviceStackMedia = size_t(4) << 10;
+// A julia fractal's march (core/geometry/julia.h) keeps one point's iterates at the leaf: an
+// orbit of 65 x 4 doubles (2,080 bytes) and the span arrays, beside csg_spans' level.
+// Estimated from those sizes, not yet by ptxas.
+constexpr size_t kDeviceStackJulia = size_t(3) << 10;
 
 /// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each
 /// node's height is computed once (roots may share subtrees).
@@ -72,7 +76,8 @@ inline int csg_nesting(const PreparedScene& s) {
 /// The stack the device code needs for `s`, in bytes (may exceed kDeviceStackCap).
 inline size_t device_stack_bytes(const PreparedScene& s) {
     return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel +
-           (s.media_containers.empty() ? 0 : kDeviceStackMedia);
+           (s.media_containers.empty() ? 0 : kDeviceStackMedia) +
+           (s.julias.empty() ? 0 : kDeviceStackJulia);
 }
 
 } // namespace sheaf

@@ -13,6 +13,9 @@
 //             coefficients the scene keeps apart: Shape::index names them
 //   superellipsoid  POV-Ray's, exponents e = a and n = b, inside [-1, 1]^3
 //             (core/geometry/superellipsoid.h)
+//   julia     POV-Ray's julia_fractal, a 3D slice of a 4D Julia set within radius 2 (4 for
+//             the hypercomplex algebra) of the origin (core/geometry/julia.h); the scene keeps
+//             its parameters: Shape::index names them
 //   glyph     an outline in the x-y plane (a character, a prism's splines) swept from z = 0 to
 //             z = 1 (core/geometry/glyph.h); the scene keeps the outlines: Shape::index names
 //             one; open: its sides only (a surface)
@@ -21,6 +24,7 @@
 #include "core/geometry/blob.h"
 #include "core/geometry/glyph.h"
 #include "core/geometry/isosurface.h"
+#include "core/geometry/julia.h"
 #include "core/geometry/poly.h"
 #include "core/geometry/ray.h"
 #include "core/geometry/revolution.h"
@@ -45,7 +49,8 @@ enum class ShapeKind : uint32_t {
     Glyph,
     Revolution,
     Blob,
-    Isosurface
+    Isosurface,
+    Julia
 };
 
 struct Shape {
@@ -56,11 +61,13 @@ struct Shape {
     uint32_t index = 0; // poly: its coefficients in the scene's polys; glyph: its outline in
                         // the scene's glyphs; revolution: its profile in the scene's
                         // revolutions; blob: its components in the scene's blobs;
-                        // isosurface: its entry in the scene's isosurfaces
+                        // isosurface: its entry in the scene's isosurfaces; julia: its
+                        // parameters in the scene's julias
 };
 
 /// What shapes of some kinds read from the scene beside their Shape: poly coefficients, glyph
-/// outlines, revolution profiles, blob components, isosurfaces and the functions they run. A
+/// outlines, revolution profiles, blob components, isosurfaces and the functions they run,
+/// julia fractals' parameters. A
 /// table a scene lacks is null, and its shapes then have no spans.
 struct ShapeTables {
     const PolyCoeffs* polys = nullptr;
@@ -72,6 +79,7 @@ struct ShapeTables {
     const BlobElement* blob_elements = nullptr;
     const IsoRef* isosurfaces = nullptr;
     FnView functions;
+    const JuliaFractal* julias = nullptr;
 };
 
 /// One span [t0, t1] of a ray inside a solid, with the local normals at both ends (pointing
@@ -268,6 +276,15 @@ SHEAF_HD_NOINLINE int iso_spans(const IsoRef& s, const FnView& fv, const Ray& r,
     return count;
 }
 
+// Out of line on the device, like glyph_spans (julia_pieces itself is too).
+SHEAF_HD_NOINLINE int julia_spans(const JuliaFractal& j, const Ray& r, Span* out) {
+    double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
+    Vec3 n0[kMaxShapeSpans], n1[kMaxShapeSpans];
+    const int count = julia_pieces(j, r, t0, t1, n0, n1, kMaxShapeSpans);
+    for (int i = 0; i < count; ++i) out[i] = Span{float(t0[i]), float(t1[i]), n0[i], n1[i]};
+    return count;
+}
+
 } // namespace shape_detail
 
 /// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `tables` holds
@@ -394,6 +411,8 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
         return tables.isosurfaces && tables.functions.programs
                    ? iso_spans(tables.isosurfaces[s.index], tables.functions, r, out)
                    : 0;
+    case ShapeKind::Julia:
+        return tables.julias ? julia_spans(tables.julias[s.index], r, out) : 0;
     }
     return 0;
 }

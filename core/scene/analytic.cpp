@@ -50,6 +50,8 @@ Sphere local_bound(const PreparedScene& scene, const Shape& s) {
         const BlobRef& b = scene.blobs[s.index];
         return {Vec3(b.bound[0], b.bound[1], b.bound[2]), b.bound[3]};
     }
+    case ShapeKind::Julia: // the sphere its points escape beyond
+        return {Vec3(0.0f), float(julia_detail::bound_radius(scene.julias[s.index]))};
     case ShapeKind::Isosurface: { // around its container
         const IsoRef& b = scene.isosurfaces[s.index];
         return {Vec3(b.bound[0], b.bound[1], b.bound[2]), b.bound[3]};

@@ -226,6 +226,10 @@ PreparedScene prepare_scene(const Scene& scene) {
                     shape.index = uint32_t(p.polys.size());
                     p.polys.push_back(*node.poly);
                 }
+                if (shape.kind == ShapeKind::Julia) {
+                    shape.index = uint32_t(p.julias.size());
+                    p.julias.push_back(*node.julia);
+                }
                 if (shape.kind == ShapeKind::Glyph)
                     shape.index = shared_index(glyphs_seen, *node.glyph, p.glyphs,
                                                [&] { return glyph_ref(p, *node.glyph); });

@@ -66,6 +66,7 @@ struct PreparedScene {
     std::vector<BlobRef> blobs;                         // of the blob leaves, by Shape::index
     std::vector<BlobElement> blob_elements;             // their components
     std::vector<IsoRef> isosurfaces;                    // of the isosurface leaves
+    std::vector<JuliaFractal> julias;                   // of the julia leaves, by Shape::index
     std::vector<uint32_t> shape_material; // per placed shape
     std::vector<PreparedCsgNode> csg;
     std::vector<uint32_t> csg_children;

@@ -169,6 +169,24 @@ void Scene::validate() const {
                             !std::isfinite(e.len) || !(e.len >= 0))
                             throw SceneError(name + ": a blob's component is not finite");
                 }
+                if (s.kind == ShapeKind::Julia) {
+                    if (!node.julia)
+                        throw SceneError(name + ": a julia fractal without parameters");
+                    const JuliaFractal& j = *node.julia;
+                    bool finite = std::isfinite(j.slice_dist) && std::isfinite(j.min_step);
+                    for (int i = 0; i < 4; ++i)
+                        finite = finite && std::isfinite(j.c[i]) && std::isfinite(j.slice[i]);
+                    if (!finite)
+                        throw SceneError(name + ": a julia fractal's parameters are not finite");
+                    if (!(std::fabs(j.slice[3]) >= 1e-10))
+                        throw SceneError(name + ": a julia fractal's slice has no w component");
+                    if (!(j.min_step > 0 && j.min_step <= 1))
+                        throw SceneError(name + ": a julia fractal's precision must be 1 or more");
+                    if (j.iterations < 1 || j.iterations > kJuliaMaxIterations)
+                        throw SceneError(name +
+                                         ": a julia fractal's max_iteration must lie in 1.." +
+                                         std::to_string(kJuliaMaxIterations));
+                }
                 if (s.kind == ShapeKind::Isosurface) {
                     if (!node.iso) throw SceneError(name + ": an isosurface without a function");
                     const IsoRef& iso = *node.iso;

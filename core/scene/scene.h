@@ -186,6 +186,7 @@ struct CsgNode {
     std::shared_ptr<const RevolutionProfile> revolution; // leaf of kind Revolution: its profile
     std::shared_ptr<const BlobModel> blob;               // leaf of kind Blob: its components
     std::shared_ptr<const IsoRef> iso; // leaf of kind Isosurface (bound computed by prepare)
+    std::shared_ptr<const JuliaFractal> julia; // leaf of kind Julia: its parameters
     Affine transform;      // leaf: shape space -> object space
     uint32_t material = 0; // leaf
     bool inverse = false;

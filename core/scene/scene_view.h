@@ -36,6 +36,7 @@ struct SceneView {
     const BlobRef* blobs = nullptr;
     const BlobElement* blob_elements = nullptr;
     const IsoRef* isosurfaces = nullptr;
+    const JuliaFractal* julias = nullptr;
     const uint32_t* shape_material = nullptr;
     const PreparedCsgNode* csg = nullptr;
     const uint32_t* csg_children = nullptr;
@@ -80,7 +81,7 @@ struct SceneView {
           glyph_segments(p.glyph_segments.data()), revolutions(p.revolutions.data()),
           revolution_segments(p.revolution_segments.data()), blobs(p.blobs.data()),
           blob_elements(p.blob_elements.data()), isosurfaces(p.isosurfaces.data()),
-          shape_material(p.shape_material.data()), csg(p.csg.data()),
+          julias(p.julias.data()), shape_material(p.shape_material.data()), csg(p.csg.data()),
           csg_children(p.csg_children.data()), analytic_root(p.analytic_root.data()),
           materials(p.materials.data()), pigments(p.pigments.data()),
           pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
@@ -95,10 +96,11 @@ struct SceneView {
           background(p.background), working_gamma(p.working_gamma), textures(p.textures.data()),
           sampler(p.sampler.get()) {}
 
-    /// What poly, glyph, revolution, blob and isosurface shapes read beside their Shape.
+    /// What poly, glyph, revolution, blob, isosurface and julia shapes read beside their
+    /// Shape.
     SHEAF_HD ShapeTables shape_tables() const {
         return {polys, glyphs,        glyph_segments, revolutions, revolution_segments,
-                blobs, blob_elements, isosurfaces,    functions};
+                blobs, blob_elements, isosurfaces,    functions,   julias};
     }
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
     SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }

@@ -164,6 +164,57 @@ inline Scene csg_scene() {
     return s;
 }
 
+/// Julia fractals of the three algebras (core/geometry/julia.h): an opaque quaternion square,
+/// a refracting hypercomplex one (light crossing it many times), and a quaternion cube cut
+/// by a box in a CSG intersection, over a floor.
+inline Scene julia_scene() {
+    Scene s;
+    Material gold, glass, floor;
+    gold.color = Vec3(0.9f, 0.6f, 0.3f), gold.specular = 0.6f;
+    glass.color = Vec3(0.8f, 0.9f, 1.0f), glass.transmission = 0.8f, glass.ior = 1.5f;
+    floor.color = Vec3(0.6f);
+    const uint32_t mg = s.add_material(gold), mt = s.add_material(glass),
+                   mf = s.add_material(floor);
+    s.add_shape("floor", Shape{ShapeKind::Plane}, mf,
+                Affine::translate(Vec3(0, -1.4f, 0)) * Affine::rotate(Vec3(1, 0, 0), -kPi / 2));
+    auto julia = [](JuliaAlgebra a, std::initializer_list<double> c, uint32_t iterations) {
+        auto j = std::make_shared<JuliaFractal>();
+        std::copy(c.begin(), c.end(), j->c);
+        j->algebra = a, j->iterations = iterations;
+        return j;
+    };
+    auto add = [&](const char* name, std::shared_ptr<JuliaFractal> j, uint32_t m, Affine at) {
+        ShapeObject o;
+        o.name = name;
+        o.nodes.resize(1);
+        o.nodes[0].shape = {ShapeKind::Julia}, o.nodes[0].julia = std::move(j);
+        o.nodes[0].material = m;
+        o.transform = at;
+        s.add_shape_object(o);
+    };
+    add("sqr", julia(JuliaAlgebra::QuaternionSqr, {-0.083, 0.0, -0.83, -0.025}, 8), mg,
+        Affine::translate(Vec3(-1.6f, 0, 0)) * Affine::rotate(Vec3(0, 1, 0), 0.6f));
+    add("hypercomplex", julia(JuliaAlgebra::HypercomplexSqr, {-0.745, 0, 0.113, 0.05}, 9), mt,
+        Affine::translate(Vec3(1.4f, 0, 0)) * Affine::scale(Vec3(0.8f)));
+    ShapeObject cut;
+    cut.name = "cut cube";
+    cut.nodes.resize(3);
+    cut.nodes[0].op = CsgOp::Intersection, cut.nodes[0].children = {1, 2};
+    cut.nodes[1].shape = {ShapeKind::Julia}, cut.nodes[1].material = mg,
+    cut.nodes[1].julia = julia(JuliaAlgebra::QuaternionCube, {-0.54, 0.57, 0.0, -0.37}, 8);
+    cut.nodes[2].shape = {ShapeKind::Box}, cut.nodes[2].material = mt,
+    cut.nodes[2].transform = Affine::translate(Vec3(0, 0, 0.6f));
+    cut.transform = Affine::translate(Vec3(0, 1.2f, -1));
+    s.add_shape_object(cut);
+    s.add_light(Light{Vec3(2, 6, 4), Vec3(1.0f)});
+    s.add_light(Light{Vec3(-4, 3, 2), Vec3(0.4f, 0.4f, 0.5f)});
+    s.camera.position = Vec3(0, 1.5f, 5);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.background = Vec3(0.1f, 0.1f, 0.2f);
+    s.settings["trace.depth"] = "4";
+    return s;
+}
+
 inline PigmentEntry pigment_entry(float value, Vec3 c, float filter = 0, float transmit = 0) {
     PigmentEntry e;
     e.value = value;

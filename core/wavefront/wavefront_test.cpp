@@ -133,6 +133,16 @@ TEST(Wavefront, AnalyticShapesCsgAndTransparentShadowsAreIdentical) {
     EXPECT_GT(mean(f), 0.05);
 }
 
+TEST(Wavefront, JuliaFractalsAreIdentical) {
+    // Marched shapes, refraction through one, a CSG cut, under a share of the variants.
+    const PreparedScene scene = prepare_scene(test::julia_scene());
+    for (size_t i = 0; i < variants().size(); i += 3)
+        expect_identical(scene, "julia", variants()[i], 24, 20);
+    const Frame f = expect_identical(scene, "julia", {{"ao.samples", "2"}}, 24, 20);
+    EXPECT_GT(f.stats.get("rays.refraction"), 0);
+    EXPECT_GT(mean(f), 0.05);
+}
+
 TEST(Wavefront, ProceduralTexturesFlagsFogAndSkyAreIdentical) {
     const PreparedScene scene = prepare_scene(test::procedural_scene());
     for (SettingList kv : variants()) {

@@ -52,6 +52,7 @@ template <class Exec> class DeviceScene {
         put(p.blobs, v.blobs);
         put(p.blob_elements, v.blob_elements);
         put(p.isosurfaces, v.isosurfaces);
+        put(p.julias, v.julias);
         put(p.fn_programs, v.functions.programs);
         put(p.fn_code, v.functions.code);
         put(p.fn_patterns, v.functions.patterns);

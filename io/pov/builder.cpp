@@ -151,6 +151,7 @@ struct Builder {
             n.glyph = o.glyph;
             n.revolution = o.revolution;
             n.blob = o.blob;
+            n.julia = o.julia;
             if (o.shape.kind == ShapeKind::Isosurface) n.iso = isosurface(o);
             n.transform = o.local;
             n.material = material(tex, in);

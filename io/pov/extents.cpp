@@ -77,6 +77,11 @@ Box shape_box(const PovObject& o) {
         const Vec3 r(o.iso->hi.x);
         return transformed(o.local, o.iso->lo - r, o.iso->lo + r);
     }
+    case ShapeKind::Julia: { // the sphere its points escape beyond
+        if (!o.julia) return Box();
+        const Vec3 r(float(julia_detail::bound_radius(*o.julia)));
+        return transformed(o.local, -r, r);
+    }
     case ShapeKind::Blob: { // the sphere around its positive components
         if (!o.blob) return Box();
         float b[4];

@@ -165,6 +165,7 @@ struct PovObject {
     std::shared_ptr<const BlobModel> blob;               // shape of kind Blob
     std::shared_ptr<const IsoRef> iso; // shape of kind Isosurface (its program set when built)
     std::shared_ptr<const PovFunction> iso_function; // and its function
+    std::shared_ptr<const JuliaFractal> julia;       // shape of kind Julia: its parameters
     std::shared_ptr<const Mesh> mesh;
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;

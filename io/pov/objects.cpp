@@ -17,19 +17,23 @@ void set_hollow(PovObject& o, bool hollow);
 namespace {
 
 const std::set<std::string>& supported_objects() {
-    static const std::set<std::string> s = {
-        "sphere",       "box",          "cylinder",        "cone",       "disc",   "plane",
-        "torus",        "triangle",     "smooth_triangle", "mesh",       "mesh2",  "polygon",
-        "union",        "merge",        "intersection",    "difference", "object", "light_source",
-        "light_group",  "quadric",      "cubic",           "quartic",    "poly",   "superellipsoid",
-        "text",         "prism",        "lathe",           "sor",        "blob",   "isosurface",
-        "height_field", "bicubic_patch"};
+    static const std::set<std::string> s = {"sphere",       "box",           "cylinder",
+                                            "cone",         "disc",          "plane",
+                                            "torus",        "triangle",      "smooth_triangle",
+                                            "mesh",         "mesh2",         "polygon",
+                                            "union",        "merge",         "intersection",
+                                            "difference",   "object",        "light_source",
+                                            "light_group",  "quadric",       "cubic",
+                                            "quartic",      "poly",          "superellipsoid",
+                                            "text",         "prism",         "lathe",
+                                            "sor",          "blob",          "isosurface",
+                                            "height_field", "bicubic_patch", "julia_fractal"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
-    static const std::set<std::string> s = {"julia_fractal", "sphere_sweep", "parametric",
-                                            "polynomial",    "ovus",         "lemon"};
+    static const std::set<std::string> s = {"sphere_sweep", "parametric", "polynomial", "ovus",
+                                            "lemon"};
     return s;
 }
 
@@ -115,6 +119,7 @@ bool Parser::parse_object(PovObject& o) {
     if (k == "sor") return parse_sor(kw, o);
     if (k == "blob") return parse_blob(kw, o);
     if (k == "isosurface") return parse_isosurface(kw, o);
+    if (k == "julia_fractal") return parse_julia_fractal(kw, o);
     if (k == "height_field") return parse_height_field(kw, o);
     if (k == "bicubic_patch") return parse_bicubic_patch(kw, o);
     if (k == "text") {

@@ -232,6 +232,7 @@ class Parser {
     /// blob { threshold, components, modifiers } (io/pov/blobs.cpp).
     bool parse_blob(const Token& kw, PovObject& o);
     bool parse_isosurface(const Token& kw, PovObject& o);
+    bool parse_julia_fractal(const Token& kw, PovObject& o);
     bool parse_height_field(const Token& kw, PovObject& o);
     /// A bicubic_patch as a smooth mesh (io/pov/bicubic_patches.cpp); false when degenerate.
     bool parse_bicubic_patch(const Token& kw, PovObject& o);

@@ -88,6 +88,13 @@ TEST(XmlErrors, BadValuesPointAtTheValue) {
                  "expected an integer in 2..4");
     EXPECT_ERROR("<scene><poly/></scene>", "1:8", "coefficients");
     EXPECT_ERROR("<scene><superellipsoid e=\"0\"/></scene>", "1:27", "at least 0.001");
+    EXPECT_ERROR("<scene><julia/></scene>", "1:8", "'c'");
+    EXPECT_ERROR("<scene><julia c=\"1 2 3\"/></scene>", "1:18", "four numbers are needed");
+    EXPECT_ERROR("<scene><julia c=\"0 0 0 0\" slice=\"1 0 0 0\"/></scene>", "1:34",
+                 "w component must not be zero");
+    EXPECT_ERROR("<scene><julia c=\"0 0 0 0\" iterations=\"65\"/></scene>", "1:39",
+                 "expected an integer in 1..64");
+    EXPECT_ERROR("<scene><julia c=\"0 0 0 0\" function=\"exp\"/></scene>", "1:37", "sqr, cube");
     EXPECT_ERROR("<scene><poly coefficients=\"0 0 0 0 0 0 0 0 0 0\"/></scene>", "1:28",
                  "every coefficient is zero");
 }

@@ -122,6 +122,30 @@ TEST(XmlScene, TracedProjectionsTakeTheirAngleAndLengths) {
         180);
 }
 
+TEST(XmlScene, JuliaFractalsTakeTheirParameters) {
+    const Scene s =
+        io::parse_xml_scene("<scene><julia c=\"-0.083 0 -0.83 -0.025\" function=\"cube\" "
+                            "iterations=\"8\" precision=\"400\" slice=\"0 0 3 4\" "
+                            "slice_distance=\"0.5\"><translate value=\"1 0 0\"/></julia>"
+                            "<julia c=\"0 0 0 0\" algebra=\"hypercomplex\"/></scene>",
+                            "scene.xml")
+            .scene;
+    ASSERT_EQ(s.shape_objects.size(), 2u);
+    const CsgNode& n = s.shape_objects[0].nodes[0];
+    ASSERT_EQ(n.shape.kind, ShapeKind::Julia);
+    EXPECT_EQ(n.julia->algebra, JuliaAlgebra::QuaternionCube);
+    EXPECT_EQ(n.julia->iterations, 8u);
+    EXPECT_DOUBLE_EQ(n.julia->min_step, 1.0 / 400);
+    EXPECT_NEAR(n.julia->c[2], -0.83, 1e-7);
+    EXPECT_DOUBLE_EQ(n.julia->slice[3], 0.8);
+    EXPECT_DOUBLE_EQ(n.julia->slice_dist, 0.5);
+    EXPECT_FLOAT_EQ((s.shape_objects[0].transform * n.transform).point(Vec3(0)).x, 1);
+    const JuliaFractal& h = *s.shape_objects[1].nodes[0].julia;
+    EXPECT_EQ(h.algebra, JuliaAlgebra::HypercomplexSqr);
+    EXPECT_EQ(h.iterations, 20u);
+    EXPECT_DOUBLE_EQ(h.slice[3], 1);
+}
+
 TEST(XmlScene, AFullSceneLoadsAsWritten) {
     const auto dir = test::temp_folder("xml_full");
     test::write_text(dir / "quad.obj", test::kQuadObj);

@@ -1,9 +1,8 @@
 // Analytic shapes and CSG: <sphere>, <box>, <cylinder>, <cone>, <disc>, <plane>, <torus>, <poly>,
-// <superellipsoid>, <text>, <lathe>, <sor> and <union>, <merge>, <intersection>, <difference>
-// over them. The
-// geometric attributes (centre, radius, base and cap, ...) become the transform from the core's
-// canonical shape (core/geometry/shape.h); transform elements then place the node. A <text> is
-// a union of glyph shapes, one per character with ink, laid out by io/font.
+// <superellipsoid>, <julia>, <text>, <lathe>, <sor> and <union>, <merge>, <intersection>,
+// <difference> over them. The geometric attributes (centre, radius, base and cap, ...) become the
+// transform from the core's canonical shape (core/geometry/shape.h); transform elements then place
+// the node. A <text> is a union of glyph shapes, one per character with ink, laid out by io/font.
 #include "io/xml/xml_reader.h"
 
 #include "core/geometry/blob_build.h"
@@ -17,9 +16,9 @@ namespace {
 constexpr int kMaxCsgDepth = kMaxCsgNesting;
 
 const std::vector<std::string> kShapeElements = {
-    "sphere", "box",   "cylinder",       "cone",         "disc",      "plane",
-    "torus",  "poly",  "superellipsoid", "text",         "lathe",     "sor",
-    "blob",   "union", "merge",          "intersection", "difference"};
+    "sphere", "box",   "cylinder",       "cone",  "disc",         "plane",
+    "torus",  "poly",  "superellipsoid", "text",  "lathe",        "sor",
+    "blob",   "julia", "union",          "merge", "intersection", "difference"};
 
 /// The transform taking local z from `base` to `cap`, with local x and y scaled by `radius`.
 Affine axis_frame(Vec3 base, Vec3 cap, float radius) {
@@ -158,6 +157,42 @@ void SceneReader::read_csg_node(const pugi::xml_node& node, ShapeObject& o, cons
             if (!(e >= 1e-3f)) fail_attr("e", "the exponent e must be at least 0.001");
             if (!(en >= 1e-3f)) fail_attr("n", "the exponent n must be at least 0.001");
             s.kind = ShapeKind::Superellipsoid, s.a = e, s.b = en;
+        } else if (kind == "julia") {
+            // POV-Ray's julia_fractal (core/geometry/julia.h): c and the slice as four numbers.
+            auto j = std::make_shared<JuliaFractal>();
+            auto four = [&](const char* attr, double* out) {
+                std::vector<float> v;
+                a.get_numbers(attr, v);
+                if (v.empty()) return;
+                if (v.size() != 4) fail_attr(attr, "four numbers are needed: x y z w");
+                for (int i = 0; i < 4; ++i) out[i] = v[size_t(i)];
+            };
+            a.require("c");
+            four("c", j->c);
+            four("slice", j->slice);
+            double len = 0;
+            for (double v : j->slice) len += v * v;
+            len = std::sqrt(len);
+            if (!(std::fabs(j->slice[3]) >= 1e-10 && len < 1e30))
+                fail_attr("slice", "the slice's w component must not be zero");
+            for (double& v : j->slice) v /= len;
+            float dist = 0, precision = 20;
+            a.get("slice_distance", dist);
+            j->slice_dist = dist;
+            int algebra = 0, function = 0, iterations = 20;
+            a.get("algebra", algebra, {"quaternion", "hypercomplex"});
+            a.get("function", function, {"sqr", "cube"});
+            a.get("iterations", iterations, 1, int(kJuliaMaxIterations));
+            a.get("precision", precision);
+            if (!(precision >= 1) || !std::isfinite(precision))
+                fail_attr("precision", "the precision must be a number of at least 1");
+            j->iterations = uint32_t(iterations);
+            j->min_step = 1.0 / precision;
+            j->algebra = algebra == 1    ? JuliaAlgebra::HypercomplexSqr
+                         : function == 1 ? JuliaAlgebra::QuaternionCube
+                                         : JuliaAlgebra::QuaternionSqr;
+            s.kind = ShapeKind::Julia;
+            n.julia = std::move(j);
         } else if (kind == "poly") {
             int order = 2;
             a.get("order", order, 2, kPolyMaxDegree);

@@ -203,7 +203,11 @@ SHEAF_HD_INLINE BounceSplit bounce_split(const SceneView& scene, const SurfaceHi
     // Light passing through: tinted by the colour (filter) or not (transmit).
     const Vec3 pass = h.albedo * h.filter + Vec3(h.transmit);
     const Vec3 mirror = mirror_weight(m, h);
-    Vec3 reflect_w = mirror;
+    s.reflect_dir = reflect(h.incoming, h.normal);
+    // A shading normal can send a reflection below the surface; the geometric one cannot.
+    if (dot(s.reflect_dir, h.geo_normal) <= 0) s.reflect_dir = reflect(h.incoming, h.geo_normal);
+    // Iridescence tints what the mirror reflects, not what refraction turns back.
+    Vec3 reflect_w = m.irid > 0 ? mirror * irid_factor(m, h, s.reflect_dir) : mirror;
     if (max_component(pass) > 0) {
         // Entering from outside the object: n_outside / n_inside; leaving: the inverse.
         const float eta = h.front ? 1.0f / m.ior : m.ior;
@@ -222,9 +226,6 @@ SHEAF_HD_INLINE BounceSplit bounce_split(const SceneView& scene, const SurfaceHi
         reflect_w += pass * kr;
     }
     s.reflect_weight = h.throughput * reflect_w;
-    s.reflect_dir = reflect(h.incoming, h.normal);
-    // A shading normal can send a reflection below the surface; the geometric one cannot.
-    if (dot(s.reflect_dir, h.geo_normal) <= 0) s.reflect_dir = reflect(h.incoming, h.geo_normal);
     return s;
 }
 

@@ -332,6 +332,43 @@ TEST(Renderer, LightTypesFollowTheirFormulas) {
     EXPECT_NEAR(centre_radiance(Light{Vec3(0, 0, 3), Vec3(1.0f)}, glow).x, 0.95f, 1e-4f);
 }
 
+TEST(Renderer, IridescenceFollowsItsFormula) {
+    // Light and view along the normal: the phase is 2 pi thickness (1 + 1), and each channel's
+    // direct light is scaled by 1 + irid cos(phase / wavelength); ambient is not.
+    Material m;
+    m.color = Vec3(1.0f), m.ambient = 0.1f, m.diffuse = 0.6f;
+    m.irid = 0.5f, m.irid_thickness = 0.3f;
+    const Vec3 c = centre_radiance(Light{Vec3(0, 0, 3), Vec3(1.0f)}, m);
+    const float phase = 2 * kPi * 0.3f * 2;
+    const float wl[3] = {0.25f, 0.18f, 0.14f};
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(c[i], 0.1f + 0.6f * (1 + 0.5f * std::cos(phase / wl[i])), 1e-4f) << i;
+    // No irid, no change; the wavelengths are the material's.
+    m.irid_wavelength = Vec3(0.3f);
+    const Vec3 grey = centre_radiance(Light{Vec3(0, 0, 3), Vec3(1.0f)}, m);
+    EXPECT_NEAR(grey.x, grey.z, 1e-6f);
+    m.irid = 0;
+    EXPECT_NEAR(centre_radiance(Light{Vec3(0, 0, 3), Vec3(1.0f)}, m).y, 0.7f, 1e-4f);
+    // What a mirror reflects is tinted the same way: a black mirror facing an emitting quad.
+    Material mirror;
+    mirror.color = Vec3(0.0f), mirror.ambient = 0, mirror.diffuse = 0, mirror.mirror = 1;
+    mirror.irid = 0.5f, mirror.irid_thickness = 0.3f;
+    Material glow;
+    glow.color = Vec3(0.0f), glow.ambient = 0, glow.diffuse = 0, glow.emission = Vec3(0.5f);
+    Scene s;
+    s.add_mesh_object("mirror", make_box(Vec3(-2, -2, -0.1f), Vec3(2, 2, 0)),
+                      s.add_material(mirror));
+    s.add_mesh_object("sky", make_box(Vec3(-50, -50, 20), Vec3(50, 50, 20.1f)),
+                      s.add_material(glow));
+    s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
+    s.camera.projection = Projection::Orthographic, s.camera.ortho_height = 0.5f;
+    const Frame f = render(prepare_scene(s), {{"width", "33"}, {"height", "33"}});
+    const size_t centre = (16 * 33 + 16) * 4;
+    for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(f.rgba[centre + size_t(i)], 0.5f * (1 + 0.5f * std::cos(phase / wl[i])), 1e-4f)
+            << i;
+}
+
 TEST(Renderer, SpotAndParallelLightsKeepTheAccelModesIdentical) {
     Scene s;
     Material floor;

@@ -5,6 +5,7 @@
 
 #include "core/geometry/ray.h"
 #include "core/math/hd_math.h"
+#include "core/render/noise.h"
 #include "core/render/surface.h"
 #include "core/render/surface_hit.h"
 #include "core/scene/prepared_scene.h"
@@ -43,6 +44,23 @@ SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
     return w;
 }
 
+/// Iridescence (POV-Ray's thin film): the factor per channel for light leaving the surface at
+/// h towards the viewer after arriving along unit `to_light` (a light, or the mirror
+/// direction). The film's thickness varies with turbulence (5 octaves, as POV-Ray's) at the
+/// point; the noise is Sheaf's own.
+SHEAF_HD_INLINE Vec3 irid_factor(const Material& m, const SurfaceHit& h, Vec3 to_light) {
+    float film = m.irid_thickness;
+    if (m.irid_turbulence != 0.0f) {
+        const float noise = turbulence(h.position, 5, 0.5f, 2.0f);
+        film *= 1.0f + (2.0f * noise - 1.0f) * m.irid_turbulence;
+    }
+    const float phase =
+        2.0f * kPi * film * (fabsf(dot(h.normal, to_light)) + fabsf(dot(h.normal, h.incoming)));
+    return Vec3(1.0f + m.irid * hdm::cosf(phase / m.irid_wavelength.x),
+                1.0f + m.irid * hdm::cosf(phase / m.irid_wavelength.y),
+                1.0f + m.irid * hdm::cosf(phase / m.irid_wavelength.z));
+}
+
 /// Diffuse and highlights from one light arriving along unit `to_light` with `light_color`:
 /// diffuse cos^brilliance on the opaque share (less the reflected share with conserve_energy),
 /// Phong (reflection vector) and Blinn (half vector) highlights, tinted when metallic.
@@ -66,6 +84,7 @@ SHEAF_HD_INLINE Vec3 direct_light(const Material& m, const SurfaceHit& h, Vec3 t
         const Vec3 tint = Vec3(1.0f - m.metallic) + h.albedo * m.metallic;
         c += tint * highlight;
     }
+    if (m.irid > 0) c = c * irid_factor(m, h, to_light);
     return c * light_color;
 }
 

@@ -270,6 +270,15 @@ void Scene::validate() const {
             !(materials[m].ior > 0))
             throw SceneError("material " + std::to_string(m) +
                              " has a colour that is not finite or an ior <= 0");
+    for (size_t m = 0; m < materials.size(); ++m) {
+        const Material& mt = materials[m];
+        if (mt.irid != 0 &&
+            (!std::isfinite(mt.irid) || !std::isfinite(mt.irid_thickness) ||
+             !std::isfinite(mt.irid_turbulence) || !is_finite(mt.irid_wavelength) ||
+             !(mt.irid_wavelength.x > 0 && mt.irid_wavelength.y > 0 && mt.irid_wavelength.z > 0)))
+            throw SceneError("material " + std::to_string(m) +
+                             " has an iridescence that is not finite or a wavelength <= 0");
+    }
     for (size_t m = 0; m < materials.size(); ++m)
         if (materials[m].texture >= int32_t(textures.size()))
             throw SceneError("material " + std::to_string(m) + " names texture " +

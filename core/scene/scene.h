@@ -54,6 +54,11 @@ struct Material {
     Vec3 fade_color{0.0f, 0.0f, 0.0f}; // light inside fades to this colour:
     float fade_distance = 0.0f, fade_power = 0.0f; //   1 / (1 + (d / fade_distance)^fade_power)
     uint32_t media_first = 0, media_count = 0;     // the media inside: Scene::media
+    // Iridescence (POV-Ray's irid): light from each light and from the mirror is scaled per
+    // channel by 1 + irid cos(2 pi thickness (|n.l| + |n.v|) / wavelength), the thickness
+    // varied by `irid_turbulence` times noise (core/render/shade.h).
+    float irid = 0, irid_thickness = 0, irid_turbulence = 0;
+    Vec3 irid_wavelength{0.25f, 0.18f, 0.14f};
 };
 
 /// A participating medium inside an object (POV-Ray's interior media): the light it gives off

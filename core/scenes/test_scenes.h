@@ -98,15 +98,17 @@ inline Scene lights_scene(bool orthographic) {
 
 /// Analytic shapes of every kind and a CSG tree (difference, intersection, merge, inverse,
 /// clip), one of them transparent with an interior fade (shadows through it), an unbounded
-/// plane as the floor, a mirror torus.
+/// plane as the floor, a mirror torus; the red and the mirror are iridescent.
 inline Scene csg_scene() {
     Scene s;
     Material red, blue, glass, mirror, floor;
     red.color = Vec3(0.9f, 0.2f, 0.2f), red.specular = 0.5f;
+    red.irid = 0.3f, red.irid_thickness = 0.4f, red.irid_turbulence = 0.3f;
     blue.color = Vec3(0.2f, 0.3f, 0.9f);
     glass.color = Vec3(0.8f, 1.0f, 0.9f), glass.transmission = 0.7f, glass.ior = 1.4f,
     glass.fade_distance = 1, glass.fade_power = 2, glass.fade_color = Vec3(0.2f, 0.6f, 0.2f);
     mirror.mirror = 0.7f, mirror.color = Vec3(0.9f);
+    mirror.irid = 0.4f, mirror.irid_thickness = 0.5f;
     floor.color = Vec3(0.7f);
     const uint32_t mr = s.add_material(red), mb = s.add_material(blue),
                    mg = s.add_material(glass), mm = s.add_material(mirror),

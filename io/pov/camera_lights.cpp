@@ -204,7 +204,11 @@ void Parser::parse_global_settings() {
             unsupported(t, k);
             if (is_sym_tok(peek(), "{")) skip_block();
         } else if (k == "irid_wavelength") {
-            parse_color();
+            const Token at = peek();
+            const Color5 c = parse_color();
+            if (!(c[0] > 0 && c[1] > 0 && c[2] > 0) || !std::isfinite(c[0] + c[1] + c[2]))
+                error_at(at, "irid_wavelength's components must be positive numbers");
+            model.irid_wavelength = {c[0], c[1], c[2]};
         } else if (k == "charset") {
             next();
         } else if (k == "adc_bailout" || k == "number_of_waves" || k == "noise_generator" ||

@@ -16,13 +16,39 @@ constexpr int kMaxDepth = 12; // nested texture maps; deeper ones use their firs
 std::string key_of(const Material& m) {
     std::ostringstream k;
     k.precision(9);
-    const float* f[] = {&m.color.x,      &m.color.y,        &m.color.z,        &m.emission.x,
-                        &m.emission.y,   &m.emission.z,     &m.ambient,        &m.diffuse,
-                        &m.specular,     &m.phong_exponent, &m.mirror,         &m.transmission,
-                        &m.ior,          &m.brilliance,     &m.blinn,          &m.blinn_exponent,
-                        &m.metallic,     &m.mirror_color.x, &m.mirror_color.y, &m.mirror_color.z,
-                        &m.mirror_min,   &m.mirror_falloff, &m.fade_color.x,   &m.fade_color.y,
-                        &m.fade_color.z, &m.fade_distance,  &m.fade_power};
+    const float* f[] = {&m.color.x,
+                        &m.color.y,
+                        &m.color.z,
+                        &m.emission.x,
+                        &m.emission.y,
+                        &m.emission.z,
+                        &m.ambient,
+                        &m.diffuse,
+                        &m.specular,
+                        &m.phong_exponent,
+                        &m.mirror,
+                        &m.transmission,
+                        &m.ior,
+                        &m.brilliance,
+                        &m.blinn,
+                        &m.blinn_exponent,
+                        &m.metallic,
+                        &m.mirror_color.x,
+                        &m.mirror_color.y,
+                        &m.mirror_color.z,
+                        &m.mirror_min,
+                        &m.mirror_falloff,
+                        &m.fade_color.x,
+                        &m.fade_color.y,
+                        &m.fade_color.z,
+                        &m.fade_distance,
+                        &m.fade_power,
+                        &m.irid,
+                        &m.irid_thickness,
+                        &m.irid_turbulence,
+                        &m.irid_wavelength.x,
+                        &m.irid_wavelength.y,
+                        &m.irid_wavelength.z};
     for (const float* v : f) k << *v << ',';
     k << m.mirror_fresnel << m.mirror_metallic << m.conserve_energy << m.fresnel_split;
     return k.str();
@@ -197,6 +223,13 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
     }
     m.mirror_metallic = f.reflection_metallic;
     m.conserve_energy = f.conserve_energy;
+    if (f.irid > 0) {
+        m.irid = float(f.irid);
+        m.irid_thickness = float(f.irid_thickness);
+        m.irid_turbulence = float(f.irid_turbulence);
+        const auto& wl = p_.model.irid_wavelength;
+        m.irid_wavelength = Vec3(float(wl[0]), float(wl[1]), float(wl[2]));
+    }
     if (in) {
         m.ior = float(in->ior > 0 ? in->ior : 1.0);
         m.fade_distance = float(std::max(in->fade_distance, 0.0));

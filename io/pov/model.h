@@ -35,6 +35,8 @@ struct PovFinish {
     double reflection_falloff = 1;
     bool reflection_metallic = false;
     bool conserve_energy = false;
+    double irid = 0, irid_thickness = 0,
+           irid_turbulence = 0; // irid { amount thickness turbulence }
     bool operator==(const PovFinish&) const = default;
 };
 
@@ -206,6 +208,7 @@ struct PovModel {
     double version = 3.7;
     bool version_given = false;
     std::array<double, 3> ambient_light{1, 1, 1};
+    std::array<double, 3> irid_wavelength{0.25, 0.18, 0.14};
     int max_trace_level = -1;
     /// global_settings { radiosity { ... } }: on, its count (gather rays), recursion_limit
     /// and brightness (POV-Ray 3.7's defaults).

@@ -260,7 +260,24 @@ void Parser::parse_finish(PovFinish& f) {
                 f.reflection_min = f.reflection;
                 f.reflection_variable = false;
             }
-        } else if (k == "irid" || k == "subsurface") {
+        } else if (k == "irid") {
+            expect_sym("{");
+            const Token at = peek();
+            f.irid = parse_float();
+            if (!std::isfinite(f.irid)) error_at(at, "the irid amount is not finite");
+            for (;;) {
+                const Token i = peek();
+                if (accept_sym("}")) break;
+                if (accept_kw("thickness"))
+                    f.irid_thickness = parse_float();
+                else if (accept_kw("turbulence"))
+                    f.irid_turbulence = parse_float();
+                else
+                    error_expected(i, "thickness, turbulence or '}'");
+                if (!std::isfinite(f.irid_thickness) || !std::isfinite(f.irid_turbulence))
+                    error_at(i, "the irid value is not finite");
+            }
+        } else if (k == "subsurface") {
             unsupported(t, k + " (ignored)");
             skip_block();
         } else if (k == "phong_size") {
@@ -350,8 +367,13 @@ PovInterior Parser::parse_interior(const PovInterior& base) {
         } else if (accept_kw("fade_color") || accept_kw("fade_colour")) {
             const Color5 c = parse_color();
             in.fade_color = {c[0], c[1], c[2]};
-        } else if (accept_kw("caustics") || accept_kw("dispersion") ||
-                   accept_kw("dispersion_samples")) {
+        } else if (accept_kw("caustics") || accept_kw("dispersion")) {
+            // POV-Ray's fake caustics brighten shadows behind curved glass; dispersion splits
+            // refracted light by wavelength. Neither is rendered: warned where they would show.
+            const double v = parse_float();
+            if (t.text == "caustics" ? v != 0 : v != 1)
+                unsupported(t, "interior " + t.text + " (ignored)");
+        } else if (accept_kw("dispersion_samples")) {
             parse_float();
         } else if (accept_kw("media")) {
             in.media.push_back(parse_media());

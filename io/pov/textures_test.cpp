@@ -202,6 +202,37 @@ TEST(PovTextures, FinishAndInterior) {
     EXPECT_FLOAT_EQ(m.transmission, 0.9f); // filter, with a solid colour
 }
 
+TEST(PovTextures, IridescenceAndWhatInteriorsLeaveOut) {
+    PovResult r = load_text("global_settings { irid_wavelength rgb <0.3, 0.2, 0.1> }\n"
+                            "sphere { 0, 1 finish { irid { 0.4 thickness 0.5 turbulence 0.2 } } "
+                            "interior { caustics 0 dispersion 1 dispersion_samples 7 } }\n"
+                            "sphere { 0, 1 finish { irid { 0.25 } } }");
+    EXPECT_TRUE(r.warnings.empty());
+    const Material& m = shape_material(r);
+    EXPECT_FLOAT_EQ(m.irid, 0.4f);
+    EXPECT_FLOAT_EQ(m.irid_thickness, 0.5f);
+    EXPECT_FLOAT_EQ(m.irid_turbulence, 0.2f);
+    EXPECT_FLOAT_EQ(m.irid_wavelength.x, 0.3f);
+    EXPECT_FLOAT_EQ(m.irid_wavelength.z, 0.1f);
+    const Material& plain = r.scene.materials[r.scene.shape_objects[1].nodes[0].material];
+    EXPECT_FLOAT_EQ(plain.irid, 0.25f);
+    EXPECT_FLOAT_EQ(plain.irid_thickness, 0);
+    EXPECT_NO_THROW(r.scene.validate());
+    // Fake caustics and dispersion change the picture, so Sheaf says it leaves them out.
+    r = load_text("sphere { 0, 1 interior { caustics 0.5 dispersion 1.1 } }");
+    ASSERT_EQ(r.warnings.size(), 2u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:26: warning: unsupported interior caustics "
+                                 "(ignored)"),
+              std::string::npos)
+        << r.warnings[0];
+    EXPECT_NE(r.warnings[1].find("interior dispersion (ignored)"), std::string::npos)
+        << r.warnings[1];
+    EXPECT_EQ(test::error_of("sphere { 0, 1 finish { irid { 0.4 width 2 } } }"),
+              "scene.pov:1:35: error: found 'width', expected thickness, turbulence or '}'");
+    EXPECT_EQ(test::error_of("global_settings { irid_wavelength <0, 1, 1> }"),
+              "scene.pov:1:35: error: irid_wavelength's components must be positive numbers");
+}
+
 TEST(PovTextures, SkySphereFogAndFlags) {
     const PovResult r = load_text(
         "sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 rgb z] } } rotate x * 10 }\n"

@@ -35,7 +35,8 @@ const char* kFullScene = R"(<?xml version="1.0"?>
   <material name="red" color="1 0 0" ambient="0.2" diffuse="0.8" specular="0"
             phong_exponent="40"/>
   <material name="green" base="red" color="0 1 0"/>
-  <material name="grey" color="0.5" ambient="1" diffuse="0"/>
+  <material name="grey" color="0.5" ambient="1" diffuse="0" irid="0.3" irid_thickness="0.5"
+            irid_turbulence="0.1" irid_wavelength="0.3 0.2 0.1"/>
   <material name="glass" color="1" transmission="0.9" ior="1.5" mirror="0.05"
             fade_color="0.2 0.4 0.6" fade_distance="2" fade_power="1" fresnel_split="false"/>
   <material name="glow" color="0" emission="1 1 0" ambient="0" diffuse="0"/>
@@ -169,6 +170,10 @@ TEST(XmlScene, AFullSceneLoadsAsWritten) {
     EXPECT_FLOAT_EQ(s.materials[3].transmission, 0.9f);
     EXPECT_FLOAT_EQ(s.materials[4].emission.x, 1.0f);
     EXPECT_FLOAT_EQ(s.materials[3].fade_color.y, 0.4f);
+    EXPECT_FLOAT_EQ(s.materials[2].irid, 0.3f);
+    EXPECT_FLOAT_EQ(s.materials[2].irid_thickness, 0.5f);
+    EXPECT_FLOAT_EQ(s.materials[2].irid_turbulence, 0.1f);
+    EXPECT_FLOAT_EQ(s.materials[2].irid_wavelength.z, 0.1f);
     EXPECT_FLOAT_EQ(s.materials[3].fade_distance, 2.0f);
     EXPECT_FALSE(s.materials[3].fresnel_split);
     const Material& finish = s.materials[5];

@@ -164,15 +164,18 @@ SHEAF_HD_INLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec
     const NormalPattern& np = scene.normal_patterns[normal];
     const Pattern& pt = np.pattern;
     const Vec3 q = pattern_point(pt, p);
-    // The slope of the pattern in pattern space, by central differences.
+    // The height: the pattern's value, through the slope map when there is one.
+    auto height = [&](Vec3 at) {
+        const float v = slope_value(scene, pt, at);
+        return np.slope_count > 0
+                   ? slope_map_height(scene.slope_entries + np.slope_first, np.slope_count, v)
+                   : v;
+    };
+    // Its slope in pattern space, by central differences.
     const float h = 1e-3f;
-    const Vec3 g(
-        (slope_value(scene, pt, q + Vec3(h, 0, 0)) - slope_value(scene, pt, q - Vec3(h, 0, 0))) /
-            (2 * h),
-        (slope_value(scene, pt, q + Vec3(0, h, 0)) - slope_value(scene, pt, q - Vec3(0, h, 0))) /
-            (2 * h),
-        (slope_value(scene, pt, q + Vec3(0, 0, h)) - slope_value(scene, pt, q - Vec3(0, 0, h))) /
-            (2 * h));
+    const Vec3 g((height(q + Vec3(h, 0, 0)) - height(q - Vec3(h, 0, 0))) / (2 * h),
+                 (height(q + Vec3(0, h, 0)) - height(q - Vec3(0, h, 0))) / (2 * h),
+                 (height(q + Vec3(0, 0, h)) - height(q - Vec3(0, 0, h))) / (2 * h));
     const float slope = length(g);
     if (!(slope > 0) || !(slope <= FLT_MAX)) return n; // zero, NaN or infinite
     // Its direction in the world (gradients transform by the transpose of world -> pattern),

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace sheaf {
 namespace {
 
@@ -129,6 +131,42 @@ TEST(SurfaceTexture, NormalsTiltAlongTheSlope) {
     // A slope along the normal itself tilts nothing.
     const Vec3 m = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(1, 0, 0));
     EXPECT_NEAR(m.x, 1.0f, 1e-5);
+}
+
+TEST(SurfaceTexture, SlopeMapsFollowHermiteCurves) {
+    // POV-Ray's triangle wave by slope map: up with slope 1 to the top at 0.5, then down.
+    const SlopeEntry tri[] = {{0, 0, 1}, {0.5f, 1, 1}, {0.5f, 1, -1}, {1, 0, -1}};
+    EXPECT_FLOAT_EQ(slope_map_height(tri, 4, -1.0f), 0.0f); // before the first entry
+    EXPECT_FLOAT_EQ(slope_map_height(tri, 4, 2.0f), 0.0f);  // after the last
+    EXPECT_FLOAT_EQ(slope_map_height(tri, 4, std::nanf("")), 0.0f);
+    // Between equal-slope end points the cubic is the straight line through them.
+    EXPECT_NEAR(slope_map_height(tri, 4, 0.25f), 0.5f, 1e-6);
+    EXPECT_NEAR(slope_map_height(tri, 4, 0.75f), 0.5f, 1e-6);
+    // Hermite: h(t) = (2t^3 - 3t^2 + 1) h0 + (t^3 - 2t^2 + t) s0 + (-2t^3 + 3t^2) h1 +
+    // (t^3 - t^2) s1, with the slopes per unit of the interval's parameter t.
+    const SlopeEntry sc[] = {{0, 0, 3}, {1, 1, 0}};
+    const float t = 0.3f;
+    const float want = (t * t * t - 2 * t * t + t) * 3 + (-2 * t * t * t + 3 * t * t);
+    EXPECT_NEAR(slope_map_height(sc, 2, t), want, 1e-6);
+}
+
+TEST(SurfaceTexture, SlopeMapsShapeTheTilt) {
+    PreparedScene p;
+    NormalPattern np;
+    np.pattern = gradient_x();
+    np.amount = 0.5f;
+    p.normal_patterns.push_back(np);
+    const Vec3 plain = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
+    // A map falling from height 1 to 0 (slope -1): the same slope, turned the other way.
+    p.slope_entries = {{0, 1, -1}, {1, 0, -1}};
+    p.normal_patterns[0].slope_count = 2;
+    const Vec3 down = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
+    EXPECT_NEAR(down.x, -plain.x, 1e-4);
+    EXPECT_NEAR(down.y, plain.y, 1e-4);
+    // A flat stretch of the map tilts nothing there.
+    p.slope_entries = {{0, 0.5f, 0}, {1, 0.5f, 0}};
+    const Vec3 flat = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
+    EXPECT_NEAR(flat.y, 1.0f, 1e-6);
 }
 
 TEST(SurfaceTexture, SkyFollowsTheDirection) {

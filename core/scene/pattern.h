@@ -154,11 +154,35 @@ SHEAF_HD_INLINE MapSpan map_span(const PigmentEntry* e, uint32_t count, float v)
     return {hi - 1, hi, t};
 }
 
+/// A slope map entry (POV-Ray's slope_map): at pattern value `value`, the surface's height and
+/// its slope.
+struct SlopeEntry {
+    float value = 0, height = 0, slope = 0;
+};
+
+/// The height a slope map of `count` (> 0) entries sorted by value gives pattern value v, as
+/// POV-Ray computes it: the first or last entry's height outside them, else the cubic Hermite
+/// curve between the two entries around v through their heights with their slopes (per unit
+/// of the interval's parameter).
+SHEAF_HD_INLINE float slope_map_height(const SlopeEntry* e, uint32_t count, float v) {
+    if (!(v > e[0].value)) return e[0].height; // also NaN
+    if (v >= e[count - 1].value) return e[count - 1].height;
+    uint32_t i = 1;
+    while (v > e[i].value) ++i;
+    const SlopeEntry &a = e[i - 1], &b = e[i];
+    const float t = (v - a.value) / (b.value - a.value), tt = t * t;
+    return tt * t * (a.slope + b.slope + 2 * (a.height - b.height)) -
+           tt * (2 * a.slope + b.slope + 3 * (a.height - b.height)) + t * a.slope + a.height;
+}
+
 /// A normal perturbation: the shading normal tilts along the pattern's gradient, `amount`
-/// (POV-Ray's bump size) times its slope.
+/// (POV-Ray's bump size) times its slope. With a slope map (entries [slope_first,
+/// slope_first + slope_count) of Scene::slope_entries) the pattern's value is first mapped
+/// to a height, whose slope tilts the normal.
 struct NormalPattern {
     Pattern pattern;
     float amount = 0.5f;
+    uint32_t slope_first = 0, slope_count = 0;
 };
 
 /// A material chosen by pattern (POV-Ray's texture_map and texture lists): entries

@@ -79,6 +79,7 @@ struct PreparedScene {
     std::vector<Pigment> pigments;
     std::vector<PigmentEntry> pigment_entries;
     std::vector<NormalPattern> normal_patterns;
+    std::vector<SlopeEntry> slope_entries;
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
     std::vector<Medium> media;

@@ -371,9 +371,20 @@ void Scene::validate_patterns() const {
                                  "; entries must name earlier pigments");
         }
     }
-    for (size_t i = 0; i < normal_patterns.size(); ++i)
-        check_pattern(normal_patterns[i].pattern, textures.size(),
-                      "normal pattern " + std::to_string(i));
+    for (size_t i = 0; i < normal_patterns.size(); ++i) {
+        const NormalPattern& np = normal_patterns[i];
+        const std::string name = "normal pattern " + std::to_string(i);
+        check_pattern(np.pattern, textures.size(), name);
+        if (!range(np.slope_first, np.slope_count, slope_entries.size()))
+            throw SceneError(name + " names slope map entries that do not exist");
+        for (uint32_t k = 0; k < np.slope_count; ++k) {
+            const SlopeEntry& e = slope_entries[np.slope_first + k];
+            if (!std::isfinite(e.value) || !std::isfinite(e.height) || !std::isfinite(e.slope))
+                throw SceneError(name + ": a slope map entry is not finite");
+            if (k > 0 && e.value < slope_entries[np.slope_first + k - 1].value)
+                throw SceneError(name + ": the slope map's values must not decrease");
+        }
+    }
     for (size_t i = 0; i < material_switches.size(); ++i) {
         const MaterialSwitch& ms = material_switches[i];
         const std::string name = "material switch " + std::to_string(i);

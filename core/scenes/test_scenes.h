@@ -301,8 +301,8 @@ inline Scene media_scene(bool inside = false) {
 }
 
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
-/// normal pattern, variable, Fresnel and metallic reflection, conserve_energy, a texture map,
-/// no_shadow / no_image / no_reflection objects, fog and a sky pigment.
+/// normal pattern with a slope map, variable, Fresnel and metallic reflection, conserve_energy, a
+/// texture map, no_shadow / no_image / no_reflection objects, fog and a sky pigment.
 inline Scene procedural_scene() {
     Scene s;
     Material floor;
@@ -320,6 +320,8 @@ inline Scene procedural_scene() {
     bumps.kind = PatternKind::Bozo;
     bumps.to_pattern = Affine::scale(Vec3(5));
     s.normal_patterns.push_back({bumps, 0.6f});
+    s.slope_entries = {{0, 0, 2}, {0.5f, 1, 0}, {1, 0, -2}}; // a scallop wave, steep
+    s.normal_patterns.back().slope_count = 3;
     marble.normal = 0;
     marble.blinn = 0.5f, marble.blinn_exponent = 30, marble.metallic = 0.5f;
     marble.mirror = 0.3f, marble.mirror_metallic = true, marble.conserve_energy = true;

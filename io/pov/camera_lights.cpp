@@ -444,6 +444,12 @@ Value Parser::parse_rvalue() {
             v.str = k;
             return v;
         }
+        if (k == "slope_map") {
+            advance();
+            Value v = Value::boxed(VType::Other, parse_slope_map());
+            v.str = k;
+            return v;
+        }
         if (k == "media") {
             advance();
             Value v = Value::boxed(VType::Other, parse_media());

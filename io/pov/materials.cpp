@@ -88,6 +88,16 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     return p;
 }
 
+int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
+    NormalPattern np{pattern(n.pattern, eff * n.local), float(n.amount * n.slope_scale)};
+    np.slope_first = uint32_t(scene_.slope_entries.size());
+    np.slope_count = uint32_t(n.slope_map.size());
+    for (const auto& e : n.slope_map)
+        scene_.slope_entries.push_back({float(e[0]), float(e[1]), float(e[2])});
+    scene_.normal_patterns.push_back(np);
+    return int32_t(scene_.normal_patterns.size() - 1);
+}
+
 int32_t MaterialBuilder::function(const PovFunction& f) {
     try {
         return functions_.program(f);
@@ -276,12 +286,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         Affine n_eff = eff;
         for (auto it = t.below.rbegin(); !n && it != t.below.rend(); ++it)
             if ((*it)->normal) n = (*it)->normal.get(), n_eff = outer * (*it)->local;
-        if (n) {
-            NormalPattern np{pattern(n->pattern, n_eff * n->local),
-                             float(n->amount * n->slope_scale)};
-            scene_.normal_patterns.push_back(np);
-            m.normal = int32_t(scene_.normal_patterns.size() - 1);
-        }
+        if (n) m.normal = normal(*n, n_eff);
     } else {
         if (top.patterned) {
             m.pigment = pigment(top, eff);
@@ -290,12 +295,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
             m.transmission = float(std::clamp(top.color[3], 0.0, 1.0));
             if (top.color[4] > 0) m.pigment = pigment(top, eff); // transmit needs a pigment
         }
-        if (t.normal) {
-            NormalPattern np{pattern(t.normal->pattern, eff * t.normal->local),
-                             float(t.normal->amount * t.normal->slope_scale)};
-            scene_.normal_patterns.push_back(np);
-            m.normal = int32_t(scene_.normal_patterns.size() - 1);
-        }
+        if (t.normal) m.normal = normal(*t.normal, eff);
     }
     // Emission scales the surface colour; patterned surfaces glow with their mean colour.
     Vec3 mean = rgb(base_color);

@@ -43,6 +43,7 @@ class MaterialBuilder {
     /// A pigment composing `layers` (bottom first) by their filter and transmit.
     int32_t layer_pigment(const std::vector<PigmentEntry>& layers);
     Pattern pattern(const PovPattern& pt, const Affine& eff);
+    int32_t normal(const PovNormal& n, const Affine& eff); // its index in Scene::normal_patterns
     int32_t image(const PovImage& img, const Affine& to_pattern);
 
     Parser& p_;

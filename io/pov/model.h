@@ -95,6 +95,12 @@ struct PovNormal {
     /// own and every other pattern by its slope, much flatter; Sheaf tilts every normal by the
     /// pattern's slope, scaled by this to look as strong (calibrated against povray).
     double slope_scale = 0.15;
+    /// Bumps, dents, ripples, waves, wrinkles, quilted and facets: POV-Ray draws them with
+    /// their own normal functions, which ignore a slope map.
+    bool own_normal = false;
+    /// slope_map entries {value, height, slope}, sorted by value: the pattern's value becomes
+    /// a height along cubic curves, and that height's slope tilts the normal.
+    std::vector<std::array<double, 3>> slope_map;
     Affine local;
 };
 

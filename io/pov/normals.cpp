@@ -4,6 +4,9 @@
 
 #include "core/base/error.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace sheaf::io::pov {
 
 namespace {
@@ -17,6 +20,12 @@ double normal_slope_scale(const std::string& name) {
     if (name == "wrinkles") return 0.28;
     if (name == "dents") return 0.3;
     return 0.15; // every other pattern: POV-Ray's generic slope normal
+}
+
+// The patterns POV-Ray draws with normal functions of their own, which ignore a slope map.
+bool has_own_normal(const std::string& name) {
+    return name == "bumps" || name == "dents" || name == "ripples" || name == "waves" ||
+           name == "wrinkles" || name == "quilted" || name == "facets";
 }
 
 } // namespace
@@ -43,6 +52,7 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
             if (!supported) unsupported(t, "normal pattern '" + t.text + "' (no normal change)");
             have = supported;
             n.slope_scale = normal_slope_scale(t.text);
+            n.own_normal = has_own_normal(t.text);
             // The bump size may follow the pattern (and its own arguments), after a comma too.
             if (accept_sym(",") || (starts_expression(peek()) && !is_sym_tok(peek(), "<")))
                 n.amount = parse_float();
@@ -55,7 +65,9 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
         } else if (k == "average") {
             unsupported(t, "normal average (no normal change)");
             have = false;
-        } else if (k == "slope_map" || k == "normal_map") {
+        } else if (k == "slope_map") {
+            n.slope_map = parse_slope_map();
+        } else if (k == "normal_map") {
             unsupported(t, k + " (the pattern's own slope is used)");
             skip_block();
         } else if (k == "bump_map") {
@@ -67,7 +79,7 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
                            "evaluated in space)");
         } else if (k == "accuracy" || k == "no_bump_scale") {
             if (starts_expression(peek())) parse_expr();
-        } else if (k == "normal" ) { // a list entry of a list pattern: the first is kept
+        } else if (k == "normal") { // a list entry of a list pattern: the first is kept
             unsupported(t, "normal list (the pattern's own slope is used)");
             skip_block();
         } else {
@@ -76,7 +88,49 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
     }
     (void)at;
     if (!have) return nullptr;
+    if (n.own_normal) n.slope_map.clear(); // as POV-Ray: their own normals take no slope map
     return std::make_shared<const PovNormal>(std::move(n));
+}
+
+std::vector<std::array<double, 3>> Parser::parse_slope_map() {
+    const Token open = peek();
+    expect_sym("{");
+    Value declared;
+    if (accept_declared(VType::Other, declared, "a slope map")) {
+        expect_sym("}");
+        if (declared.str != "slope_map") error_at(peek(), "a declared slope map expected");
+        return declared.as<std::vector<std::array<double, 3>>>();
+    }
+    std::vector<std::array<double, 3>> entries;
+    while (!accept_sym("}")) {
+        const Token e = peek();
+        if (!accept_sym("[")) error_expected(e, "'[' or '}'");
+        const Token vt = peek();
+        const Value v = parse_additive(); // no comparison: `[0 <0, 1>]` is a value and a vector
+        if (v.type != VType::Float) error_expected(vt, "a float (the entry's value)");
+        const double value = v.v[0];
+        accept_sym(",");
+        const Token at = peek();
+        const Value hs = parse_expr(); // <height, slope>
+        double height = 0, slope = 0;
+        if (hs.type == VType::Float) {
+            height = slope = hs.v[0]; // a float promotes to <f, f>
+        } else if (hs.type == VType::Vector && hs.dim >= 2) {
+            height = hs.v[0], slope = hs.v[1];
+        } else {
+            error_expected(at, "<height, slope>");
+        }
+        if (!std::isfinite(value) || !std::isfinite(height) || !std::isfinite(slope))
+            error_at(at, "a slope map entry that is not finite");
+        expect_sym("]");
+        entries.push_back({value, height, slope});
+    }
+    if (entries.empty()) error_at(open, "an empty slope map");
+    if (entries.size() > 256) error_at(open, "a slope map of more than 256 entries");
+    // POV-Ray searches its entries in the order given; sorted, equal values keep that order.
+    std::stable_sort(entries.begin(), entries.end(),
+                     [](const auto& a, const auto& b) { return a[0] < b[0]; });
+    return entries;
 }
 
 } // namespace sheaf::io::pov

@@ -274,6 +274,7 @@ class Parser {
     void parse_image_map(const Token& kw, PovPigment& p);
     /// After 'normal': { ... } on top of `base` (may be null); null when it changes nothing.
     std::shared_ptr<const PovNormal> parse_normal(const PovNormal* base);
+    std::vector<std::array<double, 3>> parse_slope_map();
     bool is_pattern_name(const Token& t) const;
     /// A pattern keyword and its arguments; `list` gets the entries a list pattern takes and
     /// `supported` whether Sheaf can show it. False (nothing read) when no pattern is next.

@@ -294,6 +294,43 @@ TEST(PovTextures, UnsupportedPatternsAndWarpsWarn) {
     EXPECT_FLOAT_EQ(shape_material(r, 0).color.x, 0.5f); // the map's average
 }
 
+TEST(PovTextures, SlopeMaps) {
+    const PovResult r = load_text(
+        "#declare SM = slope_map { [1 <0, -1>] [0, <1, 1>] [0.5 0.25] }\n"
+        "sphere { 0, 1 normal { gradient x slope_map { [0 <0, 1>] [0.5 <1, 1>] [0.5 <1, -1>] "
+        "[1 <0, -1>] } } }\n"
+        "sphere { 0, 1 normal { wood 0.3 slope_map { SM } } }\n"
+        "sphere { 0, 1 normal { bumps 0.4 slope_map { SM } } }\n");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    const Scene& s = r.scene;
+    const auto entries = [&](size_t i) {
+        const NormalPattern& np = s.normal_patterns[size_t(shape_material(r, i).normal)];
+        return std::vector<SlopeEntry>(s.slope_entries.begin() + np.slope_first,
+                                       s.slope_entries.begin() + np.slope_first + np.slope_count);
+    };
+    // In the order given, equal values kept in their order.
+    const auto tri = entries(0);
+    ASSERT_EQ(tri.size(), 4u);
+    EXPECT_FLOAT_EQ(tri[1].slope, 1.0f);
+    EXPECT_FLOAT_EQ(tri[2].slope, -1.0f);
+    // A declared map, sorted by value; a float promotes to <f, f>.
+    const auto sm = entries(1);
+    ASSERT_EQ(sm.size(), 3u);
+    EXPECT_FLOAT_EQ(sm[0].height, 1.0f);
+    EXPECT_FLOAT_EQ(sm[1].value, 0.5f);
+    EXPECT_FLOAT_EQ(sm[1].height, 0.25f);
+    EXPECT_FLOAT_EQ(sm[1].slope, 0.25f);
+    EXPECT_FLOAT_EQ(sm[2].slope, -1.0f);
+    // POV-Ray's bumps have a normal of their own that takes no slope map.
+    EXPECT_TRUE(entries(2).empty());
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { wood slope_map { [0 <0, 1> } } }"),
+              "scene.pov:1:51: error: found '}', expected ']'");
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { wood slope_map { [0 \"up\"] } } }"),
+              "scene.pov:1:44: error: found '\"up\"', expected <height, slope>");
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { wood slope_map { } } }"),
+              "scene.pov:1:39: error: an empty slope map");
+}
+
 TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
     const PovResult r = load_text(
         "#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }\n"

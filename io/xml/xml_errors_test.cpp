@@ -259,6 +259,15 @@ TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
                  "2:1", "the checker pattern picks from 2 entries; <switch> has 0");
     EXPECT_ERROR("<scene><material name=\"r\"/><switch name=\"s\" pattern=\"bozo\"/></scene>",
                  "1:28", "<switch> needs <entry> elements");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"bozo\">\n<entry value=\"0.5\"/> <entry "
+                 "value=\"0.2\"/></normal></scene>",
+                 "2:36", "entry values must not decrease");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"checker\">\n<entry/></normal></scene>", "2:1",
+                 "a slope map needs a continuous pattern");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"bozo\">\n<entry value=\"0\" "
+                 "color=\"1\"/></normal></scene>",
+                 "2:25",
+                 "unknown attribute 'color' on <entry>; expected one of value, height, slope");
     EXPECT_ERROR("<scene>\n<normal name=\"n\" pattern=\"ripples\" wave=\"sawtooth\"/></scene>",
                  "2:42", "'sawtooth' is not one of ramp, triangle, sine, scallop, cubic, poly");
 

@@ -274,6 +274,29 @@ TEST(XmlPatterns, FractalPatternsTakeTheirAttributes) {
     EXPECT_EQ(d.exterior_type, 1);
 }
 
+TEST(XmlPatterns, NormalEntriesAreASlopeMap) {
+    const io::SceneFile file = io::parse_xml_scene(R"(<scene>
+  <normal name="plain" pattern="gradient"/>
+  <normal name="triangle" pattern="gradient" amount="0.3">
+    <entry value="0" height="0" slope="1"/> <scale value="2"/>
+    <entry value="0.5" height="1" slope="1"/> <entry value="0.5" height="1" slope="-1"/>
+    <entry value="1" slope="-1"/>
+  </normal>
+</scene>)",
+                                                   "slopes.xml");
+    const Scene& s = file.scene;
+    ASSERT_EQ(s.normal_patterns.size(), 2u);
+    EXPECT_EQ(s.normal_patterns[0].slope_count, 0u);
+    const NormalPattern& tri = s.normal_patterns[1];
+    ASSERT_EQ(tri.slope_count, 4u);
+    ASSERT_EQ(s.slope_entries.size(), 4u);
+    EXPECT_FLOAT_EQ(s.slope_entries[2].value, 0.5f);
+    EXPECT_FLOAT_EQ(s.slope_entries[2].height, 1.0f);
+    EXPECT_FLOAT_EQ(s.slope_entries[2].slope, -1.0f);
+    EXPECT_FLOAT_EQ(s.slope_entries[3].height, 0.0f); // the default height
+    expect_near(tri.pattern.to_pattern.point(Vec3(1, 0, 0)), Vec3(0.5f, 0, 0));
+}
+
 TEST(XmlPatterns, ACheckerPigmentGivesTwoColours) {
     const Frame f = render(flat_scene(R"(<pigment name="grid" pattern="checker">
     <entry color="1 0 0"/> <entry color="0 0 1"/>

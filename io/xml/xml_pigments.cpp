@@ -166,14 +166,37 @@ void SceneReader::read_normal(const pugi::xml_node& node) {
     std::string name;
     a.get("name", name);
     NormalPattern np;
-    np.pattern = read_pattern(a, pattern_kind(a, PatternUse::Normal));
+    const PatternKind kind = pattern_kind(a, PatternUse::Normal);
+    np.pattern = read_pattern(a, kind);
     a.get("amount", np.amount);
     a.finish();
     a.require("name");
     Affine placement;
-    for (const pugi::xml_node& c : child_elements(ctx_, node))
-        if (!apply_transform(c, placement)) unknown_element(ctx_, c, node, kTransforms);
+    std::vector<SlopeEntry> slopes; // a slope map: the pattern's value -> a height
+    float previous = 0;
+    for (const pugi::xml_node& c : child_elements(ctx_, node)) {
+        if (apply_transform(c, placement)) continue;
+        if (std::string_view(c.name()) != "entry") {
+            std::vector<std::string> allowed = {"entry"};
+            allowed.insert(allowed.end(), kTransforms.begin(), kTransforms.end());
+            unknown_element(ctx_, c, node, allowed);
+        }
+        if (pattern_is_list(kind))
+            ctx_.fail(c, "the " + std::string(node.attribute("pattern").value()) +
+                             " pattern picks from a list; a slope map needs a continuous pattern");
+        Attributes e(ctx_, c);
+        SlopeEntry s;
+        s.value = entry_value(e, nullptr, previous);
+        e.get("height", s.height);
+        e.get("slope", s.slope);
+        e.finish();
+        slopes.push_back(s);
+    }
+    if (slopes.size() > 256) ctx_.fail(node, "a slope map of more than 256 entries");
     place_pattern(node, placement, np.pattern);
+    np.slope_first = uint32_t(scene_.slope_entries.size());
+    np.slope_count = uint32_t(slopes.size());
+    scene_.slope_entries.insert(scene_.slope_entries.end(), slopes.begin(), slopes.end());
     define(normals_, "normal", name, node, uint32_t(scene_.normal_patterns.size()));
     scene_.normal_patterns.push_back(np);
 }

@@ -158,10 +158,10 @@ SHEAF_HD_INLINE SurfaceColor evaluate_pigment(const SceneView& scene, uint32_t p
     return texture_detail::Evaluator{scene, uv_s, uv_t}.pigment(pigment, p, 0);
 }
 
-/// The unit shading normal n tilted by normal pattern `normal` at world point p.
-SHEAF_HD_INLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec3 p, Vec3 n) {
-    using texture_detail::slope_value;
-    const NormalPattern& np = scene.normal_patterns[normal];
+namespace texture_detail {
+
+/// The unit shading normal n tilted by the slope of normal pattern np (its map aside).
+SHEAF_HD_INLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p, Vec3 n) {
     const Pattern& pt = np.pattern;
     const Vec3 q = pattern_point(pt, p);
     // The height: the pattern's value, through the slope map when there is one.
@@ -190,6 +190,43 @@ SHEAF_HD_INLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec
     tangent = tangent * (slope / tl);
     const Vec3 out = normalize(n - tangent * np.amount);
     return length_squared(out) > 0 ? out : n;
+}
+
+} // namespace texture_detail
+
+/// The unit shading normal n tilted by normal pattern `normal` at world point p: by its own
+/// slope, or as its normal map says (see NormalPattern).
+SHEAF_HD_INLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec3 p, Vec3 n) {
+    using texture_detail::pattern_value;
+    using texture_detail::tilt_normal;
+    const NormalPattern& np = scene.normal_patterns[normal];
+    if (np.map_count == 0) return tilt_normal(scene, np, p, n);
+    const NormalMapEntry* e = scene.normal_map_entries + np.map_first;
+    auto entry = [&](uint32_t i) {
+        return e[i].normal < 0 ? n : tilt_normal(scene, scene.normal_patterns[e[i].normal], p, n);
+    };
+    Vec3 out;
+    if (np.average) {
+        out = Vec3(0.0f);
+        float weights = 0;
+        for (uint32_t i = 0; i < np.map_count; ++i) {
+            out += entry(i) * e[i].value;
+            weights += e[i].value;
+        }
+        out = out / weights;
+    } else {
+        const Pattern& pt = np.pattern;
+        const Vec3 q = pattern_point(pt, p);
+        if (pattern_is_list(pt.kind)) {
+            const uint32_t i = uint32_t(pattern_index_at(pt, q));
+            return entry(i < np.map_count ? i : np.map_count - 1);
+        }
+        const MapSpan m = map_span(e, np.map_count, pattern_value(scene, pt, q));
+        if (m.lo == m.hi) return entry(m.lo);
+        out = entry(m.lo) * (1 - m.t) + entry(m.hi) * m.t;
+    }
+    const float l = length(out);
+    return l > 0 && l <= FLT_MAX ? out / l : n;
 }
 
 /// What a ray leaving the scene along unit `dir` sees: the sky pigment or the background.

@@ -44,6 +44,12 @@ SurfaceColor as_color(Vec3 c) {
     return {c, 0, 0};
 }
 
+void expect_vec(Vec3 got, Vec3 want, float tol = 1e-5f) {
+    EXPECT_NEAR(got.x, want.x, tol);
+    EXPECT_NEAR(got.y, want.y, tol);
+    EXPECT_NEAR(got.z, want.z, tol);
+}
+
 void expect_color(const SurfaceColor& c, Vec3 want, float tol = 1e-5f) {
     EXPECT_NEAR(c.rgb.x, want.x, tol);
     EXPECT_NEAR(c.rgb.y, want.y, tol);
@@ -167,6 +173,46 @@ TEST(SurfaceTexture, SlopeMapsShapeTheTilt) {
     p.slope_entries = {{0, 0.5f, 0}, {1, 0.5f, 0}};
     const Vec3 flat = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
     EXPECT_NEAR(flat.y, 1.0f, 1e-6);
+}
+
+TEST(SurfaceTexture, NormalMapsBlendPickAndAverageTheirEntries) {
+    PreparedScene p;
+    NormalPattern tilt; // entry 0: tilts along x
+    tilt.pattern = gradient_x();
+    tilt.pattern.to_pattern = Affine::scale(Vec3(0.5f)); // stays in 0..1 over the points used
+    tilt.amount = 0.5f;
+    p.normal_patterns.push_back(tilt);
+    const Vec3 up(0, 1, 0), at(0.6f, 0, 0.3f);
+    const Vec3 tilted = perturb_normal(p, 0, at, up);
+    ASSERT_LT(tilted.x, -0.1f);
+
+    // A continuous map along z: the surface's own normal at 0, the tilt at 1, blended between.
+    NormalPattern map;
+    map.pattern = gradient_x();
+    map.pattern.vector = Vec3(0, 0, 1);
+    map.map_first = 0, map.map_count = 2;
+    p.normal_map_entries = {{0, -1}, {1, 0}};
+    p.normal_patterns.push_back(map);
+    expect_vec(perturb_normal(p, 1, Vec3(0.6f, 0, 0.3f), up), normalize(up * 0.7f + tilted * 0.3f));
+    expect_vec(perturb_normal(p, 1, Vec3(0.6f, 0, 0.999999f), up), tilted);
+
+    // A list pattern (checker) indexes its entries: the own normal on one square, the tilt on
+    // the other.
+    NormalPattern list;
+    list.pattern.kind = PatternKind::Checker;
+    list.map_first = 0, list.map_count = 2;
+    p.normal_patterns.push_back(list);
+    expect_vec(perturb_normal(p, 2, Vec3(0.5f, 0.5f, 0.5f), up), up);
+    expect_vec(perturb_normal(p, 2, Vec3(0.6f, 0.5f, 1.5f), up), tilted);
+
+    // An average weighs the entries' normals by their values: 3 parts own normal, 1 tilt.
+    NormalPattern avg;
+    avg.average = true;
+    avg.map_first = 2, avg.map_count = 2;
+    p.normal_map_entries.push_back({3, -1});
+    p.normal_map_entries.push_back({1, 0});
+    p.normal_patterns.push_back(avg);
+    expect_vec(perturb_normal(p, 3, at, up), normalize(up * 0.75f + tilted * 0.25f));
 }
 
 TEST(SurfaceTexture, SkyFollowsTheDirection) {

@@ -136,13 +136,13 @@ struct PigmentEntry {
 
 /// Where a continuous pattern's value falls in a map of `count` (> 0) entries sorted by
 /// value: the blend (1 - t) * lo + t * hi, or one entry (lo == hi) below the first entry,
-/// above the last, on an entry, or for NaN (the first). One lookup for pigments and for
-/// pigment functions.
+/// above the last, on an entry, or for NaN (the first). One lookup for pigments, pigment
+/// functions and normal maps (any entry type with a `value`).
 struct MapSpan {
     uint32_t lo, hi;
     float t;
 };
-SHEAF_HD_INLINE MapSpan map_span(const PigmentEntry* e, uint32_t count, float v) {
+template <class Entry> SHEAF_HD_INLINE MapSpan map_span(const Entry* e, uint32_t count, float v) {
     uint32_t hi = 0;
     while (hi < count && e[hi].value < v) ++hi;
     if (hi == 0) return {0, 0, 0.0f};
@@ -179,10 +179,25 @@ SHEAF_HD_INLINE float slope_map_height(const SlopeEntry* e, uint32_t count, floa
 /// (POV-Ray's bump size) times its slope. With a slope map (entries [slope_first,
 /// slope_first + slope_count) of Scene::slope_entries) the pattern's value is first mapped
 /// to a height, whose slope tilts the normal.
+///
+/// With a normal map (entries [map_first, map_first + map_count) of
+/// Scene::normal_map_entries) the normal is instead that of other normal patterns: the two
+/// entries around the pattern's value blended (continuous patterns, entries sorted by
+/// value), the entry a list pattern indexes, or with `average` the mean of all the entries'
+/// normals weighted by their values (POV-Ray's normal_map, normal lists and average).
 struct NormalPattern {
     Pattern pattern;
     float amount = 0.5f;
     uint32_t slope_first = 0, slope_count = 0;
+    uint32_t map_first = 0, map_count = 0;
+    bool average = false;
+};
+
+/// A normal map entry: at pattern value (or with the weight) `value`, the normal of normal
+/// pattern `normal`, which has no map of its own (< 0: the surface's own normal).
+struct NormalMapEntry {
+    float value = 0;
+    int32_t normal = -1;
 };
 
 /// A material chosen by pattern (POV-Ray's texture_map and texture lists): entries

@@ -295,6 +295,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.pigment_entries = scene.pigment_entries;
     p.normal_patterns = scene.normal_patterns;
     p.slope_entries = scene.slope_entries;
+    p.normal_map_entries = scene.normal_map_entries;
     p.material_switches = scene.material_switches;
     p.material_entries = scene.material_entries;
     p.media = scene.media;

@@ -80,6 +80,7 @@ struct PreparedScene {
     std::vector<PigmentEntry> pigment_entries;
     std::vector<NormalPattern> normal_patterns;
     std::vector<SlopeEntry> slope_entries;
+    std::vector<NormalMapEntry> normal_map_entries;
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
     std::vector<Medium> media;

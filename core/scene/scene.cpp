@@ -384,6 +384,24 @@ void Scene::validate_patterns() const {
             if (k > 0 && e.value < slope_entries[np.slope_first + k - 1].value)
                 throw SceneError(name + ": the slope map's values must not decrease");
         }
+        if (!range(np.map_first, np.map_count, normal_map_entries.size()))
+            throw SceneError(name + " names normal map entries that do not exist");
+        float weights = 0;
+        for (uint32_t k = 0; k < np.map_count; ++k) {
+            const NormalMapEntry& e = normal_map_entries[np.map_first + k];
+            if (!std::isfinite(e.value))
+                throw SceneError(name + ": a normal map entry's value is not finite");
+            if (e.normal >= int32_t(normal_patterns.size()) ||
+                (e.normal >= 0 && normal_patterns[size_t(e.normal)].map_count > 0))
+                throw SceneError(name + ": normal map entries must name normal patterns "
+                                        "without maps of their own");
+            if (!np.average && !pattern_is_list(np.pattern.kind) && k > 0 &&
+                e.value < normal_map_entries[np.map_first + k - 1].value)
+                throw SceneError(name + ": the normal map's values must not decrease");
+            weights += e.value;
+        }
+        if (np.average && (np.map_count == 0 || !(weights != 0)))
+            throw SceneError(name + ": an average needs entries whose weights do not sum to 0");
     }
     for (size_t i = 0; i < material_switches.size(); ++i) {
         const MaterialSwitch& ms = material_switches[i];

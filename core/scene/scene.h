@@ -239,6 +239,7 @@ class Scene {
     std::vector<PigmentEntry> pigment_entries;
     std::vector<NormalPattern> normal_patterns;
     std::vector<SlopeEntry> slope_entries; // the normal patterns' slope maps
+    std::vector<NormalMapEntry> normal_map_entries; // and their normal maps
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
     std::vector<Medium> media;              // indexed by Material::media_first

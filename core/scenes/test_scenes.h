@@ -301,8 +301,9 @@ inline Scene media_scene(bool inside = false) {
 }
 
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
-/// normal pattern with a slope map, variable, Fresnel and metallic reflection, conserve_energy, a
-/// texture map, no_shadow / no_image / no_reflection objects, fog and a sky pigment.
+/// normal pattern with a slope map, normal maps (a list and an average), variable, Fresnel and
+/// metallic reflection, conserve_energy, a texture map, no_shadow / no_image / no_reflection
+/// objects, fog and a sky pigment.
 inline Scene procedural_scene() {
     Scene s;
     Material floor;
@@ -348,6 +349,19 @@ inline Scene procedural_scene() {
     s.pigment_entries.push_back(bottom), s.pigment_entries.push_back(top);
     s.pigments.push_back(layers);
     layered.pigment = int32_t(s.pigments.size() - 1);
+    // Normal maps: the layered box's checker picks the bumps (0) or its own normal; the
+    // floor averages the bumps and its own normal, 1 : 2.
+    NormalPattern tiles, mean;
+    tiles.pattern.kind = PatternKind::Checker;
+    tiles.pattern.to_pattern = Affine::scale(Vec3(4));
+    tiles.map_count = 2;
+    mean.average = true;
+    mean.map_first = 2, mean.map_count = 2;
+    s.normal_map_entries = {{0, 0}, {0, -1}, {1, 0}, {2, -1}};
+    layered.normal = int32_t(s.normal_patterns.size());
+    s.normal_patterns.push_back(tiles);
+    floor.normal = int32_t(s.normal_patterns.size());
+    s.normal_patterns.push_back(mean);
     Material a, b, picked;
     a.color = Vec3(1, 0.2f, 0.2f), b.color = Vec3(0.2f, 0.2f, 1);
     const uint32_t ma = s.add_material(a), mb = s.add_material(b);

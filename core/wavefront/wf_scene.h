@@ -67,6 +67,7 @@ template <class Exec> class DeviceScene {
         put(p.pigment_entries, v.pigment_entries);
         put(p.normal_patterns, v.normal_patterns);
         put(p.slope_entries, v.slope_entries);
+        put(p.normal_map_entries, v.normal_map_entries);
         put(p.material_switches, v.material_switches);
         put(p.material_entries, v.material_entries);
         put(p.media, v.media);

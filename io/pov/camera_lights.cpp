@@ -444,6 +444,12 @@ Value Parser::parse_rvalue() {
             v.str = k;
             return v;
         }
+        if (k == "normal_map") {
+            advance();
+            Value v = Value::boxed(VType::Other, parse_normal_map(t, false));
+            v.str = k;
+            return v;
+        }
         if (k == "slope_map") {
             advance();
             Value v = Value::boxed(VType::Other, parse_slope_map());
@@ -478,10 +484,9 @@ Value Parser::parse_rvalue() {
             v.str = k;
             return v;
         }
-        if (k == "fog" || k == "media" || k == "rainbow" ||
-            k == "density" || k == "interior_texture" || k == "normal_map" ||
-            k == "slope_map" || k == "spline" || k == "density_map" ||
-            k == "photons" || k == "radiosity" || k == "material_map") {
+        if (k == "fog" || k == "media" || k == "rainbow" || k == "density" ||
+            k == "interior_texture" || k == "spline" || k == "density_map" || k == "photons" ||
+            k == "radiosity" || k == "material_map") {
             advance();
             Value v;
             v.type = VType::Other;

@@ -442,7 +442,13 @@ void Parser::default_directive() {
         } else if (accept_kw("finish")) {
             parse_finish(d.finish);
         } else if (accept_kw("normal")) {
-            d.normal = parse_normal(d.normal.get());
+            // New normals start from this one, bump size and all, even without a pattern.
+            expect_sym("{");
+            PovNormal n = d.normal ? *d.normal : model.normal_defaults;
+            bool have = d.normal != nullptr;
+            parse_normal_body(n, have, "}");
+            model.normal_defaults = n;
+            d.normal = have ? std::make_shared<const PovNormal>(std::move(n)) : nullptr;
         } else if (t.kind == TokKind::Ident && (t.text == "interior" || t.text == "radiosity")) {
             advance();
             unsupported(t, "#default " + t.text);

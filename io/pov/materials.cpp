@@ -89,7 +89,15 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
 }
 
 int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
+    // A map's entries first, placed by its transforms too (the parser left them no maps).
+    std::vector<NormalMapEntry> map;
+    for (const auto& [value, entry] : n.map)
+        map.push_back({float(value), entry ? normal(*entry, eff * n.local) : -1});
     NormalPattern np{pattern(n.pattern, eff * n.local), float(n.amount * n.slope_scale)};
+    np.average = n.average;
+    np.map_first = uint32_t(scene_.normal_map_entries.size());
+    np.map_count = uint32_t(map.size());
+    scene_.normal_map_entries.insert(scene_.normal_map_entries.end(), map.begin(), map.end());
     np.slope_first = uint32_t(scene_.slope_entries.size());
     np.slope_count = uint32_t(n.slope_map.size());
     for (const auto& e : n.slope_map)

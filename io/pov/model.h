@@ -101,6 +101,11 @@ struct PovNormal {
     /// slope_map entries {value, height, slope}, sorted by value: the pattern's value becomes
     /// a height along cubic curves, and that height's slope tilts the normal.
     std::vector<std::array<double, 3>> slope_map;
+    /// A normal map: {value, normal} entries (null: the surface's own normal). Continuous
+    /// patterns blend the two entries around their value (sorted by value); list patterns
+    /// index them; with `average` the values are weights.
+    std::vector<std::pair<double, std::shared_ptr<const PovNormal>>> map;
+    bool average = false;
     Affine local;
 };
 
@@ -222,6 +227,8 @@ struct PovModel {
     int radiosity_count = 35, radiosity_depth = 2;
     double radiosity_brightness = 1;
     PovTexture default_texture;
+    /// What every new normal starts from: #default's normal, pattern or not (its bump size).
+    PovNormal normal_defaults;
     PovSky sky; // no pigments: no sky_sphere
     /// Fog: constant (fog_type 1) or ground fog (fog_type 2: fog_alt > 0).
     bool fog = false;

@@ -31,28 +31,38 @@ bool has_own_normal(const std::string& name) {
 } // namespace
 
 std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
-    const Token at = peek();
-    const Nest nest(*this, at); // normal maps hold normals
     expect_sym("{");
-    PovNormal n = base ? *base : PovNormal{};
+    PovNormal n = base ? *base : model.normal_defaults;
     bool have = base != nullptr;
+    parse_normal_body(n, have, "}");
+    if (!have) return nullptr;
+    return std::make_shared<const PovNormal>(std::move(n));
+}
+
+void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
+    const Nest nest(*this, peek()); // normal maps hold normals
     Value declared;
     if (accept_declared(VType::Normal, declared, "a normal")) {
         n = declared.as<PovNormal>();
         have = true;
     }
+    int list = pattern_is_list(n.pattern.kind) ? int(n.map.size()) : 0;
+    bool list_given = false; // the scene named its own list entries
     for (;;) {
         const Token t = peek();
-        if (accept_sym("}")) break;
+        if (accept_sym(close)) break;
         if (parse_pattern_modifier(n.pattern, n.local)) continue;
-        if (t.kind != TokKind::Ident) error_expected(t, "a normal pattern or '}'");
-        int list = 0;
+        if (t.kind != TokKind::Ident)
+            error_expected(t, "a normal pattern or '" + std::string(close) + "'");
         bool supported = true;
         if (parse_pattern_name(n.pattern, list, supported)) {
             if (!supported) unsupported(t, "normal pattern '" + t.text + "' (no normal change)");
             have = supported;
             n.slope_scale = normal_slope_scale(t.text);
             n.own_normal = has_own_normal(t.text);
+            n.average = false;
+            n.map.clear();
+            list_given = false;
             // The bump size may follow the pattern (and its own arguments), after a comma too.
             if (accept_sym(",") || (starts_expression(peek()) && !is_sym_tok(peek(), "<")))
                 n.amount = parse_float();
@@ -63,13 +73,19 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
         if (k == "bump_size") {
             n.amount = parse_float();
         } else if (k == "average") {
-            unsupported(t, "normal average (no normal change)");
-            have = false;
+            n.average = true;
+            have = true;
         } else if (k == "slope_map") {
             n.slope_map = parse_slope_map();
         } else if (k == "normal_map") {
-            unsupported(t, k + " (the pattern's own slope is used)");
-            skip_block();
+            n.map = parse_normal_map(t, n.average);
+        } else if (k == "normal" && list > 0) { // a list pattern's entries, in order
+            if (!list_given) n.map.clear(), list_given = true;
+            const Token e = peek();
+            if (int(n.map.size()) == list)
+                error_at(t, "a list pattern of " + std::to_string(list) + " entries takes " +
+                                std::to_string(list) + " normals");
+            n.map.push_back({0, map_entry(e, parse_normal(nullptr))});
         } else if (k == "bump_map") {
             unsupported(t, "bump_map (no normal change)");
             skip_block();
@@ -79,17 +95,72 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
                            "evaluated in space)");
         } else if (k == "accuracy" || k == "no_bump_scale") {
             if (starts_expression(peek())) parse_expr();
-        } else if (k == "normal") { // a list entry of a list pattern: the first is kept
-            unsupported(t, "normal list (the pattern's own slope is used)");
-            skip_block();
         } else {
             error_expected(t, "a normal item (bumps, ripples, bump_size, turbulence ...)");
         }
     }
-    (void)at;
-    if (!have) return nullptr;
     if (n.own_normal) n.slope_map.clear(); // as POV-Ray: their own normals take no slope map
-    return std::make_shared<const PovNormal>(std::move(n));
+    if (n.average && n.map.empty()) have = false; // an average of nothing: no change
+    // A list pattern's entries that were not given leave the surface's normal as it is.
+    if (list > 0 && !n.map.empty())
+        while (int(n.map.size()) < list) n.map.push_back({0, nullptr});
+}
+
+std::shared_ptr<const PovNormal> Parser::map_entry(const Token& at,
+                                                   std::shared_ptr<const PovNormal> entry) {
+    if (entry && !entry->map.empty()) {
+        unsupported(at, "a normal map inside a normal map (the inner map is left out)");
+        PovNormal leaf = *entry;
+        leaf.map.clear();
+        leaf.average = false;
+        entry = std::make_shared<const PovNormal>(std::move(leaf));
+    }
+    return entry;
+}
+
+std::vector<std::pair<double, std::shared_ptr<const PovNormal>>>
+Parser::parse_normal_map(const Token& kw, bool weights) {
+    expect_sym("{");
+    Value declared;
+    if (accept_declared(VType::Other, declared, "a normal map")) {
+        expect_sym("}");
+        if (declared.str != "normal_map") error_at(kw, "a declared normal map expected");
+        return declared.as<std::vector<std::pair<double, std::shared_ptr<const PovNormal>>>>();
+    }
+    std::vector<std::pair<double, std::shared_ptr<const PovNormal>>> entries;
+    while (!accept_sym("}")) {
+        const Token e = peek();
+        if (!accept_sym("[")) error_expected(e, "'[' or '}'");
+        double value = 1; // an average's weight may be left out
+        if (starts_map_value(peek())) {
+            const Token vt = peek();
+            const Value v = parse_additive();
+            if (v.type != VType::Float) error_expected(vt, "a float (the entry's value)");
+            value = v.v[0];
+        } else if (!weights) {
+            error_expected(peek(), "the entry's value (a float)");
+        }
+        accept_sym(",");
+        const Token body = peek();
+        PovNormal n = model.normal_defaults;
+        bool have = false;
+        if (accept_kw("normal")) {
+            const auto inner = parse_normal(nullptr);
+            expect_sym("]");
+            if (inner) n = *inner, have = true;
+        } else {
+            parse_normal_body(n, have, "]"); // [v Ident], [v bumps 0.5 scale 2]
+        }
+        entries.push_back(
+            {value,
+             map_entry(body, have ? std::make_shared<const PovNormal>(std::move(n)) : nullptr)});
+    }
+    if (entries.empty()) error_at(kw, "an empty normal map");
+    if (entries.size() > 256) error_at(kw, "a normal map of more than 256 entries");
+    if (!weights) // POV-Ray searches the entries in order; sorted, equal values keep it
+        std::stable_sort(entries.begin(), entries.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
+    return entries;
 }
 
 std::vector<std::array<double, 3>> Parser::parse_slope_map() {

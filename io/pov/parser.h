@@ -274,6 +274,11 @@ class Parser {
     void parse_image_map(const Token& kw, PovPigment& p);
     /// After 'normal': { ... } on top of `base` (may be null); null when it changes nothing.
     std::shared_ptr<const PovNormal> parse_normal(const PovNormal* base);
+    void parse_normal_body(PovNormal& n, bool& have, const char* close);
+    std::vector<std::pair<double, std::shared_ptr<const PovNormal>>>
+    parse_normal_map(const Token& kw, bool weights);
+    std::shared_ptr<const PovNormal> map_entry(const Token& at,
+                                               std::shared_ptr<const PovNormal> entry);
     std::vector<std::array<double, 3>> parse_slope_map();
     bool is_pattern_name(const Token& t) const;
     /// A pattern keyword and its arguments; `list` gets the entries a list pattern takes and

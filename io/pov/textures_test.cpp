@@ -331,6 +331,63 @@ TEST(PovTextures, SlopeMaps) {
               "scene.pov:1:39: error: an empty slope map");
 }
 
+TEST(PovTextures, NormalMapsListsAndAverages) {
+    const PovResult r =
+        load_text("#default { normal { bump_size 1.5 } }\n"
+                  "#declare NM = normal_map { [0.7 gradient y] [0.3 marble turbulence 0.5] }\n"
+                  "sphere { 0, 1 normal { gradient x normal_map { NM } scale 2 } }\n"
+                  "sphere { 0, 1 normal { checker normal { bumps 0.4 } } }\n"
+                  "sphere { 0, 1 normal { average normal_map { [gradient x, -5 scallop_wave] "
+                  "[3 gradient y, 5] } } }\n");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    const Scene& s = r.scene;
+    const auto map = [&](size_t i) {
+        const NormalPattern& np = s.normal_patterns[size_t(shape_material(r, i).normal)];
+        return std::make_pair(np, std::vector<NormalMapEntry>(
+                                      s.normal_map_entries.begin() + np.map_first,
+                                      s.normal_map_entries.begin() + np.map_first + np.map_count));
+    };
+    // A declared map, sorted by value; its entries start from #default's bump size and move
+    // with the normal's transforms.
+    const auto [blend, be] = map(0);
+    ASSERT_EQ(be.size(), 2u);
+    EXPECT_FLOAT_EQ(be[0].value, 0.3f);
+    const NormalPattern& marble = s.normal_patterns[size_t(be[0].normal)];
+    EXPECT_EQ(marble.pattern.kind, PatternKind::Marble);
+    EXPECT_FLOAT_EQ(marble.amount, 1.5f * 0.15f); // the bump size times the slope scale
+    EXPECT_EQ(marble.map_count, 0u);
+    EXPECT_NEAR(marble.pattern.to_pattern.point(Vec3(2, 0, 0)).x, 1.0f, 1e-6);
+    EXPECT_FALSE(blend.average);
+    // A list pattern's normals in order; those not given leave the surface's normal.
+    const auto [list, le] = map(1);
+    EXPECT_EQ(list.pattern.kind, PatternKind::Checker);
+    ASSERT_EQ(le.size(), 2u);
+    EXPECT_EQ(s.normal_patterns[size_t(le[0].normal)].pattern.kind, PatternKind::Bozo);
+    EXPECT_EQ(le[1].normal, -1);
+    // An average: weights in the order given, 1 where left out.
+    const auto [avg, ae] = map(2);
+    EXPECT_TRUE(avg.average);
+    ASSERT_EQ(ae.size(), 2u);
+    EXPECT_FLOAT_EQ(ae[0].value, 1.0f);
+    EXPECT_FLOAT_EQ(ae[1].value, 3.0f);
+    EXPECT_FLOAT_EQ(s.normal_patterns[size_t(ae[0].normal)].amount, -5 * 0.15f);
+    EXPECT_EQ(s.normal_patterns[size_t(ae[0].normal)].pattern.wave, Wave::Scallop);
+
+    // A map inside a map is warned and left out.
+    const PovResult nested = load_text(
+        "sphere { 0, 1 normal { bozo normal_map { [0 gradient x normal_map { [0 bumps] } ] "
+        "[1 dents] } } }\n");
+    ASSERT_EQ(nested.warnings.size(), 1u);
+    EXPECT_NE(nested.warnings[0].find("a normal map inside a normal map"), std::string::npos);
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { bozo normal_map { } } }"),
+              "scene.pov:1:29: error: an empty normal map");
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { bozo normal_map { [bumps] } } }"),
+              "scene.pov:1:43: error: found 'bumps', expected the entry's value (a float)");
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { checker normal { bumps } normal { dents } "
+                       "normal { wrinkles } } }"),
+              "scene.pov:1:66: error: a list pattern of 2 entries takes 2 normals");
+}
+
 TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
     const PovResult r = load_text(
         "#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }\n"

@@ -268,6 +268,20 @@ TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
                  "color=\"1\"/></normal></scene>",
                  "2:25",
                  "unknown attribute 'color' on <entry>; expected one of value, height, slope");
+    EXPECT_ERROR("<scene><normal name=\"a\" pattern=\"bumps\"/><normal name=\"n\" "
+                 "pattern=\"bozo\">\n<entry value=\"0\" normal=\"a\"/><entry value=\"1\" "
+                 "height=\"1\"/></normal></scene>",
+                 "2:30", "a <normal>'s entries are a slope map (height, slope) or a normal map");
+    EXPECT_ERROR("<scene><normal name=\"a\" pattern=\"bumps\"/><normal name=\"m\" "
+                 "pattern=\"bozo\"><entry value=\"0\" normal=\"a\"/></normal>\n<normal "
+                 "name=\"n\" average=\"true\"><entry normal=\"m\"/></normal></scene>",
+                 "2:48", "normal 'm' has a normal map of its own");
+    EXPECT_ERROR("<scene><normal name=\"a\" pattern=\"bumps\"/>\n<normal name=\"n\" "
+                 "average=\"true\"><entry normal=\"a\" weight=\"1\"/><entry normal=\"\" "
+                 "weight=\"-1\"/></normal></scene>",
+                 "2:1", "the weights of an average's entries sum to 0");
+    EXPECT_ERROR("<scene>\n<normal name=\"n\" average=\"true\" pattern=\"bozo\"/></scene>", "2:42",
+                 "an average=\"true\" <normal> averages its entries");
     EXPECT_ERROR("<scene>\n<normal name=\"n\" pattern=\"ripples\" wave=\"sawtooth\"/></scene>",
                  "2:42", "'sawtooth' is not one of ramp, triangle, sine, scallop, cubic, poly");
 

@@ -297,6 +297,35 @@ TEST(XmlPatterns, NormalEntriesAreASlopeMap) {
     expect_near(tri.pattern.to_pattern.point(Vec3(1, 0, 0)), Vec3(0.5f, 0, 0));
 }
 
+TEST(XmlPatterns, NormalEntriesNamingNormalsAreANormalMap) {
+    const io::SceneFile file = io::parse_xml_scene(R"(<scene>
+  <normal name="ripples" pattern="ripples" amount="0.3"/>
+  <normal name="bumps" pattern="bumps"/>
+  <normal name="blend" pattern="gradient">
+    <entry value="0.2" normal="ripples"/> <entry value="0.8" normal=""/> <scale value="2"/>
+  </normal>
+  <normal name="tiles" pattern="checker"> <entry normal="bumps"/> <entry normal=""/> </normal>
+  <normal name="mean" average="true"> <entry normal="ripples" weight="3"/> <entry normal="bumps"/> </normal>
+</scene>)",
+                                                   "normal_maps.xml");
+    const Scene& s = file.scene;
+    ASSERT_EQ(s.normal_patterns.size(), 5u);
+    ASSERT_EQ(s.normal_map_entries.size(), 6u);
+    const NormalPattern& blend = s.normal_patterns[2];
+    EXPECT_EQ(blend.map_first, 0u);
+    EXPECT_EQ(blend.map_count, 2u);
+    EXPECT_FLOAT_EQ(s.normal_map_entries[0].value, 0.2f);
+    EXPECT_EQ(s.normal_map_entries[0].normal, 0);
+    EXPECT_EQ(s.normal_map_entries[1].normal, -1); // the surface's own normal
+    const NormalPattern& tiles = s.normal_patterns[3];
+    EXPECT_EQ(tiles.map_count, 2u);
+    EXPECT_EQ(s.normal_map_entries[2].normal, 1);
+    const NormalPattern& mean = s.normal_patterns[4];
+    EXPECT_TRUE(mean.average);
+    EXPECT_FLOAT_EQ(s.normal_map_entries[4].value, 3.0f);
+    EXPECT_FLOAT_EQ(s.normal_map_entries[5].value, 1.0f); // the default weight
+}
+
 TEST(XmlPatterns, ACheckerPigmentGivesTwoColours) {
     const Frame f = render(flat_scene(R"(<pigment name="grid" pattern="checker">
     <entry color="1 0 0"/> <entry color="0 0 1"/>

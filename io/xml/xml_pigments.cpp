@@ -5,6 +5,8 @@
 // pigments only, as Scene::validate requires.
 #include "io/xml/xml_reader.h"
 
+#include <cmath>
+
 namespace sheaf::io::xml {
 namespace {
 
@@ -166,37 +168,96 @@ void SceneReader::read_normal(const pugi::xml_node& node) {
     std::string name;
     a.get("name", name);
     NormalPattern np;
-    const PatternKind kind = pattern_kind(a, PatternUse::Normal);
-    np.pattern = read_pattern(a, kind);
+    a.get("average", np.average);
+    const bool patterned = bool(node.attribute("pattern"));
+    if (np.average && patterned)
+        ctx_.fail(node, node.attribute("pattern"),
+                  "an average=\"true\" <normal> averages its entries; it has no pattern");
+    const PatternKind kind =
+        np.average ? PatternKind::Gradient : pattern_kind(a, PatternUse::Normal);
+    if (!np.average) np.pattern = read_pattern(a, kind);
     a.get("amount", np.amount);
     a.finish();
     a.require("name");
+    // Entries: a slope map (height, slope), or a normal map (other normals), not both.
     Affine placement;
-    std::vector<SlopeEntry> slopes; // a slope map: the pattern's value -> a height
+    std::vector<SlopeEntry> slopes;
+    std::vector<NormalMapEntry> map;
     float previous = 0;
     for (const pugi::xml_node& c : child_elements(ctx_, node)) {
-        if (apply_transform(c, placement)) continue;
+        if (apply_transform(c, placement)) {
+            if (np.average)
+                ctx_.fail(c,
+                          tag(c) + " in " + tag(node) +
+                              ": an average has no pattern to place; place its entries' normals");
+            continue;
+        }
         if (std::string_view(c.name()) != "entry") {
             std::vector<std::string> allowed = {"entry"};
-            allowed.insert(allowed.end(), kTransforms.begin(), kTransforms.end());
+            if (!np.average) allowed.insert(allowed.end(), kTransforms.begin(), kTransforms.end());
             unknown_element(ctx_, c, node, allowed);
         }
+        Attributes e(ctx_, c);
+        if (np.average || c.attribute("normal")) {
+            if (!slopes.empty())
+                ctx_.fail(c, "a <normal>'s entries are a slope map (height, slope) or a normal "
+                             "map (normal), not both");
+            NormalMapEntry m;
+            if (np.average) {
+                m.value = 1;
+                e.get("weight", m.value);
+                if (!std::isfinite(m.value))
+                    ctx_.fail(c, c.attribute("weight"), "a weight must be finite");
+            } else {
+                m.value =
+                    entry_value(e, pattern_is_list(kind) ? "a list pattern" : nullptr, previous);
+            }
+            std::string normal;
+            e.get("normal", normal);
+            e.finish();
+            if (!c.attribute("normal"))
+                ctx_.fail(c, "an <entry> of an average needs the attribute 'normal' (\"\": the "
+                             "surface's own normal)");
+            if (!normal.empty()) {
+                const uint32_t n = lookup(normals_, "normal", normal, c, c.attribute("normal"));
+                if (scene_.normal_patterns[n].map_count > 0)
+                    ctx_.fail(c, c.attribute("normal"),
+                              "normal '" + normal +
+                                  "' has a normal map of its own; map entries "
+                                  "name normals without maps");
+                m.normal = int32_t(n);
+            }
+            map.push_back(m);
+            continue;
+        }
+        if (!map.empty() || np.average)
+            ctx_.fail(c, "a <normal>'s entries are a slope map (height, slope) or a normal map "
+                         "(normal), not both");
         if (pattern_is_list(kind))
             ctx_.fail(c, "the " + std::string(node.attribute("pattern").value()) +
                              " pattern picks from a list; a slope map needs a continuous pattern");
-        Attributes e(ctx_, c);
-        SlopeEntry s;
-        s.value = entry_value(e, nullptr, previous);
-        e.get("height", s.height);
-        e.get("slope", s.slope);
+        SlopeEntry sl;
+        sl.value = entry_value(e, nullptr, previous);
+        e.get("height", sl.height);
+        e.get("slope", sl.slope);
         e.finish();
-        slopes.push_back(s);
+        slopes.push_back(sl);
     }
     if (slopes.size() > 256) ctx_.fail(node, "a slope map of more than 256 entries");
-    place_pattern(node, placement, np.pattern);
+    if (map.size() > 256) ctx_.fail(node, "a normal map of more than 256 entries");
+    if (np.average || (pattern_is_list(kind) && !map.empty()))
+        check_entry_count(node, np.average ? PatternKind::Gradient : kind, map.size());
+    float weights = 0;
+    for (const NormalMapEntry& m : map) weights += m.value;
+    if (np.average && !(weights != 0))
+        ctx_.fail(node, "the weights of an average's entries sum to 0");
+    if (!np.average) place_pattern(node, placement, np.pattern);
     np.slope_first = uint32_t(scene_.slope_entries.size());
     np.slope_count = uint32_t(slopes.size());
     scene_.slope_entries.insert(scene_.slope_entries.end(), slopes.begin(), slopes.end());
+    np.map_first = uint32_t(scene_.normal_map_entries.size());
+    np.map_count = uint32_t(map.size());
+    scene_.normal_map_entries.insert(scene_.normal_map_entries.end(), map.begin(), map.end());
     define(normals_, "normal", name, node, uint32_t(scene_.normal_patterns.size()));
     scene_.normal_patterns.push_back(np);
 }

@@ -1,8 +1,9 @@
 // Procedural textures, object flags, fog and sky through the whole pipeline: the exact accel
 // modes still agree byte for byte, no_shadow objects cast no shadow, no_image objects are not
-// seen but still shade, fog and sky colour what they should.
+// seen but still shade, fog and sky colour what they should, inside materials show from inside.
 #include "core/render/renderer.h"
 
+#include "core/base/error.h"
 #include "core/scenes/shapes.h"
 #include "core/scenes/test_scenes.h"
 
@@ -26,6 +27,12 @@ double mean(const Frame& f) {
     double m = 0;
     for (size_t i = 0; i < f.rgba.size(); i += 4) m += f.rgba[i] + f.rgba[i + 1] + f.rgba[i + 2];
     return m / double(f.rgba.size());
+}
+
+void expect_color_near(Vec3 got, Vec3 want) {
+    EXPECT_NEAR(got.x, want.x, 1e-5);
+    EXPECT_NEAR(got.y, want.y, 1e-5);
+    EXPECT_NEAR(got.z, want.z, 1e-5);
 }
 
 bool same_image(const Frame& a, const Frame& b) {
@@ -123,6 +130,28 @@ TEST(ProceduralRender, FogAndSkyColourWhatTheyShould) {
     s.pigments.push_back(sky_pigment);
     s.sky = 0;
     EXPECT_NEAR(pixel(render(prepare_scene(s), {}), 1, 1).x, 0.3f, 1e-6);
+}
+
+TEST(ProceduralRender, InsideMaterialsShowFromInside) {
+    // A red ball and a red box, blue inside (POV-Ray's interior_texture); ambient light only.
+    Scene s;
+    Material red, blue;
+    red.color = Vec3(1, 0, 0), blue.color = Vec3(0, 0, 1);
+    red.ambient = blue.ambient = 1, red.diffuse = blue.diffuse = 0;
+    red.inside = int32_t(s.add_material(blue));
+    const uint32_t mat = s.add_material(red);
+    s.add_shape("ball", Shape{ShapeKind::Sphere}, mat);
+    s.add_mesh_object("box", make_box(Vec3(4, -1, -1), Vec3(6, 1, 1)), mat);
+    s.camera.position = Vec3(0, 0, 6);
+    s.camera.look_at = Vec3(0, 0, 0);
+    expect_color_near(pixel(render(prepare_scene(s), {}), 20, 16), Vec3(1, 0, 0));
+    s.camera.position = Vec3(0, 0, 0.5f); // inside the ball
+    expect_color_near(pixel(render(prepare_scene(s), {}), 20, 16), Vec3(0, 0, 1));
+    s.camera.position = Vec3(5, 0, 0.5f), s.camera.look_at = Vec3(5, 0, -1); // inside the box
+    expect_color_near(pixel(render(prepare_scene(s), {}), 20, 16), Vec3(0, 0, 1));
+    // An inside material is one without an inside of its own.
+    s.materials[0].inside = 1;
+    EXPECT_THROW(s.validate(), SceneError);
 }
 
 } // namespace

@@ -421,6 +421,10 @@ void Scene::validate_patterns() const {
         if (mt.pigment >= int32_t(pigments.size()) || mt.normal >= int32_t(normal_patterns.size()) ||
             mt.select >= int32_t(material_switches.size()))
             throw SceneError(name + " names a pigment, normal or switch that does not exist");
+        if (mt.inside >= int32_t(materials.size()))
+            throw SceneError(name + ": its inside material does not exist");
+        if (mt.inside >= 0 && materials[size_t(mt.inside)].inside >= 0)
+            throw SceneError(name + ": its inside material has an inside material of its own");
         if (!range(mt.media_first, mt.media_count, media.size()))
             throw SceneError(name + ": its media lie outside the scene's media");
     }

@@ -40,6 +40,10 @@ struct Material {
                           // point, replacing color, texture and transmission (as filter)
     int32_t normal = -1;  // >= 0: Scene::normal_patterns tilts the shading normal
     int32_t select = -1;  // >= 0: Scene::material_switches picks the material at each point
+    // >= 0: the material the surface shows where a ray meets it from inside (POV-Ray's
+    // interior_texture): that whole material, ior and fade included, so it should share this
+    // one's; one without an `inside` of its own. Shadow rays see this one.
+    int32_t inside = -1;
     float brilliance = 1.0f;                   // the diffuse term is cos^brilliance
     float blinn = 0.0f, blinn_exponent = 20.0f; // half-vector highlight (POV-Ray's specular)
     float metallic = 0.0f;                     // highlights tinted by the surface colour

@@ -301,9 +301,9 @@ inline Scene media_scene(bool inside = false) {
 }
 
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
-/// normal pattern with a slope map, normal maps (a list and an average), variable, Fresnel and
-/// metallic reflection, conserve_energy, a texture map, no_shadow / no_image / no_reflection
-/// objects, fog and a sky pigment.
+/// normal pattern with a slope map, normal maps (a list and an average), an inside material,
+/// variable, Fresnel and metallic reflection, conserve_energy, a texture map, no_shadow / no_image
+/// / no_reflection objects, fog and a sky pigment.
 inline Scene procedural_scene() {
     Scene s;
     Material floor;
@@ -372,6 +372,11 @@ inline Scene procedural_scene() {
     s.material_switches.push_back(sw);
     s.material_entries = {{0.0f, ma}, {1.0f, mb}};
     picked.select = 0;
+    // From inside, the glass is plain and greener (POV-Ray's interior_texture).
+    Material glass_inside = glass;
+    glass_inside.pigment = -1, glass_inside.color = Vec3(0.8f, 1, 0.8f);
+    glass_inside.transmission = 0.8f;
+    glass.inside = int32_t(s.add_material(glass_inside));
     const uint32_t mf = s.add_material(floor), mm = s.add_material(marble),
                    mg = s.add_material(glass), mp = s.add_material(picked),
                    ml = s.add_material(layered);

@@ -31,8 +31,8 @@ struct Builder {
     size_t names = 0;
     bool geometry_only = false; // every surface material 0 (textures not built)
 
-    uint32_t material(const PovTexture& t, const PovInterior* in) {
-        return geometry_only ? 0 : materials.material(t, in);
+    uint32_t material(const PovTexture& t, const PovInterior* in, const PovTexture* inside) {
+        return geometry_only ? 0 : materials.material(t, in, inside);
     }
 
     /// The loose triangles as one mesh object per material.
@@ -66,7 +66,7 @@ struct Builder {
         for (const PovObject& shape : o.children) { // looks_like, at the light
             PovObject placed = shape;
             p.apply_transform(placed, Affine::translate(pl.light.position));
-            top(placed, p.model.default_texture, nullptr, 0);
+            top(placed, p.model.default_texture, nullptr, nullptr, 0);
         }
         Light l = pl.light;
         // POV-Ray keeps the cosines: a radius whose cosine is not positive (radius -90 of the
@@ -101,10 +101,11 @@ struct Builder {
             }
     }
 
-    void mesh(const PovObject& o, const PovTexture& tex, const PovInterior* in, uint8_t flags) {
+    void mesh(const PovObject& o, const PovTexture& tex, const PovInterior* in,
+              const PovTexture* inside, uint8_t flags) {
         // Media fill the analytic objects that hold them (core/render/media.h).
         if (in && !in->media.empty()) p.unsupported(o.where, "media in a mesh (ignored)");
-        const uint32_t mat = material(tex, in);
+        const uint32_t mat = material(tex, in, inside);
         const Affine t = flip * o.local;
         for (const Vec3& v : o.mesh->positions)
             if (!is_finite(t.point(v)))
@@ -120,9 +121,11 @@ struct Builder {
 
     /// Adds the CSG node for `o` to `so`; -1 when nothing of it can be shown analytically.
     int node(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
-             uint8_t parent_flags, ShapeObject& so, bool in_union) {
+             const PovTexture* parent_inside, uint8_t parent_flags, ShapeObject& so,
+             bool in_union) {
         const PovTexture& tex = o.texture ? *o.texture : parent;
         const PovInterior* in = o.interior ? o.interior.get() : parent_in;
+        const PovTexture* inside = o.interior_texture ? o.interior_texture.get() : parent_inside;
         const uint8_t flags = uint8_t(o.flags | parent_flags);
         switch (o.kind) {
         case PovKind::Light:
@@ -131,7 +134,7 @@ struct Builder {
         case PovKind::Mesh:
             if (in_union) {
                 if (o.inverse) p.unsupported(o.where, "inverse of a mesh (ignored)");
-                mesh(o, tex, in, flags);
+                mesh(o, tex, in, inside, flags);
             } else {
                 p.unsupported(o.where, "mesh inside intersection or difference (left out)");
             }
@@ -154,7 +157,7 @@ struct Builder {
             n.julia = o.julia;
             if (o.shape.kind == ShapeKind::Isosurface) n.iso = isosurface(o);
             n.transform = o.local;
-            n.material = material(tex, in);
+            n.material = material(tex, in, inside);
             n.inverse = o.inverse;
             so.nodes.push_back(n);
             return int(so.nodes.size() - 1);
@@ -171,7 +174,7 @@ struct Builder {
                 }
         std::vector<uint32_t> kids;
         for (size_t i = 0; i < o.children.size(); ++i) {
-            const int k = node(o.children[i], tex, in, flags, so, uni && in_union);
+            const int k = node(o.children[i], tex, in, inside, flags, so, uni && in_union);
             if (k >= 0)
                 kids.push_back(uint32_t(k));
             else if ((o.op == CsgOp::Difference || o.op == CsgOp::Clip) && i == 0 &&
@@ -190,22 +193,23 @@ struct Builder {
     }
 
     void top(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
-             uint8_t parent_flags) {
+             const PovTexture* parent_inside, uint8_t parent_flags) {
         const PovTexture& tex = o.texture ? *o.texture : parent;
         const PovInterior* in = o.interior ? o.interior.get() : parent_in;
+        const PovTexture* inside = o.interior_texture ? o.interior_texture.get() : parent_inside;
         const uint8_t flags = uint8_t(o.flags | parent_flags);
         if (o.kind == PovKind::Light) return light(o);
         if (o.kind == PovKind::Mesh) {
             if (o.inverse) p.unsupported(o.where, "inverse of a mesh (ignored)");
-            return mesh(o, tex, in, flags);
+            return mesh(o, tex, in, inside, flags);
         }
         if (o.kind == PovKind::Csg && o.op == CsgOp::Union && !o.inverse) {
             // A union of separate objects renders exactly as those objects.
-            for (const PovObject& c : o.children) top(c, tex, in, flags);
+            for (const PovObject& c : o.children) top(c, tex, in, inside, flags);
             return;
         }
         ShapeObject built; // children before parents
-        const int root = node(o, parent, parent_in, parent_flags, built, true);
+        const int root = node(o, parent, parent_in, parent_inside, parent_flags, built, true);
         if (root < 0) return;
         // The core wants parents before children: copy the tree in preorder from the root
         // (as deep as the parser's nesting limit at most).
@@ -308,7 +312,7 @@ double build_scene(Parser& p, Scene& scene) {
     // are light to the power of the gamma (Scene::working_gamma).
     scene.working_gamma = float(gamma);
     Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, 0};
-    for (const PovObject& o : m.objects) b.top(o, m.default_texture, nullptr, 0);
+    for (const PovObject& o : m.objects) b.top(o, m.default_texture, nullptr, nullptr, 0);
     b.add_loose();
     b.camera();
     scene.background = rgb(m.background);
@@ -337,7 +341,7 @@ void build_object_geometry(Parser& p, const PovObject& o, Scene& scene) {
     p.captures_.emplace_back(); // its warnings were given where it was made
     Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, 0, true};
     try {
-        b.top(o, p.model.default_texture, nullptr, 0);
+        b.top(o, p.model.default_texture, nullptr, nullptr, 0);
         b.add_loose();
     } catch (...) {
         p.captures_.pop_back();

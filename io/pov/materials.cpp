@@ -185,8 +185,19 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
     return int32_t(scene_.pigments.size() - 1);
 }
 
-uint32_t MaterialBuilder::material(const PovTexture& t, const PovInterior* in) {
-    return material_in(t, in, Affine(), 0);
+uint32_t MaterialBuilder::material(const PovTexture& t, const PovInterior* in,
+                                   const PovTexture* inside) {
+    const uint32_t front = material_in(t, in, Affine(), 0);
+    if (!inside) return front;
+    // The same interior behind both faces: the inside material differs in its texture only.
+    const int32_t back = int32_t(material_in(*inside, in, Affine(), 0));
+    auto [it, added] = insides_.emplace(std::make_pair(front, back), 0);
+    if (added) {
+        Material m = scene_.materials[front]; // a copy: plain materials are shared
+        m.inside = back;
+        it->second = scene_.add_material(m);
+    }
+    return it->second;
 }
 
 uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in,

@@ -27,8 +27,9 @@ class MaterialBuilder {
     MaterialBuilder(Parser& p, Scene& scene) : p_(p), scene_(scene), functions_(scene) {}
 
     /// The material of texture `t` (its own transforms included) with interior `in` (may be
-    /// null).
-    uint32_t material(const PovTexture& t, const PovInterior* in);
+    /// null), showing texture `inside` (may be null; POV-Ray's interior_texture) from inside.
+    uint32_t material(const PovTexture& t, const PovInterior* in,
+                      const PovTexture* inside = nullptr);
     /// The sky_sphere's pigments as one (layered) pigment; -1 when there are none.
     int32_t sky(const std::vector<std::shared_ptr<const PovPigment>>& layers, const Affine& local);
     /// The program of user function `f` (function patterns, isosurfaces); a function that
@@ -49,6 +50,7 @@ class MaterialBuilder {
     Parser& p_;
     Scene& scene_;
     std::map<std::string, uint32_t> plain_; // materials without patterns, by their values
+    std::map<std::pair<uint32_t, int32_t>, uint32_t> insides_; // (front, inside) -> material
     std::map<std::string, int32_t> images_; // image textures by file and transform
     FnCompiler functions_;
 };

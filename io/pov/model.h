@@ -185,6 +185,7 @@ struct PovObject {
     Affine local;
     PovTextureRef texture;                     // null: inherited (or the default texture)
     std::shared_ptr<const PovInterior> interior; // null: inherited (or none)
+    PovTextureRef interior_texture; // what it shows from inside; null: inherited (or none)
     bool inverse = false;
     bool hollow = false; // media around it fill it (`hollow`; set on a CSG, on its members too)
     uint8_t flags = 0; // ObjectFlag bits: no_shadow, no_reflection, no_image

@@ -341,9 +341,11 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
                 error_expected(i, "texture, interior or '}' in material");
             }
         }
-    } else if (k == "interior_texture" || k == "photons") {
+    } else if (k == "interior_texture") {
         advance();
-        if (k == "interior_texture") unsupported(t, k + " (ignored)");
+        o.interior_texture = parse_texture_layers(model.default_texture);
+    } else if (k == "photons") {
+        advance();
         if (is_sym_tok(peek(), "{"))
             skip_block();
         else
@@ -515,6 +517,7 @@ void set_hollow(PovObject& o, bool hollow) {
 
 void Parser::apply_transform(PovObject& o, const Affine& m) {
     o.texture = transformed(o.texture, m);
+    o.interior_texture = transformed(o.interior_texture, m);
     if (o.interior && !o.interior->media.empty()) { // its media move with the object
         auto in = std::make_shared<PovInterior>(*o.interior);
         in->local = m * in->local;

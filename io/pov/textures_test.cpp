@@ -388,6 +388,42 @@ TEST(PovTextures, NormalMapsListsAndAverages) {
               "scene.pov:1:66: error: a list pattern of 2 entries takes 2 normals");
 }
 
+TEST(PovTextures, InteriorTexturesShowFromInside) {
+    const PovResult r = load_text(
+        "sphere { 0, 1 pigment { rgb x } interior_texture { pigment { rgb z } finish { "
+        "ambient 1 } } }\n"
+        "intersection { sphere { 0, 1 } sphere { x, 1 pigment { rgb y } } pigment { rgb x }\n"
+        "  interior_texture { pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } } } scale 2 }\n"
+        "sphere { 0, 1 pigment { rgb x } }\n");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    const Scene& s = r.scene;
+    const Material& ball = shape_material(r, 0);
+    ASSERT_GE(ball.inside, 0);
+    const Material& in = s.materials[size_t(ball.inside)];
+    EXPECT_FLOAT_EQ(ball.color.x, 1.0f);
+    EXPECT_FLOAT_EQ(in.color.z, 1.0f);
+    EXPECT_FLOAT_EQ(in.ambient, 1.0f);
+    EXPECT_EQ(in.inside, -1);
+    // Every part of a CSG takes it, whatever its own texture; it moves with the object.
+    const ShapeObject& cut = s.shape_objects[1];
+    ASSERT_EQ(cut.nodes.size(), 3u);
+    const Material& a = s.materials[cut.nodes[1].material];
+    const Material& b = s.materials[cut.nodes[2].material];
+    ASSERT_GE(a.inside, 0);
+    ASSERT_GE(b.inside, 0);
+    EXPECT_GE(s.materials[size_t(b.inside)].pigment, 0);
+    EXPECT_FLOAT_EQ(b.color.y, 1.0f);
+    const Material& patterned = s.materials[size_t(a.inside)];
+    ASSERT_GE(patterned.pigment, 0);
+    EXPECT_NEAR(s.pigments[size_t(patterned.pigment)].pattern.to_pattern.point(Vec3(2, 0, 0)).x,
+                1.0f, 1e-6);
+    // Objects without one see their own texture from inside.
+    EXPECT_EQ(shape_material(r, 2).inside, -1);
+    EXPECT_EQ(error_of("sphere { 0, 1 interior_texture { rgb 1 } }"),
+              "scene.pov:1:34: error: found 'rgb', expected a texture item (pigment, normal, "
+              "finish, a pattern ...)");
+}
+
 TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
     const PovResult r = load_text(
         "#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }\n"

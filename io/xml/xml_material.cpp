@@ -84,11 +84,12 @@ void SceneReader::read_material(const pugi::xml_node& node) {
         // The switch picks another material at every point: nothing of this one is seen.
         for (pugi::xml_attribute at = node.first_attribute(); at; at = at.next_attribute()) {
             const std::string_view n = at.name();
-            if (n != "name" && n != "base" && n != "switch")
+            if (n != "name" && n != "base" && n != "switch" && n != "inside")
                 ctx_.fail(node, at,
                           "attribute '" + std::string(n) +
                               "' of <material> is not used with a switch (the switch's materials "
-                              "are seen); a material with a switch takes name, base and switch");
+                              "are seen); a material with a switch takes name, base, switch and "
+                              "inside");
         }
     }
     for (const MaterialField& f : kMaterialFields) {
@@ -112,6 +113,11 @@ void SceneReader::read_material(const pugi::xml_node& node) {
     reference("texture", textures_, "texture", m.texture);
     reference("pigment", pigments_, "pigment", m.pigment);
     reference("normal", normals_, "normal", m.normal);
+    reference("inside", materials_, "material", m.inside);
+    if (m.inside >= 0 && scene_.materials[size_t(m.inside)].inside >= 0)
+        ctx_.fail(node, node.attribute("inside"),
+                  "material '" + std::string(node.attribute("inside").value()) +
+                      "' has an inside material of its own; an inside material has none");
     a.finish();
     a.require("name");
     if (m.pigment >= 0)

@@ -34,7 +34,7 @@ const char* kFullScene = R"(<?xml version="1.0"?>
          color="0.05 0.05 0.05"/>
   <material name="red" color="1 0 0" ambient="0.2" diffuse="0.8" specular="0"
             phong_exponent="40"/>
-  <material name="green" base="red" color="0 1 0"/>
+  <material name="green" base="red" color="0 1 0" inside="red"/>
   <material name="grey" color="0.5" ambient="1" diffuse="0" irid="0.3" irid_thickness="0.5"
             irid_turbulence="0.1" irid_wavelength="0.3 0.2 0.1"/>
   <material name="glass" color="1" transmission="0.9" ior="1.5" mirror="0.05"
@@ -167,6 +167,8 @@ TEST(XmlScene, AFullSceneLoadsAsWritten) {
     ASSERT_GE(s.materials.size(), 6u);
     EXPECT_FLOAT_EQ(s.materials[1].color.y, 1.0f); // green, based on red
     EXPECT_FLOAT_EQ(s.materials[1].ambient, 0.2f);
+    EXPECT_EQ(s.materials[1].inside, 0); // red from inside
+    EXPECT_EQ(s.materials[0].inside, -1);
     EXPECT_FLOAT_EQ(s.materials[3].transmission, 0.9f);
     EXPECT_FLOAT_EQ(s.materials[4].emission.x, 1.0f);
     EXPECT_FLOAT_EQ(s.materials[3].fade_color.y, 0.4f);

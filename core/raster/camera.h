@@ -23,6 +23,7 @@ struct CameraFrame {
     // and direction (Camera).
     Projection projection = Projection::Perspective;
     bool traced = false;
+    int32_t normal = -1; // Camera::normal: primary rays tilted (core/render/frame_kernels.h)
     float angle = 0, v_angle = 0;
     float right_length = 1, up_length = 1, direction_length = 1;
 
@@ -33,12 +34,13 @@ struct CameraFrame {
     }
 
     /// The primary ray through the centre of pixel (x, y); false where the projection has none
-    /// (outside a fisheye's circle, below an omnimax dome's edge): the pixel stays black.
+    /// (outside a fisheye's circle, below an omnimax dome's edge): the pixel stays black. A
+    /// camera normal is not applied here (it needs the scene): see primary_ray.
     SHEAF_HD bool camera_ray(int x, int y, Ray& r) const {
         r.tmin = 0.0f;
         r.tmax = FLT_MAX;
         r.origin = origin;
-        if (!traced) {
+        if (!traced_projection(projection)) {
             float sx, sy;
             ndc(x, y, sx, sy);
             if (ortho) {
@@ -149,7 +151,8 @@ inline CameraFrame make_camera_frame(const Camera& c, int width, int height) {
     f.width = width;
     f.height = height;
     f.projection = c.projection;
-    f.traced = traced_projection(c.projection);
+    f.traced = traced_projection(c.projection) || c.normal >= 0;
+    f.normal = c.normal;
     f.angle = c.angle_degrees * kPi / 180.0f;
     f.v_angle = c.v_angle_degrees * kPi / 180.0f;
     f.right_length = c.right_length;

@@ -74,6 +74,19 @@ SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h) {
     return fog;
 }
 
+/// The primary ray through the centre of pixel (x, y), tilted by the camera normal when there
+/// is one (Camera::normal); false where the projection has none (the pixel stays black).
+SHEAF_HD_INLINE bool primary_ray(const SceneView& scene, const CameraFrame& cam, int x, int y,
+                                 Ray& r) {
+    if (!cam.camera_ray(x, y, r)) return false;
+    if (cam.normal >= 0) {
+        const float u = (float(x) + 0.5f) / float(cam.width) - 0.5f;
+        const float v = 0.5f - (float(y) + 0.5f) / float(cam.height);
+        r.dir = perturb_normal(scene, uint32_t(cam.normal), Vec3(u, v, 0.0f), r.dir);
+    }
+    return true;
+}
+
 /// One sample of the visibility buffer resolved: its surface (when something was hit), the
 /// radiance it starts with (background or fog) and the primary passes.
 struct PrimarySample {
@@ -92,7 +105,7 @@ SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const Camer
                                              size_t i, uint64_t vis) {
     PrimarySample out;
     Ray ray;
-    if (!cam.camera_ray(int(i % size_t(W)), int(i / size_t(W)), ray)) return out; // black
+    if (!primary_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), ray)) return out;
     if (vis == kEmptyPixel) {
         out.radiance = leave_scene(scene, ray.origin, ray.dir, Vec3(1.0f));
         return out;

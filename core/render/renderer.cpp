@@ -117,7 +117,7 @@ class FramePipeline {
                 "camera.fill", vis.size(),
                 [&](size_t i) {
                     Ray r;
-                    if (!cam.camera_ray(int(i % W_), int(i / W_), r)) return;
+                    if (!primary_ray(view_, cam, int(i % W_), int(i / W_), r)) return;
                     b.rays[slot[i]] = r;
                     b.pixel[slot[i]] = uint32_t(i);
                     b.weight[slot[i]] = Vec3(1.0f);

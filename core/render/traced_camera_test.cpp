@@ -1,8 +1,11 @@
 // Primary visibility traced through the ray hierarchy for the projections no plane holds
 // (fisheye, panoramic, cylinder ...): the same surfaces as the rasteriser along the same ray,
 // the same picture under every accel, black where the projection has no ray, objects without
-// an image left out, and the camera rays counted as a ray type of their own.
+// an image left out, the camera rays counted as a ray type of their own; a camera normal
+// tilts the primary rays.
 #include "core/render/renderer.h"
+
+#include "core/render/frame_kernels.h"
 
 #include "core/scenes/shapes.h"
 #include "core/scenes/test_scenes.h"
@@ -42,6 +45,38 @@ TEST(TracedCamera, TheCentrePixelMatchesTheRasterisedOne) {
         EXPECT_GT(traced.stats.get("rays.camera"), 0) << p;
         EXPECT_GT(traced.stats.get("tests.camera.total"), 0) << p;
     }
+    EXPECT_EQ(raster.stats.get("rays.camera"), 0);
+}
+
+TEST(TracedCamera, ACameraNormalTiltsThePrimaryRays) {
+    Scene s = test::glass_mirror_scene();
+    s.camera.position = Vec3(0, 0, 5), s.camera.look_at = Vec3(0, 0, 0);
+    NormalPattern tilt; // slope 1 along screen x, evaluated at (u, v, 0)
+    tilt.pattern.kind = PatternKind::Gradient;
+    tilt.pattern.vector = Vec3(1, 0, 0);
+    tilt.pattern.to_pattern = Affine::translate(Vec3(0.5f, 0, 0)); // u + 1/2 stays in 0..1
+    tilt.amount = 0.5f;
+    s.normal_patterns.push_back(tilt);
+    s.camera.normal = int32_t(s.normal_patterns.size() - 1);
+    const PreparedScene p = prepare_scene(s);
+    const SceneView view(p);
+    const CameraFrame cam = make_camera_frame(p.camera, 33, 33);
+    EXPECT_TRUE(cam.traced);
+    Ray r;
+    ASSERT_TRUE(primary_ray(view, cam, 16, 16, r));
+    // The centre ray (0, 0, -1) tilts against the slope as a surface normal does.
+    const Vec3 want = normalize(Vec3(-0.5f, 0, -1));
+    EXPECT_NEAR(r.dir.x, want.x, 1e-4f);
+    EXPECT_NEAR(r.dir.y, want.y, 1e-4f);
+    EXPECT_NEAR(r.dir.z, want.z, 1e-4f);
+    // Without a bump the traced picture is the rasterised one.
+    s.normal_patterns.back().amount = 0;
+    const Frame flat = render(prepare_scene(s), {}, 33, 33);
+    s.camera.normal = -1;
+    const Frame raster = render(prepare_scene(s), {}, 33, 33);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(pixel(flat, 16, 16)[c], pixel(raster, 16, 16)[c], 1e-5f);
+    EXPECT_GT(flat.stats.get("rays.camera"), 0);
     EXPECT_EQ(raster.stats.get("rays.camera"), 0);
 }
 

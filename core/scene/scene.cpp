@@ -260,6 +260,8 @@ void Scene::validate() const {
                 throw SceneError("the camera's right, up and direction lengths must be finite "
                                  "numbers > 0");
     }
+    if (c.normal >= int32_t(normal_patterns.size()))
+        throw SceneError("the camera's normal pattern does not exist");
     if (!std::isfinite(c.shift_x) || !std::isfinite(c.shift_y))
         throw SceneError("the camera's shift is not finite");
     if (!(c.aspect >= 0 && c.aspect < 1e6f))

@@ -171,6 +171,10 @@ struct Camera {
     float angle_degrees = 90.0f;
     float v_angle_degrees = 180.0f;
     float right_length = 1.0f, up_length = 1.0f, direction_length = 1.0f;
+    // >= 0: Scene::normal_patterns tilts every primary ray's direction as it tilts a surface
+    // normal, the pattern evaluated at (u, v, 0), u and v across and up the image from -1/2
+    // to 1/2 (POV-Ray's camera normal). Primary visibility is then traced.
+    int32_t normal = -1;
 };
 
 struct Object {

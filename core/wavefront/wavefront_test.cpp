@@ -157,7 +157,8 @@ TEST(Wavefront, ProceduralTexturesFlagsFogAndSkyAreIdentical) {
 
 TEST(Wavefront, TracedProjectionsAreIdentical) {
     // Camera rays through the ray hierarchy instead of the rasteriser: every projection on
-    // triangles, analytic shapes and CSG, objects without an image, under the variants.
+    // triangles, analytic shapes and CSG, objects without an image, and a camera normal,
+    // under the variants.
     for (int p = 2; p < kProjectionCount; ++p) {
         Scene s = p % 2 ? test::csg_scene() : test::procedural_scene();
         s.camera.projection = Projection(p);
@@ -172,6 +173,13 @@ TEST(Wavefront, TracedProjectionsAreIdentical) {
     const PreparedScene fisheye = prepare_scene(s);
     for (const SettingList& kv : variants()) expect_identical(fisheye, "fisheye", kv, 24, 20);
     expect_identical(fisheye, "fisheye aa", {{"aa.samples", "2"}}, 16, 12);
+    // A camera normal tilts the primary rays, so a perspective camera is traced too.
+    Scene tilted = test::procedural_scene();
+    tilted.camera.normal = 0;
+    const PreparedScene bent = prepare_scene(tilted);
+    for (const SettingList& kv : variants()) expect_identical(bent, "camera normal", kv, 24, 20);
+    const Frame f = expect_identical(bent, "camera normal aa", {{"aa.samples", "2"}}, 16, 12);
+    EXPECT_GT(f.stats.get("rays.camera"), 0);
 }
 
 TEST(Wavefront, EmptyAndDegenerateFramesAreIdentical) {

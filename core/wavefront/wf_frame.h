@@ -90,9 +90,10 @@ template <class Exec> class DeviceFrame {
             });
         DeviceBatch<Exec> b(ex_, RayType::Camera, total);
         const RaySlots slots = b.slots();
+        const SceneView scene = scene_;
         ex_.launch("raygen.camera", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
             Ray r;
-            if (!cam.camera_ray(int(i % size_t(W)), int(i / size_t(W)), r)) return;
+            if (!primary_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), r)) return;
             slots.rays[slot[i]] = r;
             slots.pixel[slot[i]] = uint32_t(i);
             slots.weight[slot[i]] = Vec3(1.0f);

@@ -84,8 +84,7 @@ void Parser::parse_camera(PovCamera& c) {
             unsupported(t, "camera type 'mesh_camera' (a perspective camera is used)");
             skip_block();
         } else if (k == "normal") {
-            unsupported(t, "camera normal");
-            skip_block();
+            c.normal = parse_normal(c.normal.get());
         } else {
             error_expected(t, "a camera item (location, look_at, angle ...)");
         }

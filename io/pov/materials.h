@@ -35,6 +35,8 @@ class MaterialBuilder {
     /// The program of user function `f` (function patterns, isosurfaces); a function that
     /// cannot be compiled is an error at its place.
     int32_t function(const PovFunction& f);
+    /// Normal `n` placed by `eff`, its map's entries first: its index in Scene::normal_patterns.
+    int32_t normal(const PovNormal& n, const Affine& eff);
 
   private:
     uint32_t material_in(const PovTexture& t, const PovInterior* in, const Affine& outer,
@@ -44,7 +46,6 @@ class MaterialBuilder {
     /// A pigment composing `layers` (bottom first) by their filter and transmit.
     int32_t layer_pigment(const std::vector<PigmentEntry>& layers);
     Pattern pattern(const PovPattern& pt, const Affine& eff);
-    int32_t normal(const PovNormal& n, const Affine& eff); // its index in Scene::normal_patterns
     int32_t image(const PovImage& img, const Affine& to_pattern);
 
     Parser& p_;

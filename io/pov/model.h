@@ -202,6 +202,8 @@ struct PovCamera {
     double v_angle = -1; // spherical: the vertical angle; < 0: not given
     Token type_at;       // the camera type's keyword, for errors
     Affine transform; // applied after everything else
+    /// Tilts each primary ray as a surface normal, in screen space (x and y from -1/2 to 1/2).
+    std::shared_ptr<const PovNormal> normal;
 };
 
 /// sky_sphere { pigments transforms }: its pigments bottom first, in the sky's space.

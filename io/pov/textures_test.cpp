@@ -424,6 +424,19 @@ TEST(PovTextures, InteriorTexturesShowFromInside) {
               "finish, a pattern ...)");
 }
 
+TEST(PovTextures, ACameraNormalTiltsThePrimaryRays) {
+    const PovResult r = load_text(
+        "camera { location <0, 0, -5> look_at 0 normal { crackle 0.1 scale 0.2 } rotate y * 30 }\n"
+        "sphere { 0, 1 }\n");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    ASSERT_GE(r.scene.camera.normal, 0);
+    const NormalPattern& n = r.scene.normal_patterns[size_t(r.scene.camera.normal)];
+    EXPECT_EQ(n.pattern.kind, PatternKind::Crackle);
+    EXPECT_FLOAT_EQ(n.amount, 0.1f * 0.15f); // the bump size times the slope scale
+    // Screen space: scaled by its own transforms, not turned with the camera.
+    EXPECT_NEAR(n.pattern.to_pattern.point(Vec3(0.2f, 0, 0)).x, 1.0f, 1e-5);
+}
+
 TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
     const PovResult r = load_text(
         "#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }\n"

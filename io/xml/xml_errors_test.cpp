@@ -282,6 +282,9 @@ TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
                  "2:1", "the weights of an average's entries sum to 0");
     EXPECT_ERROR("<scene>\n<normal name=\"n\" average=\"true\" pattern=\"bozo\"/></scene>", "2:42",
                  "an average=\"true\" <normal> averages its entries");
+    EXPECT_ERROR("<scene>\n<camera normal=\"later\"/><normal name=\"later\" pattern=\"bumps\"/>"
+                 "</scene>",
+                 "2:17", "unknown normal 'later'; none is defined before this point");
     EXPECT_ERROR("<scene><material name=\"a\"/><material name=\"b\" inside=\"a\"/>\n<material "
                  "name=\"c\" inside=\"b\"/></scene>",
                  "2:28", "material 'b' has an inside material of its own");

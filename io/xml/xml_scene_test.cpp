@@ -121,6 +121,13 @@ TEST(XmlScene, TracedProjectionsTakeTheirAngleAndLengths) {
         io::parse_xml_scene("<scene><camera projection=\"spherical\"/></scene>", "scene.xml")
             .scene.camera.v_angle_degrees,
         180);
+    // A camera normal names an earlier <normal>.
+    const Scene n = io::parse_xml_scene("<scene><normal name=\"shatter\" pattern=\"crackle\" "
+                                        "amount=\"0.1\"/><camera normal=\"shatter\"/></scene>",
+                                        "scene.xml")
+                        .scene;
+    EXPECT_EQ(n.camera.normal, 0);
+    EXPECT_EQ(c.camera.normal, -1);
 }
 
 TEST(XmlScene, JuliaFractalsTakeTheirParameters) {

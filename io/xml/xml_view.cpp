@@ -55,6 +55,9 @@ void SceneReader::read_camera(const pugi::xml_node& node) {
                           std::to_string(shift.size()));
         c.shift_x = shift[0], c.shift_y = shift[1];
     }
+    std::string normal;
+    if (a.get("normal", normal) && !normal.empty())
+        c.normal = int32_t(lookup(normals_, "normal", normal, node, node.attribute("normal")));
     a.finish();
     if (!(length(c.look_at - c.position) > 0))
         ctx_.fail(node, node.attribute("look_at"), "the camera looks at its own position");

@@ -138,7 +138,7 @@ enum class Projection {
 constexpr int kProjectionCount = 11;
 
 /// The projections whose primary visibility is traced rather than rasterised.
-inline bool traced_projection(Projection p) {
+SHEAF_HD_INLINE bool traced_projection(Projection p) {
     return p != Projection::Perspective && p != Projection::Orthographic;
 }
 

@@ -260,8 +260,10 @@ struct Builder {
         out.look_at = flip.point(loc + dir);
         out.up = length(up) > 0 ? normalize(flip.vector(up)) : Vec3(0, 1, 0);
         out.mirror = dot(cross(up, dir), c.transform.vector(right)) < 0;
-        // Screen space: the camera's transforms do not move its normal.
-        if (c.normal && !geometry_only) out.normal = materials.normal(*c.normal, Affine());
+        // Screen space: the camera's transforms do not move its normal. POV-Ray takes the
+        // pattern's gradient as a world vector: through `flip`, as Sheaf's world is POV-Ray's
+        // with z mirrored (the screen point, at z 0, stays where it is).
+        if (c.normal && !geometry_only) out.normal = materials.normal(*c.normal, flip);
         // POV-Ray maps |right| across the image and |up| down it, whatever the image's shape.
         // A ratio equal to image_width / image_height (right x * image_width / image_height)
         // follows the image the host renders, also when the host did not say its size.

@@ -435,6 +435,8 @@ TEST(PovTextures, ACameraNormalTiltsThePrimaryRays) {
     EXPECT_FLOAT_EQ(n.amount, 0.1f * 0.15f); // the bump size times the slope scale
     // Screen space: scaled by its own transforms, not turned with the camera.
     EXPECT_NEAR(n.pattern.to_pattern.point(Vec3(0.2f, 0, 0)).x, 1.0f, 1e-5);
+    // Its gradient is a world vector in POV-Ray's world, whose z is Sheaf's -z.
+    EXPECT_NEAR(n.pattern.to_pattern.point(Vec3(0, 0, 0.2f)).z, -1.0f, 1e-5);
 }
 
 TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {

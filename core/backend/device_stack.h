@@ -1,16 +1,14 @@
-// The per-thread stack the device code needs for a scene. csg_spans recurses once per level
-// of CSG nesting (ptxas -v: 7,048 bytes a level on sm_80 and sm_90, 7,080 on sm_90 since
-// shapes carry a poly index; plus 1,952 (sm_90) or 1,960 (sm_80) under a clipped_by: about
-// 9,000 of the 10 KiB allowed), and the shading, pigment and pattern code needs a base of its
-// own (the largest tracing kernel's frame is 2,704 bytes on both, 2,736 on sm_90 with the
-// ground fog, 2,752 with glyphs, 2,768 with solids of revolution; nested pigments 328 to 344
-// bytes a level; the out-of-line poly_spans (1,752 bytes on sm_90), superellipsoid_spans (584),
-// glyph_spans with glyph_pieces (296 + 1,448) and revolution_spans with revolution_pieces
-// (296 + 2,328) are on the stack once, at the leaf; csg_spans stays at 7,064 to 7,080 a level).
-// A lone lathe: 2,768 + 7,064 + 2,624 = 12,456 bytes, so the base is 13 KiB. The device
-// reserves the
-// stack for every resident thread (about 270,000 on an H100), so it is capped; a scene nested
-// more deeply renders on the CPU (backend=auto) or is an error (backend=cuda).
+// The per-thread stack the device code needs for a scene, from ptxas -v on sm_80 and sm_90
+// (CUDA 13) and the module's call graph (gpu/ptx_report.py prints both). csg_spans recurses
+// once per level of CSG nesting: 7,176 bytes a level, plus 1,960 under a clipped_by, so 10 KiB
+// a level. Everything else is on the stack once: the deepest chain is the G-buffer kernel's
+// frame (4,672 bytes; the media's span lists are in the shading kernels' frames) + one
+// csg_spans level + the largest out-of-line leaf (a julia fractal's march, 280 + 2,416; a
+// lathe's 296 + 2,328): 14,544 bytes, so the base is 16 KiB. The pattern, pigment and normal
+// code is called, not inlined (pigments nest at 128 bytes a level), far below that.
+// The device reserves the stack for every resident thread (about 270,000 on an H100), so it
+// is capped; a scene nested more deeply renders on the CPU (backend=auto) or is an error
+// (backend=cuda).
 #pragma once
 
 #include "core/scene/prepared_scene.h"
@@ -22,17 +20,9 @@
 
 namespace sheaf {
 
-constexpr size_t kDeviceStackBase = size_t(13) << 10;
+constexpr size_t kDeviceStackBase = size_t(16) << 10;
 constexpr size_t kDeviceStackPerCsgLevel = size_t(10) << 10;
 constexpr size_t kDeviceStackCap = size_t(96) << 10;
-// Media (core/render/media.h) walk their containers' spans while a hit is shaded: three span
-// lists (772 bytes each), the step loop and a density pigment on top of the shading frame,
-// their csg_spans levels counted as above. Estimated from those sizes, not yet by ptxas.
-constexpr size_t kDeviceStackMedia = size_t(4) << 10;
-// A julia fractal's march (core/geometry/julia.h) keeps one point's iterates at the leaf: an
-// orbit of 65 x 4 doubles (2,080 bytes) and the span arrays, beside csg_spans' level.
-// Estimated from those sizes, not yet by ptxas.
-constexpr size_t kDeviceStackJulia = size_t(3) << 10;
 
 /// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each
 /// node's height is computed once (roots may share subtrees).
@@ -75,9 +65,7 @@ inline int csg_nesting(const PreparedScene& s) {
 
 /// The stack the device code needs for `s`, in bytes (may exceed kDeviceStackCap).
 inline size_t device_stack_bytes(const PreparedScene& s) {
-    return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel +
-           (s.media_containers.empty() ? 0 : kDeviceStackMedia) +
-           (s.julias.empty() ? 0 : kDeviceStackJulia);
+    return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel;
 }
 
 } // namespace sheaf

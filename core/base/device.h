@@ -5,8 +5,10 @@
 #if defined(__CUDACC__)
 #define SHEAF_HD __host__ __device__
 #define SHEAF_HD_INLINE __host__ __device__ __forceinline__
-// A large leaf function kept out of its callers' frames: recursive device code (CSG) then
-// holds its stack once, at the leaf, instead of once per level of recursion.
+// A large function kept out of its callers: recursive device code (CSG) then holds its stack
+// once, at the leaf, instead of once per level of recursion, and code reached from many call
+// sites and kernels (the pattern dispatch, normal perturbation) is compiled once, not once per
+// site: inlined everywhere, those made ptxas need 14 GiB for the module and fail CI's build.
 #define SHEAF_HD_NOINLINE __host__ __device__ __noinline__
 // The bodies of the wavefront pipeline's launches: extended lambdas (nvcc --extended-lambda).
 #define SHEAF_HD_LAMBDA __host__ __device__

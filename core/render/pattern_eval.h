@@ -55,7 +55,7 @@ SHEAF_HD_INLINE float apply_wave(const Pattern& pt, float v) {
 
 // The raw value of a continuous pattern at pattern-space point p, before frequency, phase and
 // the wave; some leave [0, 1] (gradient, onion, wood ...) and wrap.
-SHEAF_HD_INLINE float raw_value(const Pattern& pt, Vec3 p) {
+SHEAF_HD_NOINLINE float raw_value(const Pattern& pt, Vec3 p) {
     switch (pt.kind) {
     case PatternKind::Gradient: {
         const float l = length(pt.vector);
@@ -166,7 +166,7 @@ SHEAF_HD_INLINE float shape_value(const Pattern& pt, float raw) {
 constexpr float kTurbulenceScale = 4.0f;
 
 /// The pattern-space point of world point `p`, turbulence applied.
-SHEAF_HD_INLINE Vec3 pattern_point(const Pattern& pt, Vec3 world) {
+SHEAF_HD_NOINLINE Vec3 pattern_point(const Pattern& pt, Vec3 world) {
     Vec3 p = pt.to_pattern.point(world);
     // The factor makes `turbulence 0.1` move points about as far as it does in POV-Ray.
     if (pt.has_turbulence)
@@ -182,7 +182,7 @@ SHEAF_HD_INLINE float pattern_value_at(const Pattern& pt, Vec3 p) {
 }
 
 /// A list pattern's entry (0 .. entries-1) at pattern-space point p.
-SHEAF_HD_INLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
+SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
     using namespace pattern_detail;
     const float e = 1e-4f; // keeps faces lying on integer planes on one side
     switch (pt.kind) {

@@ -35,7 +35,7 @@ SHEAF_HD_INLINE Vec3 surface_pass(const SceneView& scene, uint32_t material, Vec
 /// it at distance t: the product over every surface of the primitive it crosses inside the
 /// ray's (tmin, tmax), and for analytic solids the interior fade over the stretch inside.
 /// Zero where a crossed surface is opaque.
-SHEAF_HD_INLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const Ray& ray, float t) {
+SHEAF_HD_NOINLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const Ray& ray, float t) {
     if (scene.is_triangle(prim)) {
         const SurfaceHit h = make_surface_hit(scene, ray, prim, t);
         return h.albedo * h.filter + Vec3(h.transmit);

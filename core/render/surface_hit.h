@@ -15,7 +15,7 @@ namespace surface_detail {
 
 // The surface's material (its inside one from behind, texture maps resolved), colour, filter,
 // transmit and shading normal at h.position; (uv_s, uv_t) are its texture coordinates.
-SHEAF_HD_INLINE void finish_surface(const SceneView& scene, SurfaceHit& h, float uv_s, float uv_t) {
+SHEAF_HD_NOINLINE void finish_surface(const SceneView& scene, SurfaceHit& h, float uv_s, float uv_t) {
     if (!h.front && scene.materials[h.material].inside >= 0)
         h.material = uint32_t(scene.materials[h.material].inside); // seen from inside
     h.material = resolve_material(scene, h.material, h.position);

@@ -50,7 +50,7 @@ SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p,
 
 /// A continuous pattern's value at pattern-space point q; a function pattern runs its program
 /// (a value that is not finite counts as 0).
-SHEAF_HD_INLINE float pattern_value(const SceneView& scene, const Pattern& pt, Vec3 q) {
+SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt, Vec3 q) {
     if (pt.kind != PatternKind::Function) return pattern_value_at(pt, q);
     if (!scene.functions.programs || pt.program < 0) return 0.0f;
     const float raw = float(fn_eval3(scene.functions, uint32_t(pt.program), q.x, q.y, q.z));
@@ -61,12 +61,12 @@ struct Evaluator {
     const SceneView& scene;
     float uv_s, uv_t;
 
-    SHEAF_HD SurfaceColor entry(const PigmentEntry& e, Vec3 p, int depth) const {
+    SHEAF_HD_NOINLINE SurfaceColor entry(const PigmentEntry& e, Vec3 p, int depth) const {
         if (e.pigment < 0) return entry_color(e);
         return pigment(uint32_t(e.pigment), p, depth + 1);
     }
 
-    SHEAF_HD SurfaceColor pigment(uint32_t index, Vec3 p, int depth) const {
+    SHEAF_HD_NOINLINE SurfaceColor pigment(uint32_t index, Vec3 p, int depth) const {
         const Pigment& pg = scene.pigments[index];
         if (pg.solid || depth > kMaxDepth || pg.count == 0)
             return {Vec3(pg.color[0], pg.color[1], pg.color[2]), pg.color[3], pg.color[4]};
@@ -161,7 +161,7 @@ SHEAF_HD_INLINE SurfaceColor evaluate_pigment(const SceneView& scene, uint32_t p
 namespace texture_detail {
 
 /// The unit shading normal n tilted by the slope of normal pattern np (its map aside).
-SHEAF_HD_INLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p, Vec3 n) {
+SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p, Vec3 n) {
     const Pattern& pt = np.pattern;
     const Vec3 q = pattern_point(pt, p);
     // The height: the pattern's value, through the slope map when there is one.
@@ -196,7 +196,7 @@ SHEAF_HD_INLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np
 
 /// The unit shading normal n tilted by normal pattern `normal` at world point p: by its own
 /// slope, or as its normal map says (see NormalPattern).
-SHEAF_HD_INLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec3 p, Vec3 n) {
+SHEAF_HD_NOINLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, Vec3 p, Vec3 n) {
     using texture_detail::pattern_value;
     using texture_detail::tilt_normal;
     const NormalPattern& np = scene.normal_patterns[normal];

@@ -261,9 +261,10 @@ struct Builder {
         out.up = length(up) > 0 ? normalize(flip.vector(up)) : Vec3(0, 1, 0);
         out.mirror = dot(cross(up, dir), c.transform.vector(right)) < 0;
         // Screen space: the camera's transforms do not move its normal. POV-Ray takes the
-        // pattern's gradient as a world vector: through `flip`, as Sheaf's world is POV-Ray's
-        // with z mirrored (the screen point, at z 0, stays where it is).
-        if (c.normal && !geometry_only) out.normal = materials.normal(*c.normal, flip);
+        // pattern's gradient as a world vector, and MaterialBuilder::pattern puts the z mirror
+        // between Sheaf's world and POV-Ray's into every pattern's transform (the screen
+        // point, at z 0, stays where it is), so nothing more is needed here.
+        if (c.normal && !geometry_only) out.normal = materials.normal(*c.normal, Affine());
         // POV-Ray maps |right| across the image and |up| down it, whatever the image's shape.
         // A ratio equal to image_width / image_height (right x * image_width / image_height)
         // follows the image the host renders, also when the host did not say its size.

@@ -181,6 +181,31 @@ SHEAF_HD_INLINE float pattern_value_at(const Pattern& pt, Vec3 p) {
     return shape_value(pt, raw_value(pt, p));
 }
 
+/// The slope pattern's raw value (SlopeParams) at pattern-space point q of a surface at world
+/// point `world` whose normal, facing the ray, is n; 0 where there is no surface (n zero).
+/// In double precision, as POV-Ray computes it.
+SHEAF_HD_NOINLINE float slope_raw(const Pattern& pt, Vec3 q, Vec3 world, Vec3 n) {
+    if (!(length_squared(n) > 0)) return 0.0f;
+    Vec3 d = pt.vector;
+    if (pt.slope.point_at) { // towards a point: the direction from the surface to it
+        d = pt.vector - world;
+        const float l = length(d);
+        d = l > 0 ? d / l : Vec3(0.0f);
+    }
+    double v = double(dot(n, d));
+    v = v < -1.0 ? -1.0 : v > 1.0 ? 1.0 : v;
+    v = (hdm::asin(v) / 3.14159265358979323846 * 2.0 + 1.0) * 0.5; // [-pi/2, pi/2] -> [0, 1]
+    if (pt.param[1] != 0) v = (v - pt.param[0]) / pt.param[1];
+    if (length_squared(pt.slope.altitude) > 0) {
+        double a = double(dot(q, pt.slope.altitude));
+        if (pt.param[3] != 0) a = (a - pt.param[2]) / pt.param[3];
+        v = pt.slope.slope_weight * v + (1.0 - pt.slope.slope_weight) * a;
+    }
+    if (v >= 1.0 && v - 1.0 < 1e-10) return 1.0f; // a 1 (common on flat ground) stays 1
+    const double f = v - trunc(v);
+    return float(v < 0 ? 1.0 + f : f);
+}
+
 /// A list pattern's entry (0 .. entries-1) at pattern-space point p.
 SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
     using namespace pattern_detail;

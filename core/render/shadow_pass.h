@@ -17,13 +17,14 @@ namespace sheaf {
 
 namespace shadow_detail {
 
-// albedo * filter + transmit of material `material` at world point p.
+// albedo * filter + transmit of material `material` at world point p, where the surface's
+// normal facing the shadow ray is n.
 SHEAF_HD_INLINE Vec3 surface_pass(const SceneView& scene, uint32_t material, Vec3 p, float s,
-                                  float t) {
-    const uint32_t m = resolve_material(scene, material, p);
+                                  float t, Vec3 n) {
+    const uint32_t m = resolve_material(scene, material, p, n);
     const Material& mt = scene.materials[m];
     if (mt.pigment >= 0) {
-        const SurfaceColor c = evaluate_pigment(scene, uint32_t(mt.pigment), p, s, t);
+        const SurfaceColor c = evaluate_pigment(scene, uint32_t(mt.pigment), p, s, t, n);
         return c.rgb * c.filter + Vec3(c.transmit);
     }
     return mt.color * mt.transmission;
@@ -50,8 +51,10 @@ SHEAF_HD_NOINLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const 
         for (const CsgEnd* e : ends) {
             if (!(e->t > ray.tmin && e->t < ray.tmax) || e->leaf == 0xFFFFFFFFu) continue;
             const Vec3 p = ray_at(ray, e->t);
-            pass = pass *
-                   shadow_detail::surface_pass(scene, scene.shape_material[e->leaf], p, p.x, p.y);
+            Vec3 n = normal_to_world(scene.shapes[e->leaf], e->n_local);
+            if (dot(n, ray.dir) > 0) n = -n; // facing the shadow ray, as POV-Ray's
+            pass = pass * shadow_detail::surface_pass(scene, scene.shape_material[e->leaf], p, p.x,
+                                                      p.y, n);
             if (max_component(pass) <= 0.0f) return Vec3(0.0f);
         }
         // The stretch inside the solid fades as its interior does (the entering surface's; a

@@ -13,15 +13,24 @@ namespace sheaf {
 
 namespace surface_detail {
 
-// The surface's material (its inside one from behind, texture maps resolved), colour, filter,
-// transmit and shading normal at h.position; (uv_s, uv_t) are its texture coordinates.
+// The surface's material (its inside one from behind, texture maps resolved), shading normal,
+// colour, filter and transmit at h.position; (uv_s, uv_t) are its texture coordinates. As in
+// POV-Ray, texture maps see the surface's normal and the pigment the one its normal pattern
+// tilted (slope patterns).
 SHEAF_HD_NOINLINE void finish_surface(const SceneView& scene, SurfaceHit& h, float uv_s, float uv_t) {
     if (!h.front && scene.materials[h.material].inside >= 0)
         h.material = uint32_t(scene.materials[h.material].inside); // seen from inside
-    h.material = resolve_material(scene, h.material, h.position);
+    h.material = resolve_material(scene, h.material, h.position, h.normal);
     const Material& m = scene.materials[h.material];
+    if (m.normal >= 0) {
+        Vec3 n = perturb_normal(scene, uint32_t(m.normal), h.position, h.normal);
+        // A tilted normal never turns away from the side the ray came from.
+        if (dot(n, h.geo_normal) <= 0) n = h.normal;
+        h.normal = n;
+    }
     if (m.pigment >= 0) {
-        const SurfaceColor c = evaluate_pigment(scene, uint32_t(m.pigment), h.position, uv_s, uv_t);
+        const SurfaceColor c =
+            evaluate_pigment(scene, uint32_t(m.pigment), h.position, uv_s, uv_t, h.normal);
         h.albedo = c.rgb;
         h.filter = c.filter;
         h.transmit = c.transmit;
@@ -32,12 +41,6 @@ SHEAF_HD_NOINLINE void finish_surface(const SceneView& scene, SurfaceHit& h, flo
         if (m.texture >= 0 && scene.sampler)
             h.albedo = m.color * texture_detail::sample_image(scene, m.texture, h.position, uv_s,
                                                               uv_t);
-    }
-    if (m.normal >= 0) {
-        Vec3 n = perturb_normal(scene, uint32_t(m.normal), h.position, h.normal);
-        // A tilted normal never turns away from the side the ray came from.
-        if (dot(n, h.geo_normal) <= 0) n = h.normal;
-        h.normal = n;
     }
 }
 

@@ -48,9 +48,13 @@ SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p,
 #endif
 }
 
-/// A continuous pattern's value at pattern-space point q; a function pattern runs its program
-/// (a value that is not finite counts as 0).
-SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt, Vec3 q) {
+/// A continuous pattern's value at pattern-space point q of the surface at world point
+/// `world` whose normal, facing the ray, is n (zero where there is no surface: media, the
+/// sky); a function pattern runs its program (a value that is not finite counts as 0).
+SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt, Vec3 q,
+                                      Vec3 world = Vec3(0.0f), Vec3 n = Vec3(0.0f)) {
+    if (pt.kind == PatternKind::Slope)
+        return pattern_detail::shape_value(pt, slope_raw(pt, q, world, n));
     if (pt.kind != PatternKind::Function) return pattern_value_at(pt, q);
     if (!scene.functions.programs || pt.program < 0) return 0.0f;
     const float raw = float(fn_eval3(scene.functions, uint32_t(pt.program), q.x, q.y, q.z));
@@ -60,6 +64,7 @@ SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt,
 struct Evaluator {
     const SceneView& scene;
     float uv_s, uv_t;
+    Vec3 normal; // the surface's, facing the ray (slope patterns); zero off surfaces
 
     SHEAF_HD_NOINLINE SurfaceColor entry(const PigmentEntry& e, Vec3 p, int depth) const {
         if (e.pigment < 0) return entry_color(e);
@@ -106,7 +111,7 @@ struct Evaluator {
             const int i = pattern_index_at(pt, q);
             return entry(entries[uint32_t(i) < pg.count ? uint32_t(i) : pg.count - 1], p, depth);
         }
-        const MapSpan m = map_span(entries, pg.count, pattern_value(scene, pt, q));
+        const MapSpan m = map_span(entries, pg.count, pattern_value(scene, pt, q, p, normal));
         if (m.lo == m.hi) return entry(entries[m.lo], p, depth);
         return mix(entry(entries[m.lo], p, depth), entry(entries[m.hi], p, depth), m.t);
     }
@@ -114,15 +119,18 @@ struct Evaluator {
 
 // The value a pattern gives at a pattern-space point, for slopes: list patterns give their
 // index spread over [0, 1].
-SHEAF_HD_INLINE float slope_value(const SceneView& scene, const Pattern& pt, Vec3 q) {
+SHEAF_HD_INLINE float slope_value(const SceneView& scene, const Pattern& pt, Vec3 q, Vec3 world,
+                                  Vec3 n) {
     if (pattern_is_list(pt.kind)) return float(pattern_index_at(pt, q)) * 0.5f;
-    return pattern_value(scene, pt, q);
+    return pattern_value(scene, pt, q, world, n);
 }
 
 } // namespace texture_detail
 
-/// Follows material switches (texture maps) from `material` at world point p.
-SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t material, Vec3 p) {
+/// Follows material switches (texture maps) from `material` at world point p, where the
+/// surface's normal facing the ray is n (zero off surfaces).
+SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t material, Vec3 p,
+                                          Vec3 n = Vec3(0.0f)) {
     using namespace texture_detail;
     for (int depth = 0; depth < kMaxDepth; ++depth) {
         const int32_t sw = scene.materials[material].select;
@@ -135,7 +143,7 @@ SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t mater
             material = entries[i < ms.count ? i : ms.count - 1].material;
             continue;
         }
-        const float v = pattern_value(scene, ms.pattern, q);
+        const float v = pattern_value(scene, ms.pattern, q, p, n);
         uint32_t pick = 0;
         for (uint32_t i = 1; i < ms.count; ++i) {
             // The nearer of the two entries around v.
@@ -152,10 +160,11 @@ SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t mater
 }
 
 /// Pigment `pigment` at world point p; (uv_s, uv_t) are the surface's texture coordinates,
-/// used by image pigments with uv mapping.
+/// used by image pigments with uv mapping, n its normal facing the ray (slope patterns; zero
+/// off surfaces).
 SHEAF_HD_INLINE SurfaceColor evaluate_pigment(const SceneView& scene, uint32_t pigment, Vec3 p,
-                                              float uv_s, float uv_t) {
-    return texture_detail::Evaluator{scene, uv_s, uv_t}.pigment(pigment, p, 0);
+                                              float uv_s, float uv_t, Vec3 n = Vec3(0.0f)) {
+    return texture_detail::Evaluator{scene, uv_s, uv_t, n}.pigment(pigment, p, 0);
 }
 
 namespace texture_detail {
@@ -166,7 +175,7 @@ SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& 
     const Vec3 q = pattern_point(pt, p);
     // The height: the pattern's value, through the slope map when there is one.
     auto height = [&](Vec3 at) {
-        const float v = slope_value(scene, pt, at);
+        const float v = slope_value(scene, pt, at, p, n);
         return np.slope_count > 0
                    ? slope_map_height(scene.slope_entries + np.slope_first, np.slope_count, v)
                    : v;
@@ -221,7 +230,7 @@ SHEAF_HD_NOINLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, V
             const uint32_t i = uint32_t(pattern_index_at(pt, q));
             return entry(i < np.map_count ? i : np.map_count - 1);
         }
-        const MapSpan m = map_span(e, np.map_count, pattern_value(scene, pt, q));
+        const MapSpan m = map_span(e, np.map_count, pattern_value(scene, pt, q, p, n));
         if (m.lo == m.hi) return entry(m.lo);
         out = entry(m.lo) * (1 - m.t) + entry(m.hi) * m.t;
     }

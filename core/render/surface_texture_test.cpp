@@ -215,6 +215,59 @@ TEST(SurfaceTexture, NormalMapsBlendPickAndAverageTheirEntries) {
     expect_vec(perturb_normal(p, 3, at, up), normalize(up * 0.75f + tilted * 0.25f));
 }
 
+// The slope pattern's value (POV-Ray's): asin(n . d) from [-pi/2, pi/2] to [0, 1], ranges,
+// the altitude's share by the directions' lengths, point_at, and 0 off surfaces.
+TEST(SurfaceTexture, SlopePatternsMeasureHowSteeplyTheSurfaceFaces) {
+    PreparedScene p;
+    Pattern up;
+    ASSERT_TRUE(set_slope(up, Vec3(0, 2, 0), 0, 0, Vec3(0.0f), 0, 0, false));
+    const std::vector<PigmentEntry> grey = {color_entry(0, Vec3(0)), color_entry(1, Vec3(1))};
+    const uint32_t pg = uint32_t(add_pigment(p, up, grey));
+    auto value = [&](uint32_t pigment, Vec3 at, Vec3 n) {
+        return evaluate_pigment(p, pigment, at, 0, 0, n).rgb.x;
+    };
+    const Vec3 o(0.0f), diag = normalize(Vec3(1, 1, 0));
+    EXPECT_NEAR(value(pg, o, Vec3(0, 1, 0)), 1.0f, 1e-6);  // flat ground stays 1, not 0
+    EXPECT_NEAR(value(pg, o, Vec3(1, 0, 0)), 0.5f, 1e-6);  // a wall
+    EXPECT_NEAR(value(pg, o, Vec3(0, -1, 0)), 0.0f, 1e-6); // a ceiling
+    EXPECT_NEAR(value(pg, o, diag), 0.75f, 1e-6);          // 45 degrees
+    EXPECT_NEAR(value(pg, o, Vec3(0.0f)), 0.0f, 1e-6);     // no surface
+    // The pattern's transform moves the altitude, not the slope's direction.
+    Pattern turned = up;
+    turned.to_pattern = Affine::rotate(Vec3(0, 0, 1), 1.0f);
+    EXPECT_NEAR(value(uint32_t(add_pigment(p, turned, grey)), o, diag), 0.75f, 1e-6);
+    // A range remaps [0.5, 1] to [0, 1].
+    Pattern ranged;
+    ASSERT_TRUE(set_slope(ranged, Vec3(0, 1, 0), 0.5f, 1.0f, Vec3(0.0f), 0, 0, false));
+    EXPECT_NEAR(value(uint32_t(add_pigment(p, ranged, grey)), o, diag), 0.5f, 1e-6);
+    // Slope 3 : altitude 1, the altitude remapped from [0, 10]: 0.75 * 1 + 0.25 * 0.5 at y 5.
+    Pattern mixed;
+    ASSERT_TRUE(set_slope(mixed, Vec3(0, 3, 0), 0, 0, Vec3(0, 1, 0), 0, 10, false));
+    const uint32_t mg = uint32_t(add_pigment(p, mixed, grey));
+    EXPECT_NEAR(value(mg, Vec3(0, 5, 0), Vec3(0, 1, 0)), 0.875f, 1e-6);
+    EXPECT_NEAR(value(mg, Vec3(0, 5, 0), Vec3(1, 0, 0)), 0.5f, 1e-6);
+    // Towards a point: the direction from the surface point to it.
+    Pattern towards;
+    ASSERT_TRUE(set_slope(towards, Vec3(0, 10, 0), 0, 0, Vec3(0.0f), 0, 0, true));
+    const uint32_t tg = uint32_t(add_pigment(p, towards, grey));
+    EXPECT_NEAR(value(tg, o, Vec3(0, 1, 0)), 1.0f, 1e-6);
+    EXPECT_NEAR(value(tg, Vec3(10, 0, 0), Vec3(0, 1, 0)), 0.75f, 1e-6);
+    // Nothing to measure, or a point with an altitude: refused.
+    Pattern bad;
+    EXPECT_FALSE(set_slope(bad, Vec3(0.0f), 0, 0, Vec3(0.0f), 0, 0, false));
+    EXPECT_FALSE(set_slope(bad, Vec3(0, 1, 0), 0, 0, Vec3(0, 1, 0), 0, 0, true));
+    // Texture maps see the normal too.
+    p.materials.resize(3);
+    p.materials[0].select = 0;
+    MaterialSwitch sw;
+    sw.pattern = up;
+    sw.first = 0, sw.count = 2;
+    p.material_switches.push_back(sw);
+    p.material_entries = {{0.0f, 1}, {1.0f, 2}};
+    EXPECT_EQ(resolve_material(p, 0, o, Vec3(0, 1, 0)), 2u);
+    EXPECT_EQ(resolve_material(p, 0, o, Vec3(0, -1, 0)), 1u);
+}
+
 TEST(SurfaceTexture, SkyFollowsTheDirection) {
     PreparedScene p;
     p.background = Vec3(0.1f);

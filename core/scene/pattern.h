@@ -38,6 +38,7 @@ enum class PatternKind : uint8_t {
     Quilted,     // cushion-shaped cells
     Mandel,      // the Mandelbrot set in the x-y plane (Pattern::fractal)
     Julia,       // a Julia set in the x-y plane (Pattern::fractal, its c)
+    Slope,       // the surface's slope towards a direction, and its altitude (SlopeParams)
     Function,    // a user function's value (core/scene/function.h): Pattern::program
     Image,       // an image's colour (Pigment only): `image` in Scene::textures
     // Discrete patterns: an index into the list of their entries.
@@ -74,6 +75,19 @@ struct FractalParams {
     uint8_t interior_type = 0, exterior_type = 1;
     float interior_factor = 1.0f, exterior_factor = 1.0f;
     float c[2] = {0, 0}; // Julia
+};
+
+/// POV-Ray's slope pattern: how steeply the surface faces Pattern::vector (a unit world
+/// direction, or with `point_at` a world point), as asin(n . d) mapped from [-pi/2, pi/2] to
+/// [0, 1], where n is the normal facing the ray (after the surface's own normal pattern);
+/// with an altitude, blended with the pattern-space point's height along `altitude`. Each
+/// part may be remapped from [lo, lo + width] to [0, 1] (param[0], param[1] for the slope,
+/// param[2], param[3] for the altitude; width 0: as it is). The sum wraps into [0, 1), a 1
+/// staying 1. Where there is no surface (media, the sky, functions) the value is 0.
+struct SlopeParams {
+    Vec3 altitude{0, 0, 0}; // unit, in pattern space; zero: no altitude
+    float slope_weight = 1; // the slope's share of the value; the altitude's is the rest
+    bool point_at = false;
 };
 
 /// POV-Ray's ranges of the fractal patterns' values, which both scene readers enforce, each
@@ -113,7 +127,25 @@ struct Pattern {
     int32_t image = -1;   // Image: index into Scene::textures
     int32_t program = -1; // Function: index into Scene::fn_programs
     FractalParams fractal; // Mandel, Julia
+    SlopeParams slope;     // Slope
 };
+
+/// Sets `pt` to POV-Ray's slope pattern: `direction`'s and `altitude`'s lengths weigh the two
+/// parts; (lo, hi) ranges remap them (hi == lo: left as they are). False when both
+/// directions are zero (nothing to measure), or when a point_at slope has an altitude.
+inline bool set_slope(Pattern& pt, Vec3 direction, float lo, float hi, Vec3 altitude, float alo,
+                      float ahi, bool point_at) {
+    const float sl = point_at ? 1.0f : length(direction), al = length(altitude);
+    if (!(sl + al > 0) || (point_at && al > 0)) return false;
+    pt.kind = PatternKind::Slope;
+    pt.vector = point_at || !(sl > 0) ? direction : direction / sl;
+    pt.slope.point_at = point_at;
+    pt.slope.altitude = al > 0 ? altitude / al : Vec3(0.0f);
+    pt.slope.slope_weight = sl / (sl + al);
+    pt.param[0] = hi != lo ? lo : 0, pt.param[1] = hi != lo ? hi - lo : 0;
+    pt.param[2] = ahi != alo ? alo : 0, pt.param[3] = ahi != alo ? ahi - alo : 0;
+    return true;
+}
 
 /// A pigment: a solid colour, or a pattern whose value picks (continuous) or indexes (list
 /// patterns) entries [first, first + count) of Scene::pigment_entries. With `layers`, the

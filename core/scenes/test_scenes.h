@@ -302,7 +302,8 @@ inline Scene media_scene(bool inside = false) {
 
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
 /// normal pattern with a slope map, normal maps (a list and an average), an inside material,
-/// variable, Fresnel and metallic reflection, conserve_energy, a texture map, no_shadow / no_image
+/// variable, Fresnel and metallic reflection, conserve_energy, a texture map by slope and
+/// altitude, a slope-patterned transparent pigment, no_shadow / no_image
 /// / no_reflection objects, fog and a sky pigment.
 inline Scene procedural_scene() {
     Scene s;
@@ -330,6 +331,9 @@ inline Scene procedural_scene() {
     glass.pigment = add_pigment(s, PatternKind::Gradient,
                                 {pigment_entry(0, Vec3(1), 0, 0.9f),
                                  pigment_entry(1, Vec3(0.8f, 1, 0.8f), 0.3f, 0.3f)});
+    // Clearer where it faces up (a slope pattern, also seen by shadow rays crossing it).
+    set_slope(s.pigments[size_t(glass.pigment)].pattern, Vec3(0, 1, 0), 0, 0, Vec3(0.0f), 0, 0,
+              false);
     glass.ior = 1.5f, glass.fresnel_split = false, glass.mirror = 1, glass.mirror_min = 0,
     glass.mirror_fresnel = true, glass.fade_distance = 1, glass.fade_power = 2;
     Material layered;
@@ -365,9 +369,8 @@ inline Scene procedural_scene() {
     Material a, b, picked;
     a.color = Vec3(1, 0.2f, 0.2f), b.color = Vec3(0.2f, 0.2f, 1);
     const uint32_t ma = s.add_material(a), mb = s.add_material(b);
-    MaterialSwitch sw;
-    sw.pattern.kind = PatternKind::Gradient;
-    sw.pattern.to_pattern = Affine::scale(Vec3(2));
+    MaterialSwitch sw; // by slope and altitude: the box's top and upper sides differ
+    set_slope(sw.pattern, Vec3(0, 3, 0), 0, 0, Vec3(0, 1, 0), -1, 0, false);
     sw.first = 0, sw.count = 2;
     s.material_switches.push_back(sw);
     s.material_entries = {{0.0f, ma}, {1.0f, mb}};

@@ -127,6 +127,12 @@ Pattern lower_pattern(const PovPattern& pt, const Affine& eff) {
     p.vector = pt.vector;
     for (int i = 0; i < 4; ++i) p.param[i] = float(pt.param[i]);
     p.fractal = pt.fractal;
+    if (pt.kind == PatternKind::Slope) { // the direction in Sheaf's world; checked when read
+        const Affine flip = pov_to_sheaf();
+        set_slope(p, pt.slope_point_at ? flip.point(pt.vector) : flip.vector(pt.vector),
+                  float(pt.param[0]), float(pt.param[1]), pt.slope_altitude, float(pt.param[2]),
+                  float(pt.param[3]), pt.slope_point_at);
+    }
     if (std::fabs(eff.determinant()) > 1e-30f) p.to_pattern = eff.inverse();
     return p;
 }

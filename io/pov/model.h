@@ -65,6 +65,10 @@ struct PovPattern {
     std::shared_ptr<const PovImage> image;
     std::shared_ptr<const PovFunction> function; // kind Function
     FractalParams fractal;                       // kinds Mandel and Julia
+    // Slope: `vector` is its direction (or point, point_at) in POV-Ray's world, param[0..3]
+    // the slope's and the altitude's low and high ends.
+    Vec3 slope_altitude{0, 0, 0};
+    bool slope_point_at = false;
 };
 
 struct PovPigment;

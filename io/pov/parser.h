@@ -291,6 +291,9 @@ class Parser {
     void parse_fractal(PovPattern& pt, const std::string& keyword);
     /// `exponent N`, `interior TYPE, FACTOR` or `exterior TYPE, FACTOR` after its keyword.
     void parse_fractal_modifier(const Token& keyword, FractalParams& f);
+    /// The slope pattern's direction (or point_at point), ranges and altitude after its
+    /// `keyword` (io/pov/slope_pattern.cpp).
+    void parse_slope(PovPattern& pt, const Token& keyword);
     bool parse_pattern_modifier(PovPattern& pt, Affine& local);
     void skip_to_block_end(); // after '{' was read: up to and including its '}'
     bool is_color_start(const Token& t);

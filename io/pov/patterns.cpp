@@ -36,6 +36,7 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
         {"wrinkles", {PatternKind::Wrinkles}}, {"function", {PatternKind::Function}},
         {"mandel", {PatternKind::Mandel}},     {"julia", {PatternKind::Julia}},
         {"magnet", {PatternKind::Mandel}}, // magnet 1 mandel 50, magnet 2 julia <c>, 50
+        {"slope", {PatternKind::Slope}},
     };
     return m;
 }
@@ -43,9 +44,9 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},           {"cubic", 6},  {"density_file", 0}, {"facets", 0},
-        {"image_pattern", 0}, {"object", 2}, {"pavement", 0},     {"pigment_pattern", 0},
-        {"slope", 0},         {"tiling", 0}, {"fractal", 0},      {"tiles", 2},
+        {"aoi", 0},           {"cubic", 6},   {"density_file", 0}, {"facets", 0},
+        {"image_pattern", 0}, {"object", 2},  {"pavement", 0},     {"pigment_pattern", 0},
+        {"tiling", 0},        {"fractal", 0}, {"tiles", 2},
     };
     return m;
 }
@@ -81,6 +82,7 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         }
         if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
         if (k == "mandel" || k == "julia" || k == "magnet") parse_fractal(pt, k);
+        if (k == "slope") parse_slope(pt, t);
         if (k == "quilted") { // control0 and control1 follow as modifiers
         }
         return true;
@@ -92,15 +94,8 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         skip_block();
     } else if (k == "tiling" || k == "pavement") {
         if (starts_expression(peek())) parse_float();
-    } else if (k == "slope" || k == "aoi") {
-        if (starts_expression(peek())) {
-            parse_expr(); // the direction, then optionally the range: slope y, 0, 1
-            if (accept_sym(",")) {
-                parse_float();
-                accept_sym(",");
-                parse_float();
-            }
-        }
+    } else if (k == "aoi") {
+        if (starts_expression(peek())) parse_expr();
     } else if (k == "facets") {
         while (accept_kw("coords") || accept_kw("size")) parse_float();
     } else if (k == "density_file") {

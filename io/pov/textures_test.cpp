@@ -175,6 +175,61 @@ TEST(PovTextures, LayersTextureMapsAndNormals) {
     EXPECT_NO_THROW(r.scene.validate());
 }
 
+// POV-Ray 3.7's slope pattern: the old form and the block with ranges, altitude and
+// point_at; the direction turns into Sheaf's world (z mirrored), the altitude stays in
+// pattern space; a zero range warns; nothing to measure is an error at the keyword.
+TEST(PovTextures, SlopePatternsTakeTheirArguments) {
+    const PovResult r =
+        load_text("sphere { 0, 1 texture { slope { -y*3, 0, 0.5 altitude y, 0.005, 0.400 }\n"
+                  "  texture_map { [0.45 pigment { rgb x }] [0.55 pigment { rgb y }] } } }\n"
+                  "sphere { 0, 1 pigment { slope z color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+                  "sphere { 0, 1 pigment { slope { point_at <1, 2, 3> } } }\n"
+                  "sphere { 0, 1 normal { slope { x altitude z } 0.5 } }\n");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    const Material& mapped = shape_material(r, 0);
+    ASSERT_GE(mapped.select, 0);
+    const Pattern& terrain = r.scene.material_switches[size_t(mapped.select)].pattern;
+    EXPECT_EQ(terrain.kind, PatternKind::Slope);
+    EXPECT_EQ(terrain.vector.y, -1.0f);
+    EXPECT_FLOAT_EQ(terrain.slope.slope_weight, 0.75f);
+    EXPECT_EQ(terrain.slope.altitude.y, 1.0f);
+    EXPECT_FLOAT_EQ(terrain.param[1], 0.5f);
+    EXPECT_FLOAT_EQ(terrain.param[2], 0.005f);
+    EXPECT_NEAR(terrain.param[3], 0.395f, 1e-6);
+    const Pattern& old = r.scene.pigments[size_t(shape_material(r, 1).pigment)].pattern;
+    EXPECT_EQ(old.kind, PatternKind::Slope);
+    EXPECT_EQ(old.vector.z, -1.0f); // POV-Ray's +z is Sheaf's -z
+    EXPECT_EQ(old.slope.slope_weight, 1.0f);
+    const Pattern& towards = r.scene.pigments[size_t(shape_material(r, 2).pigment)].pattern;
+    EXPECT_TRUE(towards.slope.point_at);
+    EXPECT_EQ(towards.vector.x, 1.0f);
+    EXPECT_EQ(towards.vector.z, -3.0f);
+    const NormalPattern& bumps = r.scene.normal_patterns[size_t(shape_material(r, 3).normal)];
+    EXPECT_EQ(bumps.pattern.kind, PatternKind::Slope);
+    EXPECT_FLOAT_EQ(bumps.amount, 0.5f * 0.15f);     // the bump size times the slope scale
+    EXPECT_EQ(bumps.pattern.slope.altitude.z, 1.0f); // pattern space: not mirrored
+    EXPECT_NO_THROW(r.scene.validate());
+    // A sphere's top is white and its side grey where the slope points up.
+    PreparedScene p = prepare_scene(load_text("sphere { 0, 1 pigment { slope y color_map { "
+                                              "[0 rgb 0] [1 rgb 1] } } }\n")
+                                        .scene);
+    const uint32_t pg = uint32_t(p.materials[p.shape_material[0]].pigment);
+    EXPECT_NEAR(evaluate_pigment(p, pg, Vec3(0, 1, 0), 0, 0, Vec3(0, 1, 0)).rgb.x, 1.0f, 1e-6);
+    EXPECT_NEAR(evaluate_pigment(p, pg, Vec3(0, 0, -1), 0, 0, Vec3(0, 0, -1)).rgb.x, 0.5f, 1e-6);
+
+    const PovResult zero = load_text("sphere { 0, 1 pigment { slope { y, 0.5, 0.5 } } }\n");
+    ASSERT_EQ(zero.warnings.size(), 1u);
+    EXPECT_NE(zero.warnings[0].find("scene.pov:1:36: warning: a zero slope range (low = high), "
+                                    "ignored"),
+              std::string::npos)
+        << zero.warnings[0];
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { slope { 0 } } }"),
+              "scene.pov:1:25: error: a slope pattern needs a slope or altitude direction other "
+              "than zero");
+    EXPECT_EQ(error_of("sphere { 0, 1 pigment { slope { point_at y altitude y } } }"),
+              "scene.pov:1:44: error: a slope with point_at takes no altitude");
+}
+
 TEST(PovTextures, FinishAndInterior) {
     const PovResult r = load_text(
         "sphere { 0, 1 pigment { rgbf <1, 1, 1, 0.9> } finish { specular 0.6 roughness 0.01\n"

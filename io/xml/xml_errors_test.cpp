@@ -340,6 +340,16 @@ TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
     EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"mandel\" magnet=\"1\" exponent=\"3\"/>"
                  "</scene>",
                  "1:63", "does not apply to the magnet formulas");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"slope\"/></scene>", "1:8",
+                 "a slope pattern needs a direction or an altitude other than zero");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"slope\" point_at=\"0 1 0\" "
+                 "altitude=\"0 1 0\"/></scene>",
+                 "1:68", "a slope towards a point (point_at) takes no altitude");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"bozo\" direction=\"0 1 0\"/></scene>", "1:51",
+                 "belongs to the slope pattern; this pattern is 'bozo'");
+    EXPECT_ERROR("<scene><normal name=\"n\" pattern=\"slope\" direction=\"0 1 0\" "
+                 "range=\"1 1\"/></scene>",
+                 "1:66", "attribute 'range' of <normal>: the low and high ends must differ");
 
     // What a pigment is, and what uses pigments, normals and switches.
     EXPECT_ERROR("<scene><pigment name=\"p\"/></scene>", "1:8",

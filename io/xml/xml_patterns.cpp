@@ -41,6 +41,7 @@ const PatternName kPatterns[] = {
     {"quilted", PatternKind::Quilted},
     {"mandel", PatternKind::Mandel},
     {"julia", PatternKind::Julia},
+    {"slope", PatternKind::Slope},
     {"checker", PatternKind::Checker},
     {"hexagon", PatternKind::Hexagon},
     {"brick", PatternKind::Brick},
@@ -186,7 +187,44 @@ Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
         only_for(t, fractal, "the mandel and julia patterns");
     only_for("c", kind == PatternKind::Julia, "the julia pattern");
     if (fractal) read_fractal(a, kind, pt.fractal);
+    const bool slope = kind == PatternKind::Slope;
+    for (const char* t : {"direction", "point_at", "range", "altitude", "altitude_range"})
+        only_for(t, slope, "the slope pattern");
+    if (slope) read_slope(a, pt);
     return pt;
+}
+
+// pattern="slope": direction="X Y Z" (world space) or point_at="X Y Z" (a world point the
+// surface faces), range="LO HI", altitude="X Y Z" (pattern space), altitude_range="LO HI";
+// the lengths of direction and altitude weigh the two (core/scene/pattern.h, SlopeParams).
+void SceneReader::read_slope(Attributes& a, Pattern& pt) const {
+    const pugi::xml_node& node = a.node();
+    auto fail = [&](const char* attribute, const std::string& why) {
+        ctx_.fail(node, node.attribute(attribute),
+                  "attribute '" + std::string(attribute) + "' of " + tag(node) + ": " + why);
+    };
+    if (node.attribute("direction") && node.attribute("point_at"))
+        fail("point_at", "a slope faces a direction or a point, not both");
+    Vec3 direction(0.0f), altitude(0.0f);
+    const bool point_at = a.get("point_at", direction);
+    if (!point_at) a.get("direction", direction);
+    a.get("altitude", altitude);
+    float lo_hi[4] = {0, 0, 0, 0};
+    for (const bool alt : {false, true}) {
+        const char* name = alt ? "altitude_range" : "range";
+        std::vector<float> v;
+        if (!a.get_numbers(name, v)) continue;
+        if (v.size() != 2)
+            fail(name, "expected two numbers (low and high), found " + std::to_string(v.size()));
+        if (v[0] == v[1]) fail(name, "the low and high ends must differ");
+        if (alt && !(length(altitude) > 0)) fail(name, "there is no altitude to remap");
+        lo_hi[alt ? 2 : 0] = v[0], lo_hi[alt ? 3 : 1] = v[1];
+    }
+    if (point_at && length(altitude) > 0)
+        fail("altitude", "a slope towards a point (point_at) takes no altitude");
+    if (!set_slope(pt, direction, lo_hi[0], lo_hi[1], altitude, lo_hi[2], lo_hi[3], point_at))
+        ctx_.fail(node, node.attribute(point_at ? "point_at" : "direction"),
+                  tag(node) + ": a slope pattern needs a direction or an altitude other than zero");
 }
 
 void SceneReader::read_fractal(Attributes& a, PatternKind kind, FractalParams& f) const {

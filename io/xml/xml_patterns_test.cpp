@@ -346,6 +346,42 @@ TEST(XmlPatterns, ACheckerPigmentGivesTwoColours) {
     EXPECT_GT(pixel(f, 24, 8).x, 0.99f);
 }
 
+// A slope pigment: the facing side of the box (normal +z) shows the value of its slope.
+TEST(XmlPatterns, ASlopePigmentSeesTheSurfaceNormal) {
+    const io::SceneFile file = io::parse_xml_scene(R"(<scene>
+  <pigment name="terrain" pattern="slope" direction="0 3 0" range="0 0.5" altitude="0 1 0"
+           altitude_range="0.005 0.4">
+    <entry value="0" color="0"/> <entry value="1" color="1"/>
+  </pigment>
+  <normal name="lit" pattern="slope" point_at="0 10 0"/>
+</scene>)",
+                                                   "slope.xml");
+    const Scene& s = file.scene;
+    ASSERT_EQ(s.pigments.size(), 1u);
+    const Pattern& t = s.pigments[0].pattern;
+    EXPECT_EQ(t.kind, PatternKind::Slope);
+    expect_near(t.vector, Vec3(0, 1, 0));
+    expect_near(t.slope.altitude, Vec3(0, 1, 0));
+    EXPECT_FLOAT_EQ(t.slope.slope_weight, 0.75f);
+    EXPECT_FLOAT_EQ(t.param[1], 0.5f);
+    EXPECT_FLOAT_EQ(t.param[2], 0.005f);
+    EXPECT_NEAR(t.param[3], 0.395f, 1e-6);
+    const Pattern& lit = s.normal_patterns[0].pattern;
+    EXPECT_TRUE(lit.slope.point_at);
+    expect_near(lit.vector, Vec3(0, 10, 0));
+
+    auto seen = [](const char* direction) {
+        const std::string pigment =
+            std::string(R"(<pigment name="p" pattern="slope" direction=")") + direction +
+            R"("><entry value="0" color="0"/>
+    <entry value="1" color="1"/></pigment>)";
+        return pixel(render(flat_scene(pigment, R"(pigment="p")")), 16, 16).x;
+    };
+    EXPECT_NEAR(seen("0 0 1"), 1.0f, 1e-5);  // facing the direction
+    EXPECT_NEAR(seen("1 0 0"), 0.5f, 1e-5);  // across it
+    EXPECT_NEAR(seen("0 0 -1"), 0.0f, 1e-5); // away from it
+}
+
 TEST(XmlPatterns, ASwitchPicksMaterialsAndAScaleMakesTilesLarger) {
     const Frame f = render(R"(<scene>
   <camera projection="orthographic" position="1 1 5" look_at="1 1 0" ortho_height="2"/>

@@ -64,6 +64,7 @@ class SceneReader {
     /// A mandel or julia pattern's attributes: iterations, exponent, magnet, c, interior,
     /// exterior (read_pattern has checked that no other pattern has them).
     void read_fractal(Attributes& a, PatternKind kind, FractalParams& f) const;
+    void read_slope(Attributes& a, Pattern& pt) const;
     /// Sets pattern.to_pattern from the placement (pattern space -> world) the transform
     /// children gave; a singular placement is an error at `node`.
     void place_pattern(const pugi::xml_node& node, const Affine& placement, Pattern& pattern) const;

@@ -2,9 +2,9 @@
 // (CUDA 13) and the module's call graph (gpu/ptx_report.py prints both). csg_spans recurses
 // once per level of CSG nesting: 7,176 bytes a level, plus 1,960 under a clipped_by, so 10 KiB
 // a level. Everything else is on the stack once: the deepest chain is the G-buffer kernel's
-// frame (4,672 bytes; the media's span lists are in the shading kernels' frames) + one
+// frame (4,704 bytes; the media's span lists are in the shading kernels' frames) + one
 // csg_spans level + the largest out-of-line leaf (a julia fractal's march, 280 + 2,416; a
-// lathe's 296 + 2,328): 14,544 bytes, so the base is 16 KiB. The pattern, pigment and normal
+// lathe's 296 + 2,328): 14,576 bytes, so the base is 16 KiB. The pattern, pigment and normal
 // code is called, not inlined (pigments nest at 128 bytes a level), far below that.
 // The device reserves the stack for every resident thread (about 270,000 on an H100), so it
 // is capped; a scene nested more deeply renders on the CPU (backend=auto) or is an error

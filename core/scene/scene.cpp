@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 namespace sheaf {
@@ -247,8 +248,13 @@ void Scene::validate() const {
         throw SceneError("the camera looks at its own position");
     if (length(cross(c.look_at - c.position, c.up)) <= 0)
         throw SceneError("the camera's up vector is parallel to its view");
-    if (c.projection == Projection::Perspective && !(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))
-        throw SceneError("the camera's field of view must lie in (0, 180) degrees");
+    if (c.projection == Projection::Perspective &&
+        !(c.fov_y_degrees > 0 && c.fov_y_degrees < 180)) {
+        char fov[32];
+        std::snprintf(fov, sizeof fov, "%g", double(c.fov_y_degrees));
+        throw SceneError(std::string("the camera's field of view (") + fov +
+                         " degrees) must lie in (0, 180) degrees");
+    }
     if (c.projection == Projection::Orthographic &&
         !(c.ortho_height > 0 && std::isfinite(c.ortho_height)))
         throw SceneError("an orthographic camera needs a view height > 0");

@@ -431,10 +431,7 @@ Value Parser::parse_identifier(const Token& t) {
     if (k == "tau") return Value::number(2 * M_PI);
     if (k == "true" || k == "on" || k == "yes") return Value::number(1);
     if (k == "false" || k == "off" || k == "no") return Value::number(0);
-    if (k == "clock" || k == "initial_clock" || k == "frame_number" || k == "initial_frame" ||
-        k == "clock_on")
-        return Value::number(0);
-    if (k == "final_clock" || k == "final_frame" || k == "clock_delta") return Value::number(1);
+    if (std::optional<double> c = clock_identifier(options_.clock, k)) return Value::number(*c);
     if (k == "version") return Value::number(model.version);
     if (k == "image_width") return Value::number(options_.image_width);
     if (k == "image_height") return Value::number(options_.image_height);

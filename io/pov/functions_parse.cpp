@@ -308,7 +308,11 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
         n.value = 1;
         return n;
     }
-    if (t.text == "false" || t.text == "off" || t.text == "no" || t.text == "clock") return n;
+    if (t.text == "false" || t.text == "off" || t.text == "no") return n;
+    if (std::optional<double> c = clock_identifier(options_.clock, t.text)) {
+        n.value = *c;
+        return n;
+    }
     if (t.text == "tau") {
         n.value = 2 * M_PI;
         return n;

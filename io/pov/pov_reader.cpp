@@ -12,6 +12,7 @@ namespace sheaf::io::pov {
 void Parser::parse_scene(const std::string& path) {
     scene_dir_ = std::filesystem::path(path).parent_path().string();
     if (scene_dir_.empty()) scene_dir_ = ".";
+    for (const auto& [name, value] : options_.declares) declare(name, Value::number(value), false);
     Token none;
     push_file(path, none);
     while (parse_statement()) {

@@ -8,8 +8,10 @@
 
 #include "core/scene/scene.h"
 #include "io/image/raster.h"
+#include "io/pov/animation.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sheaf::io::pov {
@@ -20,6 +22,9 @@ struct PovOptions {
     int image_width = 512, image_height = 512; // what image_width and image_height give
     RasterReader read_raster = nullptr;        // height_field images (io::read_raster); without it,
                                                // a height field from an image is an error
+    Clock clock;                               // clock, frame_number ... (animation.h)
+    std::vector<std::pair<std::string, double>> declares; // POV-Ray's Declare=NAME=VALUE: floats
+                                                          // declared before the scene's first line
 };
 
 struct PovResult {

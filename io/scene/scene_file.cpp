@@ -30,6 +30,10 @@ SceneFile read_pov(const std::string& path, const SceneFileOptions& options) {
     po.image_width = options.image_width;
     po.image_height = options.image_height;
     po.read_raster = options.read_raster;
+    if (const std::string problem = pov::animation_problem(options.animation); !problem.empty())
+        throw SceneError(path + ": error: " + problem);
+    po.clock = pov::clock_for(options.animation);
+    po.declares = options.declares;
     pov::PovResult r = pov::load_pov_scene(path, po);
     return {std::move(r.scene), std::move(r.warnings)};
 }

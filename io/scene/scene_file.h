@@ -4,8 +4,10 @@
 
 #include "core/scene/scene.h"
 #include "io/image/raster.h"
+#include "io/pov/animation.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sheaf::io {
@@ -18,6 +20,8 @@ struct SceneFileOptions {
                                                // scenes that ask (POV-Ray's image_width)
     RasterReader read_raster = nullptr;        // images a scene builds geometry from (POV-Ray's
                                                // height_field): io::read_raster, or none (an error)
+    pov::Animation animation; // the frame a POV-Ray scene is read for (its clock, frame_number)
+    std::vector<std::pair<std::string, double>> declares; // POV-Ray's Declare=NAME=VALUE
 };
 
 struct SceneFile {

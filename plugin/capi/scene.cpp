@@ -6,6 +6,9 @@
 #include "core/scenes/builtin.h"
 #include "io/scene/scene_file.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 
@@ -107,6 +110,9 @@ SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path) {
             std::lock_guard<std::mutex> lock(s.mutex);
             options = s.load_options;
         }
+        if (const std::string problem = sheaf::io::pov::animation_problem(options.animation);
+            !problem.empty())
+            throw InvalidArgument("load options: " + problem);
         sheaf::io::SceneFile loaded = sheaf::io::load_scene_file(path, options);
         std::lock_guard<std::mutex> lock(s.mutex);
         s.scene = std::move(loaded.scene);
@@ -142,6 +148,53 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
                                       "' is not allowed; expected an integer in 1..16384");
             (k == "image_width" ? s.load_options.image_width : s.load_options.image_height) =
                 int(n);
+        } else if (k == "initial_frame" || k == "final_frame" || k == "frame") {
+            char* end = nullptr;
+            const long n = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end != '\0' || n < -1000000000L || n > 1000000000L)
+                throw InvalidArgument("load option '" + k + "': '" + v +
+                                      "' is not allowed; expected an integer");
+            sheaf::io::pov::Animation& a = s.load_options.animation;
+            (k == "initial_frame" ? a.initial_frame
+             : k == "final_frame" ? a.final_frame
+                                  : a.frame.emplace()) = int(n);
+        } else if (k == "initial_clock" || k == "final_clock" || k == "clock") {
+            sheaf::io::pov::Animation& a = s.load_options.animation;
+            if (k == "clock" && v.empty()) {
+                a.clock.reset();
+                return;
+            }
+            char* end = nullptr;
+            const double x = std::strtod(v.c_str(), &end);
+            if (v.empty() || *end != '\0' || !std::isfinite(x))
+                throw InvalidArgument("load option '" + k + "': '" + v +
+                                      "' is not allowed; expected a number");
+            (k == "initial_clock" ? a.initial_clock
+             : k == "final_clock" ? a.final_clock
+                                  : a.clock.emplace()) = x;
+        } else if (k == "cyclic_animation") {
+            if (v != "0" && v != "1")
+                throw InvalidArgument("load option 'cyclic_animation': '" + v +
+                                      "' is not allowed; expected 0 or 1");
+            s.load_options.animation.cyclic = v == "1";
+        } else if (k == "declare") {
+            if (v.empty()) {
+                s.load_options.declares.clear();
+                return;
+            }
+            const size_t eq = v.find('=');
+            const std::string name = v.substr(0, std::min(eq, v.size()));
+            bool identifier = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0]));
+            for (char c : name)
+                identifier =
+                    identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+            char* end = nullptr;
+            const std::string text = eq == std::string::npos ? "" : v.substr(eq + 1);
+            const double x = std::strtod(text.c_str(), &end);
+            if (!identifier || text.empty() || *end != '\0' || !std::isfinite(x))
+                throw InvalidArgument("load option 'declare': '" + v +
+                                      "' is not allowed; expected NAME=NUMBER, e.g. Quality=2");
+            s.load_options.declares.emplace_back(name, x);
         } else if (k == "subdivision.limit") {
             if (v != "0" && v != "1")
                 throw InvalidArgument("option 'subdivision.limit': '" + v +
@@ -160,7 +213,9 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
         } else {
             throw InvalidArgument("unknown load option '" + k +
                                   "'; known options: include_path, strict, image_width, "
-                                  "image_height, subdivision.limit, subdivision.boundary");
+                                  "image_height, initial_frame, final_frame, initial_clock, "
+                                  "final_clock, cyclic_animation, frame, clock, declare, "
+                                  "subdivision.limit, subdivision.boundary");
         }
     });
 }

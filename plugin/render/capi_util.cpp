@@ -1,6 +1,7 @@
 // The render tool's thin layer over the C ABI: errors, frame read-back, settings and scenes.
 #include "capi_util.h"
 
+#include <cstdio>
 #include <iostream>
 
 namespace render {
@@ -97,7 +98,29 @@ int load_scene(SheafScene scene, const SceneSource& source) {
         sheafSceneSetLoadOption(scene, "image_width", std::to_string(*source.width).c_str());
     if (source.height)
         sheafSceneSetLoadOption(scene, "image_height", std::to_string(*source.height).c_str());
-    if (sheafSceneLoadFile(scene, label.c_str()) != SHEAF_OK) return error(kScene, last_error());
+    std::vector<std::pair<std::string, std::string>> animation;
+    auto number = [](double x) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.17g", x);
+        return std::string(text);
+    };
+    if (source.initial_frame)
+        animation.emplace_back("initial_frame", std::to_string(*source.initial_frame));
+    if (source.final_frame)
+        animation.emplace_back("final_frame", std::to_string(*source.final_frame));
+    if (source.frame) animation.emplace_back("frame", std::to_string(*source.frame));
+    if (source.initial_clock)
+        animation.emplace_back("initial_clock", number(*source.initial_clock));
+    if (source.final_clock) animation.emplace_back("final_clock", number(*source.final_clock));
+    if (source.clock) animation.emplace_back("clock", number(*source.clock));
+    if (source.cyclic) animation.emplace_back("cyclic_animation", *source.cyclic ? "1" : "0");
+    animation.emplace_back("declare", "");
+    for (const std::string& d : source.declares) animation.emplace_back("declare", d);
+    for (const auto& [key, value] : animation)
+        if (sheafSceneSetLoadOption(scene, key.c_str(), value.c_str()) != SHEAF_OK)
+            return error(kUsage, last_error());
+    if (const SheafError e = sheafSceneLoadFile(scene, label.c_str()); e != SHEAF_OK)
+        return error(e == SHEAF_ERROR_INVALID_ARGUMENT ? kUsage : kScene, last_error());
     size_t warnings = 0;
     sheafSceneGetWarningCount(scene, &warnings);
     for (size_t i = 0; i < warnings; ++i) {

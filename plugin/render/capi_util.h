@@ -67,6 +67,11 @@ struct SceneSource {
     std::vector<std::string> include_paths; ///< --include-path, +L
     bool strict = false;                    ///< --strict: unsupported features are errors
     std::optional<int> width, height;       ///< -W/-H: the size the scene is told
+    /// POV-Ray's animation (load options initial_frame ... clock) and Declare= floats.
+    std::optional<int> initial_frame, final_frame, frame;
+    std::optional<double> initial_clock, final_clock, clock;
+    std::optional<bool> cyclic;
+    std::vector<std::string> declares; ///< NAME=VALUE
 };
 
 /// Loads and commits the scene, printing the reader's warnings on stderr. Returns an exit code.

@@ -27,6 +27,13 @@ POV-Ray switches (translated before parsing; no space between switch and value):
   -A               anti-aliasing off: aa.samples=1
   +L<dir>          a folder searched for #include (--include-path dir)
   -D, +D           display: accepted, does nothing (render never opens a window)
+  +KFI1 +KFF24     an animation: frames 1 to 24, each written as OUTPUT with its number
+                   (render01.png ... render24.png); the scene's clock runs from +KI<v> (0)
+                   to +KF<v> (1); +KC cyclic; +SF<n> +EF<n> render a subset of the frames
+  +K0.5            the clock of a single image
+  scene.ini        POV-Ray's .ini file in place of the scene (also FILE.ini[Section]); its
+                   Key=Value options (Width=, Input_File_Name=, Initial_Frame=, Declare= ...)
+                   are also taken on the command line
 
 Examples:
   render                                         the default built-in scene to render.png
@@ -42,6 +49,8 @@ Examples:
                                                  checked identical, cmp/report.html
   render --sweep hierarchy.depth=1..4 hierarchy.arity=2,4,8,16 builtin:office --report sw
                                                  the grid's tests and times, the best named
+  render scene.pov +KFI1 +KFF24 +Oframe.png      frame01.png ... frame24.png
+  render p_skies.ini                             the .ini's scene, size and frames
   render --list-settings                         every key, its default and what it allows
 See docs/cli.md.)";
 
@@ -64,9 +73,11 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     app.footer(kFooter);
     std::string input;
     int width = 0, height = 0, threads = 0;
-    CLI::Option* scene = app.add_option("scene", o.scene,
-                                        "builtin:NAME or a scene file: .pov .xml .obj .ply .gltf .glb (default: the built-in " +
-                                            std::string(sheafGetDefaultSceneName()) + " scene)");
+    CLI::Option* scene = app.add_option(
+        "scene", o.scene,
+        "builtin:NAME, a scene file (.pov .xml .obj .ply .gltf .glb) or a POV-Ray .ini "
+        "(default: the built-in " +
+            std::string(sheafGetDefaultSceneName()) + " scene)");
     CLI::Option* input_opt =
         app.add_option("-i,--input", input, "the scene, as the positional argument (+IFILE)")
             ->type_name("FILE");
@@ -74,6 +85,11 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                                          "image file; the extension picks the format: .png .jpg "
                                          ".tif .exr .hdr (+OFILE)")
                               ->capture_default_str();
+    std::string default_output;
+    CLI::Option* default_out =
+        app.add_option("--default-output", default_output,
+                       "the image file when -o is not given (what a POV-Ray .ini names)")
+            ->type_name("FILE");
     CLI::Option* w = app.add_option("-W,--width", width, "image width in pixels (+W)");
     CLI::Option* h = app.add_option("-H,--height", height, "image height in pixels (+H)");
     CLI::Option* t =
@@ -116,6 +132,35 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     CLI::Option* check = app.add_flag(
         "--check", o.check,
         "load and build the scene without rendering, print its warnings; exit 0 when usable");
+    int initial_frame = 0, final_frame = 0, subset_start = 0, subset_end = 0;
+    double initial_clock = 0, final_clock = 0, clock = 0;
+    CLI::Option* fi = app.add_option("--initial-frame", initial_frame,
+                                     "POV-Ray animation: the first frame's number (+KFI; 1)");
+    CLI::Option* ff = app.add_option("--final-frame", final_frame,
+                                     "the last frame's number (+KFF; 1): frames from the first "
+                                     "to the last, each written as OUTPUT with its number");
+    CLI::Option* ic = app.add_option("--initial-clock", initial_clock,
+                                     "the scene's clock at the first frame (+KI; 0)");
+    CLI::Option* fc = app.add_option("--final-clock", final_clock,
+                                     "the scene's clock at the last frame (+KF; 1)");
+    bool cyclic_flag = false;
+    CLI::Option* cyclic = app.add_flag("--cyclic-animation,!--no-cyclic-animation", cyclic_flag,
+                                       "the last frame stops one step short of the final clock "
+                                       "(+KC, -KC)");
+    CLI::Option* sf = app.add_option("--subset-start-frame", subset_start,
+                                     "render the frames from this one (+SF)");
+    CLI::Option* ef =
+        app.add_option("--subset-end-frame", subset_end, "render the frames up to this one (+EF)");
+    CLI::Option* clock_opt =
+        app.add_option("--clock", clock, "the clock of a single image (+K; 0)");
+    app.add_option("--declare", o.declares,
+                   "NAME=NUMBER: a float declared before the scene's first line "
+                   "(POV-Ray's Declare=); repeatable")
+        ->allow_extra_args(false)
+        ->type_name("NAME=NUMBER");
+    for (CLI::Option* opt : {input_opt, output, default_out, w, h, t, preset, stats_json, report,
+                             fi, ff, ic, fc, sf, ef, clock_opt})
+        opt->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     bool no_display = false;
     app.add_flag("--no-display", no_display, "accepted for POV-Ray's -D; does nothing");
     app.add_flag("--list-settings", o.list_settings, "list every setting and exit");
@@ -142,7 +187,33 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         return error(kUsage, std::string(e.what()) + " (see render --help)");
     }
     if (input_opt->count()) o.scene = input;
+    if (fi->count()) o.initial_frame = initial_frame;
+    if (ff->count()) o.final_frame = final_frame;
+    if (ic->count()) o.initial_clock = initial_clock;
+    if (fc->count()) o.final_clock = final_clock;
+    if (sf->count()) o.subset_start = subset_start;
+    if (ef->count()) o.subset_end = subset_end;
+    if (clock_opt->count()) o.clock = clock;
+    if (cyclic->count()) o.cyclic = cyclic_flag;
+    if (o.final_frame.value_or(1) < o.initial_frame.value_or(1))
+        return error(kUsage, "--final-frame " + std::to_string(o.final_frame.value_or(1)) +
+                                 " is below --initial-frame " +
+                                 std::to_string(o.initial_frame.value_or(1)) +
+                                 " (see render --help)");
+    if (o.sequence() && o.first_frame() > o.last_frame())
+        return error(kUsage, "--subset-start-frame and --subset-end-frame leave no frame of " +
+                                 std::to_string(o.initial_frame.value_or(1)) + ".." +
+                                 std::to_string(o.final_frame.value_or(1)) +
+                                 " to render (see render --help)");
+    if (o.sequence() && (compare->count() || sweep->count()))
+        return error(kUsage, std::string(compare->count() ? "--compare" : "--sweep") +
+                                 " renders one frame; give --clock (+K) instead of a sequence of "
+                                 "frames (see render --help)");
     o.has_output = output->count() > 0;
+    if (!o.has_output && default_out->count()) {
+        o.output = default_output;
+        o.has_output = true;
+    }
     if (w->count()) o.settings.width = width;
     if (h->count()) o.settings.height = height;
     if (t->count()) o.settings.threads = threads;

@@ -4,6 +4,7 @@
 
 #include "capi_util.h"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,11 +29,43 @@ struct Options {
     bool strict = false;                    ///< --strict: unsupported features are errors
     bool check = false;                     ///< --check: load the scene, report, do not render
     std::string command_line;               ///< as typed, for the report
+    /// POV-Ray animation (+KFI +KFF +KI +KF +KC, +SF +EF, +K) and Declare=.
+    std::optional<int> initial_frame, final_frame, subset_start, subset_end;
+    std::optional<double> initial_clock, final_clock, clock;
+    std::optional<bool> cyclic;
+    std::vector<std::string> declares;
+
+    /// Whether the frames differ (POV-Ray renders a sequence when final_frame != initial_frame).
+    bool sequence() const { return initial_frame.value_or(1) != final_frame.value_or(1); }
+    /// The frames to render: the sequence cut to --subset-start/end-frame.
+    int first_frame() const {
+        return std::max(initial_frame.value_or(1),
+                        subset_start.value_or(initial_frame.value_or(1)));
+    }
+    int last_frame() const {
+        return std::min(final_frame.value_or(1), subset_end.value_or(final_frame.value_or(1)));
+    }
 };
 
 /// The scene argument with the options that say how to read it.
-inline SceneSource scene_source(const Options& o) {
-    return {o.scene, o.include_paths, o.strict, o.settings.width, o.settings.height};
+/// The scene argument with the options that say how to read it; `frame` is the frame of a
+/// sequence to read.
+inline SceneSource scene_source(const Options& o, std::optional<int> frame = std::nullopt) {
+    SceneSource s;
+    s.path = o.scene;
+    s.include_paths = o.include_paths;
+    s.strict = o.strict;
+    s.width = o.settings.width;
+    s.height = o.settings.height;
+    s.initial_frame = o.initial_frame;
+    s.final_frame = o.final_frame;
+    s.frame = frame;
+    s.initial_clock = o.initial_clock;
+    s.final_clock = o.final_clock;
+    s.clock = o.clock;
+    s.cyclic = o.cyclic;
+    s.declares = o.declares;
+    return s;
 }
 
 /// Parses the command line into `o`. Returns an exit code when the program should stop now

@@ -1,6 +1,8 @@
 // POV-Ray switch translation: each +X/-X word becomes the equivalent long option.
 #include "pov_switches.h"
 
+#include "pov_ini.h"
+
 #include <cctype>
 #include <cstdlib>
 
@@ -28,8 +30,43 @@ bool is_sweep_axis(const std::string& s) {
     return eq != std::string::npos && eq > 0 && s[0] != '-' && s[0] != '+';
 }
 
-/// Appends the translation of one POV-Ray switch (a word starting with + or one of -A, -D);
-/// returns false when `word` is not one.
+bool is_integer(const std::string& s) {
+    return is_positive_integer(s) ||
+           (s.size() > 1 && s[0] == '-' && is_positive_integer(s.substr(1)));
+}
+
+/// The animation switches: +K<clock>, +KFI<n>, +KFF<n>, +KI<clock>, +KF<clock>, +KC.
+void translate_clock_switch(const std::string& word, std::vector<std::string>& out) {
+    std::string rest = word.substr(2);
+    for (char& c : rest) c = char(std::toupper(static_cast<unsigned char>(c)));
+    const std::string value = word.substr(
+        2 + (rest.rfind("FI", 0) == 0 || rest.rfind("FF", 0) == 0                            ? 2
+             : rest.rfind("I", 0) == 0 || rest.rfind("F", 0) == 0 || rest.rfind("C", 0) == 0 ? 1
+                                                                                             : 0));
+    auto need = [&](bool ok, const char* what) {
+        if (!ok)
+            throw SwitchError("POV-Ray switch '" + word + "': expected " + what +
+                              " with no space, e.g. +KFI1 +KFF24 +KI0 +KF1, or +K0.5");
+    };
+    if (rest.rfind("FI", 0) == 0 || rest.rfind("FF", 0) == 0) {
+        need(is_integer(value), "a frame number");
+        out.insert(out.end(), {rest[1] == 'I' ? "--initial-frame" : "--final-frame", value});
+    } else if (rest.rfind("C", 0) == 0) {
+        need(value.empty(), "nothing after +KC");
+        out.push_back(word[0] == '-' ? "--no-cyclic-animation" : "--cyclic-animation");
+    } else if (rest.rfind("I", 0) == 0 || rest.rfind("F", 0) == 0) {
+        need(is_number(value), "a clock value");
+        out.insert(out.end(), {rest[0] == 'I' ? "--initial-clock" : "--final-clock", value});
+    } else {
+        need(is_number(value), "a clock value");
+        out.insert(out.end(), {"--clock", value});
+    }
+}
+
+} // namespace
+
+/// Appends the translation of one POV-Ray switch (a word starting with + or one of -A, -D,
+/// -KC); returns false when `word` is not one.
 bool translate_switch(const std::string& word, std::vector<std::string>& out) {
     if (word.size() < 2) return false;
     const char sign = word[0], letter = char(std::toupper(static_cast<unsigned char>(word[1])));
@@ -41,6 +78,10 @@ bool translate_switch(const std::string& word, std::vector<std::string>& out) {
         }
         if (word == "-D") {
             out.push_back("--no-display");
+            return true;
+        }
+        if (word == "-KC" || word == "-kc") {
+            out.push_back("--no-cyclic-animation");
             return true;
         }
         return false;
@@ -76,14 +117,25 @@ bool translate_switch(const std::string& word, std::vector<std::string>& out) {
         if (!rest.empty()) break;
         out.push_back("--no-display");
         return true;
+    case 'K':
+        translate_clock_switch(word, out);
+        return true;
+    case 'S':
+    case 'E':
+        if (rest.empty() || std::toupper(static_cast<unsigned char>(rest[0])) != 'F') break;
+        if (!is_integer(rest.substr(1)))
+            throw SwitchError("POV-Ray switch '" + word + "': expected +" + letter +
+                              "F followed by a frame number, e.g. +" + letter + "F2");
+        out.insert(out.end(),
+                   {letter == 'S' ? "--subset-start-frame" : "--subset-end-frame", rest.substr(1)});
+        return true;
     default:
         break;
     }
     throw SwitchError("unknown POV-Ray switch '" + word +
-                      "'; known: +W<n> +H<n> +O<file> +I<file> +A[threshold] -A +L<dir> +D -D");
+                      "'; known: +W<n> +H<n> +O<file> +I<file> +A[threshold] -A +L<dir> +D -D "
+                      "+K<clock> +KFI<n> +KFF<n> +KI<clock> +KF<clock> +KC -KC +SF<n> +EF<n>");
 }
-
-} // namespace
 
 std::vector<std::string> translate_args(const std::vector<std::string>& args) {
     std::vector<std::string> out;
@@ -107,7 +159,21 @@ std::vector<std::string> translate_args(const std::vector<std::string>& args) {
             axis_seen = false;
             continue;
         }
-        if (!translate_switch(word, out)) out.push_back(word);
+        const bool value_of_option =
+            !out.empty() &&
+            (out.back() == "-o" || out.back() == "--output" || out.back() == "--preset" ||
+             out.back() == "--stats-json" || out.back() == "--report" ||
+             out.back() == "--include-path" || out.back() == "--set" || out.back() == "--declare");
+        if (!value_of_option && is_ini_file(word)) {
+            if (!out.empty() && (out.back() == "-i" || out.back() == "--input")) out.pop_back();
+            const std::vector<std::string> ini = read_ini_file(word);
+            out.insert(out.end(), ini.begin(), ini.end());
+            continue;
+        }
+        if (value_of_option || !translate_switch(word, out)) {
+            if (value_of_option || !translate_ini_option(word, "command line", out))
+                out.push_back(word);
+        }
     }
     if (in_sweep && !axis_seen) out.push_back("--sweep");
     return out;

@@ -7,34 +7,62 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace render {
 
 namespace {
 
-int write_outputs(SheafFrame frame, const Options& o, double ms) {
+/// FILE.EXT with the frame number before the extension, zero-padded to the digits of the last
+/// frame, as POV-Ray names an animation's images (render.png, frame 3 of 1..12: render03.png).
+std::string numbered(const std::string& file, int frame, int last) {
+    const size_t slash = file.find_last_of('/');
+    size_t dot = file.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) dot = file.size();
+    std::string n = std::to_string(frame);
+    const size_t digits = std::to_string(last).size();
+    if (frame >= 0 && n.size() < digits) n.insert(0, digits - n.size(), '0');
+    return file.substr(0, dot) + n + file.substr(dot);
+}
+
+int write_outputs(SheafFrame frame, const Options& o, const std::string& output,
+                  const std::string& stats_json, double ms) {
     int w = 0, h = 0;
     sheafFrameGetSize(frame, &w, &h);
-    if (sheafFrameSaveImage(frame, o.output.c_str()) != SHEAF_OK)
-        return error(kRender, last_error());
+    if (sheafFrameSaveImage(frame, output.c_str()) != SHEAF_OK) return error(kRender, last_error());
     if (!o.quiet) {
         char line[64];
         std::snprintf(line, sizeof line, "%dx%d, %.1f ms", w, h, ms);
-        std::cout << "wrote " << o.output << " (" << line << ")\n";
+        std::cout << "wrote " << output << " (" << line << ")\n";
     }
     if (o.stats) {
         auto table = frame_text(frame, "stats.table");
         if (!table) return error(kRender, "--stats: " + last_error());
         std::cout << *table;
     }
-    if (!o.stats_json.empty()) {
+    if (!stats_json.empty()) {
         std::optional<std::string> json = frame_text(frame, "stats.json");
         if (!json) return error(kRender, "--stats-json: " + last_error());
-        std::ofstream out(o.stats_json);
+        std::ofstream out(stats_json);
         if (!(out << *json << "\n"))
-            return error(kRender, "--stats-json " + o.stats_json + ": cannot write the file");
+            return error(kRender, "--stats-json " + stats_json + ": cannot write the file");
     }
     return kOk;
+}
+
+/// The frames to read: the sequence's (cut to the subset), or one still (no frame number).
+std::vector<std::optional<int>> frames(const Options& o) {
+    if (!o.sequence()) return {std::nullopt};
+    std::vector<std::optional<int>> out;
+    for (int f = o.first_frame(); f <= o.last_frame(); ++f) out.push_back(f);
+    return out;
+}
+
+/// The last frame number as the scene sees it (one more when cyclic), for the names' digits.
+int name_digits_frame(const Options& o) {
+    return o.final_frame.value_or(1) + (o.cyclic.value_or(false) ? 1 : 0);
 }
 
 } // namespace
@@ -50,39 +78,57 @@ void list_settings() {
 }
 
 int run_check(const Options& o) {
-    SheafScene raw_scene = nullptr;
-    if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
-    Scene scene(raw_scene);
-    if (int rc = load_scene(raw_scene, scene_source(o))) return rc;
-    size_t warnings = 0;
-    sheafSceneGetWarningCount(raw_scene, &warnings);
-    std::cout << scene_label(o.scene) << ": usable, " << warnings
-              << (warnings == 1 ? " warning\n" : " warnings\n");
+    // Every frame of a sequence is read: a scene may fail only at some clock values.
+    for (const std::optional<int>& f : frames(o)) {
+        SheafScene raw_scene = nullptr;
+        if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
+        Scene scene(raw_scene);
+        if (int rc = load_scene(raw_scene, scene_source(o, f))) return rc;
+        size_t warnings = 0;
+        sheafSceneGetWarningCount(raw_scene, &warnings);
+        std::cout << scene_label(o.scene);
+        if (f) std::cout << " (frame " << *f << ")";
+        std::cout << ": usable, " << warnings << (warnings == 1 ? " warning\n" : " warnings\n");
+    }
     return kOk;
 }
 
 int run_single(const Options& o) {
     SheafRenderer raw_renderer = nullptr;
-    SheafScene raw_scene = nullptr;
     if (sheafRendererNew(&raw_renderer) != SHEAF_OK) return error(kRender, last_error());
     Renderer renderer(raw_renderer);
-    if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
-    Scene scene(raw_scene);
     if (int rc = apply_settings(raw_renderer, o.preset, o.settings)) return rc;
-    if (int rc = load_scene(raw_scene, scene_source(o))) return rc;
 
-    Progress progress(Progress::wanted(o.quiet), 1);
-    progress.start_run(raw_renderer, 0, scene_label(o.scene));
-    SheafFrame raw_frame = nullptr;
-    const auto start = std::chrono::steady_clock::now();
-    const SheafError rendered = sheafRender(raw_renderer, raw_scene, &raw_frame);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    progress.finish_run(raw_renderer);
-    if (rendered != SHEAF_OK) return error(render_error_code(rendered), last_error());
-    Frame frame(raw_frame);
-    if (!o.quiet) std::cerr << frame_backend(frame.get()) << "\n";
-    return write_outputs(frame.get(), o, ms);
+    const std::vector<std::optional<int>> todo = frames(o);
+    Progress progress(Progress::wanted(o.quiet), int(todo.size()));
+    for (size_t i = 0; i < todo.size(); ++i) {
+        const std::optional<int>& f = todo[i];
+        // Each frame reads the scene again: its clock may change anything in it.
+        SheafScene raw_scene = nullptr;
+        if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());
+        Scene scene(raw_scene);
+        if (int rc = load_scene(raw_scene, scene_source(o, f))) return rc;
+
+        std::string label = scene_label(o.scene);
+        if (f) label += " frame " + std::to_string(*f);
+        progress.start_run(raw_renderer, int(i), label);
+        SheafFrame raw_frame = nullptr;
+        const auto start = std::chrono::steady_clock::now();
+        const SheafError rendered = sheafRender(raw_renderer, raw_scene, &raw_frame);
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        progress.finish_run(raw_renderer);
+        if (rendered != SHEAF_OK) return error(render_error_code(rendered), last_error());
+        Frame frame(raw_frame);
+        if (!o.quiet && i == 0) std::cerr << frame_backend(frame.get()) << "\n";
+        const int digits_of = name_digits_frame(o);
+        const std::string output = f ? numbered(o.output, *f, digits_of) : o.output;
+        const std::string stats_json =
+            f && !o.stats_json.empty() ? numbered(o.stats_json, *f, digits_of) : o.stats_json;
+        if (int rc = write_outputs(frame.get(), o, output, stats_json, ms)) return rc;
+    }
+    return kOk;
 }
 
 } // namespace render

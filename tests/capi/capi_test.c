@@ -580,6 +580,82 @@ static void test_scene_files(void) {
     OK(sheafSceneRelease(s));
 }
 
+/* ---- POV-Ray animation: the clock and frame load options, and Declare ---- */
+
+/* The primitives of the scene at `path` as loaded with the options already set. */
+static double primitives_of(SheafScene s, const char* path) {
+    SheafRenderer r = NULL;
+    SheafFrame frame = NULL;
+    double prims = -1;
+    OK(sheafSceneLoadFile(s, path));
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererSetInt(r, "width", 8));
+    OK(sheafRendererSetInt(r, "height", 8));
+    OK(sheafRender(r, s, &frame));
+    OK(sheafFrameGetStatByName(frame, "scene.primitives", &prims));
+    OK(sheafFrameRelease(frame));
+    OK(sheafRendererRelease(r));
+    return prims;
+}
+
+static void test_pov_animation(void) {
+    SheafScene s = NULL;
+    double prims = 0;
+    /* One sphere per frame number; one box more while the clock is past 0.5; Extra more boxes. */
+    write_text("capi_test_anim.pov",
+               "camera { location <0, 1, -9> look_at 0 }\n"
+               "light_source { <3, 5, -4> rgb 1 }\n"
+               "#ifndef (Extra) #declare Extra = 0; #end\n"
+               "#for (I, 1, frame_number) sphere { <I - 3, 0, 0>, 0.4 pigment { rgb 1 } } #end\n"
+               "#if (clock > 0.5) box { -2, -1.5 pigment { rgb 1 } } #end\n"
+               "#for (I, 1, Extra) box { <-3, -1, 2>, <3, -0.8, 3> pigment { rgb 1 } } #end\n"
+               "#if (clock_on) #if (clock_delta != 0.25) #error \"clock_delta\" #end #end\n");
+    OK(sheafSceneNew(&s));
+    prims = primitives_of(s, "capi_test_anim.pov");
+    CHECK(prims == 0, "a still has frame_number 0 and clock 0: %g primitives, expected 0", prims);
+    /* Frames 1..5: clock 0, 0.25, 0.5, 0.75, 1 (clock_delta 0.25). */
+    OK(sheafSceneSetLoadOption(s, "initial_frame", "1"));
+    OK(sheafSceneSetLoadOption(s, "final_frame", "5"));
+    OK(sheafSceneSetLoadOption(s, "frame", "3"));
+    prims = primitives_of(s, "capi_test_anim.pov");
+    CHECK(prims == 3, "frame 3 of 1..5 (clock 0.5): %g primitives, expected 3 spheres", prims);
+    OK(sheafSceneSetLoadOption(s, "frame", "4"));
+    prims = primitives_of(s, "capi_test_anim.pov");
+    CHECK(prims == 5, "frame 4 of 1..5 (clock 0.75): %g primitives, expected 4 spheres + box",
+          prims);
+    /* Cyclic: 1..4 spans four steps, so clock_delta is still 0.25; frame 3 has clock 0.5. */
+    OK(sheafSceneSetLoadOption(s, "final_frame", "4"));
+    OK(sheafSceneSetLoadOption(s, "cyclic_animation", "1"));
+    OK(sheafSceneSetLoadOption(s, "frame", "3"));
+    prims = primitives_of(s, "capi_test_anim.pov");
+    CHECK(prims == 3, "cyclic frame 3 of 1..4: %g primitives, expected 3", prims);
+    OK(sheafSceneSetLoadOption(s, "declare", "Extra=2"));
+    prims = primitives_of(s, "capi_test_anim.pov");
+    CHECK(prims == 5, "Declare Extra=2: %g primitives, expected 3 + 2 boxes", prims);
+    /* A frame outside the sequence, and a sequence running backwards, are refused. */
+    OK(sheafSceneSetLoadOption(s, "frame", "9"));
+    expect_error(sheafSceneLoadFile(s, "capi_test_anim.pov"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "frame outside the sequence", "frame 9", NULL);
+    OK(sheafSceneSetLoadOption(s, "frame", "1"));
+    OK(sheafSceneSetLoadOption(s, "initial_frame", "6"));
+    expect_error(sheafSceneLoadFile(s, "capi_test_anim.pov"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "final below initial", "final_frame 4", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "frame", "two"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "frame not a number", "two", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "declare", "1x=2"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "declare not an identifier", "NAME=NUMBER", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "clock", "soon"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "clock not a number", "soon", NULL);
+    /* Back to a still with a clock of its own (+K): clock_on, no frames. */
+    OK(sheafSceneSetLoadOption(s, "initial_frame", "1"));
+    OK(sheafSceneSetLoadOption(s, "final_frame", "1"));
+    OK(sheafSceneSetLoadOption(s, "declare", ""));
+    OK(sheafSceneSetLoadOption(s, "clock", "0.9"));
+    expect_error(sheafSceneLoadFile(s, "capi_test_anim.pov"), SHEAF_ERROR_SCENE,
+                 "a still's clock_delta is 0", "clock_delta", NULL);
+    OK(sheafSceneRelease(s));
+}
+
 /* ---- Object flags and the preset list ---- */
 
 static void test_flags_and_presets(void) {
@@ -645,6 +721,7 @@ int main(void) {
     test_crsh_matches_brute();
     test_write_image();
     test_scene_files();
+    test_pov_animation();
     test_flags_and_presets();
     CHECK(g_callback_calls == g_expected_errors, "error callback called %d times for %d errors",
           g_callback_calls, g_expected_errors);

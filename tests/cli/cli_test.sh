@@ -154,6 +154,71 @@ expect_rc pov_bad_width 1 builtin:cornell +Wide -o "$OUT/q.png"
 expect_in "$OUT/pov_bad_width.err" "+Wide" "+W without a number: stderr names it"
 expect_rc pov_two_scenes 1 builtin:cornell +Ibuiltin:office "${S[@]}"
 
+# POV-Ray animation: +KFI +KFF +KI +KF +KC +SF +EF +K, numbered images, .ini files, Declare=.
+mkdir -p "$OUT/anim"
+cat >"$OUT/anim/clock.pov" <<'POV'
+camera { location <0, 1, -9> look_at 0 }
+light_source { <3, 5, -4> rgb 1 }
+#ifndef (Extra) #declare Extra = 0; #end
+#for (I, 1, frame_number + Extra) sphere { <I - 3, 0, 0>, 0.4 pigment { rgb 1 } } #end
+#if (clock > 0.5) box { -2, -1.5 pigment { rgb 1 } } #end
+POV
+A=(-W 8 -H 8)
+expect_rc anim 0 "$OUT/anim/clock.pov" "${A[@]}" +KFI1 +KFF10 "+O$OUT/anim/f.png" \
+    --stats-json "$OUT/anim/f.json"
+expect_in "$OUT/anim.out" "wrote $OUT/anim/f01.png" "a sequence numbers its images to the last frame's digits"
+expect_in "$OUT/anim.out" "wrote $OUT/anim/f10.png" "the last frame is written"
+# Frame 6 of 1..10 has clock 5/9 > 0.5: six spheres and the box; frame 5 (4/9) only spheres.
+[ "$(json_value "$OUT/anim/f06.json" scene.primitives)" = 7 ] && pass "frame 6: clock 5/9" ||
+    fail "frame 6: $(json_value "$OUT/anim/f06.json" scene.primitives) primitives, expected 7"
+[ "$(json_value "$OUT/anim/f05.json" scene.primitives)" = 5 ] && pass "frame 5: clock 4/9" ||
+    fail "frame 5: $(json_value "$OUT/anim/f05.json" scene.primitives) primitives, expected 5"
+expect_rc anim_subset 0 "$OUT/anim/clock.pov" "${A[@]}" +KFI1 +KFF4 +SF2 +EF3 +KI0 +KF2 +KC \
+    -o "$OUT/anim/s.png" --stats-json "$OUT/anim/s.json"
+[ -f "$OUT/anim/s2.png" ] && [ -f "$OUT/anim/s3.png" ] && [ ! -f "$OUT/anim/s1.png" ] &&
+    [ ! -f "$OUT/anim/s4.png" ] && pass "+SF +EF: only frames 2 and 3" || fail "+SF +EF: $(ls "$OUT/anim")"
+[ "$(json_value "$OUT/anim/s3.json" scene.primitives)" = 4 ] && pass "+KC +KF2: frame 3 has clock 1" ||
+    fail "+KC: $(json_value "$OUT/anim/s3.json" scene.primitives) primitives, expected 4"
+expect_rc anim_still 0 "$OUT/anim/clock.pov" "${A[@]}" +K0.9 -o "$OUT/anim/k.png" \
+    --stats-json "$OUT/anim/k.json"
+[ "$(json_value "$OUT/anim/k.json" scene.primitives)" = 1 ] && pass "+K0.9: a still with its clock" ||
+    fail "+K0.9: $(json_value "$OUT/anim/k.json" scene.primitives) primitives, expected 1"
+expect_rc anim_backwards 1 "$OUT/anim/clock.pov" "${A[@]}" +KFI5 +KFF2 -o "$OUT/anim/b.png"
+expect_in "$OUT/anim_backwards.err" "--final-frame 2 is below --initial-frame 5" "a backwards sequence is refused"
+expect_rc anim_bad_switch 1 "$OUT/anim/clock.pov" "${A[@]}" +KFIx -o "$OUT/anim/b.png"
+expect_in "$OUT/anim_bad_switch.err" "+KFIx" "a bad +KFI names itself"
+expect_rc anim_compare 1 --compare crsh,brute "$OUT/anim/clock.pov" "${A[@]}" +KFF3
+expect_in "$OUT/anim_compare.err" "--compare renders one frame" "--compare refuses a sequence"
+# An .ini in place of the scene: its scene (found beside it), size, frames, Declare, image name.
+cat >"$OUT/anim/clock.ini" <<'INI'
+; a POV-Ray ini file
+Input_File_Name=clock.pov
+Width=12
++h10
+Antialias=Off
+Initial_Frame=1
+Final_Frame=3
+Declare=Extra=2
+Pause_When_Done=off   ; accepted, nothing to do
+Jitter=On
+INI
+(cd "$OUT" && "$RENDER" anim/clock.ini --stats-json anim/i.json >ini.out 2>ini.err)
+rc=$?
+[ "$rc" -eq 0 ] && pass "an .ini renders" || fail "an .ini: exit $rc: $(cat "$OUT/ini.err")"
+expect_in "$OUT/ini.out" "wrote clock1.png (12x10," "the .ini's size, frames and image name"
+[ "$(json_value "$OUT/anim/i3.json" scene.primitives)" = 6 ] && pass "Declare=Extra=2 in the .ini" ||
+    fail "Declare in the .ini: $(json_value "$OUT/anim/i3.json" scene.primitives) primitives, expected 6"
+rm -f "$OUT"/clock?.png
+expect_rc ini_override 0 "$OUT/anim/clock.ini" -o "$OUT/anim/o.png" Final_Frame=1 Width=8
+expect_in "$OUT/ini_override.out" "wrote $OUT/anim/o.png (8x10," "-o and Key=Value after the .ini win"
+expect_rc ini_check 0 --check "$OUT/anim/clock.ini"
+expect_in "$OUT/ini_check.out" "(frame 3): usable" "--check reads every frame of the .ini"
+printf 'Width=wide\n' >"$OUT/anim/bad.ini"
+expect_rc ini_bad 1 "$OUT/anim/bad.ini"
+expect_in "$OUT/ini_bad.err" "bad.ini:1: Width=wide: expected a whole number" "a bad .ini line: file, line, value"
+expect_rc ini_missing 1 "$OUT/anim/none.ini"
+expect_in "$OUT/ini_missing.err" "cannot read the .ini file" "a missing .ini is named"
+
 # --threads, -q, and no progress bar when stderr is not a terminal.
 expect_rc threads 0 builtin:cornell "${S[@]}" --threads 1 -o "$OUT/t.png"
 expect_rc threads_bad 1 builtin:cornell "${S[@]}" --threads -1 -o "$OUT/t.png"

@@ -2,7 +2,8 @@
 """POV-Ray 3.7's example scenes through `render --check`.
 
 Copies the examples (Debian's povray-examples) to a writable folder, checks every scene from
-its own folder (scenes #write files and #include their neighbours), and prints the counts:
+its own folder (scenes #write files and #include their neighbours; a scene with an .ini that
+names it is checked through the .ini, every frame), and prints the counts:
 scenes, parsed, usable with no unsupported feature; then the unsupported features by the
 number of scenes they keep from being clean, and every scene that fails with its error.
 
@@ -21,11 +22,28 @@ import subprocess
 import sys
 
 
+def ini_for(folder, scene):
+    """The .ini beside the scene that names it as its Input_File_Name (how POV-Ray's animations
+    and portfolio scenes are meant to be rendered: they need its frames), or the scene itself."""
+    ini = os.path.splitext(scene)[0] + ".ini"
+    try:
+        with open(os.path.join(folder, ini), errors="replace") as f:
+            for line in f:
+                key, _, value = line.split(";", 1)[0].partition("=")
+                if key.strip().lower() == "input_file_name" and \
+                        value.strip().strip('"').lower() == scene.lower():
+                    return ini
+    except OSError:
+        pass
+    return scene
+
+
 def check(render, root, scene, timeout):
     """(scene, 'ok'|'error'|'timeout', warnings, message)."""
     folder = os.path.join(root, os.path.dirname(scene))
     try:
-        p = subprocess.run([render, "--check", os.path.basename(scene)], cwd=folder,
+        p = subprocess.run([render, "--check", ini_for(folder, os.path.basename(scene))],
+                           cwd=folder,
                            capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         return scene, "timeout", [], f"no answer in {timeout} s"

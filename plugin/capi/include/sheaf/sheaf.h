@@ -99,6 +99,17 @@ SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);
  *   "strict"        "1": an unsupported feature is an error (SHEAF_ERROR_SCENE); "0": a warning
  *   "image_width", "image_height"  the size the scene will be rendered at, for scenes that ask
  *                   (POV-Ray's image_width and image_height); 512 when not set
+ *   "initial_frame", "final_frame"  POV-Ray's animation (integers, both 1 when not set): a
+ *                   sequence when they differ; "frame" the frame to read (initial_frame when
+ *                   not set); "initial_clock", "final_clock" (0 and 1) the clock at the first and
+ *                   last frame, in between linearly; "cyclic_animation" "1": the last frame
+ *                   stops one step short of final_clock. The scene sees POV-Ray 3.7's clock,
+ *                   frame_number, initial_frame, final_frame, initial_clock, final_clock,
+ *                   clock_delta and clock_on. A final_frame below initial_frame, or a frame
+ *                   outside them, fails sheafSceneLoadFile with SHEAF_ERROR_INVALID_ARGUMENT
+ *   "clock"         a still's clock (POV-Ray's +K; clock_on is then 1); "" unsets it
+ *   "declare"       "NAME=NUMBER": a float declared before the scene's first line (POV-Ray's
+ *                   Declare=); appends, "" clears
  * For sheafSceneAddSubdivisionMesh:
  *   "subdivision.limit"     "1": every refined vertex moves onto the limit surface; "0" (default)
  *   "subdivision.boundary"  "edge_only" (default), "edge_and_corner" or "none" */

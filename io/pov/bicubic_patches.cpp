@@ -46,6 +46,13 @@ bool Parser::parse_bicubic_patch(const Token& kw, PovObject& o) {
             v_steps = parse_float();
         } else if (accept_kw("flatness") || accept_kw("accuracy")) {
             parse_float();
+        } else if (accept_kw("uv_vectors")) {
+            // The corners' uv coordinates: only a uv_mapping texture uses them, and that is
+            // warned where it is read.
+            for (int k = 0; k < 4; ++k) {
+                if (k > 0) accept_sym(",");
+                parse_expr();
+            }
         } else {
             break;
         }

@@ -55,6 +55,14 @@ TEST(PovBicubicPatches, FollowTheBezierSurface) {
     r = load_text(patch("type 0 u_steps 6 v_steps 4", 0.5f));
     ASSERT_EQ(r.scene.meshes.size(), 1u);
     EXPECT_EQ(r.scene.meshes[0].positions.size(), 65u * 17u);
+    // uv_vectors (the portfolio's allobjects.pov), with and without commas, change nothing.
+    r = load_text(patch("type 1 uv_vectors <0,0> <1,0> <1,1> <0,1> flatness 0", 0.75f));
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    EXPECT_NEAR(vertex_at(r.scene.meshes[0], 0.5f, 0.5f)->y, 0.75 * 9.0 / 16.0, 1e-5);
+    EXPECT_EQ(
+        load_text(patch("uv_vectors <0,0>, <2,0>, <2,2>, <0,2> type 0", 0.5f)).scene.meshes.size(),
+        1u);
 }
 
 TEST(PovBicubicPatches, ErrorsAndDegeneratePatches) {

@@ -51,6 +51,15 @@ TEST(PovDirectives, MacrosReturnValuesAndRecurse) {
               std::string::npos);
 }
 
+TEST(PovDirectives, MacroArgumentsMayGoWithoutCommas) {
+    // POV-Ray reads "off <100, 100>" as two arguments (shapes.inc's HF_Square in the portfolio's
+    // o_shapes.pov): '<' outside parentheses starts a vector, it is no comparison; inside
+    // parentheses it compares.
+    const std::string m = "#macro M(A, B, C) (A + B.x * 10 + C) #end\n";
+    EXPECT_DOUBLE_EQ(declared(m + "#declare V = M(off <100, 100> 7);", "V").v[0], 1007);
+    EXPECT_DOUBLE_EQ(declared(m + "#declare V = M((1 < 2), <3, 0>, 0);", "V").v[0], 31);
+}
+
 TEST(PovDirectives, VariablesPassedToMacrosAreReferences) {
     // As in POV-Ray, an argument that is a variable alone is the variable itself: #local and
     // #declare of the parameter change it; an expression is a value.

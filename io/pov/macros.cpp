@@ -50,9 +50,13 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
                     find_variable(t.text, scopes_.size() - 1, scope, target))
                     by_ref.push_back({args.size(), {scope, target}});
             }
+            // As in POV-Ray, '<' outside parentheses is not a comparison: "off <100, 100>"
+            // is two arguments, the comma between them left out.
+            ++no_lt_;
             args.push_back(parse_rvalue());
+            --no_lt_;
             if (accept_sym(")")) break;
-            accept_sym(","); // POV-Ray lets the comma out after an object argument
+            accept_sym(","); // POV-Ray lets the comma out between arguments
         }
     }
     if (args.size() != m.params.size())

@@ -45,6 +45,19 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
     if (accept_declared(VType::Normal, declared, "a normal")) {
         n = declared.as<PovNormal>();
         have = true;
+    } else if (const Token t = peek(); t.kind == TokKind::Ident) {
+        // A normal declared flat (its pattern unsupported, warned where it is used), alone or
+        // as an element of an array of normals (the portfolio's normal { normalArr[i] }).
+        const Value* v = lookup(t.text);
+        if (v && ((v->type == VType::Other && v->str == "normal") || v->type == VType::Array)) {
+            accept_declared_any(declared);
+            if (declared.type == VType::Normal) {
+                n = declared.as<PovNormal>();
+                have = true;
+            } else if (declared.type != VType::Other || declared.str != "normal") {
+                error_expected(t, std::string("a normal, not ") + type_name(declared.type));
+            }
+        }
     }
     int list = pattern_is_list(n.pattern.kind) ? int(n.map.size()) : 0;
     bool list_given = false; // the scene named its own list entries

@@ -518,6 +518,28 @@ TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
     EXPECT_FLOAT_EQ(r.scene.pigment_entries[onion.first + 1].color[1], 1);
 }
 
+TEST(PovTextures, NormalsComeFromArraysAndMayBeDeclaredFlat) {
+    // The portfolio's allnormals.pov: normal { normalArr[i] }, of normals whose pattern Sheaf
+    // does not have (declared flat, warned where used).
+    const PovResult r = load_text("#declare Flat = normal { pigment_pattern { agate } 1 }\n"
+                                  "#declare N = normal { ripples 0.7 }\n"
+                                  "#declare A = array[2] { Flat, N }\n"
+                                  "#declare B = array[2] { N, N }\n"
+                                  "sphere { 0, 1 pigment { rgb 1 } normal { B[1] } }\n"
+                                  "sphere { 0, 1 pigment { rgb 1 } normal { A[0] } }\n"
+                                  "sphere { 0, 1 pigment { rgb 1 } normal { A[1] } }\n");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:"), std::string::npos) << r.warnings[0];
+    EXPECT_EQ(r.scene.normal_patterns[size_t(shape_material(r, 0).normal)].pattern.kind,
+              PatternKind::Ripples);
+    EXPECT_LT(shape_material(r, 1).normal, 0);
+    EXPECT_EQ(r.scene.normal_patterns[size_t(shape_material(r, 2).normal)].pattern.kind,
+              PatternKind::Ripples);
+    EXPECT_NE(test::error_of("#declare C = array[1] { 3 }\nsphere { 0, 1 normal { C[0] } }")
+                  .find("scene.pov:2:24: error: found 'C', expected a normal, not a float"),
+              std::string::npos);
+}
+
 } // namespace
 } // namespace sheaf::io::pov
 

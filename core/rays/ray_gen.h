@@ -155,7 +155,7 @@ SHEAF_HD_INLINE void shadow_ray_write(const SceneView& scene, const SurfaceHit* 
     out.rays[slot] = r;
     out.pixel[slot] = h.pixel;
     out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h, ls.to_light,
-                                                   ls.radiance * scale);
+                                                   ls.radiance * scale, l.highlights);
     out.light[slot] = li;
 }
 

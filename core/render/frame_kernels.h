@@ -147,7 +147,7 @@ SHEAF_HD_INLINE Vec3 unshadowed_terms(const SceneView& scene, const SurfaceHit& 
         const Light& l = scene.lights[li];
         if (!l.shadowless || !lights_point(l, h, p)) continue;
         const LightSample ls = sample_light(l, h.position, p.far);
-        c += direct_light(m, h, ls.to_light, ls.radiance);
+        c += direct_light(m, h, ls.to_light, ls.radiance, l.highlights);
     }
     return h.throughput * c;
 }

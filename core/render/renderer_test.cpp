@@ -326,6 +326,18 @@ TEST(Renderer, LightTypesFollowTheirFormulas) {
     EXPECT_NEAR(centre_radiance(point, m, true).x, 0.1f, 1e-4f); // shadowed by the occluder
     point.shadowless = true;
     EXPECT_NEAR(centre_radiance(point, m, true).x, lit, 1e-4f);
+    // A light without highlights (POV-Ray's shadowless lights) gives diffuse light only: the
+    // light straight above the centre reflects straight back into the camera.
+    Material shiny = m;
+    shiny.specular = 0.5f, shiny.phong_exponent = 40, shiny.blinn = 0.3f;
+    Light above{Vec3(0, 0, 3), Vec3(1.0f)};
+    EXPECT_NEAR(centre_radiance(above, shiny).x, 0.7f + 0.5f + 0.3f, 1e-3f);
+    above.shadowless = true; // a shadowless light still has its highlights
+    EXPECT_NEAR(centre_radiance(above, shiny).x, 0.7f + 0.5f + 0.3f, 1e-3f);
+    above.highlights = false;
+    EXPECT_NEAR(centre_radiance(above, shiny).x, 0.7f, 1e-4f);
+    above.shadowless = false; // also when it casts shadows
+    EXPECT_NEAR(centre_radiance(above, shiny).x, 0.7f, 1e-4f);
 
     Material glow = m;
     glow.emission = Vec3(0.25f, 0, 0);

@@ -63,20 +63,21 @@ SHEAF_HD_INLINE Vec3 irid_factor(const Material& m, const SurfaceHit& h, Vec3 to
 
 /// Diffuse and highlights from one light arriving along unit `to_light` with `light_color`:
 /// diffuse cos^brilliance on the opaque share (less the reflected share with conserve_energy),
-/// Phong (reflection vector) and Blinn (half vector) highlights, tinted when metallic.
+/// Phong (reflection vector) and Blinn (half vector) highlights, tinted when metallic; no
+/// highlights when `highlights` is false (the light's: POV-Ray's shadowless lights give none).
 SHEAF_HD_INLINE Vec3 direct_light(const Material& m, const SurfaceHit& h, Vec3 to_light,
-                                  Vec3 light_color) {
+                                  Vec3 light_color, bool highlights = true) {
     const Vec3 n = h.normal;
     const float ndl = hdm::fmaxf(dot(n, to_light), 0.0f);
     float kd = m.diffuse * (m.brilliance == 1.0f ? ndl : hdm::powf(ndl, m.brilliance)) * opacity(h);
     if (m.conserve_energy) kd *= hdm::fmaxf(0.0f, 1.0f - max_component(mirror_weight(m, h)));
     Vec3 c = h.albedo * kd;
     float highlight = 0.0f;
-    if (m.specular > 0) {
+    if (highlights && m.specular > 0) {
         const Vec3 r = reflect(-to_light, n);
         highlight += m.specular * hdm::powf(hdm::fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
     }
-    if (m.blinn > 0) {
+    if (highlights && m.blinn > 0) {
         const Vec3 half = normalize(to_light - h.incoming);
         highlight += m.blinn * hdm::powf(hdm::fmaxf(dot(n, half), 0.0f), m.blinn_exponent);
     }

@@ -118,6 +118,7 @@ struct Light {
     float fade_distance = 0.0f;  // > 0: intensity 2 / (1 + (d / fade_distance)^fade_power)
     float fade_power = 0.0f;
     bool shadowless = false; // lights without shadow rays
+    bool highlights = true;  // false: diffuse light only (POV-Ray's shadowless lights)
 };
 
 /// Perspective and orthographic views are rasterised. The others are POV-Ray's camera types

@@ -137,8 +137,8 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
             l.light.fade_distance = float(parse_float());
         else if (k == "fade_power")
             l.light.fade_power = float(parse_float());
-        else if (k == "shadowless")
-            l.light.shadowless = true;
+        else if (k == "shadowless") // POV-Ray's fill light: no shadow and no highlight
+            l.light.shadowless = true, l.light.highlights = false;
         else if (k == "area_light") {
             l.area = true;
             l.axis1 = parse_vector();

@@ -163,6 +163,7 @@ TEST(PovLights, PointSpotParallel) {
     EXPECT_FLOAT_EQ(p.fade_distance, 4);
     EXPECT_FLOAT_EQ(p.fade_power, 2);
     EXPECT_TRUE(p.shadowless);
+    EXPECT_FALSE(p.highlights); // POV-Ray's shadowless lights give no highlight
     const Light& s = r.scene.lights[1];
     EXPECT_EQ(s.type, LightType::Spot);
     EXPECT_NEAR(s.direction.y, -1, 1e-6);

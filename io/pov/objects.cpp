@@ -27,13 +27,13 @@ const std::set<std::string>& supported_objects() {
                                             "quartic",      "poly",          "superellipsoid",
                                             "text",         "prism",         "lathe",
                                             "sor",          "blob",          "isosurface",
-                                            "height_field", "bicubic_patch", "julia_fractal"};
+                                            "height_field", "bicubic_patch", "julia_fractal",
+                                            "sphere_sweep"};
     return s;
 }
 
 const std::set<std::string>& unsupported_objects() {
-    static const std::set<std::string> s = {"sphere_sweep", "parametric", "polynomial", "ovus",
-                                            "lemon"};
+    static const std::set<std::string> s = {"parametric", "polynomial", "ovus", "lemon"};
     return s;
 }
 
@@ -122,6 +122,7 @@ bool Parser::parse_object(PovObject& o) {
     if (k == "julia_fractal") return parse_julia_fractal(kw, o);
     if (k == "height_field") return parse_height_field(kw, o);
     if (k == "bicubic_patch") return parse_bicubic_patch(kw, o);
+    if (k == "sphere_sweep") return parse_sphere_sweep(kw, o);
     if (k == "text") {
         parse_text(kw, o);
         return true;

@@ -610,3 +610,63 @@ TEST(PovObjects, BlobComponentTexturesAndErrors) {
 
 } // namespace
 } // namespace sheaf::io::pov
+
+namespace sheaf::io::pov {
+namespace {
+
+using test::error_of;
+using test::load_text;
+
+/// The nearest hit of a ray (POV-Ray coordinates) on any analytic object of `r`; -1 on a miss.
+float any_hit(const PovResult& r, Vec3 from, Vec3 dir) {
+    const PreparedScene p = prepare_scene(r.scene);
+    Ray ray;
+    ray.origin = pov_to_sheaf().point(from), ray.dir = pov_to_sheaf().vector(dir);
+    ray.tmin = 0, ray.tmax = 100;
+    float best = -1;
+    for (uint32_t o = 0; o < r.scene.shape_objects.size(); ++o) {
+        AnalyticHit h;
+        if (analytic_first_hit(p, o, ray, h) && (best < 0 || h.t < best)) best = h.t;
+    }
+    return best;
+}
+
+TEST(PovSphereSweeps, ALinearSweepIsSpheresAndTheirTangentCones) {
+    PovResult r = load_text("sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <4, 0, 0>, 1 }");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    EXPECT_NEAR(any_hit(r, {2, 5, 0}, {0, -1, 0}), 4.0f, 1e-4); // the tube's top
+    EXPECT_NEAR(any_hit(r, {-5, 0, 0}, {1, 0, 0}), 4.0f, 1e-4); // the first sphere
+    EXPECT_NEAR(any_hit(r, {9, 0, 0}, {-1, 0, 0}), 4.0f, 1e-4); // the last
+    EXPECT_LT(any_hit(r, {2, 5, 1.2f}, {0, -1, 0}), 0.0f);      // beside it
+    // Radii 2 and 1, centres 4 apart: the tangent line y = (8 - x) / sqrt(15) over x = 2.
+    r = load_text("sphere_sweep { linear_spline 2 <0, 0, 0>, 2 <4, 0, 0>, 1 tolerance 1e-4 }");
+    EXPECT_NEAR(any_hit(r, {2, 5, 0}, {0, -1, 0}), 5.0f - 6.0f / std::sqrt(15.0f), 1e-4);
+}
+
+TEST(PovSphereSweeps, SplineSweepsFollowTheirSplines) {
+    // A uniform B-spline over collinear points runs from (P0 + 4 P1 + P2) / 6 to
+    // (P1 + 4 P2 + P3) / 6: x from 1 to 2 here, so the sweep ends at x = 0.5 and 2.5.
+    const std::string line = "4, <0, 0, 0>, 0.5, <1, 0, 0>, 0.5, <2, 0, 0>, 0.5, <3, 0, 0>, 0.5 ";
+    PovResult r = load_text("sphere_sweep { b_spline " + line + "}");
+    EXPECT_NEAR(any_hit(r, {-5, 0, 0}, {1, 0, 0}), 5.5f, 1e-4);
+    EXPECT_NEAR(any_hit(r, {8, 0, 0}, {-1, 0, 0}), 5.5f, 1e-4);
+    // Catmull-Rom passes through its inner points: the top of the ball at (1, 1, 0).
+    r = load_text("sphere_sweep { cubic_spline 4, <0, 0, 0>, 0.25, <1, 1, 0>, 0.25, "
+                  "<2, 0, 0>, 0.25, <3, 1, 0>, 0.25 pigment { rgb 1 } translate x }");
+    EXPECT_NEAR(any_hit(r, {2, 5, 0}, {0, -1, 0}), 3.75f, 1e-4);
+    EXPECT_LT(any_hit(r, {0.5f, 5, 0}, {0, -1, 0}), 0.0f); // before P1: not swept
+}
+
+TEST(PovSphereSweeps, ErrorsNameTheirPlace) {
+    EXPECT_EQ(error_of("sphere_sweep { b_spline 3, <0, 0, 0>, 1, <1, 0, 0>, 1, <2, 0, 0>, 1 }"),
+              "scene.pov:1:25: error: a sphere_sweep with b_spline needs a whole number of at "
+              "least 4 spheres");
+    EXPECT_EQ(error_of("sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 0 }"),
+              "scene.pov:1:58: error: a sphere_sweep's radius must be greater than 0");
+    EXPECT_NE(error_of("sphere_sweep { 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }")
+                  .find("expected linear_spline, b_spline or cubic_spline"),
+              std::string::npos);
+}
+
+} // namespace
+} // namespace sheaf::io::pov

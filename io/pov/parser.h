@@ -236,6 +236,7 @@ class Parser {
     bool parse_height_field(const Token& kw, PovObject& o);
     /// A bicubic_patch as a smooth mesh (io/pov/bicubic_patches.cpp); false when degenerate.
     bool parse_bicubic_patch(const Token& kw, PovObject& o);
+    bool parse_sphere_sweep(const Token& kw, PovObject& o);
     /// N 2-D points <r, h> of a lathe or sor, charged to the data budget first; `where`: each
     /// point's first token, for errors about it.
     std::vector<Vec3> parse_profile_points(const Token& count_at, int n, const char* what,

@@ -24,6 +24,14 @@ bool truthy(const Value& v) {
 } // namespace
 
 bool Parser::directive(bool continuation) {
+    // A directive reads its expressions afresh: '<' and '>' there compare, whatever vector or
+    // macro argument list the directive stands in (a #while in a macro called as an argument).
+    struct Fresh {
+        int &lt, &gt;
+        const int saved_lt, saved_gt;
+        Fresh(int& l, int& g) : lt(l), gt(g), saved_lt(l), saved_gt(g) { lt = gt = 0; }
+        ~Fresh() { lt = saved_lt, gt = saved_gt; }
+    } fresh(no_lt_, no_gt_);
     Frame& f = frames_.back();
     const Token hash = f.file->tokens[f.pos];
     const Token name = f.file->tokens[f.pos + 1 < f.file->tokens.size() ? f.pos + 1 : f.pos];

@@ -58,6 +58,14 @@ TEST(PovDirectives, MacroArgumentsMayGoWithoutCommas) {
     const std::string m = "#macro M(A, B, C) (A + B.x * 10 + C) #end\n";
     EXPECT_DOUBLE_EQ(declared(m + "#declare V = M(off <100, 100> 7);", "V").v[0], 1007);
     EXPECT_DOUBLE_EQ(declared(m + "#declare V = M((1 < 2), <3, 0>, 0);", "V").v[0], 31);
+    // A directive in a macro called as an argument still compares (shapes.inc's
+    // Bevelled_Text inside Center_Object, incdemo/shapes.pov).
+    const PovResult r =
+        test::load_text("#macro Row(N) union { #local J = 0;\n"
+                        "  #while (J < N) sphere { <J, 0, 0>, 0.1 } #local J = J + 1; #end } #end\n"
+                        "#macro Moved(O, V) object { O translate V } #end\n"
+                        "object { Moved(Row(3) <0, 1, 0>) }\n");
+    EXPECT_EQ(r.scene.shape_objects.size(), 3u);
 }
 
 TEST(PovDirectives, VariablesPassedToMacrosAreReferences) {

@@ -6,9 +6,13 @@
 #include "core/settings/settings.h"
 
 #include <cmath>
+#include <cstdio>
 #include <set>
 
 namespace sheaf::io::pov {
+
+/// The narrowest camera angle read, in degrees: below it float rays fall on one direction.
+constexpr double kMinCameraAngle = 1e-4;
 
 namespace {
 
@@ -69,6 +73,15 @@ void Parser::parse_camera(PovCamera& c) {
             c.angle = parse_float();
             if (!(c.angle == 0 || camera_angle_ok(c.angle))) // 0: not given
                 error_at(at, "a camera's angle must lie between 0 and 3600 degrees");
+            // Single-precision rays no longer tell the pixels apart (animations/fractalzoom
+            // zooms to 2e-13 degrees): an error, not a picture of one colour.
+            if (c.angle > 0 && c.angle < kMinCameraAngle) {
+                char text[96];
+                std::snprintf(text, sizeof text, "a camera's angle of %g degrees is below the %g",
+                              c.angle, kMinCameraAngle);
+                error_at(at,
+                         std::string(text) + " degrees that Sheaf's single-precision rays resolve");
+            }
             if (accept_sym(",")) { // spherical: the vertical angle
                 const Token v = peek();
                 c.v_angle = parse_float();

@@ -113,6 +113,10 @@ TEST(PovCamera, BadCameraTypesAndAnglesAreErrors) {
         "scene.pov:1:30: error: a camera's vertical angle must lie between 0 and 3600 degrees");
     EXPECT_EQ(error_of("camera { fisheye angle 1e30 }"),
               "scene.pov:1:24: error: a camera's angle must lie between 0 and 3600 degrees");
+    // animations/fractalzoom's deepest frames: narrower than float rays resolve.
+    EXPECT_EQ(error_of("camera { location -z look_at 0 angle 2e-13 }"),
+              "scene.pov:1:38: error: a camera's angle of 2e-13 degrees is below the 0.0001 "
+              "degrees that Sheaf's single-precision rays resolve");
     EXPECT_EQ(error_of("camera { cylinder 1 up 0 }"),
               "scene.pov:1:10: error: this camera's right, up and direction need lengths above 0 "
               "and below 1e6");

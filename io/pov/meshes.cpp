@@ -4,6 +4,7 @@
 
 #include "core/base/error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sheaf::io::pov {
@@ -202,7 +203,108 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
 
 namespace {
 
-/// Ear clipping of one simple polygon (no repeated closing point) in 3D.
+/// The plane's axes a flat outline is measured in: u and v of the largest component of its
+/// Newell normal, and the sign that makes its area positive.
+struct FlatAxes {
+    int u = 0, v = 1;
+    float sign = 1;
+};
+
+FlatAxes flat_axes(const std::vector<Vec3>& pts) {
+    Vec3 n(0, 0, 0); // Newell's normal
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const Vec3 a = pts[i], b = pts[(i + 1) % pts.size()];
+        n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    int ax = 0;
+    if (std::fabs(n.y) > std::fabs(n[ax])) ax = 1;
+    if (std::fabs(n.z) > std::fabs(n[ax])) ax = 2;
+    return {(ax + 1) % 3, (ax + 2) % 3, n[ax] >= 0 ? 1.0f : -1.0f};
+}
+
+/// Twice the signed area of a closed outline in the axes' plane.
+double outline_area(const std::vector<Vec3>& c, const FlatAxes& f) {
+    double a = 0;
+    for (size_t i = 0; i < c.size(); ++i) {
+        const Vec3 p = c[i], q = c[(i + 1) % c.size()];
+        a += double(p[f.u]) * q[f.v] - double(q[f.u]) * p[f.v];
+    }
+    return a;
+}
+
+/// Whether point p lies inside the closed outline c (even-odd, in the axes' plane).
+bool inside_outline(Vec3 p, const std::vector<Vec3>& c, const FlatAxes& f) {
+    bool in = false;
+    for (size_t i = 0, j = c.size() - 1; i < c.size(); j = i++) {
+        const float ui = c[i][f.u], vi = c[i][f.v], uj = c[j][f.u], vj = c[j][f.v];
+        if ((vi > p[f.v]) != (vj > p[f.v]) && p[f.u] < (uj - ui) * (p[f.v] - vi) / (vj - vi) + ui)
+            in = !in;
+    }
+    return in;
+}
+
+/// Whether the open segments ab and cd cross (in the axes' plane; touching ends do not).
+bool segments_cross(Vec3 a, Vec3 b, Vec3 c, Vec3 d, const FlatAxes& f) {
+    auto orient = [&](Vec3 p, Vec3 q, Vec3 r) {
+        const double x = (double(q[f.u]) - p[f.u]) * (double(r[f.v]) - p[f.v]) -
+                         (double(q[f.v]) - p[f.v]) * (double(r[f.u]) - p[f.u]);
+        return x > 0 ? 1 : x < 0 ? -1 : 0;
+    };
+    return orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
+}
+
+/// Joins each hole to `outer` by a bridge (there and back along one edge) from the hole's
+/// vertex furthest along u to the nearest vertex it sees, so that one outline remains for ear
+/// clipping. `outer` runs with positive area, each hole with negative. False when a hole finds
+/// no vertex to join (left unjoined).
+bool bridge_holes(std::vector<Vec3>& outer, std::vector<std::vector<Vec3>> holes,
+                  const FlatAxes& f) {
+    std::sort(holes.begin(), holes.end(), [&](const auto& a, const auto& b) {
+        auto far = [&](const std::vector<Vec3>& h) {
+            float m = h[0][f.u];
+            for (const Vec3& p : h) m = std::max(m, p[f.u]);
+            return m;
+        };
+        return far(a) > far(b);
+    });
+    bool all = true;
+    for (size_t k = 0; k < holes.size(); ++k) {
+        const std::vector<Vec3>& h = holes[k];
+        size_t m = 0;
+        for (size_t i = 1; i < h.size(); ++i)
+            if (h[i][f.u] > h[m][f.u]) m = i;
+        auto blocked = [&](Vec3 a, Vec3 b) {
+            for (size_t i = 0; i < outer.size(); ++i)
+                if (segments_cross(a, b, outer[i], outer[(i + 1) % outer.size()], f)) return true;
+            for (size_t j = k; j < holes.size(); ++j)
+                for (size_t i = 0; i < holes[j].size(); ++i)
+                    if (segments_cross(a, b, holes[j][i], holes[j][(i + 1) % holes[j].size()], f))
+                        return true;
+            return false;
+        };
+        size_t best = outer.size();
+        float best_d = 0;
+        for (size_t i = 0; i < outer.size(); ++i) {
+            const Vec3 d = outer[i] - h[m];
+            const float dd = d[f.u] * d[f.u] + d[f.v] * d[f.v];
+            if ((best == outer.size() || dd < best_d) && !blocked(h[m], outer[i]))
+                best = i, best_d = dd;
+        }
+        if (best == outer.size()) {
+            all = false;
+            continue;
+        }
+        // outer[..best], hole from m round to m, outer[best..]
+        std::vector<Vec3> joined(outer.begin(), outer.begin() + long(best) + 1);
+        for (size_t i = 0; i <= h.size(); ++i) joined.push_back(h[(m + i) % h.size()]);
+        joined.insert(joined.end(), outer.begin() + long(best), outer.end());
+        outer = std::move(joined);
+    }
+    return all;
+}
+
+/// Ear clipping of one simple polygon (no repeated closing point) in 3D; a bridged outline's
+/// repeated vertices do not block its ears.
 void triangulate(const std::vector<Vec3>& pts, Mesh& m) {
     if (pts.size() < 3) return;
     Vec3 n(0, 0, 0); // Newell's normal
@@ -232,6 +334,7 @@ void triangulate(const std::vector<Vec3>& pts, Mesh& m) {
             bool inside = false;
             for (size_t j : idx) {
                 if (j == a || j == b || j == c) continue;
+                if (pts[j] == pts[a] || pts[j] == pts[b] || pts[j] == pts[c]) continue;
                 if (area(pts[a], pts[b], pts[j]) >= 0 && area(pts[b], pts[c], pts[j]) >= 0 &&
                     area(pts[c], pts[a], pts[j]) >= 0) {
                     inside = true;
@@ -266,24 +369,64 @@ void Parser::parse_polygon(const Token& kw, PovObject& o) {
         accept_sym(",");
         pts.push_back(parse_vector());
     }
-    auto mesh = std::make_shared<Mesh>();
+    // The closed outlines: each ends where it began.
+    std::vector<std::vector<Vec3>> outlines;
     std::vector<Vec3> cur;
-    int pieces = 0;
     for (const Vec3& p : pts) {
         if (!cur.empty() && cur.size() > 2 && p == cur.front()) {
-            triangulate(cur, *mesh);
+            outlines.push_back(std::move(cur));
             cur.clear();
-            ++pieces;
             continue;
         }
         cur.push_back(p);
     }
     if (cur.size() >= 3) {
         if (cur.back() == cur.front()) cur.pop_back();
-        triangulate(cur, *mesh);
-        ++pieces;
+        outlines.push_back(std::move(cur));
     }
-    if (pieces > 1) unsupported(kw, "polygon holes (each closed outline is filled on its own)");
+    auto mesh = std::make_shared<Mesh>();
+    if (outlines.size() == 1) {
+        triangulate(outlines[0], *mesh);
+    } else if (!outlines.empty()) {
+        // Even-odd, as POV-Ray fills them: an outline inside an odd number of others is a hole
+        // in the smallest of them that holds it, joined to it by a bridge before ear clipping.
+        const FlatAxes f = flat_axes(outlines[0]);
+        const size_t n_out = outlines.size();
+        // The nesting costs outlines x points, the bridges outlines x points^2: beyond these
+        // bounds (a polygon of thousands of outlines) each outline is filled on its own.
+        const double points = double(pts.size());
+        bool joined = double(n_out) * points <= 5e7 && double(n_out) * points * points <= 2e8;
+        std::vector<int> depth(n_out, 0), parent(n_out, -1);
+        for (size_t i = 0; i < n_out && joined; ++i)
+            for (size_t j = 0; j < n_out; ++j)
+                if (i != j && inside_outline(outlines[i][0], outlines[j], f)) {
+                    ++depth[i];
+                    if (parent[i] < 0 ||
+                        std::fabs(outline_area(outlines[j], f)) <
+                            std::fabs(outline_area(outlines[size_t(parent[i])], f)))
+                        parent[i] = int(j);
+                }
+        for (size_t i = 0; i < n_out && joined; ++i) {
+            if (depth[i] % 2) continue; // a hole
+            std::vector<Vec3> outer = outlines[i];
+            if (outline_area(outer, f) < 0) std::reverse(outer.begin(), outer.end());
+            std::vector<std::vector<Vec3>> holes;
+            for (size_t j = 0; j < n_out; ++j)
+                if (depth[j] % 2 && parent[j] == int(i)) {
+                    holes.push_back(outlines[j]);
+                    if (outline_area(holes.back(), f) > 0)
+                        std::reverse(holes.back().begin(), holes.back().end());
+                }
+            joined = bridge_holes(outer, holes, f);
+            triangulate(outer, *mesh);
+        }
+        if (!joined) {
+            unsupported(kw, "polygon holes that no bridge reaches, or too many outlines (each "
+                            "closed outline is filled on its own)");
+            mesh = std::make_shared<Mesh>();
+            for (const auto& c : outlines) triangulate(c, *mesh);
+        }
+    }
     if (mesh->indices.empty()) error_at(kw, "degenerate polygon");
     o.kind = PovKind::Mesh;
     o.mesh = mesh;

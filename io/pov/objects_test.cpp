@@ -210,6 +210,35 @@ TEST(PovObjects, TrianglesMeshesPolygons) {
     EXPECT_TRUE(r.warnings.empty());
 }
 
+/// The area of a mesh's triangles.
+float mesh_area(const Mesh& m) {
+    float a = 0;
+    for (size_t t = 0; t + 2 < m.indices.size(); t += 3)
+        a += 0.5f * length(cross(m.positions[m.indices[t + 1]] - m.positions[m.indices[t]],
+                                 m.positions[m.indices[t + 2]] - m.positions[m.indices[t]]));
+    return a;
+}
+
+TEST(PovObjects, PolygonsFillTheirOutlinesEvenOdd) {
+    // POV-Ray's polygon.pov: an O (a 4 x 6 frame round a 2 x 4 hole) and a P (its hole 2 x 1).
+    PovResult r = load_text("polygon { 10, <0, 0>, <0, 6>, <4, 6>, <4, 0>, <0, 0>,\n"
+                            "  <1, 1>, <1, 5>, <3, 5>, <3, 1>, <1, 1> }\n"
+                            "polygon { 12, <0, 0>, <0, 6>, <4, 6>, <4, 3>, <1, 3>, <1, 0>, <0, 0>,"
+                            "  <1, 4>, <1, 5>, <3, 5>, <3, 4>, <1, 4> }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    ASSERT_EQ(r.scene.objects.size(), 2u);
+    EXPECT_NEAR(mesh_area(r.scene.meshes[r.scene.objects[0].mesh]), 24 - 8, 1e-4);
+    EXPECT_NEAR(mesh_area(r.scene.meshes[r.scene.objects[1].mesh]), 15 - 2, 1e-4);
+    // Two holes (either way round) and an island in one of them; a square beside it all.
+    r = load_text("polygon { 25, <0, 0>, <10, 0>, <10, 10>, <0, 10>, <0, 0>,\n"
+                  "  <1, 1>, <4, 1>, <4, 4>, <1, 4>, <1, 1>,\n"
+                  "  <6, 6>, <6, 9>, <9, 9>, <9, 6>, <6, 6>,\n"
+                  "  <2, 2>, <3, 2>, <3, 3>, <2, 3>, <2, 2>,\n"
+                  "  <20, 0>, <21, 0>, <21, 1>, <20, 1>, <20, 0> }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    EXPECT_NEAR(mesh_area(r.scene.meshes[r.scene.objects[0].mesh]), 100 - 9 - 9 + 1 + 1, 1e-3);
+}
+
 TEST(PovObjects, ObjectReferences) {
     const PovResult r = load_text("#declare Ball = sphere { 0, 1 pigment { rgb x } }\n"
                                   "object { Ball translate y*2 }\n"

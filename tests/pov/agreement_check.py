@@ -44,6 +44,7 @@ SCENES = [
     ("scenes/text.pov", "exact"),
     ("scenes/turned.pov", "exact"),
     ("scenes/sweeps.pov", "exact"),
+    ("examples/objects/polygon.pov", "exact"),
     ("examples/objects/lathe2.pov", "exact"),
     ("examples/objects/blob1a.pov", "exact"),
     ("examples/objects/blob1b.pov", "exact"),

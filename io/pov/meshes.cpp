@@ -307,16 +307,9 @@ bool bridge_holes(std::vector<Vec3>& outer, std::vector<std::vector<Vec3>> holes
 /// repeated vertices do not block its ears.
 void triangulate(const std::vector<Vec3>& pts, Mesh& m) {
     if (pts.size() < 3) return;
-    Vec3 n(0, 0, 0); // Newell's normal
-    for (size_t i = 0; i < pts.size(); ++i) {
-        const Vec3 a = pts[i], b = pts[(i + 1) % pts.size()];
-        n += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-    }
-    int ax = 0;
-    if (std::fabs(n.y) > std::fabs(n[ax])) ax = 1;
-    if (std::fabs(n.z) > std::fabs(n[ax])) ax = 2;
-    const int u = (ax + 1) % 3, v = (ax + 2) % 3;
-    const float sign = n[ax] >= 0 ? 1.0f : -1.0f;
+    const FlatAxes f = flat_axes(pts);
+    const int u = f.u, v = f.v;
+    const float sign = f.sign;
     auto area = [&](Vec3 a, Vec3 b, Vec3 c) {
         return sign * ((b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]));
     };

@@ -37,7 +37,8 @@ const std::set<std::string>& unsupported_objects() {
     return s;
 }
 
-/// The affine map whose columns are c0, c1, c2 and whose translation is `o`.
+} // namespace
+
 Affine frame(Vec3 o, Vec3 c0, Vec3 c1, Vec3 c2) {
     Affine a;
     for (int i = 0; i < 3; ++i)
@@ -45,14 +46,11 @@ Affine frame(Vec3 o, Vec3 c0, Vec3 c1, Vec3 c2) {
     return a;
 }
 
-/// Unit vectors u, v with (u, v, w) right-handed and orthonormal; w must be unit length.
 void basis(Vec3 w, Vec3& u, Vec3& v) {
     const Vec3 a = std::fabs(w.x) < 0.9f ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
     u = normalize(cross(a, w));
     v = cross(w, u);
 }
-
-} // namespace
 
 bool Parser::is_object_start(const Token& t) const {
     return t.kind == TokKind::Ident &&

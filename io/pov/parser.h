@@ -60,6 +60,11 @@ struct PovFileHandle {
     std::shared_ptr<std::ofstream> out; // writing
 };
 
+/// The affine map whose columns are c0, c1, c2 and whose translation is `o` (objects.cpp).
+Affine frame(Vec3 o, Vec3 c0, Vec3 c1, Vec3 c2);
+/// Unit vectors u, v with (u, v, w) right-handed and orthonormal; w must be unit length.
+void basis(Vec3 w, Vec3& u, Vec3& v);
+
 class Parser {
   public:
     explicit Parser(const PovOptions& options);

@@ -46,13 +46,6 @@ Ball spline_point(const Ball* p, double t, bool b_spline) {
     return b;
 }
 
-/// Unit vectors u, v with (u, v, w) right-handed and orthonormal; w must be unit length.
-void sweep_basis(Vec3 w, Vec3& u, Vec3& v) {
-    const Vec3 a = std::fabs(w.x) < 0.9f ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
-    u = normalize(cross(a, w));
-    v = cross(w, u);
-}
-
 PovObject sphere_piece(const Ball& b) {
     PovObject s;
     s.kind = PovKind::Shape;
@@ -72,15 +65,12 @@ bool cone_piece(const Ball& a, const Ball& b, PovObject& out) {
     // The circles of contact: offset by r * s along the axis, of radius r * c.
     const Vec3 base = a.c + w * float(a.r * s), cap = b.c + w * float(b.r * s);
     Vec3 u, v;
-    sweep_basis(w, u, v);
+    basis(w, u, v);
     out = PovObject();
     out.kind = PovKind::Shape;
     out.shape.kind = ShapeKind::Cone;
     out.shape.a = float(a.r * c), out.shape.b = float(b.r * c);
-    const Vec3 along = cap - base;
-    for (int i = 0; i < 3; ++i)
-        out.local.m[i][0] = u[i], out.local.m[i][1] = v[i], out.local.m[i][2] = along[i],
-        out.local.m[i][3] = base[i];
+    out.local = frame(base, u, v, cap - base);
     return true;
 }
 

@@ -99,10 +99,10 @@ int run_single(const Options& o) {
     Renderer renderer(raw_renderer);
     if (int rc = apply_settings(raw_renderer, o.preset, o.settings)) return rc;
 
-    const std::vector<std::optional<int>> todo = frames(o);
-    Progress progress(Progress::wanted(o.quiet), int(todo.size()));
-    for (size_t i = 0; i < todo.size(); ++i) {
-        const std::optional<int>& f = todo[i];
+    const std::vector<std::optional<int>> frame_list = frames(o);
+    Progress progress(Progress::wanted(o.quiet), int(frame_list.size()));
+    for (size_t i = 0; i < frame_list.size(); ++i) {
+        const std::optional<int>& f = frame_list[i];
         // Each frame reads the scene again: its clock may change anything in it.
         SheafScene raw_scene = nullptr;
         if (sheafSceneNew(&raw_scene) != SHEAF_OK) return error(kRender, last_error());

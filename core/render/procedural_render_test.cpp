@@ -200,6 +200,58 @@ TEST(ProceduralRender, TransparentSurfacesFilterShadows) {
     EXPECT_NEAR((filtered.z - ambient) / (clear.z - ambient), 0.0625f, 0.01f);
 }
 
+// POV-Ray's fake caustics: each surface a shadow ray crosses multiplies the light by
+// 1 + |n.d|^caustics. Right under a clear ball (or slab) lit from straight above, both
+// crossings meet the surface head-on, so the floor gets 4 times the direct light; the gain
+// follows the shading normal a normal pattern tilts, and meshes and solids agree.
+TEST(ProceduralRender, FakeCausticsBrightenLightThroughGlass) {
+    auto floor_under_glass = [](bool slab, float caustics, bool bumpy, float transmit) {
+        Scene s;
+        Material floor, glass;
+        Pigment pg;
+        pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = transmit;
+        s.pigments.push_back(pg);
+        glass.pigment = 0;
+        glass.fresnel_split = false;
+        glass.caustics = caustics;
+        if (bumpy) {
+            Pattern bumps;
+            bumps.kind = PatternKind::Bozo;
+            bumps.to_pattern = Affine::scale(Vec3(7));
+            s.normal_patterns.push_back({bumps, 1.0f});
+            glass.normal = 0;
+        }
+        const uint32_t mf = s.add_material(floor), mg = s.add_material(glass);
+        s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+        if (slab) // off centre, so that the shadow ray misses the faces' diagonals
+            s.add_mesh_object("slab", make_box(Vec3(-1, 0.9f, -0.7f), Vec3(1.3f, 1.1f, 1)), mg);
+        else
+            s.add_shape("ball", Shape{ShapeKind::Sphere}, mg, Affine::translate(Vec3(0, 1, 0)));
+        s.add_light(Light{Vec3(0, 6, 0), Vec3(1.0f)});
+        s.camera.position = Vec3(0, 0, 6);
+        s.camera.look_at = Vec3(0, -1, 0);
+        s.settings["trace.depth"] = "0";
+        const PreparedScene p = prepare_scene(s);
+        const Frame f = render(p, {{"width", "41"}, {"height", "31"}});
+        const Frame brute = render(p, {{"width", "41"}, {"height", "31"}, {"accel", "brute"}});
+        EXPECT_TRUE(same_image(f, brute));
+        return pixel(f, 20, 15); // the look_at point, right under the glass
+    };
+    for (const bool slab : {false, true}) {
+        const float ambient = floor_under_glass(slab, 0, false, 0).x; // opaque: ambient only
+        const float clear = floor_under_glass(slab, 0, false, 1).x - ambient;
+        ASSERT_GT(clear, 0.0f);
+        EXPECT_NEAR((floor_under_glass(slab, 45, false, 1).x - ambient) / clear, 4.0f, 0.02f)
+            << (slab ? "slab" : "ball");
+        // Half the light through each surface, doubled by each: as bright as without glass.
+        EXPECT_NEAR((floor_under_glass(slab, 45, false, 0.5f).x - ambient) / clear, 1.0f, 0.01f);
+        // Bumps tilt the normal away from the ray: less gain than head-on, still some.
+        const float bumpy = (floor_under_glass(slab, 45, true, 1).x - ambient) / clear;
+        EXPECT_LT(bumpy, 3.9f) << (slab ? "slab" : "ball");
+        EXPECT_GT(bumpy, 1.0f);
+    }
+}
+
 // A transparent `inverse` sphere with a fading interior: its spans start or end at no
 // surface (everything outside the ball is inside the solid). Shadow rays crossing it fade by
 // the interior of the surface they do cross, and nothing reads the missing surface's material.

@@ -1,7 +1,8 @@
 // Shadows through transparent surfaces, as POV-Ray casts them: a shadow ray that crosses a
-// surface keeps albedo * filter + transmit of the light there (no refraction, no caustics),
-// and stops at an opaque one. The per-ray product is kept as a fixed-point sum of -log2 of
-// each factor, added atomically, so it is exactly the same whatever the order of the tests.
+// surface keeps albedo * filter + transmit of the light there (no refraction), times POV-Ray's
+// fake caustics where the material has them, and stops at an opaque one. The per-ray product
+// is kept as a fixed-point sum of -log2 of each factor, added atomically, so it is exactly the
+// same whatever the order of the tests.
 #pragma once
 
 #include "core/geometry/ray.h"
@@ -17,17 +18,31 @@ namespace sheaf {
 
 namespace shadow_detail {
 
-// albedo * filter + transmit of material `material` at world point p, where the surface's
-// normal facing the shadow ray is n.
+// POV-Ray's fake caustics: a shadow ray crossing a surface of material mt along dir, where
+// the shading normal is n, carries 1 + |n.dir|^caustics times the light (1 without them), so
+// light meeting glass head-on comes through brighter than it went in.
+SHEAF_HD_INLINE float caustic_gain(const Material& mt, Vec3 n, Vec3 dir) {
+    if (!(mt.caustics > 0)) return 1.0f;
+    return 1.0f + hdm::powf(fabsf(dot(n, dir)), mt.caustics);
+}
+
+// albedo * filter + transmit of material `material` at world point p, times its caustic gain,
+// where the surface's normal facing the shadow ray (direction dir) is n.
 SHEAF_HD_INLINE Vec3 surface_pass(const SceneView& scene, uint32_t material, Vec3 p, float s,
-                                  float t, Vec3 n) {
+                                  float t, Vec3 n, Vec3 dir) {
     const uint32_t m = resolve_material(scene, material, p, n);
     const Material& mt = scene.materials[m];
+    Vec3 pass = mt.color * mt.transmission;
     if (mt.pigment >= 0) {
         const SurfaceColor c = evaluate_pigment(scene, uint32_t(mt.pigment), p, s, t, n);
-        return c.rgb * c.filter + Vec3(c.transmit);
+        pass = c.rgb * c.filter + Vec3(c.transmit);
     }
-    return mt.color * mt.transmission;
+    if (mt.caustics > 0) {
+        // The caustics follow the normal the material's normal pattern tilts, as POV-Ray's.
+        const Vec3 shading = mt.normal >= 0 ? perturb_normal(scene, uint32_t(mt.normal), p, n) : n;
+        pass = pass * caustic_gain(mt, shading, dir);
+    }
+    return pass;
 }
 
 } // namespace shadow_detail
@@ -39,7 +54,8 @@ SHEAF_HD_INLINE Vec3 surface_pass(const SceneView& scene, uint32_t material, Vec
 SHEAF_HD_NOINLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const Ray& ray, float t) {
     if (scene.is_triangle(prim)) {
         const SurfaceHit h = make_surface_hit(scene, ray, prim, t);
-        return h.albedo * h.filter + Vec3(h.transmit);
+        return (h.albedo * h.filter + Vec3(h.transmit)) *
+               shadow_detail::caustic_gain(scene.materials[h.material], h.normal, ray.dir);
     }
     // Every boundary of the primitive's spans inside the ray is a surface it crosses.
     const uint32_t index = prim - scene.tri_count;
@@ -54,7 +70,7 @@ SHEAF_HD_NOINLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const 
             Vec3 n = normal_to_world(scene.shapes[e->leaf], e->n_local);
             if (dot(n, ray.dir) > 0) n = -n; // facing the shadow ray, as POV-Ray's
             pass = pass * shadow_detail::surface_pass(scene, scene.shape_material[e->leaf], p, p.x,
-                                                      p.y, n);
+                                                      p.y, n, ray.dir);
             if (max_component(pass) <= 0.0f) return Vec3(0.0f);
         }
         // The stretch inside the solid fades as its interior does (the entering surface's; a
@@ -67,19 +83,22 @@ SHEAF_HD_NOINLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const 
     return pass;
 }
 
-/// Fixed point for the products: -log2(factor) * 2^16; factors at or below 2^-256 count as 0.
+/// Fixed point for the products: -log2(factor) * 2^16, as a two's-complement sum (a caustic
+/// gain above 1 adds a negative term); sums at or above 256 * 2^16 (factors at or below 2^-256)
+/// count as 0.
 constexpr uint64_t kPassLogOne = 1u << 16;
 constexpr uint64_t kPassLogZero = 256 * kPassLogOne;
 
 SHEAF_HD_INLINE uint64_t pass_to_log(float pass) {
     if (!(pass > 0.0f)) return kPassLogZero;
-    if (pass >= 1.0f) return 0;
-    const double q = -hdm::log2(double(pass)) * double(kPassLogOne);
-    return q >= double(kPassLogZero) ? kPassLogZero : uint64_t(q + 0.5);
+    if (pass == 1.0f) return 0;
+    const double q = -hdm::log2(double(hdm::fminf(pass, 65536.0f))) * double(kPassLogOne);
+    return q >= double(kPassLogZero) ? kPassLogZero : uint64_t(int64_t(q < 0 ? q - 0.5 : q + 0.5));
 }
 
 SHEAF_HD_INLINE float log_to_pass(uint64_t q) {
-    return q >= kPassLogZero ? 0.0f : float(hdm::exp2(-double(q) / double(kPassLogOne)));
+    const int64_t s = int64_t(q);
+    return s >= int64_t(kPassLogZero) ? 0.0f : float(hdm::exp2(-double(s) / double(kPassLogOne)));
 }
 
 /// The light a shadow ray keeps per channel from its three fixed-point log sums.

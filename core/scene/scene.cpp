@@ -280,6 +280,9 @@ void Scene::validate() const {
                              " has a colour that is not finite or an ior <= 0");
     for (size_t m = 0; m < materials.size(); ++m) {
         const Material& mt = materials[m];
+        if (!(mt.caustics >= 0) || !std::isfinite(mt.caustics))
+            throw SceneError("material " + std::to_string(m) +
+                             " has caustics that are not finite or < 0");
         if (mt.irid != 0 &&
             (!std::isfinite(mt.irid) || !std::isfinite(mt.irid_thickness) ||
              !std::isfinite(mt.irid_turbulence) || !is_finite(mt.irid_wavelength) ||

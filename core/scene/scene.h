@@ -58,6 +58,10 @@ struct Material {
     Vec3 fade_color{0.0f, 0.0f, 0.0f}; // light inside fades to this colour:
     float fade_distance = 0.0f, fade_power = 0.0f; //   1 / (1 + (d / fade_distance)^fade_power)
     uint32_t media_first = 0, media_count = 0;     // the media inside: Scene::media
+    // POV-Ray's fake caustics (interior { caustics c }, here 45 c): light a shadow ray carries
+    // across this surface is scaled by 1 + |n.d|^caustics, n the shading normal and d the
+    // ray's direction, so curved or bumpy glass casts bright spots; 0: none.
+    float caustics = 0.0f;
     // Iridescence (POV-Ray's irid): light from each light and from the mirror is scaled per
     // channel by 1 + irid cos(2 pi thickness (|n.l| + |n.v|) / wavelength), the thickness
     // varied by `irid_turbulence` times noise (core/render/shade.h).

@@ -43,6 +43,7 @@ std::string key_of(const Material& m) {
                         &m.fade_color.z,
                         &m.fade_distance,
                         &m.fade_power,
+                        &m.caustics,
                         &m.irid,
                         &m.irid_thickness,
                         &m.irid_turbulence,
@@ -269,6 +270,8 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         m.ior = float(in->ior > 0 ? in->ior : 1.0);
         m.fade_distance = float(std::max(in->fade_distance, 0.0));
         m.fade_power = float(std::max(in->fade_power, 0.0));
+        // POV-Ray keeps 45 times the value written as the exponent of the caustic gain.
+        m.caustics = float(std::max(in->caustics, 0.0) * 45.0);
         m.fade_color =
             Vec3(float(in->fade_color[0]), float(in->fade_color[1]), float(in->fade_color[2]));
         m.media_first = uint32_t(scene_.media.size());

@@ -145,9 +145,10 @@ struct PovMedia {
     Affine local;     // the medium's own transforms, applied to its densities
 };
 
-/// interior { ior fade_distance fade_power fade_color media }.
+/// interior { ior caustics fade_distance fade_power fade_color media }.
 struct PovInterior {
     double ior = 0; // 0: not set (1)
+    double caustics = 0; // POV-Ray's fake caustics, as written (Material::caustics is 45 times)
     double fade_distance = 0, fade_power = 0;
     std::array<double, 3> fade_color{0, 0, 0};
     std::vector<PovMedia> media;

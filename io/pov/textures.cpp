@@ -367,12 +367,12 @@ PovInterior Parser::parse_interior(const PovInterior& base) {
         } else if (accept_kw("fade_color") || accept_kw("fade_colour")) {
             const Color5 c = parse_color();
             in.fade_color = {c[0], c[1], c[2]};
-        } else if (accept_kw("caustics") || accept_kw("dispersion")) {
-            // POV-Ray's fake caustics brighten shadows behind curved glass; dispersion splits
-            // refracted light by wavelength. Neither is rendered: warned where they would show.
-            const double v = parse_float();
-            if (t.text == "caustics" ? v != 0 : v != 1)
-                unsupported(t, "interior " + t.text + " (ignored)");
+        } else if (accept_kw("caustics")) {
+            in.caustics = parse_float();
+        } else if (accept_kw("dispersion")) {
+            // Dispersion splits refracted light by wavelength; not rendered, so warned where
+            // it would show.
+            if (parse_float() != 1) unsupported(t, "interior dispersion (ignored)");
         } else if (accept_kw("dispersion_samples")) {
             parse_float();
         } else if (accept_kw("media")) {

@@ -54,6 +54,7 @@ const MaterialField kMaterialFields[] = {
     colour("fade_color", &Material::fade_color),
     number("fade_distance", &Material::fade_distance),
     number("fade_power", &Material::fade_power),
+    number("caustics", &Material::caustics),
     number("irid", &Material::irid),
     number("irid_thickness", &Material::irid_thickness),
     number("irid_turbulence", &Material::irid_turbulence),

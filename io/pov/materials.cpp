@@ -79,6 +79,35 @@ const PovFinish& layer_finish(const PovTexture& t) {
     return t.below.front()->finish;
 }
 
+// The highlights of a layered texture. POV-Ray adds every layer's phong and specular, weighed
+// not by that layer's own opacity (a clear varnish layer shines in full) but by what the
+// layers above it let through. Sheaf adds the strengths so weighed, with the size of the
+// top-most layer that has each.
+struct Highlights {
+    double phong = 0, phong_size = 40, specular = 0, roughness = 0.05;
+};
+
+Highlights layer_highlights(const PovTexture& t) {
+    Highlights h;
+    bool phong_sized = false, specular_sized = false;
+    double above = 1; // the share the layers above let through
+    auto add = [&](const PovTexture& l) {
+        const PovFinish& f = l.finish;
+        if (f.phong > 0) {
+            h.phong += f.phong * above;
+            if (!phong_sized) h.phong_size = f.phong_size, phong_sized = true;
+        }
+        if (f.specular > 0) {
+            h.specular += f.specular * above;
+            if (!specular_sized) h.roughness = f.roughness, specular_sized = true;
+        }
+        above *= std::clamp(mean_pass(l.pigment.get()), 0.0, 1.0);
+    };
+    add(t);
+    for (auto it = t.below.rbegin(); it != t.below.rend() && above > 0; ++it) add(**it);
+    return h;
+}
+
 } // namespace
 
 Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
@@ -238,13 +267,15 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
     if (p_.model.radiosity && p_.model.version >= 3.695) m.ambient = 0;
     m.diffuse = float(f.diffuse);
     m.brilliance = float(f.brilliance);
-    if (f.phong > 0) {
-        m.specular = float(f.phong);
-        m.phong_exponent = float(std::max(1.0, f.phong_size));
+    Highlights h{f.phong, f.phong_size, f.specular, f.roughness};
+    if (!t.below.empty()) h = layer_highlights(t);
+    if (h.phong > 0) {
+        m.specular = float(h.phong);
+        m.phong_exponent = float(std::max(1.0, h.phong_size));
     }
-    if (f.specular > 0) {
-        m.blinn = float(f.specular);
-        m.blinn_exponent = float(std::clamp(1.0 / std::max(f.roughness, 1e-4), 1.0, 10000.0));
+    if (h.specular > 0) {
+        m.blinn = float(h.specular);
+        m.blinn_exponent = float(std::clamp(1.0 / std::max(h.roughness, 1e-4), 1.0, 10000.0));
     }
     m.metallic = float(std::clamp(f.metallic, 0.0, 1.0));
     const double rmax = max3(f.reflection);

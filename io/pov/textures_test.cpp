@@ -175,6 +175,29 @@ TEST(PovTextures, LayersTextureMapsAndNormals) {
     EXPECT_NO_THROW(r.scene.validate());
 }
 
+// A layered texture shines as POV-Ray's: each layer's phong and specular count in full,
+// weighed only by what the layers above let through, with the size of the top-most one.
+// The rest of the finish is the top-most mostly opaque layer's.
+TEST(PovTextures, LayersAddTheirHighlights) {
+    const PovResult r = load_text(
+        "sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.9 } }\n"
+        "  texture { pigment { rgbf <1, 1, 1, 0.8> } finish { phong 1 phong_size 90 } } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } finish { specular 0.4 roughness 0.01 } }\n"
+        "  texture { pigment { rgbt <1, 1, 1, 0.5> } finish { specular 0.2 roughness 0.1 } } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 1 } }\n"
+        "  texture { pigment { rgb 0.5 } } }\n");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    const Material& varnish = shape_material(r, 0);
+    EXPECT_FLOAT_EQ(varnish.diffuse, 0.9f); // the opaque bottom layer's
+    EXPECT_FLOAT_EQ(varnish.specular, 1);   // the clear top layer's phong, in full
+    EXPECT_FLOAT_EQ(varnish.phong_exponent, 90);
+    const Material& both = shape_material(r, 1);
+    EXPECT_FLOAT_EQ(both.blinn, 0.2f + 0.4f * 0.5f); // the lower one seen through half
+    EXPECT_FLOAT_EQ(both.blinn_exponent, 10);        // 1 / the top one's roughness
+    // Under an opaque layer, a layer's highlight does not show.
+    EXPECT_FLOAT_EQ(shape_material(r, 2).specular, 0);
+}
+
 // POV-Ray 3.7's slope pattern: the old form and the block with ranges, altitude and
 // point_at; the direction turns into Sheaf's world (z mirrored), the altitude stays in
 // pattern space; a zero range warns; nothing to measure is an error at the keyword.

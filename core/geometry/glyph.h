@@ -1,13 +1,18 @@
 // An extruded outline (one character of POV-Ray's text object, or a prism): the region of the
 // x-y plane that closed contours of quadratic Bézier segments enclose, by the nonzero winding
 // rule (as TrueType fills) or the even-odd rule (as POV-Ray fills a prism), swept from z = 0 to
-// z = 1; open, only its sides (a prism's `open`). Exact: a ray's line in the plane meets each
+// z = 1; open, only its sides (a prism's `open`). A conic glyph (a prism's `conic_sweep`) is
+// the outline scaled by w(z) = base + (1 - base) z at height z: a frustum of the cone from the
+// origin through the outline at w = 1. Exact: a ray's line in the plane meets each
 // segment where a quadratic in the segment's parameter vanishes, and the winding number along
 // the line changes by one at each such crossing, so the pieces of the line inside the region
 // are where the running sum is not zero; those pieces, cut to the slab 0 <= z <= 1, are the
 // spans. Each segment's crossings are counted by the signs of its end points (a point on the
 // line counts as on its positive side), so segments that share an end point never count a
-// crossing twice or miss one, whatever the ray.
+// crossing twice or miss one, whatever the ray. A conic glyph is
+// straightened first: (x, y, z) -> (x / w, y / w) maps the ray's piece between the caps onto a
+// line in the outline's plane (a central projection keeps lines straight), whose crossings go
+// back to the ray by the projection's rational map of the parameter.
 #pragma once
 
 #include "core/geometry/ray.h"
@@ -173,25 +178,126 @@ SHEAF_HD_INLINE bool clip_slab(double o, double d, double lo_b, double hi_b, dou
 
 } // namespace glyph_detail
 
+namespace glyph_detail {
+
+/// The pieces of a conic glyph (see glyph_pieces) inside the ray's stretch [z0, z1] between
+/// its caps: the stretch straightened into the outline's plane, its crossings there mapped back.
+SHEAF_HD_INLINE int conic_pieces(const GlyphSegment* s, uint32_t count, uint32_t even_odd,
+                                 double base, bool open, const Ray& r, double z0, double z1,
+                                 Vec3 zn0, Vec3 zn1, double* t0, double* t1, Vec3* n0, Vec3* n1,
+                                 int max) {
+    const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
+    const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
+    const double slope = 1 - base;
+    const Vec3 dir{float(dx), float(dy), float(dz)};
+    Crossing xs[kMaxGlyphCrossings];
+    // The line in the outline's plane, a + s (b - a), and the ray's t at its parameter s.
+    double ax, ay, bx, by, wa, wb;
+    const bool level = fabs(dz) < 1e-30; // at one height: the line is the ray's, scaled
+    if (level) {
+        wa = wb = base + slope * oz;
+        ax = ox / wa, ay = oy / wa, bx = ax + dx / wa, by = ay + dy / wa;
+    } else {
+        wa = base + slope * (oz + z0 * dz), wb = base + slope * (oz + z1 * dz);
+        ax = (ox + z0 * dx) / wa, ay = (oy + z0 * dy) / wa;
+        bx = (ox + z1 * dx) / wb, by = (oy + z1 * dy) / wb;
+    }
+    auto t_at = [&](double u) {
+        return level ? u : z0 + (z1 - z0) * (u * wa / (wb * (1 - u) + u * wa));
+    };
+    // The side's normal where the line crosses the outline at parameter u with the outline's
+    // normal (nx, ny): the cone's, (nx, ny, -(1 - base) (nx qx + ny qy)) at the outline point q.
+    auto side_normal = [&](const Crossing& c, double u) {
+        const double qx = ax + u * (bx - ax), qy = ay + u * (by - ay);
+        return normalize(Vec3(c.nx, c.ny, float(-slope * (c.nx * qx + c.ny * qy))));
+    };
+    const double ex = bx - ax, ey = by - ay;
+    if (ex * ex + ey * ey <= 1e-24 * (ax * ax + ay * ay + 1)) { // through the apex's line
+        if (open || level || max < 1 || !contains(s, count, even_odd, ax, ay, xs)) return 0;
+        t0[0] = z0, t1[0] = z1, n0[0] = zn0, n1[0] = zn1;
+        return 1;
+    }
+    const double u_lo = level ? z0 : 0, u_hi = level ? z1 : 1; // the caps along the line
+    const int nx = crossings(s, count, ax, ay, ex, ey, xs);
+    int n = 0, w = 0;
+    if (open) {
+        for (int i = 0; i < nx && n < max; ++i) {
+            if (xs[i].t < u_lo || xs[i].t > u_hi) continue;
+            Vec3 nn = side_normal(xs[i], xs[i].t);
+            if (dot(nn, dir) > 0) nn = -nn;
+            t0[n] = t1[n] = t_at(xs[i].t), n0[n] = n1[n] = nn;
+            ++n;
+        }
+        return n;
+    }
+    const int mask = even_odd ? 1 : -1;
+    double enter = 0;
+    Vec3 enter_n;
+    for (int i = 0; i < nx && n < max; ++i) {
+        const int before = w;
+        w += xs[i].delta;
+        if ((before & mask) == 0 && (w & mask) != 0) {
+            enter = xs[i].t;
+            enter_n = side_normal(xs[i], enter);
+            if (dot(enter_n, dir) > 0) enter_n = -enter_n;
+        } else if ((before & mask) != 0 && (w & mask) == 0) {
+            const double a = enter > u_lo ? enter : u_lo, b = xs[i].t < u_hi ? xs[i].t : u_hi;
+            if (a <= b) {
+                Vec3 leave_n = side_normal(xs[i], xs[i].t);
+                if (dot(leave_n, dir) < 0) leave_n = -leave_n;
+                t0[n] = t_at(a), t1[n] = t_at(b);
+                n0[n] = enter > u_lo ? enter_n : zn0;
+                n1[n] = xs[i].t < u_hi ? leave_n : zn1;
+                ++n;
+            }
+        }
+    }
+    return n;
+}
+
+} // namespace glyph_detail
+
 /// The pieces of the local ray inside the extruded glyph, sorted, at most `max`: piece i is
 /// [t0[i], t1[i]] with outward normals n0[i], n1[i] at its ends. `open`: the sides only, each
-/// crossing inside the slab a piece of zero length facing the ray. Out of line on the device,
-/// so that CSG's per-level frame does not carry the crossing list.
+/// crossing inside the slab a piece of zero length facing the ray. `base` >= 0: a conic glyph,
+/// the outline scaled by base + (1 - base) z at height z (base in [0, 1]); < 0: a straight
+/// one. Out of line on the device, so that CSG's per-level frame does not carry the crossing
+/// list.
 SHEAF_HD_NOINLINE int glyph_pieces(const GlyphRef& g, const GlyphSegment* segs, bool open,
                                    const Ray& r, double* t0, double* t1, Vec3* n0, Vec3* n1,
-                                   int max) {
+                                   int max, double base = -1) {
     using namespace glyph_detail;
     const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
     const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
     double z0, z1; // the slab 0 <= z <= 1 and its caps' normals
     Vec3 zn0, zn1;
     if (!unit_slab(oz, dz, z0, z1, zn0, zn1)) return 0;
-    // Nothing of the glyph's box along the ray: no crossing to look for.
+    // Nothing of the glyph's box along the ray: no crossing to look for. A conic glyph's
+    // outline shrinks towards the origin below z = 1: its box reaches from base times the
+    // outline's box to the box.
     double lo = z0, hi = z1;
-    if (!clip_slab(ox, dx, g.lo_x, g.hi_x, lo, hi) || !clip_slab(oy, dy, g.lo_y, g.hi_y, lo, hi))
-        return 0;
-    const Vec3 side_dir(float(dx), float(dy), 0);
+    const double k = base < 0 ? 1 : base;
+    const double lo_x = g.lo_x < k * g.lo_x ? g.lo_x : k * g.lo_x;
+    const double lo_y = g.lo_y < k * g.lo_y ? g.lo_y : k * g.lo_y;
+    const double hi_x = g.hi_x > k * g.hi_x ? g.hi_x : k * g.hi_x;
+    const double hi_y = g.hi_y > k * g.hi_y ? g.hi_y : k * g.hi_y;
+    if (!clip_slab(ox, dx, lo_x, hi_x, lo, hi) || !clip_slab(oy, dy, lo_y, hi_y, lo, hi)) return 0;
     const GlyphSegment* s = segs + g.first;
+    if (base >= 0) {
+        // Where the outline shrinks to a point (base 0, the apex) the cap is no surface: the
+        // stretch stops just above it, where the projection is still defined.
+        if (base < 1e-6) {
+            const double z_apex = (1e-6 - base) / (1 - base);
+            if (fabs(dz) < 1e-30) {
+                if (oz < z_apex) return 0;
+            } else if (!clip_slab(oz, dz, z_apex, 1, z0, z1)) {
+                return 0;
+            }
+        }
+        return conic_pieces(s, g.count, g.even_odd, base, open, r, z0, z1, zn0, zn1, t0, t1, n0, n1,
+                            max);
+    }
+    const Vec3 side_dir(float(dx), float(dy), 0);
     const double len2 = dx * dx + dy * dy;
     Crossing xs[kMaxGlyphCrossings];
     if (len2 <= 1e-24 * dz * dz) { // along z: in or out all the way through

@@ -243,6 +243,68 @@ TEST(Glyph, OpenShowsOnlyTheSides) {
     EXPECT_NEAR(sp[0].t0, 0.5f * std::sqrt(2.0f), 1e-5f);
 }
 
+// A conic glyph (a prism's conic_sweep) is its outline scaled by base + (1 - base) z at height
+// z: a square around the origin with base 0 is a pyramid (apex at the origin), with base 0.5 a
+// frustum; an outline off the origin leans out as it rises. Random rays against the textbook
+// test (scale the point back, then ask the winding number), and the pyramid's face normals.
+TEST(Glyph, ConicGlyphsAreFrustaOfTheConeThroughTheirOutline) {
+    Glyphs g;
+    g.polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+    const uint32_t sq = g.finish(true);
+    g.polygon({{0.5f, 0.2f}, {1.5f, 0.2f}, {1.5f, 1.2f}, {0.5f, 1.2f}});
+    g.circle(1, 0.7f, 0.3f, 8, false); // a round hole
+    const uint32_t off = g.finish(true);
+    for (const float base : {0.0f, 0.5f}) {
+        for (const uint32_t glyph : {sq, off}) {
+            Shape s = glyph_shape(glyph);
+            s.a = base, s.b = 1;
+            std::mt19937 rng(11 + glyph);
+            int checked = 0;
+            for (int i = 0; i < 400; ++i) {
+                const Vec3 target(std::uniform_real_distribution<float>(-1.6f, 1.6f)(rng),
+                                  std::uniform_real_distribution<float>(-1.6f, 1.6f)(rng),
+                                  std::uniform_real_distribution<float>(-0.2f, 1.2f)(rng));
+                const Vec3 d = test::random_unit(rng);
+                const Ray l = ray_from(target - d * 5.0f, d);
+                Span sp[kMaxShapeSpans];
+                const int n = shape_spans(s, l, sp, g.tables());
+                const int got = test::check_spans(
+                    sp, n, l,
+                    [&](Vec3 p) {
+                        const double w = base + (1 - base) * double(p.z);
+                        if (!(p.z >= 0 && p.z <= 1) || w <= 0) return false;
+                        return (g.winding(glyph, p.x / w, p.y / w) & 1) != 0;
+                    },
+                    10, "ray " + std::to_string(i));
+                ASSERT_GE(got, 0) << "base " << base << " glyph " << glyph;
+                checked += got;
+            }
+            EXPECT_GT(checked, 400 * 40);
+        }
+    }
+    // Through the pyramid's side faces (x = z and x = -z) at height 0.5, then down its axis.
+    Shape pyramid = glyph_shape(sq);
+    pyramid.b = 1;
+    Span sp[kMaxShapeSpans];
+    ASSERT_EQ(shape_spans(pyramid, ray_from({-2, 0, 0.5f}, {1, 0, 0}), sp, g.tables()), 1);
+    EXPECT_NEAR(sp[0].t0, 1.5f, 1e-5f);
+    EXPECT_NEAR(sp[0].t1, 2.5f, 1e-5f);
+    const float h = float(1 / std::sqrt(2.0));
+    EXPECT_NEAR(normalize(sp[0].n0).x, -h, 1e-5f);
+    EXPECT_NEAR(normalize(sp[0].n0).z, -h, 1e-5f);
+    EXPECT_NEAR(normalize(sp[0].n1).x, h, 1e-5f);
+    EXPECT_NEAR(normalize(sp[0].n1).z, -h, 1e-5f);
+    ASSERT_EQ(shape_spans(pyramid, ray_from({0.2f, 0.1f, 3}, {0, 0, -1}), sp, g.tables()), 1);
+    EXPECT_NEAR(sp[0].t0, 2, 1e-5f);    // the top cap
+    EXPECT_NEAR(sp[0].t1, 2.8f, 1e-5f); // out through the face x = z
+    EXPECT_GT(normalize(sp[0].n1).x, 0.7f);
+    // Open: the faces only, each facing the ray.
+    pyramid.open = true;
+    ASSERT_EQ(shape_spans(pyramid, ray_from({-2, 0, 0.5f}, {1, 0, 0}), sp, g.tables()), 2);
+    EXPECT_NEAR(sp[1].t0, 2.5f, 1e-5f);
+    EXPECT_LT(dot(sp[1].n0, Vec3(1, 0, 0)), 0);
+}
+
 TEST(Glyph, CubicsBecomeCloseQuadratics) {
     // A wiggly cubic (its third difference 7.4 against a size of about 1.4): the distance from
     // each quadratic piece to the cubic falls with the cube of the number of pieces.

@@ -18,7 +18,8 @@
 //             its parameters: Shape::index names them
 //   glyph     an outline in the x-y plane (a character, a prism's splines) swept from z = 0 to
 //             z = 1 (core/geometry/glyph.h); the scene keeps the outlines: Shape::index names
-//             one; open: its sides only (a surface)
+//             one; open: its sides only (a surface); b > 0: conic, the outline scaled by
+//             a + (1 - a) z at height z (a in [0, 1]; a prism's conic_sweep)
 #pragma once
 
 #include "core/geometry/blob.h"
@@ -56,7 +57,7 @@ enum class ShapeKind : uint32_t {
 struct Shape {
     ShapeKind kind = ShapeKind::Sphere;
     float a = 0, b = 0; // cone: r0, r1; disc: hole radius; torus: minor radius;
-                        // superellipsoid: e, n
+                        // superellipsoid: e, n; glyph: b > 0 conic with base scale a
     bool open = false;  // cylinder, cone and glyph without caps; a revolution's surface only
     uint32_t index = 0; // poly: its coefficients in the scene's polys; glyph: its outline in
                         // the scene's glyphs; revolution: its profile in the scene's
@@ -238,11 +239,12 @@ SHEAF_HD_NOINLINE int superellipsoid_spans(const Shape& s, const Ray& r, Span* o
 
 // Out of line on the device, like poly_spans: its arrays would otherwise grow every level of
 // csg_spans' recursion (by 160 bytes on sm_90).
-SHEAF_HD_NOINLINE int glyph_spans(const GlyphRef& g, const GlyphSegment* segs, bool open,
-                                const Ray& r, Span* out) {
+SHEAF_HD_NOINLINE int glyph_spans(const GlyphRef& g, const GlyphSegment* segs, const Shape& s,
+                                  const Ray& r, Span* out) {
     double t0[kMaxShapeSpans], t1[kMaxShapeSpans];
     Vec3 n0[kMaxShapeSpans], n1[kMaxShapeSpans];
-    const int count = glyph_pieces(g, segs, open, r, t0, t1, n0, n1, kMaxShapeSpans);
+    const int count = glyph_pieces(g, segs, s.open, r, t0, t1, n0, n1, kMaxShapeSpans,
+                                   s.b > 0 ? double(s.a) : -1.0);
     for (int i = 0; i < count; ++i) out[i] = Span{float(t0[i]), float(t1[i]), n0[i], n1[i]};
     return count;
 }
@@ -398,9 +400,8 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
     case ShapeKind::Superellipsoid:
         return superellipsoid_spans(s, r, out);
     case ShapeKind::Glyph:
-        return tables.glyphs
-                   ? glyph_spans(tables.glyphs[s.index], tables.glyph_segments, s.open, r, out)
-                   : 0;
+        return tables.glyphs ? glyph_spans(tables.glyphs[s.index], tables.glyph_segments, s, r, out)
+                             : 0;
     case ShapeKind::Revolution:
         return tables.revolutions ? revolution_spans(tables.revolutions[s.index],
                                                      tables.revolution_segments, s.open, r, out)

@@ -36,9 +36,11 @@ Sphere local_bound(const PreparedScene& scene, const Shape& s) {
         return {Vec3(0.0f), INFINITY};
     case ShapeKind::Superellipsoid:
         return {Vec3(0.0f), std::sqrt(3.0f)};
-    case ShapeKind::Glyph: { // around its box, z from 0 to 1
+    case ShapeKind::Glyph: { // around its box, z from 0 to 1 (a conic one's box down to base a)
         const GlyphRef& g = scene.glyphs[s.index];
-        const Vec3 lo(g.lo_x, g.lo_y, 0), hi(g.hi_x, g.hi_y, 1);
+        const float k = s.b > 0 ? s.a : 1.0f;
+        const Vec3 lo(std::min(g.lo_x, k * g.lo_x), std::min(g.lo_y, k * g.lo_y), 0);
+        const Vec3 hi(std::max(g.hi_x, k * g.hi_x), std::max(g.hi_y, k * g.hi_y), 1);
         return {(lo + hi) * 0.5f, length(hi - lo) * 0.5f};
     }
     case ShapeKind::Revolution: { // around its cylinder

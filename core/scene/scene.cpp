@@ -149,6 +149,8 @@ void Scene::validate() const {
                         for (float v : {g.x0, g.y0, g.x1, g.y1, g.x2, g.y2})
                             if (!std::isfinite(v))
                                 throw SceneError(name + ": a glyph's outline is not finite");
+                    if (s.b > 0 && !(s.a >= 0 && s.a <= 1))
+                        throw SceneError(name + ": a conic glyph's base scale is not in [0, 1]");
                 }
                 if (s.kind == ShapeKind::Revolution) {
                     if (!node.revolution)

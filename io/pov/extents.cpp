@@ -55,13 +55,16 @@ Box shape_box(const PovObject& o) {
     case ShapeKind::Plane:
     case ShapeKind::Poly:
         return unbounded();
-    case ShapeKind::Glyph: { // its outline's control points, z from 0 to 1
+    case ShapeKind::Glyph: { // its outline's control points, z from 0 to 1 (a conic one's
+                             // also at its base scale)
         Vec3 lo(kHuge), hi(-kHuge);
+        const float k = s.b > 0 ? s.a : 1.0f;
         if (o.glyph)
             for (const GlyphSegment& g : o.glyph->segments)
                 for (int i = 0; i < 3; ++i) {
                     const float* p = &g.x0 + 2 * i;
-                    lo = vmin(lo, Vec3(p[0], p[1], 0)), hi = vmax(hi, Vec3(p[0], p[1], 1));
+                    lo = vmin(lo, Vec3(std::min(p[0], k * p[0]), std::min(p[1], k * p[1]), 0));
+                    hi = vmax(hi, Vec3(std::max(p[0], k * p[0]), std::max(p[1], k * p[1]), 1));
                 }
         return lo.x <= hi.x ? transformed(o.local, lo, hi) : Box();
     }

@@ -483,13 +483,38 @@ TEST(PovObjects, PrismErrorsAndConicSweep) {
     EXPECT_EQ(error_of("prism { 0, 1, 4, <0, 0>, 1, <1, 1>, <0, 0> }"),
               "scene.pov:1:26: error: found '1', expected the prism's point 2 of 4 (a 2-D "
               "vector <u, v>)");
-    const PovResult r =
-        load_text("prism { conic_sweep 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }\nsphere { 0, 1 }");
+    // Heights on both sides of 0 would be two cones meeting at the apex: left out, warned.
+    const PovResult r = load_text(
+        "prism { conic_sweep -1, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }\nsphere { 0, 1 }");
     ASSERT_EQ(r.warnings.size(), 1u);
-    EXPECT_NE(r.warnings[0].find("scene.pov:1:1: warning: unsupported prism with conic_sweep"),
+    EXPECT_NE(r.warnings[0].find("scene.pov:1:1: warning: unsupported prism with conic_sweep "
+                                 "from below to above height 0"),
               std::string::npos)
         << r.warnings[0];
     EXPECT_EQ(r.scene.shape_objects.size(), 1u);
+}
+
+// conic_sweep: POV-Ray's point (x, y, z) is inside where (x / y, z / y) is in the outline and
+// y is between the heights; below 0 the outline turns through the apex.
+TEST(PovObjects, ConicPrismsScaleTheirOutlineByTheHeight) {
+    const PovResult square =
+        load_text("prism { conic_sweep 0.5, 2, 5, <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> }");
+    ASSERT_TRUE(square.warnings.empty()) << square.warnings[0];
+    // At height 1.5 the square reaches x = +-1.5 (POV-Ray's coordinates), z = +-1.5.
+    EXPECT_NEAR(first_hit(square, {-10, 1.5f, 0}, {1, 0, 0}), 8.5f, 1e-4f);
+    EXPECT_NEAR(first_hit(square, {10, 1.5f, 0.3f}, {-1, 0, 0}), 8.5f, 1e-4f);
+    EXPECT_NEAR(first_hit(square, {0.2f, 1.5f, -10}, {0, 0, 1}), 8.5f, 1e-4f);
+    EXPECT_LT(first_hit(square, {-10, 0.4f, 0}, {1, 0, 0}), 0);         // below the lower height
+    EXPECT_NEAR(first_hit(square, {0.1f, 5, 0}, {0, -1, 0}), 3, 1e-4f); // the top cap
+    EXPECT_LT(first_hit(square, {-10, 1.9f, 1.95f}, {1, 0, 0}), 0);     // past z = 1.9
+    // Below 0 the outline is turned through the apex: the triangle (0, 0) (1, 0) (0, 1) at
+    // height -1.5 reaches from x = -1.5 to 0 along z = -0.01.
+    const PovResult turned =
+        load_text("prism { conic_sweep -2, -1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }");
+    ASSERT_TRUE(turned.warnings.empty()) << turned.warnings[0];
+    EXPECT_NEAR(first_hit(turned, {-10, -1.5f, -0.01f}, {1, 0, 0}), 8.5f, 0.02f);
+    EXPECT_NEAR(first_hit(turned, {10, -1.5f, -0.01f}, {-1, 0, 0}), 10, 0.02f);
+    EXPECT_LT(first_hit(turned, {-10, -1.5f, 0.01f}, {1, 0, 0}), 0);
 }
 
 TEST(PovObjects, LatheTurnsItsSplinesAboutY) {

@@ -5,8 +5,10 @@
 // linear_spline runs through the points, each contour closed when a point repeats its first;
 // quadratic_spline (exact as quadratic Béziers) and cubic_spline (Catmull-Rom, 16 quadratics a
 // segment) run from the second point of each group, the first and last only steering it;
-// bezier_spline takes the points four at a time (16 quadratics a segment). conic_sweep is
-// warned and left out.
+// bezier_spline takes the points four at a time (16 quadratics a segment). conic_sweep scales
+// the outline by the height (the point (x, y, z) is inside where (x / y, z / y) is), as a
+// conic glyph; heights on both sides of 0 (two cones meeting at the apex) are warned and left
+// out.
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
@@ -57,11 +59,6 @@ bool Parser::parse_prism(const Token& kw, PovObject& o) {
             break;
         }
         next();
-    }
-    if (conic) {
-        unsupported(kw, "prism with conic_sweep (left out)");
-        skip_rest_of_block();
-        return false;
     }
     double h1 = parse_float();
     accept_sym(",");
@@ -160,6 +157,24 @@ bool Parser::parse_prism(const Token& kw, PovObject& o) {
     if (s.empty() || !(h2 - h1 > 0)) { // POV-Ray's degenerate prism: nothing to draw
         unsupported(kw, "degenerate prism (no area or no height; left out)");
         o.kind = PovKind::Csg, o.op = CsgOp::Union;
+    } else if (conic && h1 < 0 && h2 > 0) {
+        unsupported(kw, "prism with conic_sweep from below to above height 0 (left out)");
+        o.kind = PovKind::Csg, o.op = CsgOp::Union;
+    } else if (conic) {
+        o.shape.kind = ShapeKind::Glyph;
+        o.glyph = std::move(outline);
+        // Below 0 the outline is turned through the apex: the prism between -h2 and -h1,
+        // mirrored through the origin.
+        const double sign = h2 <= 0 ? -1 : 1;
+        const double lo = sign > 0 ? h1 : -h2, hi = sign > 0 ? h2 : -h1;
+        // Local (x, y, z): the outline's plane scaled by 1 / hi, and the sweep from lo (z = 0,
+        // the outline at base scale lo / hi) to hi (z = 1, at scale 1).
+        o.shape.a = float(lo / hi), o.shape.b = 1;
+        Affine m;
+        m.m[0][0] = float(sign * hi), m.m[2][1] = float(sign * hi);
+        m.m[1][2] = float(sign * (hi - lo)), m.m[1][3] = float(sign * lo);
+        m.m[1][1] = 0, m.m[2][2] = 0;
+        o.local = m;
     } else {
         o.shape.kind = ShapeKind::Glyph;
         o.glyph = std::move(outline);

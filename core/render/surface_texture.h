@@ -169,9 +169,54 @@ SHEAF_HD_INLINE SurfaceColor evaluate_pigment(const SceneView& scene, uint32_t p
 
 namespace texture_detail {
 
+/// POV-Ray's bump_map: the unit normal n at world point p tilted by the grey levels of image
+/// np.pattern.image (heights times np.amount) at the point and one pixel down-left and
+/// down-right of it, as the plane through those three heights leans, in POV-Ray's frame about
+/// the normal and the world's up axis (built in POV-Ray's left-handed world: Sheaf's with z
+/// mirrored). Images are sampled on the host only (scenes with them render on the CPU).
+SHEAF_HD_INLINE Vec3 bump_map_normal(const SceneView& scene, const NormalPattern& np, Vec3 p,
+                                     Vec3 n) {
+#if SHEAF_DEVICE_PASS
+    (void)scene, (void)np, (void)p;
+    return n;
+#else
+    const int32_t image = np.pattern.image;
+    if (!scene.sampler || image < 0) return n;
+    const Texture& tex = scene.textures[size_t(image)];
+    float s, t;
+    texture_coordinates(tex, p, 0, 0, s, t);
+    if (tex.once && !(s >= 0 && s <= 1 && t >= 0 && t <= 1)) return n;
+    int w = 0, h = 0;
+    scene.sampler->size(uint32_t(image), w, h);
+    if (w <= 0 || h <= 0) return n;
+    auto grey = [&](float ss, float tt) {
+        const Vec3 c = scene.sampler->sample(uint32_t(image), ss, tt);
+        return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z; // POV-Ray's greyscale
+    };
+    const float a = np.amount, h1 = grey(s, t);
+    const float h2 = grey(s - 1.0f / float(w), t - 1.0f / float(h));
+    const float h3 = grey(s + 1.0f / float(w), t - 1.0f / float(h));
+    // The normal of the triangle (0, a h1, 0), (-1, a h2, 1), (1, a h3, 1).
+    const Vec3 b = normalize(Vec3(-a * (h3 - h2), 2.0f, a * (2 * h1 - h2 - h3)));
+    const Vec3 up(n.x, n.y, -n.z); // the normal in POV-Ray's world
+    Vec3 side = cross(up, Vec3(0, 1, 0)), normal = up;
+    float len = length(side);
+    if (len < 1e-6f) { // the normal is the up axis: a fixed frame
+        normal = Vec3(0, fabsf(up.y - 1) < 1e-6f ? 1.0f : -1.0f, 0);
+        side = Vec3(1, 0, 0), len = 1;
+    }
+    side = side / len;
+    const Vec3 ahead = normalize(cross(side, normal));
+    const Vec3 r = side * b.x + normal * b.y - ahead * b.z;
+    const Vec3 out = normalize(Vec3(r.x, r.y, -r.z));
+    return length_squared(out) > 0 ? out : n;
+#endif
+}
+
 /// The unit shading normal n tilted by the slope of normal pattern np (its map aside).
 SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p, Vec3 n) {
     const Pattern& pt = np.pattern;
+    if (pt.kind == PatternKind::Image) return bump_map_normal(scene, np, p, n);
     const Vec3 q = pattern_point(pt, p);
     // The height: the pattern's value, through the slope map when there is one.
     auto height = [&](Vec3 at) {

@@ -16,6 +16,11 @@ class TextureSampler {
     virtual ~TextureSampler() = default;
     /// Scene-linear RGB of texture `index` at (s, t), repeating outside [0, 1).
     virtual Vec3 sample(uint32_t index, float s, float t) const = 0;
+    /// Texture `index`'s size in pixels (0 x 0 when not known): what a bump map steps by.
+    virtual void size(uint32_t index, int& width, int& height) const {
+        (void)index;
+        width = height = 0;
+    }
 };
 
 /// (s, t) of a world-space point for a projection mapping (planar, spherical, cylindrical);

@@ -103,9 +103,11 @@ struct Texture {
     std::string path;
     TextureMapping mapping = TextureMapping::Uv;
     Affine transform; // world -> texture space, for the projections
-    std::string
-        colorspace;     // "", "srgb" or "linear"; empty: from the file (8-bit sRGB, float linear)
+    // "", "srgb", "linear" or "data"; empty: from the file (8-bit sRGB, float linear); data:
+    // the values as stored, not in the working gamma either (a bump map's heights)
+    std::string colorspace;
     std::string origin; // where the scene asked for it ("scene.pov:12:3"), for messages
+    bool once = false;  // a bump map seen once: no change outside s, t in [0, 1]
 };
 
 enum class LightType { Point, Spot, Parallel };

@@ -43,7 +43,7 @@ class OiioSampler final : public TextureSampler {
         bool srgb;
         if (tex.colorspace == "srgb")
             srgb = true;
-        else if (tex.colorspace == "linear")
+        else if (tex.colorspace == "linear" || tex.colorspace == "data")
             srgb = false;
         else {
             // Follow the file: what it says, else 8- and 16-bit images are sRGB, float is linear.
@@ -56,7 +56,8 @@ class OiioSampler final : public TextureSampler {
         }
         const OIIO::ustring file(tex.path);
         ts_->invalidate(file); // a file changed since another scene read it is read anew
-        entries_.push_back({file, srgb, std::max(1, std::min(3, spec.nchannels))});
+        entries_.push_back({file, srgb, tex.colorspace == "data",
+                            std::max(1, std::min(3, spec.nchannels)), spec.width, spec.height});
     }
 
     Vec3 sample(uint32_t index, float s, float t) const override {
@@ -73,16 +74,22 @@ class OiioSampler final : public TextureSampler {
         if (e.channels == 1) rgb[1] = rgb[2] = rgb[0];
         if (e.srgb)
             for (float& c : rgb) c = srgb_to_linear(c);
-        if (inv_gamma_ != 1)
+        if (inv_gamma_ != 1 && !e.data)
             for (float& c : rgb) c = c > 0 ? std::pow(c, inv_gamma_) : c;
         return {rgb[0], rgb[1], rgb[2]};
+    }
+
+    void size(uint32_t index, int& width, int& height) const override {
+        width = entries_[index].width, height = entries_[index].height;
     }
 
   private:
     struct Entry {
         OIIO::ustring file;
         bool srgb;
+        bool data; // values as stored (a bump map's heights): no decoding, no working gamma
         int channels;
+        int width, height;
     };
     OIIO::TextureSystem* ts_;
     float inv_gamma_;

@@ -124,6 +124,8 @@ int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
     for (const auto& [value, entry] : n.map)
         map.push_back({float(value), entry ? normal(*entry, eff * n.local) : -1});
     NormalPattern np{pattern(n.pattern, eff * n.local), float(n.amount * n.slope_scale)};
+    if (n.pattern.kind == PatternKind::Image && n.pattern.image)
+        np.pattern.image = image(*n.pattern.image, np.pattern.to_pattern, "data");
     np.average = n.average;
     np.map_first = uint32_t(scene_.normal_map_entries.size());
     np.map_count = uint32_t(map.size());
@@ -167,10 +169,11 @@ Pattern lower_pattern(const PovPattern& pt, const Affine& eff) {
     return p;
 }
 
-int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern) {
+int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern,
+                               const std::string& colorspace) {
     std::ostringstream k;
     k.precision(9);
-    k << img.path << '|' << img.map_type << img.uv;
+    k << img.path << '|' << img.map_type << img.uv << img.once << colorspace;
     for (auto& row : to_pattern.m)
         for (float v : row) k << ',' << v;
     if (auto it = images_.find(k.str()); it != images_.end()) return it->second;
@@ -181,6 +184,8 @@ int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern) {
                 : img.map_type == 2 ? TextureMapping::Cylindrical
                                     : TextureMapping::Planar;
     t.transform = to_pattern;
+    t.once = img.once;
+    t.colorspace = colorspace;
     t.origin = p_.where(img.where);
     scene_.textures.push_back(t);
     const int32_t id = int32_t(scene_.textures.size() - 1);

@@ -46,7 +46,8 @@ class MaterialBuilder {
     /// A pigment composing `layers` (bottom first) by their filter and transmit.
     int32_t layer_pigment(const std::vector<PigmentEntry>& layers);
     Pattern pattern(const PovPattern& pt, const Affine& eff);
-    int32_t image(const PovImage& img, const Affine& to_pattern);
+    int32_t image(const PovImage& img, const Affine& to_pattern,
+                  const std::string& colorspace = "");
 
     Parser& p_;
     Scene& scene_;

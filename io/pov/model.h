@@ -46,6 +46,7 @@ struct PovImage {
     int map_type = 0;        // 0 planar, 1 spherical, 2 cylindrical
     bool uv = false;         // uv_mapping: the surface's texture coordinates
     double filter_all = 0, transmit_all = 0;
+    bool once = false;       // bump_map once: no change outside the image
     Token where;             // where the scene asked for it, for errors
 };
 

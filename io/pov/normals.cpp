@@ -100,9 +100,8 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
                                 std::to_string(list) + " normals");
             n.map.push_back({0, map_entry(e, parse_normal(nullptr))});
         } else if (k == "bump_map") {
-            unsupported(t, "bump_map (no normal change)");
-            skip_block();
-            have = false;
+            parse_bump_map(t, n);
+            have = true;
         } else if (k == "uv_mapping") {
             unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is "
                            "evaluated in space)");
@@ -117,6 +116,39 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
     // A list pattern's entries that were not given leave the surface's normal as it is.
     if (list > 0 && !n.map.empty())
         while (int(n.map.size()) < list) n.map.push_back({0, nullptr});
+}
+
+void Parser::parse_bump_map(const Token& kw, PovNormal& n) {
+    expect_sym("{");
+    const std::shared_ptr<PovImage> img = parse_image_file(kw);
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) break;
+        if (accept_kw("map_type")) {
+            img->map_type = int(parse_float());
+            if (img->map_type < 0 || img->map_type > 2) {
+                unsupported(t, "image map_type " + std::to_string(img->map_type) +
+                                   " (planar is used)");
+                img->map_type = 0;
+            }
+        } else if (accept_kw("once")) {
+            img->once = true;
+        } else if (accept_kw("interpolate")) {
+            parse_float(); // Sheaf's images are always sampled bilinearly
+        } else if (accept_kw("use_color") || accept_kw("use_colour")) {
+        } else if (accept_kw("use_index")) {
+            unsupported(t, "bump_map use_index (the grey level is used, not the palette index)");
+        } else if (accept_kw("bump_size")) {
+            n.amount = parse_float();
+        } else {
+            error_expected(t, "a bump_map item (map_type, once, interpolate, use_color, "
+                              "use_index, bump_size)");
+        }
+    }
+    n.pattern.kind = PatternKind::Image;
+    n.pattern.image = img;
+    n.slope_scale = 1; // the image's heights tilt the normal as POV-Ray's do
+    n.own_normal = true;
 }
 
 std::shared_ptr<const PovNormal> Parser::map_entry(const Token& at,

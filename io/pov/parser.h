@@ -278,6 +278,10 @@ class Parser {
     std::vector<PovMapEntry> parse_color_map();
     std::vector<PovMapEntry> parse_pigment_map();
     void parse_image_map(const Token& kw, PovPigment& p);
+    /// An image block's [type] "file" (after its '{'), found on the include paths.
+    std::shared_ptr<PovImage> parse_image_file(const Token& kw);
+    /// bump_map { [type] "file" map_type once interpolate use_color use_index bump_size }.
+    void parse_bump_map(const Token& kw, PovNormal& n);
     /// After 'normal': { ... } on top of `base` (may be null); null when it changes nothing.
     std::shared_ptr<const PovNormal> parse_normal(const PovNormal* base);
     void parse_normal_body(PovNormal& n, bool& have, const char* close);

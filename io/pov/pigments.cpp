@@ -231,8 +231,7 @@ std::vector<PovMapEntry> Parser::parse_pigment_map() {
     return entries;
 }
 
-void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
-    expect_sym("{");
+std::shared_ptr<PovImage> Parser::parse_image_file(const Token& kw) {
     auto img = std::make_shared<PovImage>();
     img->where = kw;
     static const std::set<std::string> types = {"gif", "tga", "iff", "ppm", "pgm", "png",
@@ -243,6 +242,12 @@ void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
     img->path = find_file(file, name, "image file",
                           {".tga", ".png", ".jpg", ".jpeg", ".ppm", ".pgm", ".bmp", ".tif", ".tiff",
                            ".exr", ".hdr", ".gif"});
+    return img;
+}
+
+void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
+    expect_sym("{");
+    const std::shared_ptr<PovImage> img = parse_image_file(kw);
     for (;;) {
         const Token t = peek();
         if (accept_sym("}")) break;

@@ -5,6 +5,7 @@
 
 #include "core/render/surface_texture.h"
 #include "core/scene/prepared_scene.h"
+#include "io/image/texture_sampler.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -360,16 +361,73 @@ TEST(PovTextures, ImageMapsAreTextures) {
               std::string::npos);
 }
 
+// POV-Ray's bump_map: the grey levels (as stored, 0..1) at the point and one pixel down-left and
+// down-right of it are heights times bump_size; the normal leans as the plane through them, in
+// POV-Ray's frame. On a ramp rising one level per pixel along x, 16 pixels wide, the heights
+// differ by 2 a / 15 across two pixels: the normal (POV-Ray's world) is (2 a / 15, 0, 2)
+// normalised, facing +z, leaning towards +x as POV-Ray's does. With `once`, nothing
+// changes off the image; without, it repeats.
+TEST(PovTextures, BumpMapsTiltTheNormalByTheImage) {
+    test::TempDir d;
+    const std::string png = d.path() + "/ramp.png";
+    constexpr int kW = 16, kH = 4;
+    std::vector<float> px;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) px.push_back(float(x) / (kW - 1));
+    auto out = OIIO::ImageOutput::create(png);
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(kW, kH, 1, OIIO::TypeDesc::UINT16)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
+    out->close();
+    const std::string scene = d.write(
+        "scene.pov", "plane { z, 0 normal { bump_map { png \"ramp.png\" bump_size 2 } } }\n"
+                     "plane { z, 0 normal { bump_map { \"ramp\" once interpolate 2 } } }\n");
+    const PovResult r = load_pov_scene(scene);
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    ASSERT_EQ(r.scene.textures.size(), 2u);
+    EXPECT_EQ(r.scene.textures[0].colorspace, "data");
+    EXPECT_TRUE(r.scene.textures[1].once);
+    PreparedScene p = prepare_scene(r.scene);
+    io::attach_texture_sampler(p);
+    const SceneView v(p);
+    const uint32_t steep = uint32_t(shape_material(r, 0).normal);
+    const uint32_t once = uint32_t(shape_material(r, 1).normal);
+    EXPECT_FLOAT_EQ(p.normal_patterns[steep].amount, 2);
+    EXPECT_FLOAT_EQ(p.normal_patterns[once].amount, 0.5f); // POV-Ray's default
+    const Vec3 up(0, 0, -1);                               // POV-Ray's +z in Sheaf's world
+    // At pixel (7, 1)'s centre: s = 7.5 / 16, t = 2.5 / 4 (t runs up the image).
+    const Vec3 at(7.5f / kW, 2.5f / kH, 0);
+    const Vec3 n = perturb_normal(v, steep, at, up);
+    const Vec3 want = normalize(Vec3(4.0f / 15, 0, -2)); // POV-Ray's (4/15, 0, 2), z mirrored
+    EXPECT_NEAR(n.x, want.x, 1e-3f);
+    EXPECT_NEAR(n.y, want.y, 1e-3f);
+    EXPECT_NEAR(n.z, want.z, 1e-3f);
+    EXPECT_NEAR(perturb_normal(v, steep, at + Vec3(2, 0, 0), up).x, want.x, 1e-3f); // repeats
+    EXPECT_GT(perturb_normal(v, once, at, up).x, 0.01f);
+    const Vec3 off = perturb_normal(v, once, at + Vec3(2, 0, 0), up);
+    EXPECT_EQ(off.x, 0);
+    EXPECT_EQ(off.z, -1);
+    // use_index reads the grey level, not the palette index: said once.
+    EXPECT_NE(error_of("plane { z, 0 normal { bump_map { png \"missing.png\" } } }")
+                  .find("error: cannot find image file 'missing.png'"),
+              std::string::npos);
+    const std::string indexed =
+        d.write("index.pov", "plane { z, 0 normal { bump_map { \"ramp\" use_index } } }\n");
+    const PovResult ri = load_pov_scene(indexed);
+    ASSERT_EQ(ri.warnings.size(), 1u);
+    EXPECT_NE(ri.warnings[0].find("index.pov:1:41: warning: unsupported bump_map use_index"),
+              std::string::npos)
+        << ri.warnings[0];
+}
+
 TEST(PovTextures, UnsupportedPatternsAndWarpsWarn) {
     const PovResult r = load_text(
         "sphere { 0, 1 pigment { function { pigment { bozo pigment_map { [0 checker] [1 rgb 1] } "
         "} } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
-        "sphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n"
-        "sphere { 0, 1 normal { bump_map { png \"x.png\" } } }\n");
-    ASSERT_EQ(r.warnings.size(), 3u);
+        "sphere { 0, 1 pigment { bozo warp { black_hole 0, 1 } } }\n");
+    ASSERT_EQ(r.warnings.size(), 2u);
     EXPECT_NE(r.warnings[0].find("unsupported pigment pattern 'function'"), std::string::npos);
     EXPECT_NE(r.warnings[1].find("unsupported warp 'black_hole'"), std::string::npos);
-    EXPECT_NE(r.warnings[2].find("unsupported bump_map"), std::string::npos);
     EXPECT_FLOAT_EQ(shape_material(r, 0).color.x, 0.5f); // the map's average
 }
 

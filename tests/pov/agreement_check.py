@@ -46,6 +46,7 @@ SCENES = [
     ("scenes/sweeps.pov", "exact"),
     ("examples/objects/polygon.pov", "exact"),
     ("scenes/caustics.pov", "exact"),
+    ("examples/objects/prism2.pov", "exact"),
     ("examples/objects/lathe2.pov", "exact"),
     ("examples/objects/blob1a.pov", "exact"),
     ("examples/objects/blob1b.pov", "exact"),

@@ -26,6 +26,38 @@ struct CameraFrame {
     int32_t normal = -1; // Camera::normal: primary rays tilted (core/render/frame_kernels.h)
     float angle = 0, v_angle = 0;
     float right_length = 1, up_length = 1, direction_length = 1;
+    // Depth of field (Camera::lens_radius): the lens, the distance to the sharp plane, and the
+    // anti-aliasing samples per axis, so that (x, y) tells the pixel and its sample apart.
+    float lens_radius = 0, focal_distance = 0;
+    int samples = 1;
+
+    /// The point of the lens that sample (x, y) leaves from, as an offset from the eye: the
+    /// pixel's samples take the cells of an n x n grid over the lens (mapped onto the disc by
+    /// Shirley and Chiu's concentric map) in an order and with a jitter drawn from the pixel's
+    /// hash, so that neighbouring pixels do not repeat one pattern. The same on every backend.
+    SHEAF_HD Vec3 lens_offset(int x, int y) const {
+        const int n = samples > 0 ? samples : 1;
+        const uint32_t px = uint32_t(x / n), py = uint32_t(y / n);
+        const uint32_t cells = uint32_t(n * n), sub = uint32_t(x % n + n * (y % n));
+        auto mix = [](uint32_t h) {
+            h ^= h >> 16, h *= 0x7feb352dU, h ^= h >> 15, h *= 0x846ca68bU, h ^= h >> 16;
+            return h;
+        };
+        const uint32_t hp = mix(px * 0x9E3779B1U ^ mix(py + 0x632BE5ABU));
+        const uint32_t k = (sub + hp) % cells, hs = mix(hp ^ (sub * 0x85EBCA77U));
+        const float ju = float(hs & 0xFFFFu) * (1.0f / 65536.0f);
+        const float jv = float(hs >> 16) * (1.0f / 65536.0f);
+        const float a = 2.0f * (float(k % uint32_t(n)) + ju) / float(n) - 1.0f;
+        const float b = 2.0f * (float(k / uint32_t(n)) + jv) / float(n) - 1.0f;
+        float rad = 0, phi = 0;
+        if (fabsf(a) > fabsf(b)) {
+            rad = a, phi = 0.25f * kPi * (b / a);
+        } else if (b != 0) {
+            rad = b, phi = 0.5f * kPi - 0.25f * kPi * (a / b);
+        }
+        rad *= lens_radius;
+        return right * (rad * hdm::cosf(phi)) + up * (rad * hdm::sinf(phi));
+    }
 
     /// Normalised device coordinates of the centre of pixel (x, y); y = 0 is the top row.
     SHEAF_HD void ndc(int x, int y, float& sx, float& sy) const {
@@ -43,11 +75,14 @@ struct CameraFrame {
         if (!traced_projection(projection)) {
             float sx, sy;
             ndc(x, y, sx, sy);
-            if (ortho) {
-                r.origin = origin + right * sx + up * sy;
-                r.dir = forward;
+            const Vec3 d = ortho ? forward : forward + right * sx + up * sy;
+            if (ortho) r.origin = origin + right * sx + up * sy;
+            if (lens_radius > 0) { // through the pixel's point on the sharp plane
+                const Vec3 sharp = r.origin + d * focal_distance;
+                r.origin = r.origin + lens_offset(x, y);
+                r.dir = normalize(sharp - r.origin);
             } else {
-                r.dir = normalize(forward + right * sx + up * sy);
+                r.dir = ortho ? d : normalize(d);
             }
             return true;
         }
@@ -136,7 +171,9 @@ struct CameraFrame {
     }
 };
 
-inline CameraFrame make_camera_frame(const Camera& c, int width, int height) {
+/// The frame of camera c for a width x height grid of samples, `samples` x `samples` of them to
+/// a pixel (anti-aliasing).
+inline CameraFrame make_camera_frame(const Camera& c, int width, int height, int samples = 1) {
     CameraFrame f;
     f.origin = c.position;
     f.forward = normalize(c.look_at - c.position);
@@ -151,7 +188,10 @@ inline CameraFrame make_camera_frame(const Camera& c, int width, int height) {
     f.width = width;
     f.height = height;
     f.projection = c.projection;
-    f.traced = traced_projection(c.projection) || c.normal >= 0;
+    f.traced = traced_projection(c.projection) || c.normal >= 0 || c.lens_radius > 0;
+    f.lens_radius = c.lens_radius;
+    f.focal_distance = c.focal_distance;
+    f.samples = samples;
     f.normal = c.normal;
     f.angle = c.angle_degrees * kPi / 180.0f;
     f.v_angle = c.v_angle_degrees * kPi / 180.0f;

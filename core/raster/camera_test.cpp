@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace sheaf {
 namespace {
 
@@ -105,6 +107,57 @@ TEST(CameraProjections, MirroredCamerasRunTheOtherWay) {
     c.angle_degrees = 180;
     c.mirror = true;
     expect_dir(make_camera_frame(c, 101, 101), 100, 50, Vec3(-1, 0, 0), "mirrored edge");
+}
+
+// Depth of field: a pixel's n x n samples leave from points spread over the lens (each within
+// its radius, no two the same, centred on the eye on average) and all pass through the point
+// the pixel's centre sees on the sharp plane; without a lens every sample leaves the eye.
+TEST(CameraLens, APixelsSamplesCrossTheLensAndMeetOnTheSharpPlane) {
+    for (const Projection p : {Projection::Perspective, Projection::Orthographic}) {
+        Camera c;
+        c.position = Vec3(1, 2, 3), c.look_at = Vec3(1, 2, -7);
+        c.projection = p;
+        c.lens_radius = 0.5f, c.focal_distance = 4;
+        const int n = 4, w = 5, h = 3;
+        const CameraFrame f = make_camera_frame(c, w * n, h * n, n);
+        EXPECT_TRUE(f.traced);
+        Camera still = c;
+        still.lens_radius = 0;
+        const CameraFrame pin = make_camera_frame(still, w * n, h * n, n);
+        EXPECT_FALSE(pin.traced);
+        for (int px = 0; px < w; ++px)
+            for (int py = 0; py < h; ++py) {
+                Vec3 mean(0.0f), sharp_want;
+                std::vector<Vec3> origins;
+                for (int sy = 0; sy < n; ++sy)
+                    for (int sx = 0; sx < n; ++sx) {
+                        const int x = px * n + sx, y = py * n + sy;
+                        Ray lens, eye;
+                        ASSERT_TRUE(f.camera_ray(x, y, lens));
+                        ASSERT_TRUE(pin.camera_ray(x, y, eye));
+                        // Where the pinhole ray meets the sharp plane (4 ahead of the eye).
+                        const float along = dot(eye.dir, f.forward);
+                        const Vec3 sharp = eye.origin + eye.dir * (4.0f / along);
+                        const Vec3 off = lens.origin - eye.origin;
+                        EXPECT_LE(length(off), 0.5f + 1e-5f);
+                        EXPECT_NEAR(dot(off, f.forward), 0, 1e-5f); // across the view
+                        // The lens ray reaches the same point of the sharp plane.
+                        const float t =
+                            dot(sharp - lens.origin, f.forward) / dot(lens.dir, f.forward);
+                        const Vec3 hit = lens.origin + lens.dir * t;
+                        EXPECT_NEAR(length(hit - sharp), 0, 2e-5f * length(sharp));
+                        EXPECT_NEAR(length(lens.dir), 1, 1e-5f);
+                        for (const Vec3& o : origins) EXPECT_GT(length(o - off), 1e-4f);
+                        origins.push_back(off);
+                        mean += off;
+                    }
+                EXPECT_LT(length(mean / float(n * n)), 0.2f);
+            }
+        // No lens: the pinhole camera's rays.
+        Ray a;
+        ASSERT_TRUE(pin.camera_ray(7, 4, a));
+        if (p == Projection::Perspective) EXPECT_EQ(length(a.origin - c.position), 0);
+    }
 }
 
 } // namespace

@@ -133,7 +133,7 @@ class FramePipeline {
     // Primary visibility (rasterised, or traced for the projections that need it), resolved to
     // surface hits and the primary passes.
     std::vector<SurfaceHit> primary() {
-        const CameraFrame cam = make_camera_frame(scene_.camera, W_, H_);
+        const CameraFrame cam = make_camera_frame(scene_.camera, W_, H_, s_.aa_samples);
         std::vector<uint64_t> vis;
         if (cam.traced) {
             trace_camera(cam, vis);

@@ -93,6 +93,26 @@ TEST(TracedCamera, EveryAccelGivesTheSamePicture) {
     }
 }
 
+// Depth of field: the lens camera traces its primary rays; every accel gives the same picture;
+// a ball on the sharp plane keeps its outline while one nearer the eye blurs (its edge pixels
+// mix with the background).
+TEST(TracedCamera, ALensKeepsTheSharpPlaneAndBlursTheRest) {
+    Scene s = test::csg_scene();
+    const Frame pinhole = render(prepare_scene(s), {{"aa.samples", "3"}}, 40, 32);
+    s.camera.lens_radius = 0.4f;
+    s.camera.focal_distance = length(s.camera.look_at - s.camera.position);
+    const PreparedScene lens = prepare_scene(s);
+    const Frame crsh = render(lens, {{"aa.samples", "3"}}, 40, 32);
+    EXPECT_GT(crsh.stats.get("rays.camera"), 0);
+    EXPECT_EQ(crsh.stats.get("frame.samples_per_pixel"), 9);
+    const Frame brute = render(lens, {{"accel", "brute"}, {"aa.samples", "3"}}, 40, 32);
+    EXPECT_EQ(0, std::memcmp(crsh.rgba.data(), brute.rgba.data(), crsh.rgba.size() * 4));
+    double differ = 0;
+    for (size_t i = 0; i < crsh.rgba.size(); ++i)
+        differ += std::fabs(crsh.rgba[i] - pinhole.rgba[i]);
+    EXPECT_GT(differ / double(crsh.rgba.size()), 1e-3); // the picture blurs somewhere
+}
+
 TEST(TracedCamera, PixelsWithoutARayAreBlack) {
     Scene s = with_projection(test::glass_mirror_scene(), Projection::Fisheye, 180);
     s.background = Vec3(0.2f, 0.4f, 0.6f);

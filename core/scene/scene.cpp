@@ -270,6 +270,14 @@ void Scene::validate() const {
     }
     if (c.normal >= int32_t(normal_patterns.size()))
         throw SceneError("the camera's normal pattern does not exist");
+    if (!(c.lens_radius >= 0 && c.lens_radius < 1e30f) ||
+        (c.lens_radius > 0 && !(c.focal_distance > 0 && c.focal_distance < 1e30f)))
+        throw SceneError("the camera's lens radius must be finite and >= 0, and with a lens its "
+                         "focal distance finite and > 0");
+    if (c.lens_radius > 0 && c.projection != Projection::Perspective &&
+        c.projection != Projection::Orthographic)
+        throw SceneError("a camera lens (depth of field) needs a perspective or orthographic "
+                         "camera");
     if (!std::isfinite(c.shift_x) || !std::isfinite(c.shift_y))
         throw SceneError("the camera's shift is not finite");
     if (!(c.aspect >= 0 && c.aspect < 1e6f))

@@ -182,6 +182,12 @@ struct Camera {
     // normal, the pattern evaluated at (u, v, 0), u and v across and up the image from -1/2
     // to 1/2 (POV-Ray's camera normal). Primary visibility is then traced.
     int32_t normal = -1;
+    // > 0 (perspective and orthographic cameras): depth of field (POV-Ray's focal blur). Each
+    // of a pixel's anti-aliasing samples leaves from its own point of a lens of this radius
+    // across the view, through the point its pixel sees on the plane `focal_distance` ahead,
+    // which stays sharp. Primary visibility is then traced.
+    float lens_radius = 0;
+    float focal_distance = 0;
 };
 
 struct Object {

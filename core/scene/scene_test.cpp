@@ -52,6 +52,32 @@ TEST(SceneValidate, ShapesWithTransformsThatAreNotFiniteAreErrors) {
               "shape object 0 'ball' has a transform that is not finite");
 }
 
+// A camera lens needs a finite radius, a sharp plane ahead and a camera with a plane of view;
+// a conic glyph's base scale lies in [0, 1]; caustics are >= 0.
+TEST(SceneValidate, LensesConicGlyphsAndCausticsAreChecked) {
+    Scene s = one_sphere({});
+    s.camera.lens_radius = 0.5f, s.camera.focal_distance = 3;
+    EXPECT_EQ(error_of(s), "");
+    s.camera.focal_distance = 0;
+    EXPECT_NE(error_of(s).find("focal distance finite and > 0"), std::string::npos);
+    s.camera.focal_distance = 3, s.camera.lens_radius = std::numeric_limits<float>::infinity();
+    EXPECT_NE(error_of(s).find("lens radius must be finite"), std::string::npos);
+    s.camera.lens_radius = 0.5f, s.camera.projection = Projection::Fisheye;
+    EXPECT_NE(error_of(s).find("needs a perspective or orthographic camera"), std::string::npos);
+    Scene g = one_sphere({});
+    auto outline = std::make_shared<GlyphOutline>();
+    outline->segments.push_back({0, 0, 0.5f, 0, 1, 0});
+    outline->segments.push_back({1, 0, 0.5f, 0.5f, 0, 1});
+    outline->segments.push_back({0, 1, 0, 0.5f, 0, 0});
+    g.shape_objects[0].nodes[0].shape = {ShapeKind::Glyph, 1.5f, 1};
+    g.shape_objects[0].nodes[0].glyph = outline;
+    EXPECT_NE(error_of(g).find("a conic glyph's base scale is not in [0, 1]"), std::string::npos);
+    g.shape_objects[0].nodes[0].shape.a = 0.25f;
+    EXPECT_EQ(error_of(g), "");
+    g.materials[0].caustics = -1;
+    EXPECT_EQ(error_of(g), "material 0 has caustics that are not finite or < 0");
+}
+
 // CSG is evaluated recursively on both backends: deeper than kMaxCsgNesting is an error (5,000
 // nested differences overflowed the CPU renderer's stack).
 TEST(SceneValidate, CsgDeeperThanTheLimitIsAnError) {

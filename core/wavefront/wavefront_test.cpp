@@ -180,6 +180,13 @@ TEST(Wavefront, TracedProjectionsAreIdentical) {
     for (const SettingList& kv : variants()) expect_identical(bent, "camera normal", kv, 24, 20);
     const Frame f = expect_identical(bent, "camera normal aa", {{"aa.samples", "2"}}, 16, 12);
     EXPECT_GT(f.stats.get("rays.camera"), 0);
+    // A lens (depth of field): each sample leaves its own point of the lens.
+    Scene lens = test::csg_scene();
+    lens.camera.lens_radius = 0.3f, lens.camera.focal_distance = 4;
+    const PreparedScene blurred = prepare_scene(lens);
+    const Frame b = expect_identical(blurred, "lens aa", {{"aa.samples", "3"}}, 16, 12);
+    EXPECT_GT(b.stats.get("rays.camera"), 0);
+    expect_identical(blurred, "lens", {}, 24, 20);
 }
 
 TEST(Wavefront, EmptyAndDegenerateFramesAreIdentical) {

@@ -111,7 +111,7 @@ template <class Exec> class DeviceFrame {
     // Primary visibility, resolved to surface hits and the primary passes: rasterised with the
     // analytic objects merged in, or traced for the projections that need it.
     DeviceHits<Exec> primary() {
-        const CameraFrame cam = make_camera_frame(host_.camera, W_, H_);
+        const CameraFrame cam = make_camera_frame(host_.camera, W_, H_, s_.aa_samples);
         const size_t samples = size_t(W_) * H_;
         const int W = W_;
         const SceneView scene = scene_;

@@ -274,6 +274,21 @@ struct Builder {
             std::fabs(rl / ul - image) > 1e-3f * image)
             out.aspect = rl / ul;
         out.projection = c.projection;
+        if (c.aperture > 0) {
+            if (c.projection == Projection::Perspective ||
+                c.projection == Projection::Orthographic) {
+                // POV-Ray moves the eye up to a quarter of the aperture (half of it times
+                // sample points within 1/2 of the centre) and keeps sharp the plane across the
+                // view at the focal point's distance from the eye.
+                out.lens_radius = float(0.25 * c.aperture);
+                out.focal_distance = length(c.focal_point - c.location);
+                if (!(out.focal_distance > 0))
+                    p.error_at(c.aperture_at, "a camera with an aperture needs a focal_point "
+                                              "away from its location");
+            } else {
+                p.unsupported(c.aperture_at, "focal blur with this camera type (ignored)");
+            }
+        }
         if (traced_projection(c.projection)) {
             // The angle is the projection's own (not a direction's length); the vectors'
             // lengths shape the view as they are.
@@ -332,6 +347,14 @@ double build_scene(Parser& p, Scene& scene) {
     }
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));
+    if (scene.camera.lens_radius > 0) {
+        // Focal blur takes its samples as anti-aliasing does: blur_samples (16 when not given)
+        // as n x n samples a pixel, n at most 8 (aa.samples' range); an explicit aa.samples
+        // (+A, -A) overrides it.
+        const int n = m.camera.blur_samples > 0 ? m.camera.blur_samples : 16;
+        scene.settings["aa.samples"] =
+            std::to_string(std::clamp(int(std::ceil(std::sqrt(double(n)) - 1e-9)), 1, 8));
+    }
     if (m.radiosity) {
         scene.settings["radiosity.samples"] = std::to_string(m.radiosity_count);
         scene.settings["radiosity.depth"] = std::to_string(m.radiosity_depth);

@@ -88,11 +88,27 @@ void Parser::parse_camera(PovCamera& c) {
                 if (!(c.v_angle == 0 || camera_angle_ok(c.v_angle)))
                     error_at(v, "a camera's vertical angle must lie between 0 and 3600 degrees");
             }
-        } else if (k == "focal_point" || k == "aperture" || k == "blur_samples" ||
-                   k == "confidence" || k == "variance") {
-            unsupported(t, "focal blur ('" + k + "', ignored)");
-            parse_expr();
-            if (k == "blur_samples" && accept_sym(",")) parse_expr();
+        } else if (k == "aperture") {
+            const Token at = peek();
+            c.aperture = parse_float();
+            c.aperture_at = t;
+            if (!(c.aperture >= 0 && c.aperture < 1e30))
+                error_at(at, "a camera's aperture must be a finite number >= 0");
+        } else if (k == "focal_point") {
+            c.focal_point = parse_vector();
+        } else if (k == "blur_samples") {
+            // blur_samples [MIN,] MAX: Sheaf always takes about MAX (no adaptive stop).
+            const Token at = peek();
+            double n = parse_float();
+            if (accept_sym(",")) n = parse_float();
+            if (!(n >= 1 && n <= 1e6))
+                error_at(at, "a camera's blur_samples must be a number from 1 to 1000000");
+            c.blur_samples = int(n);
+        } else if (k == "confidence" || k == "variance") {
+            parse_float(); // POV-Ray's adaptive stop: Sheaf takes every sample
+        } else if (k == "bokeh") {
+            unsupported(t, "camera bokeh (a round lens is used)");
+            skip_block();
         } else if (k == "mesh_camera") {
             unsupported(t, "camera type 'mesh_camera' (a perspective camera is used)");
             skip_block();

@@ -146,6 +146,36 @@ TEST(PovCamera, RightOverUpIsTheViewsShape) {
                 1e-6);
 }
 
+// Focal blur: the lens is a quarter of the aperture across, the sharp plane at the focal
+// point's distance from the eye, blur_samples become n x n anti-aliasing samples (a default
+// the host's own aa.samples overrides); bokeh is warned; a focal point at the eye is an
+// error; other camera types keep their picture, warned.
+TEST(PovCamera, FocalBlurIsALensCamera) {
+    PovResult r = load_text("camera { location <0, 0, -10> look_at 0 aperture 2 "
+                            "focal_point <3, 0, -6> blur_samples 4, 20 confidence 0.9 "
+                            "variance 1/128 }");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    EXPECT_FLOAT_EQ(r.scene.camera.lens_radius, 0.5f);
+    EXPECT_FLOAT_EQ(r.scene.camera.focal_distance, 5);
+    EXPECT_EQ(r.scene.settings.at("aa.samples"), "5"); // 20 samples: 5 x 5
+    EXPECT_NO_THROW(r.scene.validate());
+    r = load_text("camera { aperture 1 focal_point <0, 0, 4> bokeh { pigment { rgb 1 } } }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("unsupported camera bokeh"), std::string::npos);
+    EXPECT_EQ(r.scene.settings.at("aa.samples"), "4"); // 16 when not given
+    r = load_text("camera { fisheye aperture 1 focal_point <0, 0, 4> }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("focal blur with this camera type"), std::string::npos);
+    EXPECT_EQ(r.scene.camera.lens_radius, 0);
+    EXPECT_EQ(r.scene.settings.count("aa.samples"), 0u);
+    EXPECT_NE(error_of("camera { location <1, 2, 3> aperture 1 focal_point <1, 2, 3> }")
+                  .find("error: a camera with an aperture needs a focal_point away from its "
+                        "location"),
+              std::string::npos);
+    EXPECT_NE(error_of("camera { aperture -1 }").find("scene.pov:1:19: error: a camera's aperture"),
+              std::string::npos);
+}
+
 TEST(PovCamera, DeclaredCameras) {
     const PovResult r = load_text("#declare C = camera { location <1, 2, 3> look_at 0 }\n"
                                   "camera { C translate y }");

@@ -210,6 +210,11 @@ struct PovCamera {
     Affine transform; // applied after everything else
     /// Tilts each primary ray as a surface normal, in screen space (x and y from -1/2 to 1/2).
     std::shared_ptr<const PovNormal> normal;
+    /// Focal blur: the aperture (0: none), the point in focus and the samples a pixel takes.
+    double aperture = 0;
+    Vec3 focal_point{0, 0, 0};
+    int blur_samples = 0; // 0: not given
+    Token aperture_at;
 };
 
 /// sky_sphere { pigments transforms }: its pigments bottom first, in the sky's space.

@@ -82,6 +82,10 @@ TEST(XmlErrors, BadValuesPointAtTheValue) {
                  "lengths of right, up and direction");
     EXPECT_ERROR("<scene><camera projection=\"perspective\" angle=\"90\"/></scene>", "1:48",
                  "unknown attribute 'angle'");
+    EXPECT_ERROR("<scene><camera lens_radius=\"0.5\"/></scene>", "1:29",
+                 "a camera with a lens needs a focal_distance > 0");
+    EXPECT_ERROR("<scene><camera projection=\"fisheye\" lens_radius=\"0.5\"/></scene>", "1:50",
+                 "unknown attribute 'lens_radius'");
     EXPECT_ERROR("<scene><poly order=\"3\" coefficients=\"1 2 3\"/></scene>", "1:38",
                  "order 3 needs 20 coefficients, not 3");
     EXPECT_ERROR("<scene><poly order=\"5\" coefficients=\"1\"/></scene>", "1:21",

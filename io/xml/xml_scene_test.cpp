@@ -113,6 +113,13 @@ TEST(XmlScene, TracedProjectionsTakeTheirAngleAndLengths) {
     EXPECT_FLOAT_EQ(s.camera.v_angle_degrees, 120);
     EXPECT_FLOAT_EQ(s.camera.right_length, 1.5f);
     EXPECT_FLOAT_EQ(s.camera.direction_length, 2);
+    // A lens (depth of field) on a perspective camera.
+    const Scene l = io::parse_xml_scene("<scene><camera lens_radius=\"0.2\" focal_distance=\"6\"/>"
+                                        "</scene>",
+                                        "scene.xml")
+                        .scene;
+    EXPECT_FLOAT_EQ(l.camera.lens_radius, 0.2f);
+    EXPECT_FLOAT_EQ(l.camera.focal_distance, 6);
     const Scene c =
         io::parse_xml_scene("<scene><camera projection=\"cylinder3\"/></scene>", "scene.xml").scene;
     EXPECT_EQ(c.camera.projection, Projection::Cylinder3);

@@ -35,6 +35,10 @@ void SceneReader::read_camera(const pugi::xml_node& node) {
         a.get("fov", c.fov_y_degrees);
     else if (c.projection == Projection::Orthographic)
         a.get("ortho_height", c.ortho_height);
+    if (c.projection == Projection::Perspective || c.projection == Projection::Orthographic) {
+        a.get("lens_radius", c.lens_radius);
+        a.get("focal_distance", c.focal_distance);
+    }
     const bool traced = traced_projection(c.projection);
     if (traced) {
         if (c.projection == Projection::Spherical) c.angle_degrees = 360;
@@ -61,6 +65,11 @@ void SceneReader::read_camera(const pugi::xml_node& node) {
     a.finish();
     if (!(length(c.look_at - c.position) > 0))
         ctx_.fail(node, node.attribute("look_at"), "the camera looks at its own position");
+    if (!(c.lens_radius >= 0 && c.lens_radius < 1e30f))
+        ctx_.fail(node, node.attribute("lens_radius"), "a camera's lens radius must be >= 0");
+    if (c.lens_radius > 0 && !(c.focal_distance > 0 && c.focal_distance < 1e30f))
+        ctx_.fail(node, node.attribute("lens_radius"),
+                  "a camera with a lens needs a focal_distance > 0 (the sharp plane's)");
     if (!(length(cross(c.look_at - c.position, c.up)) > 0))
         ctx_.fail(node, node.attribute("up"), "the camera's up vector is parallel to its view");
     if (c.projection == Projection::Perspective && !(c.fov_y_degrees > 0 && c.fov_y_degrees < 180))

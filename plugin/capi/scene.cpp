@@ -502,6 +502,23 @@ SHEAF_API SheafError sheafSceneSetCameraLens(SheafScene scene, float angle_degre
     });
 }
 
+SHEAF_API SheafError sheafSceneSetCameraFocus(SheafScene scene, float lens_radius,
+                                              float focal_distance) {
+    return barrier([&] {
+        require(scene, "scene");
+        if (!(lens_radius >= 0 && lens_radius < 1e30f))
+            throw InvalidArgument("a lens radius of " + std::to_string(lens_radius) +
+                                  "; expected a finite number >= 0");
+        if (lens_radius > 0 && !(focal_distance > 0 && focal_distance < 1e30f))
+            throw InvalidArgument("a focal distance of " + std::to_string(focal_distance) +
+                                  "; a lens needs a finite one > 0");
+        modify(scene, [&](sheaf::Scene& s) {
+            s.camera.lens_radius = lens_radius;
+            s.camera.focal_distance = lens_radius > 0 ? focal_distance : 0;
+        });
+    });
+}
+
 SHEAF_API SheafError sheafSceneSetBackground(SheafScene scene, const float rgb[3]) {
     return barrier([&] {
         require(scene, "scene");

@@ -501,6 +501,50 @@ def test_camera_projection():
               % (kind, depth.min(), d - 0.6))
 
 
+def test_depth_of_field():
+    """The camera's depth of field (f-stop 0.1, focused on the far ball by its focus object):
+    the far ball's outline stays as it was without it, the near one's blurs; an aperture of
+    blades warns that the lens is round."""
+    scene = new_scene("Focus", 64, 48, world_rgb=(0.6, 0.6, 0.6))
+    scene.sheaf.aa_samples = 3
+    mat = material("Dark", (0.02, 0.02, 0.02))
+    balls = []
+    for name, loc in (("Far", (0.8, 4.0, 0.5)), ("Near", (-0.6, -2.0, 0.4))):
+        me = bpy.data.meshes.new(name)
+        v, f = uv_sphere(0.45, 32, 16)
+        me.from_pydata(v, [], f)
+        me.materials.append(mat)
+        ball = bpy.data.objects.new(name, me)
+        ball.location = loc
+        scene.collection.objects.link(ball)
+        balls.append(ball)
+    cam = camera(scene, (0, -6, 0.5), (0, 0, 0.5), lens=50)
+    sun(scene, (0.3, 0.2, 0.1))
+    sharp = render(scene, "focus_off")["Image"][:, :, 0]
+    cam.data.dof.use_dof = True
+    cam.data.dof.aperture_fstop = 0.1  # a lens 0.25 across: the near ball blurs by 3 pixels
+    cam.data.dof.focus_object = balls[0]
+    blurred = render(scene, "focus_on")["Image"][:, :, 0]
+    for ball, most in ((balls[0], 0.02), (balls[1], None)):
+        r, c = pixel_of(scene, cam, ball.location)
+        window = (slice(max(r - 9, 0), r + 10), slice(max(c - 9, 0), c + 10))
+        change = float(np.abs(blurred[window] - sharp[window]).mean())
+        if most is not None:
+            check(change < most, "%s: the ball in focus changed by %g" % (ball.name, change))
+        else:
+            check(change > 0.03, "%s: the ball out of focus changed by only %g"
+                  % (ball.name, change))
+    cam.data.dof.aperture_blades = 6
+    dg = scene.view_layers[0].depsgraph
+    dg.update()
+    exported = ADDON.export.export_depsgraph(ADDON.capi.library(), dg, 64, 48)
+    try:
+        check(any("aperture blades" in w for w in exported.warnings),
+              "no warning for the aperture blades: %s" % exported.warnings)
+    finally:
+        exported.release()
+
+
 def test_instances_texture_and_lights():
     """Linked duplicates share one uploaded mesh; a generated image on Base Color is a texture;
     point, spot and area lights all light the floor."""
@@ -707,6 +751,7 @@ TESTS = [
     test_default_cube,
     test_mirror_and_glass,
     test_camera_projection,
+    test_depth_of_field,
     test_instances_texture_and_lights,
     test_subdivision,
     test_ray_visibility,

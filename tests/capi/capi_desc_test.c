@@ -102,6 +102,10 @@ int main(void) {
         CHECK(sheafSceneSetCameraLens(s, 90, 180, flat) == SHEAF_ERROR_INVALID_ARGUMENT,
               "a zero length");
     }
+    CHECK(sheafSceneSetCameraFocus(s, -1, 4) == SHEAF_ERROR_INVALID_ARGUMENT, "lens radius < 0");
+    CHECK(sheafSceneSetCameraFocus(s, 0.5f, 0) == SHEAF_ERROR_INVALID_ARGUMENT,
+          "a lens without a focal distance");
+    CHECK(sheafSceneSetCameraFocus(NULL, 0, 0) == SHEAF_ERROR_INVALID_ARGUMENT, "NULL scene");
     /* A spot with a falloff of 0 is rejected when the scene is committed. */
     sheafLightDescInit(&light);
     light.type = SHEAF_LIGHT_SPOT;
@@ -138,6 +142,23 @@ int main(void) {
         CHECK(fabsf(px[(0 * 9 + 4) * 4] - 0.5f) < 1e-3f, "the background inside the circle");
         CHECK(px[0] == 0.0f && px[1] == 0.0f && px[2] == 0.0f, "black outside the circle");
         CHECK(camera_rays > 40 && camera_rays < 81, "camera rays inside the circle only");
+        /* A lens on a fisheye is refused at commit; sheafSceneSetCameraDesc resets it. */
+        OK(sheafSceneSetCameraFocus(s, 0.2f, 5));
+        CHECK(sheafSceneCommit(s) == SHEAF_ERROR_SCENE, "a lens on a fisheye");
+        sheafFrameRelease(f);
+        f = NULL;
+        cam.projection = SHEAF_PROJECTION_PERSPECTIVE;
+        OK(sheafSceneSetCameraDesc(s, &cam));
+        OK(sheafSceneCommit(s));
+        /* Depth of field: a lens sharp on the quad's plane (5 ahead) traces the camera rays,
+         * 2 x 2 samples a pixel; the quad's middle stays as bright. */
+        OK(sheafSceneSetCameraFocus(s, 0.3f, 5));
+        OK(sheafRendererSetInt(r, "aa.samples", 2));
+        OK(sheafRender(r, s, &f));
+        OK(sheafFrameGetPass(f, "combined", px, sizeof px / sizeof px[0]));
+        OK(sheafFrameGetStatByName(f, "rays.camera", &camera_rays));
+        CHECK(camera_rays == 9 * 9 * 4, "every sample's camera ray traced: %g", camera_rays);
+        CHECK(px[(4 * 9 + 4) * 4] > 0.9f, "the quad sharp at the centre: %f", px[(4 * 9 + 4) * 4]);
         sheafFrameRelease(f);
         sheafRendererRelease(r);
         sheafSceneRelease(s);

@@ -157,6 +157,7 @@ _PROTOTYPES = {
     "sheafCameraDescInit": (None, [POINTER(SheafCameraDesc)]),
     "sheafSceneSetCameraDesc": (c_enum, [SheafScene, POINTER(SheafCameraDesc)]),
     "sheafSceneSetCameraLens": (c_enum, [SheafScene, c_float, c_float, _f]),
+    "sheafSceneSetCameraFocus": (c_enum, [SheafScene, c_float, c_float]),
     "sheafSceneCommit": (c_enum, [SheafScene]),
     "sheafRendererNew": (c_enum, [POINTER(SheafRenderer)]),
     "sheafRendererRetain": (c_enum, [SheafRenderer]),
@@ -533,6 +534,12 @@ class Scene(_Handle):
         l = None if lengths is None else _floats(lengths, 3)
         self.lib.check(
             self.lib.sheafSceneSetCameraLens(self.handle, angle_degrees, v_angle_degrees, l)
+        )
+
+    def set_camera_focus(self, lens_radius, focal_distance):
+        """Depth of field: the lens radius (0: none) and the sharp plane's distance."""
+        self.lib.check(
+            self.lib.sheafSceneSetCameraFocus(self.handle, lens_radius, focal_distance)
         )
 
     def set_background(self, rgb):

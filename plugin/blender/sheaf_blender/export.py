@@ -198,7 +198,33 @@ class _Exporter:
             half_y = 0.5 * height * sensor / (cam.lens * viewfac)
             d.fov_y_degrees = math.degrees(2.0 * math.atan(half_y))
         self.scene.set_camera(d)
+        self.depth_of_field(cam_obj, cam, forward)
         return CameraInfo(cam.type == 'ORTHO', half_y, shift_x, shift_y)
+
+    def depth_of_field(self, cam_obj, cam, forward):
+        """Blender's depth of field as Cycles reads it: an aperture of radius focal length /
+        (2 f-stop) (1 / (2 f-stop) for orthographic cameras), in scene units, sharp at the
+        focus distance (or the focus object's depth along the view)."""
+        dof = cam.dof
+        if not dof.use_dof or dof.aperture_fstop <= 0:
+            return
+        scale = self.bscene.unit_settings.scale_length or 1.0
+        if cam.type == 'ORTHO':
+            radius = 1.0 / (2.0 * dof.aperture_fstop)
+        else:
+            radius = cam.lens * 1e-3 / (2.0 * dof.aperture_fstop) / scale
+        distance = dof.focus_distance
+        if dof.focus_object is not None:
+            to = dof.focus_object.matrix_world.translation - cam_obj.matrix_world.translation
+            distance = sum(t * f for t, f in zip(to, forward))
+        if distance <= 0:
+            self.warn("camera '%s': depth of field with its focus behind the camera is left out"
+                      % cam_obj.name)
+            return
+        if dof.aperture_blades >= 3:
+            self.warn("camera '%s': %d aperture blades are rendered as a round lens"
+                      % (cam_obj.name, dof.aperture_blades))
+        self.scene.set_camera_focus(radius, distance)
 
     # ---- world ----
 

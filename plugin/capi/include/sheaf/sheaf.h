@@ -225,6 +225,13 @@ SHEAF_API SheafError sheafSceneSetCameraDesc(SheafScene scene, const SheafCamera
  * NULL keeps them). sheafSceneSetCameraDesc resets them to the defaults. */
 SHEAF_API SheafError sheafSceneSetCameraLens(SheafScene scene, float angle_degrees,
                                              float v_angle_degrees, const float lengths[3]);
+/* Depth of field for the camera last set (perspective and orthographic; checked at commit): each
+ * anti-aliasing sample of a pixel ("aa.samples") leaves from its own point of a lens of radius
+ * `lens_radius` (scene units, >= 0; 0: none) across the view, aimed through the point its pixel
+ * sees on the plane `focal_distance` (> 0 with a lens) ahead, which stays sharp.
+ * sheafSceneSetCameraDesc resets it to none. */
+SHEAF_API SheafError sheafSceneSetCameraFocus(SheafScene scene, float lens_radius,
+                                              float focal_distance);
 /* Validates the scene and prepares it for rendering. sheafRender commits a scene that was never
  * committed or was changed since. */
 SHEAF_API SheafError sheafSceneCommit(SheafScene scene);

@@ -48,6 +48,22 @@ SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p,
 #endif
 }
 
+/// Whether image texture `image` covers world point p: always, unless it is seen once and p
+/// maps outside s, t in [0, 1]. The device never gets here.
+SHEAF_HD_INLINE bool image_covers(const SceneView& scene, int32_t image, Vec3 p, float uv_s,
+                                  float uv_t) {
+#if SHEAF_DEVICE_PASS
+    (void)scene, (void)image, (void)p, (void)uv_s, (void)uv_t;
+    return true;
+#else
+    const Texture& tex = scene.textures[size_t(image)];
+    if (!tex.once) return true;
+    float s, t;
+    texture_coordinates(tex, p, uv_s, uv_t, s, t);
+    return s >= 0 && s <= 1 && t >= 0 && t <= 1;
+#endif
+}
+
 /// A continuous pattern's value at pattern-space point q of the surface at world point
 /// `world` whose normal, facing the ray, is n (zero where there is no surface: media, the
 /// sky); a function pattern runs its program (a value that is not finite counts as 0).
@@ -102,6 +118,8 @@ struct Evaluator {
         const Pattern& pt = pg.pattern;
         if (pt.kind == PatternKind::Image) {
             if (!scene.sampler) return {Vec3(0.5f), 0, 0};
+            if (!texture_detail::image_covers(scene, pt.image, p, uv_s, uv_t))
+                return {Vec3(1.0f), 0, 1}; // off an image seen once: clear, as POV-Ray's
             const Vec3 c = sample_image(scene, pt.image, p, uv_s, uv_t);
             const SurfaceColor tint = entry_color(entries[0]); // filter and transmit of the map
             return {c, tint.filter, tint.transmit};

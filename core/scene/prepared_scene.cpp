@@ -112,6 +112,10 @@ bool pigment_may_pass(const Scene& s, int32_t index, int depth = 0) {
     if (index < 0 || depth > 16) return false;
     const Pigment& pg = s.pigments[size_t(index)];
     if (pg.solid) return pg.color[3] > 0 || pg.color[4] > 0;
+    // An image seen once is clear off the image.
+    if (pg.pattern.kind == PatternKind::Image && pg.pattern.image >= 0 &&
+        size_t(pg.pattern.image) < s.textures.size() && s.textures[size_t(pg.pattern.image)].once)
+        return true;
     for (uint32_t e = pg.first; e < pg.first + pg.count; ++e) {
         const PigmentEntry& en = s.pigment_entries[e];
         if (en.pigment >= 0 ? pigment_may_pass(s, en.pigment, depth + 1)

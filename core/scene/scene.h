@@ -107,7 +107,8 @@ struct Texture {
     // the values as stored, not in the working gamma either (a bump map's heights)
     std::string colorspace;
     std::string origin; // where the scene asked for it ("scene.pov:12:3"), for messages
-    bool once = false;  // a bump map seen once: no change outside s, t in [0, 1]
+    bool once = false;  // seen once: nothing outside s, t in [0, 1] (a clear pigment there, a
+                        // bump map's normal unchanged), not repeated
 };
 
 enum class LightType { Point, Spot, Parallel };

@@ -325,9 +325,9 @@ struct Builder {
 
 double build_scene(Parser& p, Scene& scene) {
     const PovModel& m = p.model;
-    const double gamma = m.assumed_gamma > 0                    ? m.assumed_gamma
-                         : (m.version_given && m.version < 3.7) ? 2.2
-                                                                : 1.0;
+    const double gamma = m.assumed_gamma > 0                     ? m.assumed_gamma
+                         : (!m.version_given || m.version < 3.7) ? 2.2
+                                                                 : 1.0;
     // POV-Ray computes in its working space: colours stay as written, and the frame's values
     // are light to the power of the gamma (Scene::working_gamma).
     scene.working_gamma = float(gamma);

@@ -169,6 +169,11 @@ TEST(PovObjects, LegacyGammaComputesInItsOwnSpace) {
     EXPECT_FLOAT_EQ(r.scene.working_gamma, 2.2f);
     EXPECT_FLOAT_EQ(load_text("#version 3.6;").scene.working_gamma, 2.2f);
     EXPECT_FLOAT_EQ(load_text("#version 3.7;").scene.working_gamma, 1.0f);
+    // No #version anywhere: a pre-3.7 scene, gamma correction off (POV-Ray 3.7's warning).
+    EXPECT_FLOAT_EQ(load_text("sphere { 0, 1 }").scene.working_gamma, 2.2f);
+    // A #version in between that comes back to 3.7 (as the standard includes do) is 3.7.
+    EXPECT_FLOAT_EQ(
+        load_text("#declare V = version; #version 3.5; #version V;").scene.working_gamma, 1.0f);
 }
 
 TEST(PovObjects, UnsupportedPatternsAreAveragedWithAWarning) {

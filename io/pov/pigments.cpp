@@ -258,8 +258,10 @@ void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
                                    " (planar is used)");
                 img->map_type = 0;
             }
-        } else if (accept_kw("once") || accept_kw("use_color") || accept_kw("use_colour") ||
-                   accept_kw("use_index") || accept_kw("use_alpha")) {
+        } else if (accept_kw("once")) {
+            img->once = true;
+        } else if (accept_kw("use_color") || accept_kw("use_colour") || accept_kw("use_index") ||
+                   accept_kw("use_alpha")) {
         } else if (accept_kw("interpolate") || accept_kw("gamma")) {
             parse_float();
         } else if (accept_kw("premultiplied")) {

@@ -359,6 +359,24 @@ TEST(PovTextures, ImageMapsAreTextures) {
     EXPECT_NE(error_of("plane { z, 0 pigment { image_map { png \"missing.png\" } } }")
                   .find("scene.pov:1:40: error: cannot find image file 'missing.png'"),
               std::string::npos);
+    // Seen once: off the image the pigment is clear (as POV-Ray's), so shadows pass there.
+    const std::string once =
+        d.write("once.pov", "plane { z, 0 pigment { image_map { \"tiles\" once } } }\n");
+    const PovResult orr = load_pov_scene(once);
+    ASSERT_EQ(orr.scene.textures.size(), 1u);
+    EXPECT_TRUE(orr.scene.textures[0].once);
+    PreparedScene p = prepare_scene(orr.scene);
+    io::attach_texture_sampler(p);
+    EXPECT_TRUE(p.prim_flags[0] & kPrimMayPass);
+    const SceneView v(p);
+    const uint32_t pigment = uint32_t(shape_material(orr).pigment);
+    const SurfaceColor in =
+        evaluate_pigment(v, pigment, Vec3(0.25f, 0.75f, 0), 0, 0, Vec3(0, 0, 1));
+    EXPECT_EQ(in.transmit, 0);
+    EXPECT_GT(in.rgb.x, 0.9f); // red, top left
+    const SurfaceColor off =
+        evaluate_pigment(v, pigment, Vec3(1.25f, 0.75f, 0), 0, 0, Vec3(0, 0, 1));
+    EXPECT_EQ(off.transmit, 1);
 }
 
 // POV-Ray's bump_map: the grey levels (as stored, 0..1) at the point and one pixel down-left and

@@ -488,6 +488,9 @@ TEST(PovObjects, PrismErrorsAndConicSweep) {
     EXPECT_EQ(error_of("prism { 0, 1, 4, <0, 0>, 1, <1, 1>, <0, 0> }"),
               "scene.pov:1:26: error: found '1', expected the prism's point 2 of 4 (a 2-D "
               "vector <u, v>)");
+    EXPECT_EQ(error_of("prism { conic_sweep 0, 1, 4, <0, 0>, <1, 0>, <0, 1> }"),
+              "scene.pov:1:53: error: found '}', expected the prism's point 4 of 4 (a 2-D "
+              "vector <u, v>)");
     // Heights on both sides of 0 would be two cones meeting at the apex: left out, warned.
     const PovResult r = load_text(
         "prism { conic_sweep -1, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }\nsphere { 0, 1 }");

@@ -83,6 +83,10 @@ bool Parser::parse_prism(const Token& kw, PovObject& o) {
     std::vector<Vec3> p(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
         const Token at = peek();
+        // Fewer points than the count says: name the point that is missing.
+        if (at.kind == TokKind::End || is_sym_tok(at, "}"))
+            error_expected(at, "the prism's point " + std::to_string(i + 1) + " of " +
+                                   std::to_string(n) + " (a 2-D vector <u, v>)");
         const Value v = parse_expr();
         if (!v.numeric() || v.type == VType::Float)
             error_expected(at, "the prism's point " + std::to_string(i + 1) + " of " +

@@ -160,13 +160,36 @@ TEST(ProceduralRender, InsideMaterialsShowFromInside) {
 namespace sheaf {
 namespace {
 
+// A floor (material 0) lit from straight above by a light at y = 6, seen from the side with
+// no bounces; a test adds what stands between (its materials after the floor's).
+Scene lit_floor() {
+    Scene s;
+    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)),
+                      s.add_material(Material{}));
+    s.add_light(Light{Vec3(0, 6, 0), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 0, 6); // below y = 1: what stands there hides little floor
+    s.camera.look_at = Vec3(0, -1, 0);
+    s.settings["trace.depth"] = "0";
+    return s;
+}
+
+// The floor right under the light (the look_at point) at 41 x 31, under crsh and brute, which
+// must give the same picture.
+Vec3 floor_under(const Scene& s) {
+    const PreparedScene p = prepare_scene(s);
+    const Frame f = render(p, {{"width", "41"}, {"height", "31"}});
+    const Frame brute = render(p, {{"width", "41"}, {"height", "31"}, {"accel", "brute"}});
+    EXPECT_TRUE(same_image(f, brute));
+    return pixel(f, 20, 15);
+}
+
 // A sphere between a light and a floor: opaque, it casts a full shadow; with a pigment that
 // transmits half the light, the shadow keeps half of it for each surface the shadow ray
 // crosses (POV-Ray's filtered shadows: two surfaces, a quarter).
 TEST(ProceduralRender, TransparentSurfacesFilterShadows) {
     auto floor_under_ball = [](float transmit, float filter) {
-        Scene s;
-        Material floor, ball;
+        Scene s = lit_floor();
+        Material ball;
         ball.color = Vec3(1, 0.5f, 0.25f);
         Pigment pg;
         pg.color[0] = 1, pg.color[1] = 0.5f, pg.color[2] = 0.25f, pg.color[3] = filter,
@@ -174,18 +197,9 @@ TEST(ProceduralRender, TransparentSurfacesFilterShadows) {
         s.pigments.push_back(pg);
         ball.pigment = 0;
         ball.fresnel_split = false;
-        const uint32_t mf = s.add_material(floor), mb = s.add_material(ball);
-        s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
-        s.add_shape("ball", Shape{ShapeKind::Sphere}, mb, Affine::translate(Vec3(0, 1, 0)));
-        s.add_light(Light{Vec3(0, 6, 0), Vec3(1.0f)});
-        s.camera.position = Vec3(0, 0, 6); // below the ball's height: it hides little floor
-        s.camera.look_at = Vec3(0, -1, 0);
-        s.settings["trace.depth"] = "0";
-        const PreparedScene p = prepare_scene(s);
-        const Frame f = render(p, {{"width", "41"}, {"height", "31"}});
-        Frame brute = render(p, {{"width", "41"}, {"height", "31"}, {"accel", "brute"}});
-        EXPECT_TRUE(same_image(f, brute));
-        return pixel(f, 20, 15); // the look_at point, right under the ball
+        s.add_shape("ball", Shape{ShapeKind::Sphere}, s.add_material(ball),
+                    Affine::translate(Vec3(0, 1, 0)));
+        return floor_under(s);
     };
     const Vec3 opaque = floor_under_ball(0, 0), half = floor_under_ball(0.5f, 0);
     const Vec3 filtered = floor_under_ball(0, 1);
@@ -206,8 +220,8 @@ TEST(ProceduralRender, TransparentSurfacesFilterShadows) {
 // follows the shading normal a normal pattern tilts, and meshes and solids agree.
 TEST(ProceduralRender, FakeCausticsBrightenLightThroughGlass) {
     auto floor_under_glass = [](bool slab, float caustics, bool bumpy, float transmit) {
-        Scene s;
-        Material floor, glass;
+        Scene s = lit_floor();
+        Material glass;
         Pigment pg;
         pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = transmit;
         s.pigments.push_back(pg);
@@ -221,21 +235,12 @@ TEST(ProceduralRender, FakeCausticsBrightenLightThroughGlass) {
             s.normal_patterns.push_back({bumps, 1.0f});
             glass.normal = 0;
         }
-        const uint32_t mf = s.add_material(floor), mg = s.add_material(glass);
-        s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+        const uint32_t mg = s.add_material(glass);
         if (slab) // off centre, so that the shadow ray misses the faces' diagonals
             s.add_mesh_object("slab", make_box(Vec3(-1, 0.9f, -0.7f), Vec3(1.3f, 1.1f, 1)), mg);
         else
             s.add_shape("ball", Shape{ShapeKind::Sphere}, mg, Affine::translate(Vec3(0, 1, 0)));
-        s.add_light(Light{Vec3(0, 6, 0), Vec3(1.0f)});
-        s.camera.position = Vec3(0, 0, 6);
-        s.camera.look_at = Vec3(0, -1, 0);
-        s.settings["trace.depth"] = "0";
-        const PreparedScene p = prepare_scene(s);
-        const Frame f = render(p, {{"width", "41"}, {"height", "31"}});
-        const Frame brute = render(p, {{"width", "41"}, {"height", "31"}, {"accel", "brute"}});
-        EXPECT_TRUE(same_image(f, brute));
-        return pixel(f, 20, 15); // the look_at point, right under the glass
+        return floor_under(s);
     };
     for (const bool slab : {false, true}) {
         const float ambient = floor_under_glass(slab, 0, false, 0).x; // opaque: ambient only
@@ -256,16 +261,15 @@ TEST(ProceduralRender, FakeCausticsBrightenLightThroughGlass) {
 // surface (everything outside the ball is inside the solid). Shadow rays crossing it fade by
 // the interior of the surface they do cross, and nothing reads the missing surface's material.
 TEST(ProceduralRender, ShadowsThroughAnInverseSolidFade) {
-    Scene s;
-    Material floor, ball;
+    Scene s = lit_floor();
+    Material ball;
     ball.fade_distance = 4, ball.fade_power = 2, ball.fade_color = Vec3(0.5f);
     Pigment pg;
     pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = 1; // fully transmitting
     s.pigments.push_back(pg);
     ball.pigment = 0;
     ball.fresnel_split = false;
-    const uint32_t mf = s.add_material(floor), mb = s.add_material(ball);
-    s.add_mesh_object("floor", make_box(Vec3(-4, -1.1f, -4), Vec3(4, -1, 4)), mf);
+    const uint32_t mb = s.add_material(ball);
     ShapeObject o;
     o.name = "inverse ball";
     CsgNode leaf;
@@ -275,15 +279,7 @@ TEST(ProceduralRender, ShadowsThroughAnInverseSolidFade) {
     o.nodes.push_back(leaf);
     o.transform = Affine::translate(Vec3(0, 1, 0));
     s.add_shape_object(o);
-    s.add_light(Light{Vec3(0, 6, 0), Vec3(1.0f)});
-    s.camera.position = Vec3(0, 0, 6);
-    s.camera.look_at = Vec3(0, -1, 0);
-    s.settings["trace.depth"] = "0";
-    const PreparedScene p = prepare_scene(s);
-    const Frame f = render(p, {{"width", "41"}, {"height", "31"}});
-    const Frame brute = render(p, {{"width", "41"}, {"height", "31"}, {"accel", "brute"}});
-    EXPECT_TRUE(same_image(f, brute));
-    const Vec3 under = pixel(f, 20, 15);
+    const Vec3 under = floor_under(s);
     EXPECT_TRUE(std::isfinite(under.x) && std::isfinite(under.y) && std::isfinite(under.z));
 }
 

@@ -35,33 +35,37 @@ SHEAF_HD_INLINE SurfaceColor mix(const SurfaceColor& a, const SurfaceColor& b, f
             a.transmit * (1.0f - t) + b.transmit * t};
 }
 
-/// Image texture `image` at world point p: the colour from the host's sampler (grey without
-/// one). The device never gets here.
-SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p, float uv_s,
-                                  float uv_t) {
+/// (s, t) of image texture `image` at world point p; false where an image seen once does not
+/// cover p (s or t outside [0, 1]). Host only: the device never samples images.
+SHEAF_HD_INLINE bool image_point(const SceneView& scene, int32_t image, Vec3 p, float uv_s,
+                                 float uv_t, float& s, float& t) {
 #if SHEAF_DEVICE_PASS
+    (void)scene, (void)image, (void)p, (void)uv_s, (void)uv_t;
+    s = t = 0;
+    return true;
+#else
+    const Texture& tex = scene.textures[size_t(image)];
+    texture_coordinates(tex, p, uv_s, uv_t, s, t);
+    return !tex.once || (s >= 0 && s <= 1 && t >= 0 && t <= 1);
+#endif
+}
+
+/// Image texture `image` at (s, t): the colour from the host's sampler (grey on the device).
+SHEAF_HD_INLINE Vec3 sample_at(const SceneView& scene, int32_t image, float s, float t) {
+#if SHEAF_DEVICE_PASS
+    (void)scene, (void)image, (void)s, (void)t;
     return Vec3(0.5f);
 #else
-    float s, t;
-    texture_coordinates(scene.textures[size_t(image)], p, uv_s, uv_t, s, t);
     return scene.sampler->sample(uint32_t(image), s, t);
 #endif
 }
 
-/// Whether image texture `image` covers world point p: always, unless it is seen once and p
-/// maps outside s, t in [0, 1]. The device never gets here.
-SHEAF_HD_INLINE bool image_covers(const SceneView& scene, int32_t image, Vec3 p, float uv_s,
+/// Image texture `image` at world point p (repeated, whether seen once or not).
+SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p, float uv_s,
                                   float uv_t) {
-#if SHEAF_DEVICE_PASS
-    (void)scene, (void)image, (void)p, (void)uv_s, (void)uv_t;
-    return true;
-#else
-    const Texture& tex = scene.textures[size_t(image)];
-    if (!tex.once) return true;
     float s, t;
-    texture_coordinates(tex, p, uv_s, uv_t, s, t);
-    return s >= 0 && s <= 1 && t >= 0 && t <= 1;
-#endif
+    image_point(scene, image, p, uv_s, uv_t, s, t);
+    return sample_at(scene, image, s, t);
 }
 
 /// A continuous pattern's value at pattern-space point q of the surface at world point
@@ -118,9 +122,10 @@ struct Evaluator {
         const Pattern& pt = pg.pattern;
         if (pt.kind == PatternKind::Image) {
             if (!scene.sampler) return {Vec3(0.5f), 0, 0};
-            if (!texture_detail::image_covers(scene, pt.image, p, uv_s, uv_t))
+            float s, t;
+            if (!texture_detail::image_point(scene, pt.image, p, uv_s, uv_t, s, t))
                 return {Vec3(1.0f), 0, 1}; // off an image seen once: clear, as POV-Ray's
-            const Vec3 c = sample_image(scene, pt.image, p, uv_s, uv_t);
+            const Vec3 c = texture_detail::sample_at(scene, pt.image, s, t);
             const SurfaceColor tint = entry_color(entries[0]); // filter and transmit of the map
             return {c, tint.filter, tint.transmit};
         }
@@ -200,10 +205,8 @@ SHEAF_HD_INLINE Vec3 bump_map_normal(const SceneView& scene, const NormalPattern
 #else
     const int32_t image = np.pattern.image;
     if (!scene.sampler || image < 0) return n;
-    const Texture& tex = scene.textures[size_t(image)];
     float s, t;
-    texture_coordinates(tex, p, 0, 0, s, t);
-    if (tex.once && !(s >= 0 && s <= 1 && t >= 0 && t <= 1)) return n;
+    if (!image_point(scene, image, p, 0, 0, s, t)) return n;
     int w = 0, h = 0;
     scene.sampler->size(uint32_t(image), w, h);
     if (w <= 0 || h <= 0) return n;

@@ -124,18 +124,7 @@ void Parser::parse_bump_map(const Token& kw, PovNormal& n) {
     for (;;) {
         const Token t = peek();
         if (accept_sym("}")) break;
-        if (accept_kw("map_type")) {
-            img->map_type = int(parse_float());
-            if (img->map_type < 0 || img->map_type > 2) {
-                unsupported(t, "image map_type " + std::to_string(img->map_type) +
-                                   " (planar is used)");
-                img->map_type = 0;
-            }
-        } else if (accept_kw("once")) {
-            img->once = true;
-        } else if (accept_kw("interpolate")) {
-            parse_float(); // Sheaf's images are always sampled bilinearly
-        } else if (accept_kw("use_color") || accept_kw("use_colour")) {
+        if (parse_image_item(*img)) {
         } else if (accept_kw("use_index")) {
             unsupported(t, "bump_map use_index (the grey level is used, not the palette index)");
         } else if (accept_kw("bump_size")) {

@@ -280,6 +280,9 @@ class Parser {
     void parse_image_map(const Token& kw, PovPigment& p);
     /// An image block's [type] "file" (after its '{'), found on the include paths.
     std::shared_ptr<PovImage> parse_image_file(const Token& kw);
+    /// The items image_map and bump_map share (map_type, once, interpolate, use_color), read
+    /// into img; false (nothing read) for any other.
+    bool parse_image_item(PovImage& img);
     /// bump_map { [type] "file" map_type once interpolate use_color use_index bump_size }.
     void parse_bump_map(const Token& kw, PovNormal& n);
     /// After 'normal': { ... } on top of `base` (may be null); null when it changes nothing.

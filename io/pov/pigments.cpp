@@ -245,24 +245,33 @@ std::shared_ptr<PovImage> Parser::parse_image_file(const Token& kw) {
     return img;
 }
 
+bool Parser::parse_image_item(PovImage& img) {
+    const Token t = peek();
+    if (accept_kw("map_type")) {
+        img.map_type = int(parse_float());
+        if (img.map_type < 0 || img.map_type > 2) {
+            unsupported(t, "image map_type " + std::to_string(img.map_type) + " (planar is used)");
+            img.map_type = 0;
+        }
+    } else if (accept_kw("once")) {
+        img.once = true;
+    } else if (accept_kw("interpolate")) {
+        parse_float(); // Sheaf's images are always sampled bilinearly
+    } else if (!accept_kw("use_color") && !accept_kw("use_colour")) {
+        return false;
+    }
+    return true;
+}
+
 void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
     expect_sym("{");
     const std::shared_ptr<PovImage> img = parse_image_file(kw);
     for (;;) {
         const Token t = peek();
         if (accept_sym("}")) break;
-        if (accept_kw("map_type")) {
-            img->map_type = int(parse_float());
-            if (img->map_type < 0 || img->map_type > 2) {
-                unsupported(t, "image map_type " + std::to_string(img->map_type) +
-                                   " (planar is used)");
-                img->map_type = 0;
-            }
-        } else if (accept_kw("once")) {
-            img->once = true;
-        } else if (accept_kw("use_color") || accept_kw("use_colour") || accept_kw("use_index") ||
-                   accept_kw("use_alpha")) {
-        } else if (accept_kw("interpolate") || accept_kw("gamma")) {
+        if (parse_image_item(*img)) {
+        } else if (accept_kw("use_index") || accept_kw("use_alpha")) {
+        } else if (accept_kw("gamma")) {
             parse_float();
         } else if (accept_kw("premultiplied")) {
             parse_bool_opt(true);

@@ -130,12 +130,18 @@ SHEAF_HD_NOINLINE float raw_value(const Pattern& pt, Vec3 p) {
     }
     case PatternKind::Spiral1:
     case PatternKind::Spiral2: {
+        // POV-Ray's: the arms turn about z, the angle counted from -y towards +x; spiral2
+        // adds rings of the distance, each triangle-waved.
         const float arms = pt.param[0] != 0 ? pt.param[0] : 1.0f;
         const float r = sqrtf(p.x * p.x + p.y * p.y);
-        const float a = hdm::atan2f(p.y, p.x) / (2.0f * kPi);
-        if (pt.kind == PatternKind::Spiral1) return r + arms * a;
-        const float s1 = frac(r + arms * a), s2 = frac(r - arms * a);
-        return 0.5f * (s1 + s2);
+        const float a = r > 0 ? hdm::atan2f(p.x, -p.y) / (2.0f * kPi) : 0.0f;
+        const float s = p.z + r + arms * a;
+        if (pt.kind == PatternKind::Spiral1) return s;
+        auto triangle = [](float x) {
+            x = frac(x);
+            return x < 0.5f ? 2.0f * x : 2.0f - 2.0f * x;
+        };
+        return triangle(s) + triangle(r);
     }
     case PatternKind::Quilted: {
         const Vec3 q(frac(p.x + 0.5f) - 0.5f, frac(p.y + 0.5f) - 0.5f, frac(p.z + 0.5f) - 0.5f);

@@ -84,6 +84,22 @@ TEST(Patterns, GradientFrequencyPhaseAndWaves) {
     EXPECT_NEAR(pattern_value_at(p, Vec3(0.5f, 0, 0)), 0.25f, 1e-5);
 }
 
+TEST(Patterns, SpiralsFollowPovRaysFormulas) {
+    // spiral1: z + r + arms * angle / 360, the angle counted from -y towards +x;
+    // spiral2: that triangle-waved, plus r triangle-waved (the default wave is applied after).
+    Pattern p = make(PatternKind::Spiral1);
+    p.param[0] = 2;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.5f, 0, 0.125f)), 0.125f, 1e-5); // 1.125 wraps
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0, -0.25f, 0)), 0.25f, 1e-5);     // angle 0
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0, 0.25f, 0)), 0.25f, 1e-5);      // 0.25 + 1
+    EXPECT_NEAR(pattern_value_at(p, Vec3(-0.1f, 0, 0)), 0.6f, 1e-5);       // 0.1 - 0.5
+    p.kind = PatternKind::Spiral2;
+    // s = 0.2 + 0.5 = 0.7: 0.6 waved; r = 0.2: 0.4 waved; 1.0 stays 1.
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.2f, 0, 0)), 1.0f, 1e-5);
+    // s = 0.1 + 0 = 0.1: 0.2; r = 0.1: 0.2.
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0, -0.1f, 0)), 0.4f, 1e-5);
+}
+
 TEST(Patterns, ContinuousPatternsStayInTheUnitInterval) {
     std::mt19937 g(7);
     std::uniform_real_distribution<float> u(-2, 2); // the bounded patterns vary within 1

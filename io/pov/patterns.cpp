@@ -67,9 +67,10 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         supported = true;
         pt.kind = it->second.kind;
         list = it->second.list;
-        // Marble and wood are triangle-waved unless the scene says otherwise.
+        // Marble, wood and the spirals are triangle-waved unless the scene says otherwise.
         if (!pt.wave_given)
-            pt.wave = (pt.kind == PatternKind::Marble || pt.kind == PatternKind::Wood)
+            pt.wave = (pt.kind == PatternKind::Marble || pt.kind == PatternKind::Wood ||
+                       pt.kind == PatternKind::Spiral1 || pt.kind == PatternKind::Spiral2)
                           ? Wave::Triangle
                           : Wave::Ramp;
         if (k == "gradient") pt.vector = parse_vector();

@@ -30,7 +30,7 @@ SHEAF_HD_INLINE float caustic_gain(const Material& mt, Vec3 n, Vec3 dir) {
 // where the surface's normal facing the shadow ray (direction dir) is n.
 SHEAF_HD_INLINE Vec3 surface_pass(const SceneView& scene, uint32_t material, Vec3 p, float s,
                                   float t, Vec3 n, Vec3 dir) {
-    const uint32_t m = resolve_material(scene, material, p, n);
+    const uint32_t m = resolve_material(scene, material, p, n, s, t);
     const Material& mt = scene.materials[m];
     Vec3 pass = mt.color * mt.transmission;
     if (mt.pigment >= 0) {

@@ -20,7 +20,7 @@ namespace surface_detail {
 SHEAF_HD_NOINLINE void finish_surface(const SceneView& scene, SurfaceHit& h, float uv_s, float uv_t) {
     if (!h.front && scene.materials[h.material].inside >= 0)
         h.material = uint32_t(scene.materials[h.material].inside); // seen from inside
-    h.material = resolve_material(scene, h.material, h.position, h.normal);
+    h.material = resolve_material(scene, h.material, h.position, h.normal, uv_s, uv_t);
     const Material& m = scene.materials[h.material];
     if (m.normal >= 0) {
         Vec3 n = perturb_normal(scene, uint32_t(m.normal), h.position, h.normal);

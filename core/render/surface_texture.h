@@ -120,21 +120,22 @@ struct Evaluator {
             return {sum.rgb * inv, sum.filter * inv, sum.transmit * inv};
         }
         const Pattern& pt = pg.pattern;
+        const Vec3 at = pt.uv ? Vec3(uv_s, uv_t, 0.0f) : p; // where the pattern is evaluated
         if (pt.kind == PatternKind::Image) {
             if (!scene.sampler) return {Vec3(0.5f), 0, 0};
             float s, t;
-            if (!texture_detail::image_point(scene, pt.image, p, uv_s, uv_t, s, t))
+            if (!texture_detail::image_point(scene, pt.image, at, uv_s, uv_t, s, t))
                 return {Vec3(1.0f), 0, 1}; // off an image seen once: clear, as POV-Ray's
             const Vec3 c = texture_detail::sample_at(scene, pt.image, s, t);
             const SurfaceColor tint = entry_color(entries[0]); // filter and transmit of the map
             return {c, tint.filter, tint.transmit};
         }
-        const Vec3 q = pattern_point(pt, p);
+        const Vec3 q = pattern_point(pt, at);
         if (pattern_is_list(pt.kind)) {
             const int i = pattern_index_at(pt, q);
             return entry(entries[uint32_t(i) < pg.count ? uint32_t(i) : pg.count - 1], p, depth);
         }
-        const MapSpan m = map_span(entries, pg.count, pattern_value(scene, pt, q, p, normal));
+        const MapSpan m = map_span(entries, pg.count, pattern_value(scene, pt, q, at, normal));
         if (m.lo == m.hi) return entry(entries[m.lo], p, depth);
         return mix(entry(entries[m.lo], p, depth), entry(entries[m.hi], p, depth), m.t);
     }
@@ -151,22 +152,24 @@ SHEAF_HD_INLINE float slope_value(const SceneView& scene, const Pattern& pt, Vec
 } // namespace texture_detail
 
 /// Follows material switches (texture maps) from `material` at world point p, where the
-/// surface's normal facing the ray is n (zero off surfaces).
+/// surface's normal facing the ray is n (zero off surfaces) and its texture coordinates are
+/// (uv_s, uv_t).
 SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t material, Vec3 p,
-                                          Vec3 n = Vec3(0.0f)) {
+                                          Vec3 n = Vec3(0.0f), float uv_s = 0, float uv_t = 0) {
     using namespace texture_detail;
     for (int depth = 0; depth < kMaxDepth; ++depth) {
         const int32_t sw = scene.materials[material].select;
         if (sw < 0) return material;
         const MaterialSwitch& ms = scene.material_switches[size_t(sw)];
         const MaterialEntry* entries = &scene.material_entries[ms.first];
-        const Vec3 q = pattern_point(ms.pattern, p);
+        const Vec3 at = ms.pattern.uv ? Vec3(uv_s, uv_t, 0.0f) : p;
+        const Vec3 q = pattern_point(ms.pattern, at);
         if (pattern_is_list(ms.pattern.kind)) {
             const uint32_t i = uint32_t(pattern_index_at(ms.pattern, q));
             material = entries[i < ms.count ? i : ms.count - 1].material;
             continue;
         }
-        const float v = pattern_value(scene, ms.pattern, q, p, n);
+        const float v = pattern_value(scene, ms.pattern, q, at, n);
         uint32_t pick = 0;
         for (uint32_t i = 1; i < ms.count; ++i) {
             // The nearer of the two entries around v.
@@ -183,8 +186,8 @@ SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t mater
 }
 
 /// Pigment `pigment` at world point p; (uv_s, uv_t) are the surface's texture coordinates,
-/// used by image pigments with uv mapping, n its normal facing the ray (slope patterns; zero
-/// off surfaces).
+/// read by image pigments with uv mapping and uv patterns (Pattern::uv), n its normal facing the
+/// ray (slope patterns; zero off surfaces).
 SHEAF_HD_INLINE SurfaceColor evaluate_pigment(const SceneView& scene, uint32_t pigment, Vec3 p,
                                               float uv_s, float uv_t, Vec3 n = Vec3(0.0f)) {
     return texture_detail::Evaluator{scene, uv_s, uv_t, n}.pigment(pigment, p, 0);

@@ -73,6 +73,30 @@ TEST(SurfaceTexture, PatternsLiveInTheirOwnSpace) {
     EXPECT_NEAR(evaluate_pigment(p, uint32_t(pg), Vec3(0.5f, 0, 0), 0, 0).rgb.x, 0.25f, 1e-5);
 }
 
+TEST(SurfaceTexture, UvPatternsFollowTheTextureCoordinates) {
+    // A uv pattern (POV-Ray's uv_mapping) reads (u, v, 0), whatever the world point.
+    PreparedScene p;
+    Pattern g = gradient_x();
+    g.uv = true;
+    g.to_pattern = Affine::scale(Vec3(2.0f)); // the pattern scaled by 1/2 in uv space
+    const int32_t pg = add_pigment(p, g, {color_entry(0, Vec3(0)), color_entry(1, Vec3(1))});
+    EXPECT_NEAR(evaluate_pigment(p, uint32_t(pg), Vec3(0.1f, 5, 5), 0.125f, 0.9f).rgb.x, 0.25f,
+                1e-5);
+    EXPECT_NEAR(evaluate_pigment(p, uint32_t(pg), Vec3(0.7f, 0, 0), 0.125f, 0.0f).rgb.x, 0.25f,
+                1e-5);
+    // Texture maps too.
+    p.materials.resize(3);
+    p.materials[0].select = 0;
+    MaterialSwitch sw;
+    sw.pattern = gradient_x();
+    sw.pattern.uv = true;
+    sw.first = 0, sw.count = 2;
+    p.material_switches.push_back(sw);
+    p.material_entries = {{0.0f, 1}, {1.0f, 2}};
+    EXPECT_EQ(resolve_material(p, 0, Vec3(0.9f, 0, 0), Vec3(0, 1, 0), 0.1f, 0.5f), 1u);
+    EXPECT_EQ(resolve_material(p, 0, Vec3(0.1f, 0, 0), Vec3(0, 1, 0), 0.9f, 0.5f), 2u);
+}
+
 TEST(SurfaceTexture, ListsAndNestedPigments) {
     PreparedScene p;
     const int32_t inner = add_pigment(p, gradient_x(), {color_entry(0, Vec3(0)), color_entry(1, Vec3(1))});

@@ -117,7 +117,11 @@ struct Pattern {
     Wave wave = Wave::Ramp;
     int8_t octaves = 6; // turbulence
     bool has_turbulence = false;
-    Affine to_pattern;    // world -> pattern space
+    Affine to_pattern; // world -> pattern space (uv: texture coordinates -> pattern space)
+    // Evaluated at the surface's texture coordinates (u, v, 0) instead of the world point
+    // (POV-Ray's uv_mapping): pigments and texture maps; off surfaces (media, the sky) the
+    // coordinates are (0, 0).
+    bool uv = false;
     Vec3 turbulence{0, 0, 0};
     float omega = 0.5f, lambda = 2.0f;
     float frequency = 1.0f, phase = 0.0f;

@@ -111,7 +111,8 @@ struct Builder {
             if (!is_finite(t.point(v)))
                 p.error_at(o.where, "a vertex is not a finite number (a division by zero, or a "
                                     "scale beyond 1e38?)");
-        if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty() && flags == 0) {
+        if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty() && o.mesh->uvs.empty() &&
+            flags == 0) {
             append_mesh(loose[mat], *o.mesh, t);
             return;
         }
@@ -158,6 +159,10 @@ struct Builder {
             if (o.shape.kind == ShapeKind::Isosurface) n.iso = isosurface(o);
             n.transform = o.local;
             n.material = material(tex, in, inside);
+            if (!geometry_only && materials.uses_uv(n.material))
+                p.unsupported(o.where, "uv_mapping on " + o.where.text +
+                                           " (only meshes carry uv coordinates; the pattern is "
+                                           "evaluated at the point's x and y)");
             n.inverse = o.inverse;
             so.nodes.push_back(n);
             return int(so.nodes.size() - 1);

@@ -13,6 +13,19 @@ namespace {
 
 constexpr int kMaxDepth = 12; // nested texture maps; deeper ones use their first entry
 
+/// Sets a flag for a scope and puts its old value back after.
+class FlagScope {
+  public:
+    FlagScope(bool& flag, bool value) : flag_(flag), old_(flag) { flag_ = value; }
+    ~FlagScope() { flag_ = old_; }
+    FlagScope(const FlagScope&) = delete;
+    FlagScope& operator=(const FlagScope&) = delete;
+
+  private:
+    bool& flag_;
+    bool old_;
+};
+
 std::string key_of(const Material& m) {
     std::ostringstream k;
     k.precision(9);
@@ -112,13 +125,18 @@ Highlights layer_highlights(const PovTexture& t) {
 
 Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     Pattern p = lower_pattern(pt, eff);
-    // Sheaf world -> POV-Ray world (the z mirror) -> the pattern's own space.
-    p.to_pattern = p.to_pattern * pov_to_sheaf();
+    if (uv_) { // (u, v, 0) -> the pattern's own space: no world, no mirror
+        p.uv = true;
+        ++uv_patterns_;
+    } else { // Sheaf world -> POV-Ray world (the z mirror) -> the pattern's own space
+        p.to_pattern = p.to_pattern * pov_to_sheaf();
+    }
     if (pt.kind == PatternKind::Function && pt.function) p.program = function(*pt.function);
     return p;
 }
 
 int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
+    const FlagScope space(uv_, false); // normals are evaluated in space (uv_mapping warned)
     // A map's entries first, placed by its transforms too (the parser left them no maps).
     std::vector<NormalMapEntry> map;
     for (const auto& [value, entry] : n.map)
@@ -173,14 +191,14 @@ int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern,
                                const std::string& colorspace) {
     std::ostringstream k;
     k.precision(9);
-    k << img.path << '|' << img.map_type << img.uv << img.once << colorspace;
+    k << img.path << '|' << img.map_type << img.once << colorspace;
     for (auto& row : to_pattern.m)
         for (float v : row) k << ',' << v;
     if (auto it = images_.find(k.str()); it != images_.end()) return it->second;
     Texture t;
     t.path = img.path;
-    t.mapping = img.uv              ? TextureMapping::Uv
-                : img.map_type == 1 ? TextureMapping::Spherical
+    // A uv-mapped image is read at (u, v, 0) (Pattern::uv), planar like any other.
+    t.mapping = img.map_type == 1   ? TextureMapping::Spherical
                 : img.map_type == 2 ? TextureMapping::Cylindrical
                                     : TextureMapping::Planar;
     t.transform = to_pattern;
@@ -203,7 +221,9 @@ PigmentEntry MaterialBuilder::entry(const PovMapEntry& e, const Affine& eff) {
 }
 
 int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
-    const Affine eff = outer * pg.local;
+    // A uv-mapped pigment is placed by its own transforms only.
+    const Affine eff = pg.uv ? pg.local : outer * pg.local;
+    const FlagScope uv(uv_, uv_ || pg.uv);
     Pigment out;
     if (!pg.patterned) {
         for (int i = 0; i < 5; ++i) out.color[i] = float(pg.color[i]);
@@ -228,27 +248,36 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
 
 uint32_t MaterialBuilder::material(const PovTexture& t, const PovInterior* in,
                                    const PovTexture* inside) {
+    const size_t uv_before = uv_patterns_;
     const uint32_t front = material_in(t, in, Affine(), 0);
-    if (!inside) return front;
-    // The same interior behind both faces: the inside material differs in its texture only.
-    const int32_t back = int32_t(material_in(*inside, in, Affine(), 0));
-    auto [it, added] = insides_.emplace(std::make_pair(front, back), 0);
-    if (added) {
-        Material m = scene_.materials[front]; // a copy: plain materials are shared
-        m.inside = back;
-        it->second = scene_.add_material(m);
+    uint32_t out = front;
+    if (inside) {
+        // The same interior behind both faces: the inside material differs in its texture only.
+        const int32_t back = int32_t(material_in(*inside, in, Affine(), 0));
+        auto [it, added] = insides_.emplace(std::make_pair(front, back), 0);
+        if (added) {
+            Material m = scene_.materials[front]; // a copy: plain materials are shared
+            m.inside = back;
+            it->second = scene_.add_material(m);
+        }
+        out = it->second;
     }
-    return it->second;
+    if (uv_patterns_ > uv_before || uses_uv(front)) uv_materials_.insert(out);
+    return out;
 }
 
 uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in,
                                       const Affine& outer, int depth) {
-    const Affine eff = outer * t.local;
+    // A uv-mapped texture's patterns are placed by its own transforms only (what holds it
+    // does not move them); its normal and media stay in space, placed as usual.
+    const Affine space = outer * t.local;
+    const Affine eff = t.uv ? t.uv_local : space;
+    const FlagScope uv(uv_, uv_ || t.uv);
     if (t.is_map && !t.map_entries.empty()) {
-        if (depth >= kMaxDepth) return material_in(*t.map_entries.front().second, in, eff, depth);
+        if (depth >= kMaxDepth) return material_in(*t.map_entries.front().second, in, space, depth);
         std::vector<MaterialEntry> entries;
         for (const auto& [value, sub] : t.map_entries)
-            entries.push_back({float(value), material_in(*sub, in, eff, depth + 1)});
+            entries.push_back({float(value), material_in(*sub, in, space, depth + 1)});
         MaterialSwitch sw;
         sw.pattern = pattern(t.map_pattern, eff);
         sw.first = uint32_t(scene_.material_entries.size());
@@ -318,6 +347,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
                 Vec3(float(pm.absorption[0]), float(pm.absorption[1]), float(pm.absorption[2]));
             md.samples = uint32_t(pm.samples);
             std::vector<uint32_t> densities;
+            const FlagScope space_densities(uv_, false); // a medium has no surface
             for (const auto& d : pm.densities)
                 densities.push_back(uint32_t(pigment(*d, outer * in->local * pm.local)));
             md.density_first = uint32_t(scene_.medium_densities.size());
@@ -340,14 +370,15 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         std::vector<PigmentEntry> layers;
         for (const PovTextureRef& l : t.below) {
             const PovPigment& lp = l->pigment ? *l->pigment : black;
-            layers.push_back(
-                entry({0, lp.color, std::make_shared<PovPigment>(lp)}, outer * l->local));
+            const FlagScope layer_uv(uv_, l->uv);
+            layers.push_back(entry({0, lp.color, std::make_shared<PovPigment>(lp)},
+                                   l->uv ? l->uv_local : outer * l->local));
         }
         layers.push_back(entry({0, top.color, std::make_shared<PovPigment>(top)}, eff));
         m.pigment = layer_pigment(layers);
         // The normal of the top-most layer that has one.
         const PovNormal* n = t.normal.get();
-        Affine n_eff = eff;
+        Affine n_eff = space;
         for (auto it = t.below.rbegin(); !n && it != t.below.rend(); ++it)
             if ((*it)->normal) n = (*it)->normal.get(), n_eff = outer * (*it)->local;
         if (n) m.normal = normal(*n, n_eff);
@@ -359,7 +390,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
             m.transmission = float(std::clamp(top.color[3], 0.0, 1.0));
             if (top.color[4] > 0) m.pigment = pigment(top, eff); // transmit needs a pigment
         }
-        if (t.normal) m.normal = normal(*t.normal, eff);
+        if (t.normal) m.normal = normal(*t.normal, space);
     }
     // Emission scales the surface colour; patterned surfaces glow with their mean colour.
     Vec3 mean = rgb(base_color);

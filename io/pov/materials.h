@@ -8,6 +8,7 @@
 #include "io/pov/parser.h"
 
 #include <map>
+#include <set>
 #include <string>
 
 namespace sheaf::io::pov {
@@ -37,6 +38,8 @@ class MaterialBuilder {
     int32_t function(const PovFunction& f);
     /// Normal `n` placed by `eff`, its map's entries first: its index in Scene::normal_patterns.
     int32_t normal(const PovNormal& n, const Affine& eff);
+    /// Whether `material` (one material() made) has patterns evaluated at uv coordinates.
+    bool uses_uv(uint32_t material) const { return uv_materials_.count(material) > 0; }
 
   private:
     uint32_t material_in(const PovTexture& t, const PovInterior* in, const Affine& outer,
@@ -55,6 +58,11 @@ class MaterialBuilder {
     std::map<std::pair<uint32_t, int32_t>, uint32_t> insides_; // (front, inside) -> material
     std::map<std::string, int32_t> images_; // image textures by file and transform
     FnCompiler functions_;
+    // While set, the patterns made are uv-mapped (Pattern::uv): inside a uv_mapping texture or
+    // pigment. uv_patterns_ counts them, so material() can tell which materials have them.
+    bool uv_ = false;
+    size_t uv_patterns_ = 0;
+    std::set<uint32_t> uv_materials_;
 };
 
 } // namespace sheaf::io::pov

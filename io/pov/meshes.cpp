@@ -11,11 +11,31 @@ namespace sheaf::io::pov {
 
 namespace {
 
-void add_triangle(Mesh& m, Vec3 a, Vec3 b, Vec3 c, const Vec3* n) {
+/// Adds a triangle of its own three corners, with their normals and POV-Ray uv coordinates
+/// (u, v in x and y) when given.
+void add_triangle(Mesh& m, Vec3 a, Vec3 b, Vec3 c, const Vec3* n, const Vec3* uv = nullptr) {
     const uint32_t base = uint32_t(m.positions.size());
     m.positions.insert(m.positions.end(), {a, b, c});
     if (n) m.normals.insert(m.normals.end(), {n[0], n[1], n[2]});
+    if (uv)
+        for (int k = 0; k < 3; ++k) m.uvs.insert(m.uvs.end(), {uv[k].x, uv[k].y});
     m.indices.insert(m.indices.end(), {base, base + 1, base + 2});
+}
+
+/// POV-Ray's uv coordinates of a mesh whose triangles give them: the triangles that give none
+/// take (0, 0) at every corner, as POV-Ray does; none at all: none.
+void complete_uvs(Mesh& m, bool any_uv, const std::vector<bool>& has_uv) {
+    if (!any_uv) {
+        m.uvs.clear();
+        return;
+    }
+    std::vector<float> uvs;
+    size_t k = 0;
+    for (bool given : has_uv) {
+        for (int c = 0; c < 6; ++c) uvs.push_back(given ? m.uvs[k + size_t(c)] : 0.0f);
+        if (given) k += 6;
+    }
+    m.uvs = std::move(uvs);
 }
 
 /// Gives flat triangles (no normals) face normals when some triangles of the mesh are smooth.
@@ -66,8 +86,8 @@ void Parser::parse_triangle(const Token& kw, PovObject& o, bool smooth) {
 void Parser::parse_mesh(const Token& kw, PovObject& o) {
     expect_sym("{");
     auto mesh = std::make_shared<Mesh>();
-    std::vector<bool> smooth;
-    bool any_smooth = false;
+    std::vector<bool> smooth, has_uv;
+    bool any_smooth = false, any_uv = false;
     for (;;) {
         const Token t = peek();
         const bool tri = is_kw_tok(t, "triangle"), stri = is_kw_tok(t, "smooth_triangle");
@@ -83,14 +103,17 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
                 n[i] = parse_vector();
             }
         }
+        Vec3 uv[3];
+        bool given_uv = false;
         for (;;) {
             const Token i = peek();
             if (accept_sym("}")) break;
             if (accept_kw("uv_vectors")) {
                 for (int k = 0; k < 3; ++k) {
                     if (k) accept_sym(",");
-                    parse_vector();
+                    uv[k] = parse_vector();
                 }
+                given_uv = true;
             } else if (accept_kw("texture")) {
                 unsupported(i, "textures of single mesh triangles (the mesh's texture is used)");
                 if (is_sym_tok(peek(), "{"))
@@ -101,13 +124,16 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
                 error_expected(i, "uv_vectors, texture or '}'");
             }
         }
-        add_triangle(*mesh, p[0], p[1], p[2], stri ? n : nullptr);
+        add_triangle(*mesh, p[0], p[1], p[2], stri ? n : nullptr, given_uv ? uv : nullptr);
         smooth.push_back(stri);
         any_smooth = any_smooth || stri;
+        has_uv.push_back(given_uv);
+        any_uv = any_uv || given_uv;
         if (mesh->positions.size() > size_t(kMaxArrayElements)) error_at(t, "mesh too large");
     }
     if (mesh->indices.empty()) error_expected(peek(), "triangle or smooth_triangle in mesh");
     complete_normals(*mesh, any_smooth, smooth);
+    complete_uvs(*mesh, any_uv, has_uv);
     o.kind = PovKind::Mesh;
     o.mesh = mesh;
     bool texture_here = false;
@@ -117,8 +143,8 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
 
 void Parser::parse_mesh2(const Token& kw, PovObject& o) {
     expect_sym("{");
-    std::vector<Vec3> vertices, normals;
-    std::vector<Vec3> faces, normal_faces; // index triples as floats
+    std::vector<Vec3> vertices, normals, uvs;
+    std::vector<Vec3> faces, normal_faces, uv_faces; // index triples as floats
     // A section: "NAME { count, item, item ... }"; vectors are kept, floats after a vector
     // (texture indices of faces) are skipped.
     auto section = [&](std::vector<Vec3>& out) {
@@ -154,13 +180,11 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
             section(faces);
         else if (accept_kw("normal_indices"))
             section(normal_faces);
-        else if (accept_kw("uv_vectors") || accept_kw("uv_indices")) {
-            std::vector<Vec3> ignored;
-            if (t.text == "uv_indices")
-                section(ignored);
-            else
-                skip_block();
-        } else if (accept_kw("texture_list")) {
+        else if (accept_kw("uv_vectors"))
+            section(uvs);
+        else if (accept_kw("uv_indices"))
+            section(uv_faces);
+        else if (accept_kw("texture_list")) {
             unsupported(t, "mesh2 texture_list (the mesh's texture is used)");
             skip_block();
         } else {
@@ -170,28 +194,37 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
     if (vertices.empty() || faces.empty())
         error_at(kw, "mesh2 needs vertex_vectors and face_indices");
     auto mesh = std::make_shared<Mesh>();
-    const bool smooth = !normals.empty();
+    const bool smooth = !normals.empty(), uv = !uvs.empty();
     if (smooth && !normal_faces.empty() && normal_faces.size() != faces.size())
         error_at(kw, "normal_indices and face_indices differ in count");
+    if (uv && !uv_faces.empty() && uv_faces.size() != faces.size())
+        error_at(kw, "uv_indices and face_indices differ in count");
     auto index = [&](float f, size_t count) {
         if (f < 0 || size_t(f) >= count)
             error_at(kw, "mesh2 index " + std::to_string(long(f)) + " out of range (" +
                              std::to_string(count) + ")");
         return uint32_t(f);
     };
-    if (smooth && (!normal_faces.empty() || normals.size() != vertices.size())) {
+    // Normals and uv coordinates indexed apart from the vertices (or counted differently):
+    // every triangle gets corners of its own.
+    const bool own_normals = smooth && (!normal_faces.empty() || normals.size() != vertices.size());
+    const bool own_uvs = uv && (!uv_faces.empty() || uvs.size() != vertices.size());
+    if (own_normals || own_uvs) {
         const std::vector<Vec3>& nf = normal_faces.empty() ? faces : normal_faces;
+        const std::vector<Vec3>& tf = uv_faces.empty() ? faces : uv_faces;
         for (size_t f = 0; f < faces.size(); ++f) {
-            Vec3 p[3], n[3];
+            Vec3 p[3], n[3], t[3];
             for (int k = 0; k < 3; ++k) {
                 p[k] = vertices[index(faces[f][k], vertices.size())];
-                n[k] = normals[index(nf[f][k], normals.size())];
+                if (smooth) n[k] = normals[index(nf[f][k], normals.size())];
+                if (uv) t[k] = uvs[index(tf[f][k], uvs.size())];
             }
-            add_triangle(*mesh, p[0], p[1], p[2], n);
+            add_triangle(*mesh, p[0], p[1], p[2], smooth ? n : nullptr, uv ? t : nullptr);
         }
     } else {
         mesh->positions = vertices;
         if (smooth) mesh->normals = normals;
+        for (const Vec3& t : uvs) mesh->uvs.insert(mesh->uvs.end(), {t.x, t.y});
         for (const Vec3& f : faces)
             for (int k = 0; k < 3; ++k) mesh->indices.push_back(index(f[k], vertices.size()));
     }

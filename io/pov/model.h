@@ -44,7 +44,6 @@ struct PovFinish {
 struct PovImage {
     std::string path;        // resolved against the scene's folder and the include paths
     int map_type = 0;        // 0 planar, 1 spherical, 2 cylindrical
-    bool uv = false;         // uv_mapping: the surface's texture coordinates
     double filter_all = 0, transmit_all = 0;
     bool once = false;       // bump_map once: no change outside the image
     Token where;             // where the scene asked for it, for errors
@@ -90,6 +89,9 @@ struct PovPigment {
     PovPattern pattern;
     std::vector<PovMapEntry> entries;
     Affine local;
+    // uv_mapping: evaluated at the surface's uv coordinates (u, v, 0), placed by `local` only
+    // (what holds the pigment does not move it, as in POV-Ray).
+    bool uv = false;
 };
 
 /// A normal: a pattern and its bump size.
@@ -124,6 +126,10 @@ struct PovTexture {
     std::shared_ptr<const PovNormal> normal;   // null: none
     PovFinish finish;
     Affine local; // texture space -> the space of what holds it
+    // uv_mapping: its patterns are evaluated at the surface's uv coordinates (u, v, 0), placed
+    // by the texture's own transforms (`uv_local`); the object's transforms do not move them.
+    bool uv = false;
+    Affine uv_local;
     std::vector<PovTextureRef> below; // layered: the layers under this one, bottom first
     bool is_map = false;              // chosen by `map_pattern` among `map_entries`
     PovPattern map_pattern;
@@ -132,6 +138,9 @@ struct PovTexture {
 
 /// A texture moved by a transform applied after it (the object's, or the texture's own).
 PovTextureRef transformed(const PovTextureRef& t, const Affine& m);
+/// `t` uv-mapped (an object's uv_mapping), placed by the transforms it has now (one that is
+/// already keeps its placement).
+PovTextureRef uv_mapped(const PovTextureRef& t);
 
 /// Whether two textures are the same one: the same object, or copies of one (the same pigment
 /// and normal, equal finishes and placements, the same layers); texture maps only as the same
@@ -194,6 +203,7 @@ struct PovObject {
     PovTextureRef interior_texture; // what it shows from inside; null: inherited (or none)
     bool inverse = false;
     bool hollow = false; // media around it fill it (`hollow`; set on a CSG, on its members too)
+    bool uv_mapping = false; // its textures are uv-mapped (the object's uv_mapping)
     uint8_t flags = 0; // ObjectFlag bits: no_shadow, no_reflection, no_image
     PovLight light;
     Token where; // the keyword that started it, for warnings

@@ -103,8 +103,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
             parse_bump_map(t, n);
             have = true;
         } else if (k == "uv_mapping") {
-            unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is "
-                           "evaluated in space)");
+            unsupported(t, "uv_mapping of a normal (the normal pattern is evaluated in space)");
         } else if (k == "accuracy" || k == "no_bump_scale") {
             if (starts_expression(peek())) parse_expr();
         } else {

@@ -291,6 +291,8 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
     const std::string& k = t.text;
     // Pigments, normals and finishes given after a texture change that texture, in its space.
     auto current = [&]() { return o.texture ? *o.texture : model.default_texture; };
+    // The object's texture from now on (uv-mapped after the object's uv_mapping).
+    auto set_texture = [&](PovTextureRef t) { o.texture = o.uv_mapping ? uv_mapped(t) : t; };
     if (k == "texture") {
         advance();
         PovTextureRef tex = parse_texture_layers(model.default_texture);
@@ -304,23 +306,23 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
             layered->below = std::move(below);
             tex = layered;
         }
-        o.texture = tex;
+        set_texture(tex);
         texture_here = true;
     } else if (k == "pigment") {
         advance();
         PovTexture tex = current();
         tex.pigment = parse_pigment(tex.pigment ? *tex.pigment : PovPigment{});
-        o.texture = std::make_shared<const PovTexture>(std::move(tex));
+        set_texture(std::make_shared<const PovTexture>(std::move(tex)));
     } else if (k == "normal") {
         advance();
         PovTexture tex = current();
         tex.normal = parse_normal(tex.normal.get());
-        o.texture = std::make_shared<const PovTexture>(std::move(tex));
+        set_texture(std::make_shared<const PovTexture>(std::move(tex)));
     } else if (k == "finish") {
         advance();
         PovTexture tex = current();
         parse_finish(tex.finish);
-        o.texture = std::make_shared<const PovTexture>(std::move(tex));
+        set_texture(std::make_shared<const PovTexture>(std::move(tex)));
     } else if (k == "interior") {
         advance();
         o.interior = std::make_shared<const PovInterior>(
@@ -366,9 +368,10 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
                k == "global_lights") {
         advance();
         parse_bool_opt(true);
-    } else if (k == "uv_mapping") {
+    } else if (k == "uv_mapping") { // the object's textures, given before or after it
         advance();
-        unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is evaluated in space)");
+        o.uv_mapping = true;
+        set_texture(o.texture);
     } else if (k == "no_shadow" || k == "no_reflection" || k == "no_image") {
         advance();
         const uint8_t flag = k == "no_shadow" ? kNoShadow : k == "no_reflection" ? kNoReflection

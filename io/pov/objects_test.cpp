@@ -215,6 +215,60 @@ TEST(PovObjects, TrianglesMeshesPolygons) {
     EXPECT_TRUE(r.warnings.empty());
 }
 
+/// The uv coordinates of corner k (0, 1, 2) of triangle t of mesh m.
+std::pair<float, float> corner_uv(const Mesh& m, size_t t, int k) {
+    const uint32_t i = m.indices[3 * t + size_t(k)];
+    return {m.uvs[2 * i], m.uvs[2 * i + 1]};
+}
+
+TEST(PovObjects, MeshesKeepTheirUvCoordinates) {
+    using UV = std::pair<float, float>;
+    // mesh: a triangle's uv_vectors; a triangle without takes (0, 0), as in POV-Ray.
+    PovResult r = load_text("mesh { triangle { 0, x, y uv_vectors <0.5,0>, <1,0.25>, <0,1> }\n"
+                            "       triangle { 0, y, -x } }\n");
+    const Mesh& m = r.scene.meshes[r.scene.objects[0].mesh];
+    ASSERT_EQ(m.uvs.size(), 2 * m.positions.size());
+    EXPECT_EQ(corner_uv(m, 0, 0), UV(0.5f, 0.0f));
+    EXPECT_EQ(corner_uv(m, 0, 1), UV(1.0f, 0.25f));
+    EXPECT_EQ(corner_uv(m, 0, 2), UV(0.0f, 1.0f));
+    EXPECT_EQ(corner_uv(m, 1, 1), UV(0.0f, 0.0f));
+    // A mesh without any keeps none.
+    r = load_text("mesh { triangle { 0, x, y } }");
+    EXPECT_TRUE(r.scene.meshes[0].uvs.empty());
+
+    // mesh2: uv_vectors by the face indices (shared vertices) ...
+    const std::string quad = "mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }\n";
+    r = load_text(quad + "uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> }\n"
+                         "face_indices { 2, <0,1,2>, <0,2,3> } }");
+    const Mesh& shared = r.scene.meshes[0];
+    EXPECT_EQ(shared.positions.size(), 4u);
+    EXPECT_EQ(corner_uv(shared, 1, 1), UV(1.0f, 1.0f));
+    EXPECT_EQ(corner_uv(shared, 1, 2), UV(0.0f, 1.0f));
+    // ... or by uv_indices of their own: corners of their own.
+    r = load_text(quad + "uv_vectors { 2, <0.25,0.5>, <0.75,1> }\n"
+                         "face_indices { 2, <0,1,2>, <0,2,3> }\n"
+                         "uv_indices { 2, <0,1,1>, <1,0,0> } }");
+    const Mesh& own = r.scene.meshes[0];
+    EXPECT_EQ(own.triangle_count(), 2u);
+    EXPECT_EQ(own.uvs.size(), 2 * own.positions.size());
+    EXPECT_EQ(corner_uv(own, 0, 0), UV(0.25f, 0.5f));
+    EXPECT_EQ(corner_uv(own, 0, 2), UV(0.75f, 1.0f));
+    EXPECT_EQ(corner_uv(own, 1, 0), UV(0.75f, 1.0f));
+    EXPECT_EQ(corner_uv(own, 1, 1), UV(0.25f, 0.5f));
+    EXPECT_EQ(own.positions[own.indices[5]], Vec3(0, 1, 0));
+    EXPECT_NO_THROW(r.scene.validate());
+
+    // Wrong counts and indices are errors at the mesh.
+    EXPECT_NE(error_of(quad + "uv_vectors { 1, <0,0> } face_indices { 1, <0,1,2> } "
+                              "uv_indices { 1, <0,0,3> } }")
+                  .find("index 3 out of range (1)"),
+              std::string::npos);
+    EXPECT_NE(error_of(quad + "uv_vectors { 1, <0,0> } face_indices { 1, <0,1,2> } "
+                              "uv_indices { 2, <0,0,0>, <0,0,0> } }")
+                  .find("uv_indices and face_indices differ in count"),
+              std::string::npos);
+}
+
 /// The area of a mesh's triangles.
 float mesh_area(const Mesh& m) {
     float a = 0;

@@ -135,7 +135,7 @@ void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
         } else if (k == "quick_color" || k == "quick_colour") {
             parse_color();
         } else if (k == "uv_mapping") {
-            unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is evaluated in space)");
+            pg.uv = true;
         } else if (k == "color" || k == "colour") {
             error_expected(t, "a colour");
         } else {

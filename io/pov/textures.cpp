@@ -9,6 +9,16 @@
 
 namespace sheaf::io::pov {
 
+PovTextureRef uv_mapped(const PovTextureRef& t) {
+    if (!t) return t;
+    if (t->uv) return t; // placed where it became uv-mapped
+    auto copy = std::make_shared<PovTexture>(*t);
+    copy->uv = true;
+    copy->uv_local = copy->local;
+    for (PovTextureRef& layer : copy->below) layer = uv_mapped(layer);
+    return copy;
+}
+
 PovTextureRef transformed(const PovTextureRef& t, const Affine& m) {
     if (!t) return t;
     auto copy = std::make_shared<PovTexture>(*t);
@@ -82,6 +92,17 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
     bool list_given = false;
     Token pattern_at;
     bool unsupported_pattern = false;
+    bool uv = tx.uv;
+    Token uv_at;
+    // A uv-mapped texture is placed by its own transforms only (PovTexture::uv_local).
+    auto done = [&](PovTexture& out) -> PovTexture& {
+        out.uv = uv;
+        if (uv) out.uv_local = out.local;
+        if (uv && out.normal && !uv_at.text.empty())
+            unsupported(uv_at, "uv_mapping of the texture's normal (the normal pattern is "
+                               "evaluated in space)");
+        return out;
+    };
     for (;;) {
         const Token t = peek();
         if (accept_sym(close)) break;
@@ -127,7 +148,8 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
             unsupported(t, "material_map (ignored)");
             skip_block();
         } else if (k == "uv_mapping") {
-            unsupported(t, "uv_mapping (surfaces carry no POV-Ray uv coordinates; the pattern is evaluated in space)");
+            uv = true;
+            uv_at = t;
         } else if (k == "quick_color" || k == "quick_colour") {
             parse_color();
         } else {
@@ -146,14 +168,14 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
             const Affine local = tx.local;
             tx = first ? *first : base;
             tx.local = local * tx.local;
-            return tx;
+            return done(tx);
         }
         // Missing list entries: POV-Ray leaves them to the default texture.
         if (pattern_is_list(tx.map_pattern.kind))
             while (int(tx.map_entries.size()) < list)
                 tx.map_entries.push_back({0.0, std::make_shared<const PovTexture>(base)});
     }
-    return tx;
+    return done(tx);
 }
 
 std::vector<std::pair<double, PovTextureRef>> Parser::parse_texture_map() {

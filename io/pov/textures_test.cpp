@@ -379,6 +379,53 @@ TEST(PovTextures, ImageMapsAreTextures) {
     EXPECT_EQ(off.transmit, 1);
 }
 
+// uv_mapping: the pattern reads the mesh's (u, v, 0), placed by the transforms at and inside
+// the level that says uv_mapping (texture, pigment or object); the object's transforms, and
+// a texture's around a uv-mapped pigment, do not move it (as povray renders them).
+TEST(PovTextures, UvMappingReadsTheSurfacesUvCoordinates) {
+    const std::string quad =
+        "#declare Q = mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }\n"
+        "  uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> } face_indices { 2, <0,1,2>, <0,2,3> } }\n"
+        "#declare G = pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } }\n";
+    // u = 0.25 is pattern point 0.5 in each: the scale 0.5 counts, the 3 and the 4 do not.
+    for (const std::string& object :
+         {"object { Q texture { uv_mapping pigment { G } scale 0.5 } scale 3 translate 5 }",
+          "object { Q texture { pigment { G uv_mapping scale 0.5 } scale 4 } rotate 30*y }",
+          "object { Q uv_mapping texture { pigment { G } scale 0.5 } scale 3 }",
+          "object { Q texture { pigment { G } scale 0.5 } uv_mapping scale 3 }"}) {
+        SCOPED_TRACE(object);
+        const PovResult r = load_text(quad + object + "\n");
+        EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+        ASSERT_EQ(r.scene.objects.size(), 1u);
+        const Material& m = r.scene.materials[r.scene.objects[0].material];
+        ASSERT_GE(m.pigment, 0);
+        const Pattern& pt = r.scene.pigments[size_t(m.pigment)].pattern;
+        EXPECT_TRUE(pt.uv);
+        EXPECT_NEAR(pt.to_pattern.point(Vec3(0.25f, 0.5f, 0)).x, 0.5f, 1e-5);
+        const PreparedScene p = prepare_scene(r.scene);
+        EXPECT_NEAR(evaluate_pigment(p, uint32_t(m.pigment), Vec3(9), 0.25f, 0.5f).rgb.x, 0.5f,
+                    1e-5);
+    }
+    // Without it, the object's transforms move the pattern as usual.
+    const PovResult space = load_text(quad + "object { Q pigment { G } scale 4 }\n");
+    const Material& sm = space.scene.materials[space.scene.objects[0].material];
+    EXPECT_FALSE(space.scene.pigments[size_t(sm.pigment)].pattern.uv);
+    // The mesh's uv coordinates reach the prepared triangles.
+    const PovResult r = load_text(quad + "object { Q uv_mapping pigment { G } }\n");
+    const PreparedScene p = prepare_scene(r.scene);
+    ASSERT_EQ(p.uvs.size(), 2u);
+    EXPECT_FLOAT_EQ(p.uvs[0].s[1], 1.0f);
+
+    // Analytic shapes carry no uv coordinates, and normals are evaluated in space: warned.
+    const PovResult sphere = load_text("sphere { 0, 1 uv_mapping pigment { checker } }\n");
+    ASSERT_EQ(sphere.warnings.size(), 1u);
+    EXPECT_NE(sphere.warnings[0].find("uv_mapping on sphere"), std::string::npos);
+    const PovResult normal =
+        load_text(quad + "object { Q texture { uv_mapping normal { bumps 0.5 } } }\n");
+    ASSERT_EQ(normal.warnings.size(), 1u);
+    EXPECT_NE(normal.warnings[0].find("uv_mapping of the texture's normal"), std::string::npos);
+}
+
 // POV-Ray's bump_map: the grey levels (as stored, 0..1) at the point and one pixel down-left and
 // down-right of it are heights times bump_size; the normal leans as the plane through them, in
 // POV-Ray's frame. On a ramp rising one level per pixel along x, 16 pixels wide, the heights

@@ -294,6 +294,10 @@ TEST(XmlErrors, ProceduralTexturesAreCheckedLikeTheRest) {
                  "2:28", "material 'b' has an inside material of its own");
     EXPECT_ERROR("<scene>\n<normal name=\"n\" pattern=\"ripples\" wave=\"sawtooth\"/></scene>",
                  "2:42", "'sawtooth' is not one of ramp, triangle, sine, scallop, cubic, poly");
+    EXPECT_ERROR("<scene>\n<normal name=\"n\" pattern=\"bumps\" mapping=\"uv\"/></scene>", "2:43",
+                 "normals are evaluated in space");
+    EXPECT_ERROR("<scene>\n<pigment name=\"n\" pattern=\"bumps\" mapping=\"st\"/></scene>", "2:44",
+                 "'st' is not one of space, uv");
 
     // Entries: counts, values, colours or pigments.
     EXPECT_ERROR("<scene><pigment name=\"c\" pattern=\"checker\"><entry color=\"1\"/></pigment>"

@@ -116,9 +116,15 @@ Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
 
     Pattern pt;
     pt.kind = kind;
-    // Marble and wood are triangle-waved unless the scene says otherwise, as in POV-Ray.
-    pt.wave =
-        kind == PatternKind::Marble || kind == PatternKind::Wood ? Wave::Triangle : Wave::Ramp;
+    // Marble, wood and the spirals are triangle-waved unless the scene says otherwise, as in
+    // POV-Ray.
+    pt.wave = kind == PatternKind::Marble || kind == PatternKind::Wood ||
+                      kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2
+                  ? Wave::Triangle
+                  : Wave::Ramp;
+    // mapping="uv": the pattern reads the surface's texture coordinates (u, v, 0).
+    int mapping = 0;
+    if (a.get("mapping", mapping, {"space", "uv"})) pt.uv = mapping == 1;
 
     std::vector<float> turbulence;
     if (a.get_numbers("turbulence", turbulence)) {

@@ -346,6 +346,35 @@ TEST(XmlPatterns, ACheckerPigmentGivesTwoColours) {
     EXPECT_GT(pixel(f, 24, 8).x, 0.99f);
 }
 
+// mapping="uv": the pattern reads the mesh's texture coordinates. The quad's u runs against
+// x, so a uv gradient darkens to the right where one in space would brighten.
+TEST(XmlPatterns, AUvMappedPigmentFollowsTheMeshsCoordinates) {
+    auto scene = [](const std::string& mapping) {
+        return R"(<scene>
+  <camera projection="orthographic" position="1 1 5" look_at="1 1 0" ortho_height="2"/>
+  <pigment name="ramp" pattern="gradient" vector="1 0 0" )" +
+               mapping + R"(>
+    <entry value="0" color="0"/> <entry value="1" color="1"/>
+    <scale value="2"/>
+  </pigment>
+  <material name="m" ambient="1" diffuse="0" pigment="ramp"/>
+  <mesh name="quad">
+    <positions>0 0 0  2 0 0  2 2 0  0 2 0</positions>
+    <uvs>1.5 0  0.5 0  0.5 1  1.5 1</uvs>
+    <triangles>0 1 2  0 2 3</triangles>
+  </mesh>
+  <object mesh="quad" material="m"/>
+</scene>)";
+    };
+    // Pixel x = 8 of 32 is x = 0.5: space gives 0.5 / 2; uv gives u = 1.25, 1.25 / 2.
+    const Frame uv = render(scene(R"(mapping="uv")"));
+    EXPECT_NEAR(pixel(uv, 8, 16).x, 0.625f, 0.02f);
+    EXPECT_NEAR(pixel(uv, 24, 16).x, 0.375f, 0.02f);
+    const Frame space = render(scene(""));
+    EXPECT_NEAR(pixel(space, 8, 16).x, 0.25f, 0.02f);
+    EXPECT_NEAR(pixel(space, 24, 16).x, 0.75f, 0.02f);
+}
+
 // A slope pigment: the facing side of the box (normal +z) shows the value of its slope.
 TEST(XmlPatterns, ASlopePigmentSeesTheSurfaceNormal) {
     const io::SceneFile file = io::parse_xml_scene(R"(<scene>

@@ -176,6 +176,11 @@ void SceneReader::read_normal(const pugi::xml_node& node) {
     const PatternKind kind =
         np.average ? PatternKind::Gradient : pattern_kind(a, PatternUse::Normal);
     if (!np.average) np.pattern = read_pattern(a, kind);
+    if (np.pattern.uv)
+        ctx_.fail(node, node.attribute("mapping"),
+                  "attribute 'mapping' of " + tag(node) +
+                      ": normals are evaluated in space (mapping=\"uv\" is for <pigment> and "
+                      "<switch>)");
     a.get("amount", np.amount);
     a.finish();
     a.require("name");

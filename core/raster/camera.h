@@ -30,6 +30,11 @@ struct CameraFrame {
     // anti-aliasing samples per axis, so that (x, y) tells the pixel and its sample apart.
     float lens_radius = 0, focal_distance = 0;
     int samples = 1;
+    // Projection::Mesh: Camera's mesh_* (the faces are the scene's: core/render/mesh_camera.h).
+    uint32_t mesh_rays = 1;
+    uint8_t mesh_distribution = 0;
+    bool mesh_smooth = false, mesh_reverse = false;
+    float mesh_offset = 0;
 
     /// The point of the lens that sample (x, y) leaves from, as an offset from the eye: the
     /// pixel's samples take the cells of an n x n grid over the lens (mapped onto the disc by
@@ -67,7 +72,8 @@ struct CameraFrame {
 
     /// The primary ray through the centre of pixel (x, y); false where the projection has none
     /// (outside a fisheye's circle, below an omnimax dome's edge): the pixel stays black. A
-    /// camera normal is not applied here (it needs the scene): see primary_ray.
+    /// camera normal, and a mesh camera's rays, need the scene: see camera_ray and primary_ray
+    /// (core/render/frame_kernels.h); here a mesh camera has none.
     SHEAF_HD bool camera_ray(int x, int y, Ray& r) const {
         r.tmin = 0.0f;
         r.tmax = FLT_MAX;
@@ -91,6 +97,8 @@ struct CameraFrame {
         const float v = 0.5f - (float(y) + 0.5f) / float(height) + 0.5f * shift_y;
         Vec3 d;
         switch (projection) {
+        case Projection::Mesh:
+            return false;
         case Projection::Fisheye:
         case Projection::Omnimax: {
             float px = 2.0f * u, py = 2.0f * v;
@@ -198,6 +206,11 @@ inline CameraFrame make_camera_frame(const Camera& c, int width, int height, int
     f.right_length = c.right_length;
     f.up_length = c.up_length;
     f.direction_length = c.direction_length;
+    f.mesh_rays = c.mesh_rays;
+    f.mesh_distribution = c.mesh_distribution;
+    f.mesh_smooth = c.mesh_smooth;
+    f.mesh_reverse = c.mesh_reverse;
+    f.mesh_offset = c.mesh_offset;
     return f;
 }
 

@@ -9,6 +9,7 @@
 #include "core/raster/rasterizer.h"
 #include "core/rays/ray_gen.h"
 #include "core/render/media.h"
+#include "core/render/mesh_camera.h"
 #include "core/render/shade.h"
 #include "core/render/surface_hit.h"
 #include "core/render/surface_texture.h"
@@ -74,11 +75,19 @@ SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h) {
     return fog;
 }
 
+/// The camera's ray for sample (x, y): the projection's, or a mesh camera's from the scene's
+/// camera faces; false where there is none (the sample stays black).
+SHEAF_HD_INLINE bool camera_ray(const SceneView& scene, const CameraFrame& cam, int x, int y,
+                                Ray& r) {
+    if (cam.projection == Projection::Mesh) return mesh_camera_ray(scene, cam, x, y, r);
+    return cam.camera_ray(x, y, r);
+}
+
 /// The primary ray through the centre of pixel (x, y), tilted by the camera normal when there
 /// is one (Camera::normal); false where the projection has none (the pixel stays black).
 SHEAF_HD_INLINE bool primary_ray(const SceneView& scene, const CameraFrame& cam, int x, int y,
                                  Ray& r) {
-    if (!cam.camera_ray(x, y, r)) return false;
+    if (!camera_ray(scene, cam, x, y, r)) return false;
     if (cam.normal >= 0) {
         const float u = (float(x) + 0.5f) / float(cam.width) - 0.5f;
         const float v = 0.5f - (float(y) + 0.5f) / float(cam.height);

@@ -104,7 +104,7 @@ class FramePipeline {
                 "camera.count", vis.size(),
                 [&](size_t i) {
                     Ray r;
-                    slot[i] = cam.camera_ray(int(i % W_), int(i / W_), r) ? 1u : 0u;
+                    slot[i] = camera_ray(view_, cam, int(i % W_), int(i / W_), r) ? 1u : 0u;
                 },
                 1024);
             uint32_t count = 0;

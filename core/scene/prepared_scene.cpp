@@ -315,6 +315,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.textures = scene.textures;
     p.lights = scene.lights;
     p.camera = scene.camera;
+    prepare_camera_faces(scene, p);
     p.background = scene.background;
     p.settings = scene.settings;
     p.cull_units_cache = new_cull_units_cache();

@@ -4,6 +4,7 @@
 
 #include "core/geometry/sphere.h"
 #include "core/render/texture.h"
+#include "core/scene/camera_faces.h"
 #include "core/scene/scene.h"
 
 #include <cstdint>
@@ -103,6 +104,11 @@ struct PreparedScene {
     std::shared_ptr<CullUnitsCache> cull_units_cache;
     std::vector<Light> lights;
     Camera camera;
+    // Projection::Mesh: the camera meshes' faces, the meshes, and the distribution-3 uv grid
+    // (kCameraUvGrid^2 + 1 offsets into camera_uv_faces); core/scene/camera_faces.h.
+    std::vector<CameraFace> camera_faces;
+    std::vector<CameraMeshRef> camera_meshes;
+    std::vector<uint32_t> camera_uv_cells, camera_uv_faces;
     Vec3 background;
     float working_gamma = 1; // Scene::working_gamma
     std::map<std::string, std::string> settings;

@@ -71,36 +71,66 @@ int csg_nesting(const ShapeObject& o) {
     return o.root < height.size() ? height[o.root] : 0;
 }
 
+namespace {
+
+/// Throws SceneError naming `what` (e.g. "mesh 3") where `mesh` is not a valid mesh.
+void validate_mesh(const Mesh& mesh, const std::string& what) {
+    if (mesh.indices.empty()) throw SceneError(what + " has no faces");
+    if (mesh.indices.size() % 3 != 0)
+        throw SceneError(what + ": the index count " + std::to_string(mesh.indices.size()) +
+                         " is not a multiple of 3");
+    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
+        throw SceneError(what + ": " + std::to_string(mesh.normals.size()) + " normals for " +
+                         std::to_string(mesh.positions.size()) + " vertices");
+    for (size_t i = 0; i < mesh.positions.size(); ++i)
+        if (!is_finite(mesh.positions[i]))
+            throw SceneError(what + ": vertex " + std::to_string(i) +
+                             " is not finite (NaN or infinity)");
+    if (!mesh.uvs.empty() && mesh.uvs.size() != 2 * mesh.positions.size())
+        throw SceneError(what + ": " + std::to_string(mesh.uvs.size() / 2) +
+                         " texture coordinates for " + std::to_string(mesh.positions.size()) +
+                         " vertices");
+    for (float f : mesh.uvs)
+        if (!std::isfinite(f)) throw SceneError(what + ": a texture coordinate is not finite");
+    for (size_t i = 0; i < mesh.normals.size(); ++i)
+        if (!is_finite(mesh.normals[i]))
+            throw SceneError(what + ": normal " + std::to_string(i) + " is not finite");
+    for (size_t i = 0; i < mesh.indices.size(); ++i)
+        if (mesh.indices[i] >= mesh.positions.size())
+            throw SceneError(what + ": index " + std::to_string(i) + " = " +
+                             std::to_string(mesh.indices[i]) + " is out of range (" +
+                             std::to_string(mesh.positions.size()) + " vertices)");
+}
+
+/// Throws SceneError where the mesh camera's meshes and settings do not fit together.
+void validate_mesh_camera(const Camera& c, const std::vector<CameraMesh>& meshes) {
+    if (meshes.empty()) throw SceneError("a mesh camera needs at least one mesh");
+    for (size_t m = 0; m < meshes.size(); ++m)
+        validate_mesh(meshes[m].mesh, "the camera's mesh " + std::to_string(m));
+    if (c.mesh_distribution > 3)
+        throw SceneError("a mesh camera's distribution must be 0, 1, 2 or 3, not " +
+                         std::to_string(c.mesh_distribution));
+    if (c.mesh_rays < 1 || c.mesh_rays > kMaxMeshCameraRays)
+        throw SceneError("a mesh camera takes 1 to " + std::to_string(kMaxMeshCameraRays) +
+                         " rays per pixel, not " + std::to_string(c.mesh_rays));
+    if (c.mesh_distribution == 0 && c.mesh_rays > meshes.size())
+        throw SceneError("a mesh camera of distribution 0 takes at most one ray per pixel per "
+                         "mesh (" +
+                         std::to_string(c.mesh_rays) + " rays, " + std::to_string(meshes.size()) +
+                         " meshes)");
+    if (c.mesh_distribution >= 2 && c.mesh_rays != 1)
+        throw SceneError("a mesh camera of distribution 2 or 3 takes one ray per pixel");
+    if (c.mesh_smooth && c.mesh_distribution != 3)
+        throw SceneError("a mesh camera's smooth needs distribution 3");
+    if (c.mesh_distribution == 3 && meshes[0].mesh.uvs.empty())
+        throw SceneError("a mesh camera of distribution 3 needs its first mesh's uv coordinates");
+    if (!std::isfinite(c.mesh_offset)) throw SceneError("the mesh camera's offset is not finite");
+}
+
+} // namespace
+
 void Scene::validate() const {
-    for (size_t m = 0; m < meshes.size(); ++m) {
-        const Mesh& mesh = meshes[m];
-        if (mesh.indices.empty()) throw SceneError(where(m) + " has no faces");
-        if (mesh.indices.size() % 3 != 0)
-            throw SceneError(where(m) + ": the index count " + std::to_string(mesh.indices.size()) +
-                             " is not a multiple of 3");
-        if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-            throw SceneError(where(m) + ": " + std::to_string(mesh.normals.size()) +
-                             " normals for " + std::to_string(mesh.positions.size()) + " vertices");
-        for (size_t i = 0; i < mesh.positions.size(); ++i)
-            if (!is_finite(mesh.positions[i]))
-                throw SceneError(where(m) + ": vertex " + std::to_string(i) +
-                                 " is not finite (NaN or infinity)");
-        if (!mesh.uvs.empty() && mesh.uvs.size() != 2 * mesh.positions.size())
-            throw SceneError(where(m) + ": " + std::to_string(mesh.uvs.size() / 2) +
-                             " texture coordinates for " + std::to_string(mesh.positions.size()) +
-                             " vertices");
-        for (float f : mesh.uvs)
-            if (!std::isfinite(f))
-                throw SceneError(where(m) + ": a texture coordinate is not finite");
-        for (size_t i = 0; i < mesh.normals.size(); ++i)
-            if (!is_finite(mesh.normals[i]))
-                throw SceneError(where(m) + ": normal " + std::to_string(i) + " is not finite");
-        for (size_t i = 0; i < mesh.indices.size(); ++i)
-            if (mesh.indices[i] >= mesh.positions.size())
-                throw SceneError(where(m) + ": index " + std::to_string(i) + " = " +
-                                 std::to_string(mesh.indices[i]) + " is out of range (" +
-                                 std::to_string(mesh.positions.size()) + " vertices)");
-    }
+    for (size_t m = 0; m < meshes.size(); ++m) validate_mesh(meshes[m], where(m));
     for (size_t o = 0; o < objects.size(); ++o) {
         const Object& obj = objects[o];
         const std::string name =
@@ -268,6 +298,7 @@ void Scene::validate() const {
                 throw SceneError("the camera's right, up and direction lengths must be finite "
                                  "numbers > 0");
     }
+    if (c.projection == Projection::Mesh) validate_mesh_camera(c, camera_meshes);
     if (c.normal >= int32_t(normal_patterns.size()))
         throw SceneError("the camera's normal pattern does not exist");
     if (!(c.lens_radius >= 0 && c.lens_radius < 1e30f) ||

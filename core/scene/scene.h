@@ -142,7 +142,10 @@ enum class Projection {
     Cylinder3,      // vertical cylinder, eye moving along it
     Cylinder4,      // horizontal cylinder, eye moving along it
     Spherical,      // angle: horizontal, v_angle: vertical
+    Mesh,           // rays leave the faces of Scene::camera_meshes (POV-Ray's mesh_camera)
 };
+/// The projections a camera's own parameters define (every one but Mesh, which needs
+/// Scene::camera_meshes): what hosts choose from by number.
 constexpr int kProjectionCount = 11;
 
 /// The projections whose primary visibility is traced rather than rasterised.
@@ -189,6 +192,40 @@ struct Camera {
     // which stays sharp. Primary visibility is then traced.
     float lens_radius = 0;
     float focal_distance = 0;
+    // Projection::Mesh (POV-Ray's mesh_camera). Each pixel's primary rays leave faces of
+    // Scene::camera_meshes along the face's normal, normalize(cross(b - a, c - a)) in the
+    // mesh's space, mapped to the world by the mesh's transform (origins as points, normals
+    // by the inverse transpose). mesh_distribution picks the faces:
+    // Pixel rows are counted as POV-Ray 3.7 counts them for this camera, one row up: pixel
+    // (x, y) is pixel x + (y - 1) * width (row 0 its own row).
+    //   0: pixel i is face i of mesh k for its anti-aliasing sample k of s: k
+    //      modulo mesh_rays when s >= mesh_rays, else k * mesh_rays / s (an even share of the
+    //      meshes): several meshes are several rays averaged in a pixel;
+    //   1: pixel i is face i of the meshes' faces counted one mesh after another;
+    //   2: the meshes side by side across the image, each taking a band of columns; pixel
+    //      (x, y) is face y * (width / meshes) + x of its band's mesh (POV-Ray's indexing);
+    //   3: the first mesh's uv coordinates: (u, v) = (x / width, 1 - y / height) at the
+    //      pixel's top left corner (x, y) (its samples spread around it) finds the first face
+    //      holding it, the origin the point there (texture baking).
+    // A pixel or sample without a face is black. The origin moves mesh_offset along the
+    // normal (POV-Ray's location z); mesh_reverse shoots against it (direction z < 0);
+    // mesh_smooth (distribution 3) interpolates the vertex normals.
+    uint32_t mesh_rays = 1;
+    uint8_t mesh_distribution = 0;
+    bool mesh_smooth = false;
+    bool mesh_reverse = false;
+    float mesh_offset = 0;
+};
+
+/// The most rays a mesh camera may name per pixel (a pixel's anti-aliasing samples, at most
+/// 8 x 8, take them: see Camera::mesh_distribution).
+constexpr uint32_t kMaxMeshCameraRays = 65536;
+
+/// A mesh of a mesh camera (Camera::mesh_distribution): its faces in its own space and the
+/// transform to the world.
+struct CameraMesh {
+    Mesh mesh;
+    Affine transform;
 };
 
 struct Object {
@@ -256,6 +293,7 @@ class Scene {
     std::vector<Object> objects;
     std::vector<ShapeObject> shape_objects; // rendered after the mesh objects
     std::vector<Light> lights;
+    std::vector<CameraMesh> camera_meshes; // Projection::Mesh: the faces rays leave
     // Procedural textures (core/scene/pattern.h), indexed by materials and each other.
     std::vector<Pigment> pigments;
     std::vector<PigmentEntry> pigment_entries;

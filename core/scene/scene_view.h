@@ -61,6 +61,13 @@ struct SceneView {
     Fog fog;
     const Light* lights = nullptr;
     uint32_t light_count = 0;
+    // Projection::Mesh (PreparedScene::camera_faces ...).
+    const CameraFace* camera_faces = nullptr;
+    uint32_t camera_face_count = 0;
+    const CameraMeshRef* camera_meshes = nullptr;
+    uint32_t camera_mesh_count = 0;
+    const uint32_t* camera_uv_cells = nullptr; // empty unless distribution 3
+    const uint32_t* camera_uv_faces = nullptr;
     Vec3 background;
     float working_gamma = 1; // the frame's value v is light v^working_gamma
 
@@ -96,8 +103,12 @@ struct SceneView {
           functions{p.fn_programs.data(), p.fn_code.data(), p.fn_patterns.data(),
                     p.fn_pigments.data(), p.fn_pigment_entries.data()},
           sky(p.sky), fog(p.fog), lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
-          background(p.background), working_gamma(p.working_gamma), textures(p.textures.data()),
-          sampler(p.sampler.get()) {}
+          camera_faces(p.camera_faces.data()), camera_face_count(uint32_t(p.camera_faces.size())),
+          camera_meshes(p.camera_meshes.data()),
+          camera_mesh_count(uint32_t(p.camera_meshes.size())),
+          camera_uv_cells(p.camera_uv_cells.empty() ? nullptr : p.camera_uv_cells.data()),
+          camera_uv_faces(p.camera_uv_faces.data()), background(p.background),
+          working_gamma(p.working_gamma), textures(p.textures.data()), sampler(p.sampler.get()) {}
 
     /// What poly, glyph, revolution, blob, isosurface and julia shapes read beside their
     /// Shape.

@@ -5,6 +5,7 @@
 #include "core/wavefront/wavefront.h"
 
 #include "core/base/error.h"
+#include "core/raster/camera.h"
 #include "core/scenes/builtin.h"
 #include "core/scenes/test_scenes.h"
 #include "core/sort/ray_order.h"
@@ -187,6 +188,28 @@ TEST(Wavefront, TracedProjectionsAreIdentical) {
     const Frame b = expect_identical(blurred, "lens aa", {{"aa.samples", "3"}}, 16, 12);
     EXPECT_GT(b.stats.get("rays.camera"), 0);
     expect_identical(blurred, "lens", {}, 24, 20);
+    // A mesh camera: the rays leave the faces of the scene's camera meshes (two of them, a
+    // pixel's samples taking one ray from each), read from the scene on either side.
+    Scene meshed = test::csg_scene();
+    meshed.camera.projection = Projection::Orthographic;
+    meshed.camera.ortho_height = 4;
+    const CameraFrame oc = make_camera_frame(meshed.camera, 24, 20);
+    Mesh faces;
+    for (int y = 0; y < 20; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const Vec3 o = oc.pixel_ray(x, y).origin;
+            const uint32_t base = uint32_t(faces.positions.size());
+            faces.positions.insert(faces.positions.end(),
+                                   {o, o + oc.up * 1e-3f, o + oc.right * 1e-3f});
+            faces.indices.insert(faces.indices.end(), {base, base + 1, base + 2});
+        }
+    meshed.camera.projection = Projection::Mesh;
+    meshed.camera.mesh_rays = 2;
+    meshed.camera_meshes = {{faces, Affine()}, {faces, Affine::translate(oc.right * 0.05f)}};
+    const PreparedScene mesh_camera = prepare_scene(meshed);
+    const Frame m = expect_identical(mesh_camera, "mesh camera aa", {{"aa.samples", "2"}}, 24, 20);
+    EXPECT_GT(m.stats.get("rays.camera"), 0);
+    EXPECT_GT(mean(m), 0.02);
 }
 
 TEST(Wavefront, EmptyAndDegenerateFramesAreIdentical) {

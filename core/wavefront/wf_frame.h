@@ -83,14 +83,14 @@ template <class Exec> class DeviceFrame {
         fill(ex_, vis, samples, kEmptyPixel);
         DeviceBuffer<uint32_t, Exec> slot_buf(ex_, samples);
         uint32_t* slot = slot_buf.data();
+        const SceneView scene = scene_;
         const uint32_t total = count_and_scan(
             ex_, "raygen.count", samples, slot, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
                 Ray r;
-                return cam.camera_ray(int(i % size_t(W)), int(i / size_t(W)), r) ? 1u : 0u;
+                return camera_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), r) ? 1u : 0u;
             });
         DeviceBatch<Exec> b(ex_, RayType::Camera, total);
         const RaySlots slots = b.slots();
-        const SceneView scene = scene_;
         ex_.launch("raygen.camera", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
             Ray r;
             if (!primary_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), r)) return;

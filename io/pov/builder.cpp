@@ -240,6 +240,35 @@ struct Builder {
         scene.add_shape_object(std::move(so));
     }
 
+    /// The mesh camera's meshes in Sheaf's world, and its settings: POV-Ray's location z moves
+    /// the rays' origins along the face normals, a direction z below 0 reverses them (loc and
+    /// dir: the camera's, transformed, in POV-Ray's space).
+    void mesh_camera(const PovCamera& c, Vec3 loc, Vec3 dir) {
+        Camera& out = scene.camera;
+        out.mesh_rays = uint32_t(c.mesh_rays);
+        out.mesh_distribution = uint8_t(c.mesh_distribution);
+        out.mesh_smooth = c.mesh_smooth;
+        out.mesh_offset = loc.z;
+        out.mesh_reverse = dir.z < -1e-6f;
+        for (const PovObject& o : c.meshes) {
+            // POV-Ray's face normal is cross(c - a, b - a) in the mesh's space; Sheaf's mesh
+            // camera takes cross(b - a, c - a), so each face's b and c trade places.
+            CameraMesh cm{*o.mesh, flip * o.local};
+            for (size_t t = 0; t + 2 < cm.mesh.indices.size(); t += 3)
+                std::swap(cm.mesh.indices[t + 1], cm.mesh.indices[t + 2]);
+            for (const Vec3& v : cm.mesh.positions)
+                if (!is_finite(cm.transform.point(v)))
+                    p.error_at(o.where, "a vertex of the camera's mesh is not a finite number");
+            scene.camera_meshes.push_back(std::move(cm));
+        }
+        // POV-Ray shoots the rays a pixel takes itself; Sheaf takes them as its anti-aliasing
+        // samples: ceil(sqrt(rays)) x that many a pixel (at most 8 x 8; an explicit
+        // aa.samples wins), each taking one ray (Camera::mesh_distribution).
+        if (c.mesh_rays > 1)
+            scene.settings["aa.samples"] = std::to_string(
+                std::clamp(int(std::ceil(std::sqrt(double(c.mesh_rays)) - 1e-9)), 1, 8));
+    }
+
     void camera() {
         const PovCamera& c = p.model.camera;
         Vec3 loc = c.location, dir = c.direction, right = c.right, up = c.up;
@@ -279,6 +308,7 @@ struct Builder {
             std::fabs(rl / ul - image) > 1e-3f * image)
             out.aspect = rl / ul;
         out.projection = c.projection;
+        if (c.projection == Projection::Mesh) mesh_camera(c, loc, dir);
         if (c.aperture > 0) {
             if (c.projection == Projection::Perspective ||
                 c.projection == Projection::Orthographic) {

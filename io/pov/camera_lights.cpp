@@ -110,14 +110,65 @@ void Parser::parse_camera(PovCamera& c) {
             unsupported(t, "camera bokeh (a round lens is used)");
             skip_block();
         } else if (k == "mesh_camera") {
-            unsupported(t, "camera type 'mesh_camera' (a perspective camera is used)");
-            skip_block();
+            c.projection = Projection::Mesh;
+            c.type_at = t;
+            parse_mesh_camera(t, c);
         } else if (k == "normal") {
             c.normal = parse_normal(c.normal.get());
         } else {
             error_expected(t, "a camera item (location, look_at, angle ...)");
         }
     }
+}
+
+void Parser::parse_mesh_camera(const Token& kw, PovCamera& c) {
+    expect_sym("{");
+    const Token rays_at = peek();
+    const double rays = parse_float();
+    if (!(rays >= 1 && rays <= double(kMaxMeshCameraRays)))
+        error_at(rays_at, "a mesh camera takes 1 to " + std::to_string(kMaxMeshCameraRays) +
+                              " rays per pixel");
+    accept_sym(",");
+    const Token dist_at = peek();
+    const double dist = parse_float();
+    if (!(dist == 0 || dist == 1 || dist == 2 || dist == 3))
+        error_at(dist_at, "a mesh camera's distribution must be 0, 1, 2 or 3");
+    c.mesh_rays = int(rays), c.mesh_distribution = int(dist);
+    if (c.mesh_distribution >= 2 && c.mesh_rays != 1)
+        error_at(rays_at, "a mesh camera of distribution 2 or 3 takes 1 ray per pixel");
+    accept_sym(",");
+    if (starts_expression(peek())) { // the longest ray
+        const Token at = peek();
+        if (parse_float() != 0) unsupported(at, "mesh_camera's maximum ray distance (ignored)");
+    }
+    c.meshes.clear();
+    c.mesh_smooth = false;
+    for (;;) {
+        const Token t = peek();
+        if (accept_kw("mesh") || accept_kw("mesh2")) {
+            PovObject m;
+            if (t.text == "mesh")
+                parse_mesh(t, m);
+            else
+                parse_mesh2(t, m);
+            c.meshes.push_back(std::move(m));
+        } else if (accept_kw("smooth")) {
+            if (c.mesh_distribution != 3)
+                error_at(t, "a mesh camera's smooth needs distribution 3");
+            c.mesh_smooth = true;
+        } else if (!c.meshes.empty() && accept_sym("}")) {
+            break;
+        } else {
+            error_expected(t, c.meshes.empty() ? "mesh or mesh2" : "mesh, mesh2, smooth or '}'");
+        }
+    }
+    if (c.mesh_distribution == 0 && size_t(c.mesh_rays) > c.meshes.size())
+        error_at(rays_at, "a mesh camera of distribution 0 takes at most one ray per pixel per "
+                          "mesh (" +
+                              std::to_string(c.mesh_rays) + " rays, " +
+                              std::to_string(c.meshes.size()) + " meshes)");
+    if (c.mesh_distribution == 3 && c.meshes[0].mesh->uvs.empty())
+        error_at(kw, "a mesh camera of distribution 3 needs its first mesh's uv_vectors");
 }
 
 void Parser::parse_light(const Token& kw, PovObject& o) {

@@ -3,6 +3,7 @@
 #include "io/pov/pov_test_util.h"
 
 #include "core/raster/camera.h"
+#include "core/render/frame_kernels.h"
 
 #include <cmath>
 
@@ -96,11 +97,71 @@ TEST(PovCamera, TheOtherCameraTypesAreTracedProjections) {
                     60);
     EXPECT_FLOAT_EQ(load_text("camera { spherical angle 180 }").scene.camera.v_angle_degrees, 90);
     EXPECT_FLOAT_EQ(load_text("camera { spherical }").scene.camera.v_angle_degrees, 180);
-    // mesh_camera is still warned and seen as a perspective camera.
-    const PovResult mesh = load_text("camera { mesh_camera { 1 0 } location 0 look_at z }");
-    EXPECT_EQ(mesh.scene.camera.projection, Projection::Perspective);
-    ASSERT_EQ(mesh.warnings.size(), 1u);
-    EXPECT_NE(mesh.warnings[0].find("mesh_camera"), std::string::npos);
+}
+
+// mesh_camera: its meshes (declared or written out, with their transforms) become the scene's
+// camera meshes in Sheaf's world, each face's normal POV-Ray's cross(c - a, b - a); location
+// z is the offset along it, a direction z below 0 reverses it; more rays than one are a
+// pixel's anti-aliasing samples.
+TEST(PovCamera, MeshCameraTakesItsMeshesAndSettings) {
+    const std::string decl = "#declare M = mesh { triangle { <0,0,0>, <0,1,0>, <1,0,0> } }\n";
+    PovResult r = load_text(decl + "camera { mesh_camera { 1 0 mesh { M translate 2*x } }\n"
+                                   "  location <0, 0, 0.25> }");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+    const Camera& c = r.scene.camera;
+    EXPECT_EQ(c.projection, Projection::Mesh);
+    EXPECT_EQ(c.mesh_distribution, 0);
+    EXPECT_EQ(c.mesh_rays, 1u);
+    EXPECT_FLOAT_EQ(c.mesh_offset, 0.25f);
+    EXPECT_FALSE(c.mesh_reverse);
+    ASSERT_EQ(r.scene.camera_meshes.size(), 1u);
+    // POV-Ray's normal: cross(<1,0,0>, <0,1,0>) = +z, Sheaf's -z; the ray leaves the
+    // centroid, moved 0.25 along it.
+    PreparedScene p = prepare_scene(r.scene);
+    CameraFrame cam = make_camera_frame(p.camera, 1, 1);
+    Ray ray;
+    ASSERT_TRUE(camera_ray(SceneView(p), cam, 0, 0, ray));
+    EXPECT_NEAR(ray.origin.x, 2 + 1.0f / 3, 1e-5f);
+    EXPECT_NEAR(ray.origin.y, 1.0f / 3, 1e-5f);
+    EXPECT_NEAR(ray.origin.z, -0.25f, 1e-5f);
+    EXPECT_NEAR(ray.dir.z, -1.0f, 1e-5f);
+
+    // Two meshes, two rays a pixel: 2 x 2 samples; direction z < 0 reverses the rays.
+    r = load_text(decl + "camera { mesh_camera { 2, 0 mesh { M } mesh { M } } direction -z }");
+    EXPECT_EQ(r.scene.camera.mesh_rays, 2u);
+    EXPECT_TRUE(r.scene.camera.mesh_reverse);
+    EXPECT_EQ(r.scene.camera_meshes.size(), 2u);
+    EXPECT_EQ(r.scene.settings.at("aa.samples"), "2");
+    // Distribution 3 with smooth, from a mesh2 with uv coordinates.
+    r = load_text(
+        "camera { mesh_camera { 1 3 mesh2 { vertex_vectors { 3, <0,0,0>, y, x }\n"
+        "  uv_vectors { 3, <0,0>, <0,1>, <1,0> } face_indices { 1, <0,1,2> } } smooth } }");
+    EXPECT_EQ(r.scene.camera.mesh_distribution, 3);
+    EXPECT_TRUE(r.scene.camera.mesh_smooth);
+    EXPECT_NO_THROW(r.scene.validate());
+}
+
+TEST(PovCamera, MeshCameraErrorsNameTheirPlace) {
+    const std::string m = "mesh { triangle { 0, y, x } }";
+    EXPECT_EQ(error_of("camera { mesh_camera { 0 0 " + m + " } }"),
+              "scene.pov:1:24: error: a mesh camera takes 1 to 65536 rays per pixel");
+    EXPECT_EQ(error_of("camera { mesh_camera { 1 4 " + m + " } }"),
+              "scene.pov:1:26: error: a mesh camera's distribution must be 0, 1, 2 or 3");
+    EXPECT_EQ(error_of("camera { mesh_camera { 2 2 " + m + " } }"),
+              "scene.pov:1:24: error: a mesh camera of distribution 2 or 3 takes 1 ray per pixel");
+    EXPECT_EQ(error_of("camera { mesh_camera { 2 0 " + m + " } }"),
+              "scene.pov:1:24: error: a mesh camera of distribution 0 takes at most one ray per "
+              "pixel per mesh (2 rays, 1 meshes)");
+    EXPECT_EQ(error_of("camera { mesh_camera { 1 0 " + m + " smooth } }"),
+              "scene.pov:1:58: error: a mesh camera's smooth needs distribution 3");
+    EXPECT_EQ(error_of("camera { mesh_camera { 1 3 " + m + " } }"),
+              "scene.pov:1:10: error: a mesh camera of distribution 3 needs its first mesh's "
+              "uv_vectors");
+    EXPECT_NE(error_of("camera { mesh_camera { 1 0 } }").find("expected mesh or mesh2"),
+              std::string::npos);
+    EXPECT_NE(error_of("#declare S = sphere { 0, 1 }\ncamera { mesh_camera { 1 0 mesh { S } } }")
+                  .find("expected a mesh identifier"),
+              std::string::npos);
 }
 
 TEST(PovCamera, BadCameraTypesAndAnglesAreErrors) {

@@ -83,8 +83,20 @@ void Parser::parse_triangle(const Token& kw, PovObject& o, bool smooth) {
     (void)kw;
 }
 
+bool Parser::accept_declared_mesh(PovObject& o) {
+    const Token t = peek();
+    Value declared;
+    if (!accept_declared(VType::Object, declared, "a mesh")) return false;
+    if (declared.as<PovObject>().kind != PovKind::Mesh) error_expected(t, "a mesh identifier");
+    o = declared.as<PovObject>();
+    bool texture_here = false;
+    parse_object_modifiers(o, texture_here);
+    return true;
+}
+
 void Parser::parse_mesh(const Token& kw, PovObject& o) {
     expect_sym("{");
+    if (accept_declared_mesh(o)) return; // mesh { MESH_ID modifiers }
     auto mesh = std::make_shared<Mesh>();
     std::vector<bool> smooth, has_uv;
     bool any_smooth = false, any_uv = false;
@@ -143,6 +155,7 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
 
 void Parser::parse_mesh2(const Token& kw, PovObject& o) {
     expect_sym("{");
+    if (accept_declared_mesh(o)) return; // mesh2 { MESH_ID modifiers }
     std::vector<Vec3> vertices, normals, uvs;
     std::vector<Vec3> faces, normal_faces, uv_faces; // index triples as floats
     // A section: "NAME { count, item, item ... }"; vectors are kept, floats after a vector

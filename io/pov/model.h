@@ -225,6 +225,11 @@ struct PovCamera {
     Vec3 focal_point{0, 0, 0};
     int blur_samples = 0; // 0: not given
     Token aperture_at;
+    /// mesh_camera: rays per pixel, the distribution, smooth, and its meshes (with their
+    /// transforms, in POV-Ray's space).
+    int mesh_rays = 1, mesh_distribution = 0;
+    bool mesh_smooth = false;
+    std::vector<PovObject> meshes;
 };
 
 /// sky_sphere { pigments transforms }: its pigments bottom first, in the sky's space.

@@ -259,6 +259,11 @@ class Parser {
     void parse_triangle(const Token& kw, PovObject& o, bool smooth);
     void parse_mesh(const Token& kw, PovObject& o);
     void parse_mesh2(const Token& kw, PovObject& o);
+    /// After a mesh's '{': a declared mesh and the modifiers after it (then the block is
+    /// read); false when no identifier comes.
+    bool accept_declared_mesh(PovObject& o);
+    /// mesh_camera { RAYS, DISTRIBUTION [, MAX_DISTANCE] mesh {...}... [smooth] }.
+    void parse_mesh_camera(const Token& kw, PovCamera& c);
     void parse_polygon(const Token& kw, PovObject& o);
     size_t objects_made_ = 0;
     /// What one object (not the objects inside it) adds to the data budget: the object and

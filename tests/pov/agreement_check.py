@@ -61,6 +61,7 @@ SCENES = [
     ("examples/camera/panoramic.pov", "exact"),
     ("examples/camera/spherical.pov", "exact"),
     ("examples/camera/omnimax.pov", "exact"),
+    ("scenes/mesh_camera.pov", "exact"),
     ("examples/interior/media/media4.pov", "exact"),
     ("examples/interior/media/media5.pov", "exact"),
     ("examples/lights/soft.pov", "area"),

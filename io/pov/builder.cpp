@@ -22,6 +22,24 @@ Affine pov_to_sheaf() {
 
 namespace {
 
+/// The triangles `faces` of m, with the vertices they use (normals and uv coordinates kept).
+Mesh submesh(const Mesh& m, const std::vector<uint32_t>& faces) {
+    Mesh out;
+    std::vector<uint32_t> remap(m.positions.size(), UINT32_MAX);
+    for (uint32_t f : faces)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t v = m.indices[3 * size_t(f) + size_t(k)];
+            if (remap[v] == UINT32_MAX) {
+                remap[v] = uint32_t(out.positions.size());
+                out.positions.push_back(m.positions[v]);
+                if (!m.normals.empty()) out.normals.push_back(m.normals[v]);
+                if (!m.uvs.empty()) out.uvs.insert(out.uvs.end(), {m.uvs[2 * v], m.uvs[2 * v + 1]});
+            }
+            out.indices.push_back(remap[v]);
+        }
+    return out;
+}
+
 struct Builder {
     Parser& p;
     Scene& scene;
@@ -105,12 +123,25 @@ struct Builder {
               const PovTexture* inside, uint8_t flags) {
         // Media fill the analytic objects that hold them (core/render/media.h).
         if (in && !in->media.empty()) p.unsupported(o.where, "media in a mesh (ignored)");
-        const uint32_t mat = material(tex, in, inside);
         const Affine t = flip * o.local;
         for (const Vec3& v : o.mesh->positions)
             if (!is_finite(t.point(v)))
                 p.error_at(o.where, "a vertex is not a finite number (a division by zero, or a "
                                     "scale beyond 1e38?)");
+        if (o.face_texture && !geometry_only) { // faces wearing textures of their own
+            // One mesh object per texture, its faces in their order.
+            std::map<int32_t, std::vector<uint32_t>> groups;
+            for (size_t f = 0; f < o.face_texture->size(); ++f)
+                groups[(*o.face_texture)[f]].push_back(uint32_t(f));
+            for (const auto& [id, faces] : groups) {
+                const PovTexture& ft = id >= 0 ? *o.face_textures[size_t(id)] : tex;
+                const uint32_t obj = scene.add_mesh_object(name(o), submesh(*o.mesh, faces),
+                                                           material(ft, in, inside), t);
+                scene.objects[obj].flags = flags;
+            }
+            return;
+        }
+        const uint32_t mat = material(tex, in, inside);
         if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty() && o.mesh->uvs.empty() &&
             flags == 0) {
             append_mesh(loose[mat], *o.mesh, t);

@@ -100,6 +100,8 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
     auto mesh = std::make_shared<Mesh>();
     std::vector<bool> smooth, has_uv;
     bool any_smooth = false, any_uv = false;
+    std::vector<PovTextureRef> textures; // the triangles' own textures
+    std::vector<int32_t> face_texture;   // per triangle: its texture there (-1: the mesh's)
     for (;;) {
         const Token t = peek();
         const bool tri = is_kw_tok(t, "triangle"), stri = is_kw_tok(t, "smooth_triangle");
@@ -117,6 +119,7 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
         }
         Vec3 uv[3];
         bool given_uv = false;
+        int32_t own_texture = -1;
         for (;;) {
             const Token i = peek();
             if (accept_sym("}")) break;
@@ -127,11 +130,8 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
                 }
                 given_uv = true;
             } else if (accept_kw("texture")) {
-                unsupported(i, "textures of single mesh triangles (the mesh's texture is used)");
-                if (is_sym_tok(peek(), "{"))
-                    skip_block();
-                else
-                    next();
+                textures.push_back(parse_texture_block(model.default_texture));
+                own_texture = int32_t(textures.size() - 1);
             } else {
                 error_expected(i, "uv_vectors, texture or '}'");
             }
@@ -141,6 +141,7 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
         any_smooth = any_smooth || stri;
         has_uv.push_back(given_uv);
         any_uv = any_uv || given_uv;
+        face_texture.push_back(own_texture);
         if (mesh->positions.size() > size_t(kMaxArrayElements)) error_at(t, "mesh too large");
     }
     if (mesh->indices.empty()) error_expected(peek(), "triangle or smooth_triangle in mesh");
@@ -148,6 +149,12 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
     complete_uvs(*mesh, any_uv, has_uv);
     o.kind = PovKind::Mesh;
     o.mesh = mesh;
+    o.face_texture.reset();
+    o.face_textures.clear();
+    if (!textures.empty()) { // triangles wearing textures of their own
+        o.face_texture = std::make_shared<const std::vector<int32_t>>(std::move(face_texture));
+        o.face_textures = std::move(textures);
+    }
     bool texture_here = false;
     parse_object_modifiers(o, texture_here);
     (void)kw;
@@ -158,9 +165,13 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
     if (accept_declared_mesh(o)) return; // mesh2 { MESH_ID modifiers }
     std::vector<Vec3> vertices, normals, uvs;
     std::vector<Vec3> faces, normal_faces, uv_faces; // index triples as floats
-    // A section: "NAME { count, item, item ... }"; vectors are kept, floats after a vector
-    // (texture indices of faces) are skipped.
-    auto section = [&](std::vector<Vec3>& out) {
+    std::vector<std::array<int32_t, 3>> face_tex;    // the faces' texture indices (-1: none)
+    std::vector<PovTextureRef> textures;             // texture_list
+    Token textures_at;
+    // A section: "NAME { count, item, item ... }"; vectors are kept, the floats after a vector
+    // (a face's texture indices) go to `extra` (skipped without).
+    auto section = [&](std::vector<Vec3>& out,
+                       std::vector<std::array<int32_t, 3>>* extra = nullptr) {
         expect_sym("{");
         const Token at = peek();
         const Value count = parse_additive(); // "14 <-1, ...>": a count, not a comparison
@@ -170,13 +181,22 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
         charge(size_t(n) * sizeof(Vec3), at);
         out.reserve(size_t(n));
         accept_sym(",");
+        int after = 0; // floats after the last vector
         while (!accept_sym("}")) {
             const Token t = peek();
             const Value v = parse_expr();
-            if (v.type == VType::Vector || v.type == VType::Color)
+            if (v.type == VType::Vector || v.type == VType::Color) {
                 out.emplace_back(float(v.v[0]), float(v.v[1]), float(v.dim > 2 ? v.v[2] : 0));
-            else if (v.type != VType::Float)
+                if (extra) extra->push_back({-1, -1, -1});
+                after = 0;
+            } else if (v.type != VType::Float) {
                 error_expected(t, "a vector");
+            } else if (extra) {
+                if (out.empty() || after == 3) error_expected(t, "a face's <a, b, c>");
+                const double k = v.v[0];
+                if (!(k >= 0 && k < 1e9)) error_at(t, "a texture index must be a number >= 0");
+                extra->back()[size_t(after++)] = int32_t(k);
+            }
             accept_sym(",");
         }
         if (out.size() != size_t(n))
@@ -190,7 +210,7 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
         else if (accept_kw("normal_vectors"))
             section(normals);
         else if (accept_kw("face_indices"))
-            section(faces);
+            section(faces, &face_tex);
         else if (accept_kw("normal_indices"))
             section(normal_faces);
         else if (accept_kw("uv_vectors"))
@@ -198,8 +218,8 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
         else if (accept_kw("uv_indices"))
             section(uv_faces);
         else if (accept_kw("texture_list")) {
-            unsupported(t, "mesh2 texture_list (the mesh's texture is used)");
-            skip_block();
+            textures_at = t;
+            textures = parse_texture_list();
         } else {
             break;
         }
@@ -243,8 +263,50 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
     }
     o.kind = PovKind::Mesh;
     o.mesh = mesh;
+    // Faces naming textures of the texture_list wear them (the first, when a face names one
+    // for each corner: POV-Ray blends the three); the others, the object's texture.
+    o.face_textures.clear();
+    o.face_texture.reset();
+    bool any = false, blended = false;
+    for (size_t f = 0; f < face_tex.size(); ++f) {
+        const auto& k = face_tex[f];
+        for (int32_t i : k)
+            if (i >= 0 && size_t(i) >= textures.size())
+                error_at(kw, "mesh2 face " + std::to_string(f) + " names texture " +
+                                 std::to_string(i) + " of a texture_list of " +
+                                 std::to_string(textures.size()));
+        any = any || k[0] >= 0;
+        blended = blended || (k[1] >= 0 && (k[1] != k[0] || k[2] != k[0]));
+    }
+    if (blended)
+        unsupported(textures_at, "a texture for each corner of a mesh2 face (the first is used)");
+    if (any) {
+        auto per_face = std::make_shared<std::vector<int32_t>>(face_tex.size());
+        for (size_t f = 0; f < face_tex.size(); ++f) (*per_face)[f] = face_tex[f][0];
+        o.face_texture = std::move(per_face);
+        o.face_textures = std::move(textures);
+    }
     bool texture_here = false;
     parse_object_modifiers(o, texture_here);
+}
+
+std::vector<PovTextureRef> Parser::parse_texture_list() {
+    expect_sym("{");
+    const Token at = peek();
+    const double n = parse_float();
+    if (!(n >= 0 && n <= double(kMaxArrayElements))) error_at(at, "bad texture count");
+    accept_sym(",");
+    std::vector<PovTextureRef> out;
+    while (!accept_sym("}")) {
+        const Token t = peek();
+        if (!accept_kw("texture")) error_expected(t, "texture or '}'");
+        out.push_back(parse_texture_block(model.default_texture));
+        accept_sym(",");
+    }
+    if (out.size() != size_t(n))
+        error_at(at, "the texture_list says " + std::to_string(size_t(n)) + " textures but has " +
+                         std::to_string(out.size()));
+    return out;
 }
 
 namespace {

@@ -195,6 +195,10 @@ struct PovObject {
     std::shared_ptr<const PovFunction> iso_function; // and its function
     std::shared_ptr<const JuliaFractal> julia;       // shape of kind Julia: its parameters
     std::shared_ptr<const Mesh> mesh;
+    // mesh2's texture_list: the textures faces name (moved with the object), and each
+    // triangle's index into them (-1: the object's texture); null when no face names one.
+    std::vector<PovTextureRef> face_textures;
+    std::shared_ptr<const std::vector<int32_t>> face_texture;
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;
     Affine local;

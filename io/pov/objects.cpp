@@ -520,6 +520,7 @@ void set_hollow(PovObject& o, bool hollow) {
 void Parser::apply_transform(PovObject& o, const Affine& m) {
     o.texture = transformed(o.texture, m);
     o.interior_texture = transformed(o.interior_texture, m);
+    for (PovTextureRef& t : o.face_textures) t = transformed(t, m);
     if (o.interior && !o.interior->media.empty()) { // its media move with the object
         auto in = std::make_shared<PovInterior>(*o.interior);
         in->local = m * in->local;

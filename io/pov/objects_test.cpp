@@ -269,6 +269,50 @@ TEST(PovObjects, MeshesKeepTheirUvCoordinates) {
               std::string::npos);
 }
 
+// mesh2's texture_list and a mesh triangle's own texture: the faces that name a texture wear
+// it (one mesh object per texture), the others the object's, all moved with the object.
+TEST(PovObjects, FacesWearTheTexturesTheyName) {
+    const std::string quad = "vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }\n";
+    PovResult r = load_text("mesh2 { " + quad +
+                            "texture_list { 2, texture { pigment { rgb <1,0,0> } } texture { "
+                            "pigment { rgb <0,0,1> } } }\n"
+                            "face_indices { 3, <0,1,2>, 1, <0,2,3>, 0, <0,1,3> }\n"
+                            "pigment { rgb <0,1,0> } translate 5*x }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+    ASSERT_EQ(r.scene.objects.size(), 3u);
+    std::vector<Vec3> colours;
+    size_t faces = 0;
+    for (const Object& o : r.scene.objects) {
+        colours.push_back(r.scene.materials[o.material].color);
+        faces += r.scene.meshes[o.mesh].triangle_count();
+        EXPECT_FLOAT_EQ(o.transform.point(Vec3(0)).x, 5.0f);
+    }
+    EXPECT_EQ(faces, 3u);
+    // The object's own (face 2), then textures 0 and 1.
+    EXPECT_EQ(colours[0], Vec3(0, 1, 0));
+    EXPECT_EQ(colours[1], Vec3(1, 0, 0));
+    EXPECT_EQ(colours[2], Vec3(0, 0, 1));
+    // A texture for each corner: the first is used, warned.
+    r = load_text(
+        "mesh2 { " + quad +
+        "texture_list { 2, texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }\n"
+        "face_indices { 1, <0,1,2>, 0, 1, 1 } }\n");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("a texture for each corner"), std::string::npos);
+    EXPECT_NE(error_of("mesh2 { " + quad +
+                       "texture_list { 1, texture { pigment { rgb 1 } } }\n"
+                       "face_indices { 1, <0,1,2>, 3 } }\n")
+                  .find("mesh2 face 0 names texture 3 of a texture_list of 1"),
+              std::string::npos);
+    // A mesh triangle's own texture.
+    r = load_text("mesh { triangle { 0, x, y texture { pigment { rgb <1,0,0> } } }\n"
+                  "  triangle { x, y, <1,1,0> } pigment { rgb <0,0,1> } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+    ASSERT_EQ(r.scene.objects.size(), 2u);
+    EXPECT_EQ(r.scene.materials[r.scene.objects[0].material].color, Vec3(0, 0, 1));
+    EXPECT_EQ(r.scene.materials[r.scene.objects[1].material].color, Vec3(1, 0, 0));
+}
+
 /// The area of a mesh's triangles.
 float mesh_area(const Mesh& m) {
     float a = 0;

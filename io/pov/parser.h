@@ -262,6 +262,8 @@ class Parser {
     /// After a mesh's '{': a declared mesh and the modifiers after it (then the block is
     /// read); false when no identifier comes.
     bool accept_declared_mesh(PovObject& o);
+    /// texture_list { N, texture {...} ... } (mesh2).
+    std::vector<PovTextureRef> parse_texture_list();
     /// mesh_camera { RAYS, DISTRIBUTION [, MAX_DISTANCE] mesh {...}... [smooth] }.
     void parse_mesh_camera(const Token& kw, PovCamera& c);
     void parse_polygon(const Token& kw, PovObject& o);

@@ -234,6 +234,23 @@ TEST(MeshCamera, WhatDoesNotFitIsAnError) {
     s.camera.mesh_distribution = 0, s.camera.mesh_smooth = false;
     s.camera_meshes[0].mesh.indices.push_back(99);
     EXPECT_NE(error(s).find("the camera's mesh 0"), std::string::npos);
+    // Distribution 3 over faces piled on the whole uv square a hundred times: an error, not a
+    // grid of a hundred thousand entries.
+    Mesh piled;
+    for (uint32_t i = 0; i < 100; ++i) {
+        piled.positions.insert(piled.positions.end(), {Vec3(0), Vec3(0, 1, 0), Vec3(1, 0, 0)});
+        piled.uvs.insert(piled.uvs.end(), {0, 0, 0, 1, 1, 1});
+        piled.indices.insert(piled.indices.end(), {3 * i, 3 * i + 1, 3 * i + 2});
+    }
+    s.camera_meshes = {{piled, Affine()}};
+    s.camera.mesh_distribution = 3;
+    EXPECT_EQ(error(s), "no error");
+    try {
+        prepare_scene(s);
+        ADD_FAILURE() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("covers its uv square more than"), std::string::npos);
+    }
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // The mesh camera's faces, transforms and uv grid (see camera_faces.h).
 #include "core/scene/camera_faces.h"
 
+#include "core/base/error.h"
 #include "core/scene/prepared_scene.h"
 
 #include <algorithm>
@@ -70,8 +71,19 @@ void prepare_camera_faces(const Scene& scene, PreparedScene& p) {
         for (uint32_t v = v0; v <= v1; ++v)
             for (uint32_t u = u0; u <= u1; ++u) visit(v * kCameraUvGrid + u);
     };
+    // A uv layout covers its square about once; faces piled over it many times over would
+    // make the grid's lists grow as faces times cells: an error before they do.
+    const size_t limit = 64 * (size_t(first.count) + kCells);
+    size_t total = 0;
     for (uint32_t f = first.first; f < first.first + first.count; ++f)
-        each_cell(p.camera_faces[f], [&](uint32_t cell) { ++count[cell + 1]; });
+        each_cell(p.camera_faces[f], [&](uint32_t cell) {
+            if (++total > limit)
+                throw SceneError("the mesh camera's first mesh covers its uv square more than " +
+                                 std::to_string(limit / kCells) +
+                                 " times over (distribution 3 finds a pixel's face by its uv "
+                                 "coordinates: give the faces a layout that covers it about once)");
+            ++count[cell + 1];
+        });
     for (uint32_t c = 0; c < kCells; ++c) count[c + 1] += count[c];
     p.camera_uv_cells = count;
     p.camera_uv_faces.resize(count[kCells]);

@@ -509,7 +509,7 @@ Value Parser::parse_array_init(const std::vector<size_t>& sizes, const Token& t)
 }
 
 Value Parser::call_function(const Token& t, const PovFunction& f) {
-    if (!f.unsupported.empty()) unsupported(t, f.unsupported);
+    if (!f.unsupported.empty() && !f.transform) unsupported(t, f.unsupported);
     expect_sym("(");
     std::vector<double> args;
     if (!accept_sym(")")) {
@@ -522,6 +522,11 @@ Value Parser::call_function(const Token& t, const PovFunction& f) {
     if (args.size() != f.params.size() && f.unsupported.empty())
         error_at(t, "'" + t.text + "' takes " + std::to_string(f.params.size()) +
                         " arguments, not " + std::to_string(args.size()));
+    if (f.transform) { // a transform function gives the point transformed
+        if (args.size() != 3) error_at(t, "a transform function takes 3 arguments");
+        const Vec3 p = f.transform->point(Vec3(float(args[0]), float(args[1]), float(args[2])));
+        return Value::vec3(p.x, p.y, p.z);
+    }
     if (f.pigment && args.size() == 3) { // a pigment function gives its colour
         ++steps_;
         Color5 c;

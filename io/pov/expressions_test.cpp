@@ -9,6 +9,7 @@ namespace {
 
 using test::declared;
 using test::error_of;
+using test::load_text;
 using test::num;
 
 TEST(PovExpressions, Precedence) {
@@ -219,6 +220,32 @@ TEST(PovExpressions, UserFunctions) {
     EXPECT_NE(error_of("#declare F = function(a) { a };\n#declare V = F(1, 2);")
                   .find("'F' takes 1 arguments, not 2"),
               std::string::npos);
+}
+
+// A transform function gives the point transformed (transforms.inc's vtransform and
+// vinv_transform); a function body cannot use it (warned where it is called).
+TEST(PovExpressions, TransformFunctionsTransformPoints) {
+    const Value v =
+        declared("#include \"transforms.inc\"\n"
+                 "#declare V = vtransform(<1, 2, 3>, transform { scale 2 translate x });",
+                 "V");
+    ASSERT_EQ(v.type, VType::Vector);
+    EXPECT_NEAR(v.v[0], 3, 1e-5);
+    EXPECT_NEAR(v.v[1], 4, 1e-5);
+    EXPECT_NEAR(v.v[2], 6, 1e-5);
+    const Value w =
+        declared("#include \"transforms.inc\"\n"
+                 "#declare V = vinv_transform(<3, 4, 6>, transform { scale 2 translate x });",
+                 "V");
+    EXPECT_NEAR(w.v[0], 1, 1e-5);
+    EXPECT_NEAR(w.v[2], 3, 1e-5);
+    const PovResult r = load_text("#declare T = function { transform { rotate 90 * z } }\n"
+                                  "#declare V = T(1, 0, 0);\n"
+                                  "#declare F = function { T(x, y, z) + 1 }\n"
+                                  "#declare W = F(1, 0, 0);\n"
+                                  "sphere { 0, W }\n");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("transform function in a function"), std::string::npos);
 }
 
 TEST(PovExpressions, TypeErrorsNameTheToken) {

@@ -70,6 +70,10 @@ struct PovFunction {
     int internal = -1;
     std::shared_ptr<const Pattern> pattern;
     std::shared_ptr<const PigmentFunction> pigment; // a pigment function (gray when a number)
+    // A transform function (`function { transform { ... } }`): called in the scene language
+    // it gives the point transformed, a vector (transforms.inc's vtransform); a function body
+    // cannot use it (`unsupported` says so).
+    std::shared_ptr<const Affine> transform;
     /// Evaluates the body; each node evaluated takes one of `steps` (FnStepsExceeded when
     /// none is left).
     double eval(const double* args, int n, uint64_t& steps) const;

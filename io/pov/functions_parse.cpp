@@ -1,8 +1,9 @@
 // `function { ... }` and `function(a, b) { ... }`: the body compiled to an FnNode tree over the
 // parameters; declared floats become constants, declared functions calls. `internal(N)` of the
 // internal functions Sheaf knows (core/scene/function.h) and `pattern { ... }` of its
-// patterns are functions too; pigment, spline and transform functions are accepted and marked
-// unsupported (they evaluate to 0).
+// patterns are functions too, and pigment functions; a transform function gives the point
+// transformed when the scene language calls it; spline and image functions are accepted and
+// marked unsupported (they evaluate to 0).
 #include "io/pov/materials.h"
 #include "io/pov/parser.h"
 
@@ -41,7 +42,13 @@ Value Parser::parse_function(const Token& t) {
     } else if (is_kw_tok(b, "pigment")) {
         parse_pigment_function(*f);
         expect_sym("}", "'}'");
-    } else if (is_kw_tok(b, "spline") || is_kw_tok(b, "image_map") || is_kw_tok(b, "transform")) {
+    } else if (is_kw_tok(b, "transform")) {
+        Affine m;
+        parse_transform_item(m); // transform { ... } or transform NAME
+        f->transform = std::make_shared<const Affine>(m);
+        f->unsupported = "transform function in a function";
+        expect_sym("}", "'}'");
+    } else if (is_kw_tok(b, "spline") || is_kw_tok(b, "image_map")) {
         f->unsupported = b.text + " function";
         int depth = 1;
         while (depth > 0) {

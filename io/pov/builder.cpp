@@ -22,6 +22,13 @@ Affine pov_to_sheaf() {
 
 namespace {
 
+/// The aa.samples value that gives a pixel `samples` samples or more: n x n of them, n within
+/// the setting's range (an explicit aa.samples, +A or -A, overrides the scene's).
+std::string aa_samples_for(int samples) {
+    const int most = int(find_setting("aa.samples")->max);
+    return std::to_string(std::clamp(int(std::ceil(std::sqrt(double(samples)) - 1e-9)), 1, most));
+}
+
 /// The triangles `faces` of m, with the vertices they use (normals and uv coordinates kept).
 Mesh submesh(const Mesh& m, const std::vector<uint32_t>& faces) {
     Mesh out;
@@ -293,11 +300,8 @@ struct Builder {
             scene.camera_meshes.push_back(std::move(cm));
         }
         // POV-Ray shoots the rays a pixel takes itself; Sheaf takes them as its anti-aliasing
-        // samples: ceil(sqrt(rays)) x that many a pixel (at most 8 x 8; an explicit
-        // aa.samples wins), each taking one ray (Camera::mesh_distribution).
-        if (c.mesh_rays > 1)
-            scene.settings["aa.samples"] = std::to_string(
-                std::clamp(int(std::ceil(std::sqrt(double(c.mesh_rays)) - 1e-9)), 1, 8));
+        // samples, each taking one ray (Camera::mesh_distribution).
+        if (c.mesh_rays > 1) scene.settings["aa.samples"] = aa_samples_for(c.mesh_rays);
     }
 
     void camera() {
@@ -414,12 +418,9 @@ double build_scene(Parser& p, Scene& scene) {
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));
     if (scene.camera.lens_radius > 0) {
-        // Focal blur takes its samples as anti-aliasing does: blur_samples (16 when not given)
-        // as n x n samples a pixel, n at most 8 (aa.samples' range); an explicit aa.samples
-        // (+A, -A) overrides it.
-        const int n = m.camera.blur_samples > 0 ? m.camera.blur_samples : 16;
+        // Focal blur takes its samples as anti-aliasing does: blur_samples (16 when not given).
         scene.settings["aa.samples"] =
-            std::to_string(std::clamp(int(std::ceil(std::sqrt(double(n)) - 1e-9)), 1, 8));
+            aa_samples_for(m.camera.blur_samples > 0 ? m.camera.blur_samples : 16);
     }
     if (m.radiosity) {
         scene.settings["radiosity.samples"] = std::to_string(m.radiosity_count);

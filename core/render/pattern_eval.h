@@ -171,14 +171,129 @@ SHEAF_HD_INLINE float shape_value(const Pattern& pt, float raw) {
 /// Turbulence displaces by its amount times this and the fractal vector noise.
 constexpr float kTurbulenceScale = 4.0f;
 
-/// The pattern-space point of world point `p`, turbulence applied.
-SHEAF_HD_NOINLINE Vec3 pattern_point(const Pattern& pt, Vec3 world) {
+namespace pattern_detail {
+
+// The angle of (x, z) from +x towards +z as a fraction of a turn in [0, 1), as POV-Ray's
+// warps measure it; len is the length of (x, z), above 0.
+SHEAF_HD_INLINE float turn_fraction(float x, float z, float len) {
+    if (z == 0.0f) return x > 0 ? 0.0f : 0.5f;
+    const float a = hdm::acosf(fmaxf(-1.0f, fminf(1.0f, x / len))) / (2.0f * kPi);
+    return z < 0 ? 1.0f - a : a;
+}
+
+// (x, y, z) computed along z, turned to the unit orientation o (POV-Ray's formula).
+SHEAF_HD_INLINE Vec3 orient(Vec3 v, Vec3 o) {
+    if (o.x == 0 && o.y == 0 && o.z == 1) return v;
+    return {o.x * v.z + o.y * v.x + o.z * v.x, o.x * v.y - o.y * v.z + o.z * v.y,
+            -o.x * v.x + o.y * v.y + o.z * v.z};
+}
+
+SHEAF_HD_INLINE float dist_factor(float dist, float exponent) {
+    return exponent == 1.0f ? dist : exponent != 0.0f ? hdm::powf(dist, exponent) : 1.0f;
+}
+
+} // namespace pattern_detail
+
+/// Point p moved by warp w (in the space where it was declared), before w.to_inner.
+SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
+    using namespace pattern_detail;
+    switch (w.kind) {
+    case WarpKind::Turbulence:
+        return p + w.a * vector_turbulence(p, w.octaves, w.f[0], w.f[1]) * kTurbulenceScale;
+    case WarpKind::Repeat: {
+        const float width = w.f[0];
+        const float c = w.axis == 0 ? p.x : w.axis == 1 ? p.y : p.z;
+        const float block = floorf(c / width);
+        Vec3 r = p;
+        const float in = c - block * width;
+        if (w.axis == 0) r.x = in;
+        if (w.axis == 1) r.y = in;
+        if (w.axis == 2) r.z = in;
+        if (int(block) & 1) { // odd slabs mirrored where flip says
+            r = Vec3(r.x * w.b.x, r.y * w.b.y, r.z * w.b.z);
+            const float f = w.axis == 0 ? w.b.x : w.axis == 1 ? w.b.y : w.b.z;
+            if (f < 0) {
+                if (w.axis == 0) r.x += width;
+                if (w.axis == 1) r.y += width;
+                if (w.axis == 2) r.z += width;
+            }
+        }
+        return r + w.a * block;
+    }
+    case WarpKind::Planar:
+        return orient(Vec3(p.x, p.y, w.f[0]), w.b);
+    case WarpKind::Cylindrical: {
+        const float len = sqrtf(p.x * p.x + p.z * p.z);
+        if (len == 0.0f) return p;
+        const float theta = turn_fraction(p.x, p.z, len) * dist_factor(len, w.f[0]);
+        return orient(Vec3(theta, p.y, len), w.b);
+    }
+    case WarpKind::Spherical: {
+        const float dist = length(p);
+        if (dist == 0.0f) return p;
+        const Vec3 u = p / dist;
+        const float phi = 0.5f + hdm::asinf(fmaxf(-1.0f, fminf(1.0f, u.y))) / kPi;
+        const float len = sqrtf(u.x * u.x + u.z * u.z);
+        const float theta = len == 0.0f ? 0.0f : turn_fraction(u.x, u.z, len);
+        const float k = dist_factor(dist, w.f[0]);
+        return orient(Vec3(theta * k, phi * k, dist), w.b);
+    }
+    case WarpKind::Toroidal: {
+        const float len0 = sqrtf(p.x * p.x + p.z * p.z);
+        if (len0 == 0.0f) return p;
+        const float theta = turn_fraction(p.x, p.z, len0);
+        const float x = len0 - w.f[1];
+        const float len = sqrtf(x * x + p.y * p.y);
+        float phi = len > 0 ? hdm::acosf(fmaxf(-1.0f, fminf(1.0f, -x / len))) : 0.0f;
+        if (p.y > 0) phi = 2.0f * kPi - phi;
+        const float k = dist_factor(len, w.f[0]);
+        return orient(Vec3(theta * k, phi / (2.0f * kPi) * k, len), w.b);
+    }
+    case WarpKind::Cubic: {
+        const float ax = fabsf(p.x), ay = fabsf(p.y), az = fabsf(p.z);
+        const float third = 1.0f / 3.0f;
+        if (p.x >= 0 && p.x >= ay && p.x >= az)
+            return {0.75f - 0.125f * (p.z / p.x + 1), third + third * 0.5f * (p.y / p.x + 1), p.x};
+        if (p.y >= 0 && p.y >= ax && p.y >= az)
+            return {0.25f + 0.125f * (p.x / p.y + 1), 1 - third * 0.5f * (p.z / p.y + 1), p.y};
+        if (p.z >= 0 && p.z >= ax && p.z >= ay)
+            return {0.25f + 0.125f * (p.x / p.z + 1), third + third * 0.5f * (p.y / p.z + 1), p.z};
+        if (p.x < 0 && p.x <= -ay && p.x <= -az)
+            return {0.125f * (p.z / -p.x + 1), third + third * 0.5f * (p.y / -p.x + 1), -p.x};
+        if (p.y < 0 && p.y <= -ax && p.y <= -az)
+            return {0.25f + 0.125f * (p.x / -p.y + 1), third * 0.5f * (p.z / -p.y + 1), -p.y};
+        return {1 - 0.125f * (p.x / -p.z + 1), third + third * 0.5f * (p.y / -p.z + 1), -p.z};
+    }
+    }
+    return p;
+}
+
+/// The pattern-space point of world point `world`: through the pattern's transforms and
+/// warps (`warps`: the scene's warp array, read when the pattern has any), then its
+/// turbulence.
+SHEAF_HD_NOINLINE Vec3 pattern_point(const Pattern& pt, Vec3 world, const Warp* warps) {
     Vec3 p = pt.to_pattern.point(world);
+    for (uint32_t i = 0; i < pt.warp_count; ++i) {
+        const Warp& w = warps[pt.warp_first + i];
+        p = w.to_inner.point(warp_point(w, p));
+    }
     // The factor makes `turbulence 0.1` move points about as far as it does in POV-Ray.
     if (pt.has_turbulence)
         p += pt.turbulence * vector_turbulence(p, pt.octaves, pt.omega, pt.lambda) *
              kTurbulenceScale;
     return p;
+}
+
+/// The gradient g, taken in pattern space, in the world: through the transposes of the
+/// pattern's transforms (the warps' own bending aside, as POV-Ray's normals do).
+SHEAF_HD_INLINE Vec3 pattern_gradient_to_world(const Pattern& pt, const Warp* warps, Vec3 g) {
+    auto transpose = [](const Affine& m, Vec3 v) {
+        return Vec3(m.m[0][0] * v.x + m.m[1][0] * v.y + m.m[2][0] * v.z,
+                    m.m[0][1] * v.x + m.m[1][1] * v.y + m.m[2][1] * v.z,
+                    m.m[0][2] * v.x + m.m[1][2] * v.y + m.m[2][2] * v.z);
+    };
+    for (uint32_t i = pt.warp_count; i-- > 0;) g = transpose(warps[pt.warp_first + i].to_inner, g);
+    return transpose(pt.to_pattern, g);
 }
 
 /// A continuous pattern's value in [0, 1] at pattern-space point p.

@@ -162,13 +162,74 @@ TEST(Noise, TurbulenceMovesPointsByAboutItsAmount) {
     double moved = 0;
     for (int i = 0; i < 1000; ++i) {
         const Vec3 q(u(g), u(g), u(g));
-        moved += length(pattern_point(p, q) - q);
+        moved += length(pattern_point(p, q, nullptr) - q);
     }
     moved /= 1000;
     EXPECT_GT(moved, 0.05);
     EXPECT_LT(moved, 1.5);
     p.has_turbulence = false;
-    EXPECT_EQ(length(pattern_point(p, Vec3(1, 2, 3)) - Vec3(1, 2, 3)), 0.0f);
+    EXPECT_EQ(length(pattern_point(p, Vec3(1, 2, 3), nullptr) - Vec3(1, 2, 3)), 0.0f);
+}
+
+void expect_near(Vec3 a, Vec3 b) {
+    EXPECT_NEAR(a.x, b.x, 1e-5f);
+    EXPECT_NEAR(a.y, b.y, 1e-5f);
+    EXPECT_NEAR(a.z, b.z, 1e-5f);
+}
+
+Warp warp(WarpKind k) {
+    Warp w;
+    w.kind = k;
+    return w;
+}
+
+TEST(Warps, RepeatCopiesASlabWithItsOffsetAndFlips) {
+    Warp w = warp(WarpKind::Repeat);
+    w.axis = 0, w.f[0] = 2, w.b = Vec3(1.0f), w.a = Vec3(0, 0, 0.25f);
+    expect_near(warp_point(w, Vec3(5, 1, 0)), Vec3(1, 1, 0.5f));    // slab 2: two offsets
+    expect_near(warp_point(w, Vec3(-1, 1, 0)), Vec3(1, 1, -0.25f)); // slab -1
+    w.a = Vec3(0.0f), w.b = Vec3(1, -1, 1);                         // odd slabs mirrored in y
+    expect_near(warp_point(w, Vec3(3, 1, 0)), Vec3(1, -1, 0));
+    expect_near(warp_point(w, Vec3(5, 1, 0)), Vec3(1, 1, 0));
+    w.b = Vec3(-1, 1, 1); // mirrored along the axis itself: 2.5 is 0.5's mirror image
+    expect_near(warp_point(w, Vec3(2.5f, 0, 0)), Vec3(1.5f, 0, 0));
+}
+
+TEST(Warps, MappingWarpsFollowPovRaysFormulas) {
+    Warp planar = warp(WarpKind::Planar);
+    planar.f[0] = 0.5f;
+    expect_near(warp_point(planar, Vec3(1, 2, 3)), Vec3(1, 2, 0.5f));
+    Warp cyl = warp(WarpKind::Cylindrical); // a quarter turn from +x towards +z
+    expect_near(warp_point(cyl, Vec3(0, 3, 2)), Vec3(0.25f, 3, 2));
+    cyl.f[0] = 1; // dist_exp 1: the angle times the distance
+    expect_near(warp_point(cyl, Vec3(0, 3, 2)), Vec3(0.5f, 3, 2));
+    cyl.f[0] = 0, cyl.b = Vec3(0, 1, 0); // orientation y
+    expect_near(warp_point(cyl, Vec3(0, 3, 2)), Vec3(0.25f, -2, 3));
+    expect_near(warp_point(cyl, Vec3(0, 3, 0)), Vec3(0, 3, 0)); // on the axis: unmoved
+    Warp sph = warp(WarpKind::Spherical);
+    expect_near(warp_point(sph, Vec3(0, 0, -2)), Vec3(0.75f, 0.5f, 2));
+    expect_near(warp_point(sph, Vec3(0, 2, 0)), Vec3(0, 1, 2)); // the pole
+    Warp tor = warp(WarpKind::Toroidal);
+    tor.f[1] = 2; // major radius
+    expect_near(warp_point(tor, Vec3(3, 0, 0)), Vec3(0, 0.5f, 1));
+    expect_near(warp_point(tor, Vec3(2, -1, 0)), Vec3(0, 0.25f, 1));
+    const Warp cubic = warp(WarpKind::Cubic);
+    expect_near(warp_point(cubic, Vec3(2, 0, 0)), Vec3(0.625f, 0.5f, 2));
+    expect_near(warp_point(cubic, Vec3(0, -2, 0)), Vec3(0.375f, 1.0f / 6, 2));
+}
+
+TEST(Warps, TheChainRunsFromTheLastDeclaredToTheFirst) {
+    // World -> the warp's space halves, the repeat folds x into [0, 1), then to_inner shifts.
+    Pattern p = make(PatternKind::Gradient);
+    p.to_pattern = Affine::scale(Vec3(0.5f));
+    Warp w = warp(WarpKind::Repeat);
+    w.axis = 0, w.f[0] = 1, w.b = Vec3(1.0f);
+    w.to_inner = Affine::translate(Vec3(0, 10, 0));
+    const Warp warps[] = {Warp(), w};
+    p.warp_first = 1, p.warp_count = 1;
+    expect_near(pattern_point(p, Vec3(5, 2, 4), warps), Vec3(0.5f, 11, 2));
+    // Gradients come back through every transform's transpose.
+    expect_near(pattern_gradient_to_world(p, warps, Vec3(1, 1, 1)), Vec3(0.5f, 0.5f, 0.5f));
 }
 
 TEST(Noise, CellDistancesAreOrdered) {

@@ -130,7 +130,7 @@ struct Evaluator {
             const SurfaceColor tint = entry_color(entries[0]); // filter and transmit of the map
             return {c, tint.filter, tint.transmit};
         }
-        const Vec3 q = pattern_point(pt, at);
+        const Vec3 q = pattern_point(pt, at, scene.warps);
         if (pattern_is_list(pt.kind)) {
             const int i = pattern_index_at(pt, q);
             return entry(entries[uint32_t(i) < pg.count ? uint32_t(i) : pg.count - 1], p, depth);
@@ -163,7 +163,7 @@ SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t mater
         const MaterialSwitch& ms = scene.material_switches[size_t(sw)];
         const MaterialEntry* entries = &scene.material_entries[ms.first];
         const Vec3 at = ms.pattern.uv ? Vec3(uv_s, uv_t, 0.0f) : p;
-        const Vec3 q = pattern_point(ms.pattern, at);
+        const Vec3 q = pattern_point(ms.pattern, at, scene.warps);
         if (pattern_is_list(ms.pattern.kind)) {
             const uint32_t i = uint32_t(pattern_index_at(ms.pattern, q));
             material = entries[i < ms.count ? i : ms.count - 1].material;
@@ -241,7 +241,7 @@ SHEAF_HD_INLINE Vec3 bump_map_normal(const SceneView& scene, const NormalPattern
 SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p, Vec3 n) {
     const Pattern& pt = np.pattern;
     if (pt.kind == PatternKind::Image) return bump_map_normal(scene, np, p, n);
-    const Vec3 q = pattern_point(pt, p);
+    const Vec3 q = pattern_point(pt, p, scene.warps);
     // The height: the pattern's value, through the slope map when there is one.
     auto height = [&](Vec3 at) {
         const float v = slope_value(scene, pt, at, p, n);
@@ -258,10 +258,7 @@ SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& 
     if (!(slope > 0) || !(slope <= FLT_MAX)) return n; // zero, NaN or infinite
     // Its direction in the world (gradients transform by the transpose of world -> pattern),
     // its size as in pattern space, so a scaled pattern is finer, not steeper.
-    const Affine& m = pt.to_pattern;
-    const Vec3 gw(m.m[0][0] * g.x + m.m[1][0] * g.y + m.m[2][0] * g.z,
-                  m.m[0][1] * g.x + m.m[1][1] * g.y + m.m[2][1] * g.z,
-                  m.m[0][2] * g.x + m.m[1][2] * g.y + m.m[2][2] * g.z);
+    const Vec3 gw = pattern_gradient_to_world(pt, scene.warps, g);
     Vec3 tangent = gw - n * dot(gw, n);
     const float tl = length(tangent);
     if (!(tl > 0)) return n;
@@ -294,7 +291,7 @@ SHEAF_HD_NOINLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, V
         out = out / weights;
     } else {
         const Pattern& pt = np.pattern;
-        const Vec3 q = pattern_point(pt, p);
+        const Vec3 q = pattern_point(pt, p, scene.warps);
         if (pattern_is_list(pt.kind)) {
             const uint32_t i = uint32_t(pattern_index_at(pt, q));
             return entry(i < np.map_count ? i : np.map_count - 1);

@@ -248,10 +248,11 @@ SHEAF_HD_INLINE double fn_internal(int id, double x, double y, double z, const d
     return 0;
 }
 
-/// Pattern `pt` as a function at (x, y, z): a continuous pattern's value in [0, 1], a list
-/// pattern's entry spread over [0, 1] (checker: 0 or 1).
+/// Pattern `pt` (a function's: no warps, Scene::validate checks) as a function at (x, y, z): a
+/// continuous pattern's value in [0, 1], a list pattern's entry spread over [0, 1] (checker: 0 or
+/// 1).
 SHEAF_HD_INLINE double fn_pattern(const Pattern& pt, double x, double y, double z) {
-    const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)));
+    const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)), nullptr);
     if (pattern_is_list(pt.kind)) return pattern_index_at(pt, q) != 0 ? 1.0 : 0.0;
     return pattern_value_at(pt, q);
 }
@@ -265,7 +266,7 @@ SHEAF_HD_INLINE double fn_pigment(const FnView& fv, const FnPigment& pg, int com
     if (pg.count > 0) {
         const Pattern& pt = fv.patterns[pg.pattern];
         const PigmentEntry* e = fv.pigment_entries + pg.first;
-        const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)));
+        const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)), nullptr);
         if (pg.list) {
             const uint32_t i = uint32_t(pattern_index_at(pt, q));
             for (int k = 0; k < 5; ++k) c[k] = e[i < pg.count ? i : pg.count - 1].color[k];

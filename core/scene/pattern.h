@@ -112,12 +112,43 @@ inline const char* fractal_factor_error(bool inside, double type, double factor)
     return nullptr;
 }
 
+/// POV-Ray's warps: each moves the pattern point in the space where it was declared, in the
+/// pattern's chain of transforms and warps (see Pattern::warp_first and warp_point).
+enum class WarpKind : uint8_t {
+    Turbulence,  // p + a * vector turbulence (octaves, f[0] omega, f[1] lambda)
+    Repeat,      // a slab of width f[0] along `axis` repeated: offset a per slab, odd slabs
+                 // mirrored where b is -1 (b is 1 elsewhere)
+    Planar,      // (x, y) of the point, z = f[0], turned to `orientation` (b)
+    Cylindrical, // (angle around y as a fraction of a turn, y, distance from the y axis)
+    Spherical,   // (longitude, latitude as fractions, distance from the origin)
+    Toroidal,    // a torus of major radius f[1] around y unrolled: (angle, tube angle, distance)
+    Cubic,       // a cube's faces unfolded on the x-y plane
+};
+
+/// One warp of a pattern's chain. `to_inner` maps the point, once warped, into the space of the
+/// transforms and warps declared before this one. Cylindrical, spherical and toroidal warps
+/// multiply their angles by the distance to the power f[0] (dist_exp; 0: not at all) and,
+/// like planar, turn their result to the unit `orientation` b (z: as it is).
+struct Warp {
+    WarpKind kind = WarpKind::Turbulence;
+    uint8_t axis = 0;   // Repeat: 0 x, 1 y, 2 z
+    int8_t octaves = 6; // Turbulence
+    Affine to_inner;
+    Vec3 a{0, 0, 0};     // Turbulence: the amount; Repeat: the offset
+    Vec3 b{0, 0, 1};     // Repeat: the flip signs; Planar ... Toroidal: the orientation
+    float f[2] = {0, 0}; // see WarpKind
+};
+
 struct Pattern {
     PatternKind kind = PatternKind::Gradient;
     Wave wave = Wave::Ramp;
     int8_t octaves = 6; // turbulence
     bool has_turbulence = false;
-    Affine to_pattern; // world -> pattern space (uv: texture coordinates -> pattern space)
+    // World -> pattern space (uv: texture coordinates -> pattern space), or with warps world
+    // -> the space of the last warp declared; then Scene::warps [warp_first, warp_first +
+    // warp_count), the last declared first, each warping and mapping on by its to_inner.
+    Affine to_pattern;
+    uint32_t warp_first = 0, warp_count = 0;
     // Evaluated at the surface's texture coordinates (u, v, 0) instead of the world point
     // (POV-Ray's uv_mapping): pigments and texture maps; off surfaces (media, the sky) the
     // coordinates are (0, 0).

@@ -301,6 +301,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.slope_entries = scene.slope_entries;
     p.normal_map_entries = scene.normal_map_entries;
     p.material_switches = scene.material_switches;
+    p.warps = scene.warps;
     p.material_entries = scene.material_entries;
     p.media = scene.media;
     p.medium_densities = scene.medium_densities;

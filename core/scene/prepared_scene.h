@@ -83,6 +83,7 @@ struct PreparedScene {
     std::vector<SlopeEntry> slope_entries;
     std::vector<NormalMapEntry> normal_map_entries;
     std::vector<MaterialSwitch> material_switches;
+    std::vector<Warp> warps;
     std::vector<MaterialEntry> material_entries;
     std::vector<Medium> media;
     std::vector<uint32_t> medium_densities;

@@ -344,8 +344,28 @@ void Scene::validate() const {
 
 namespace {
 
-void check_pattern(const Pattern& p, size_t textures, const std::string& name) {
+void check_warp(const Warp& w, const std::string& name) {
+    if (!w.to_inner.finite() || !is_finite(w.a) || !is_finite(w.b) || !std::isfinite(w.f[0]) ||
+        !std::isfinite(w.f[1]))
+        throw SceneError(name + ": a warp parameter is not finite");
+    if (w.kind > WarpKind::Cubic) throw SceneError(name + ": a warp of an unknown kind");
+    if (w.kind == WarpKind::Turbulence && (w.octaves < 1 || w.octaves > 16))
+        throw SceneError(name + ": a turbulence warp's octaves must lie between 1 and 16");
+    if (w.kind == WarpKind::Repeat && (w.axis > 2 || w.f[0] == 0))
+        throw SceneError(name + ": a repeat warp needs an axis and a width other than 0");
+    if (w.kind >= WarpKind::Planar && w.kind <= WarpKind::Toroidal &&
+        !(std::fabs(length(w.b) - 1) < 1e-3f))
+        throw SceneError(name + ": a warp's orientation must be a unit vector");
+}
+
+void check_pattern(const Pattern& p, size_t textures, const std::vector<Warp>& warps,
+                   const std::string& name) {
     if (!p.to_pattern.finite()) throw SceneError(name + ": its transform is not finite");
+    if (size_t(p.warp_first) + p.warp_count > warps.size())
+        throw SceneError(name + ": its warps lie outside the scene's warps");
+    if (p.warp_count > 0 && p.kind == PatternKind::Image)
+        throw SceneError(name + ": an image's pattern cannot be warped");
+    for (uint32_t i = 0; i < p.warp_count; ++i) check_warp(warps[p.warp_first + i], name);
     if (!is_finite(p.turbulence) || !std::isfinite(p.frequency) || !std::isfinite(p.phase) ||
         !is_finite(p.vector) || p.octaves < 1 || p.octaves > 16)
         throw SceneError(name + ": a pattern parameter is out of range");
@@ -361,10 +381,13 @@ void check_pattern(const Pattern& p, size_t textures, const std::string& name) {
 void Scene::validate_functions() const {
     for (size_t i = 0; i < fn_patterns.size(); ++i) {
         const Pattern& p = fn_patterns[i];
-        check_pattern(p, textures.size(), "function pattern " + std::to_string(i));
+        check_pattern(p, textures.size(), warps, "function pattern " + std::to_string(i));
         if (p.kind == PatternKind::Function || p.kind == PatternKind::Image)
             throw SceneError("function pattern " + std::to_string(i) +
                              ": a function's pattern is neither a function nor an image");
+        if (p.warp_count > 0)
+            throw SceneError("function pattern " + std::to_string(i) +
+                             ": a function's pattern has no warps");
     }
     for (size_t i = 0; i < fn_pigments.size(); ++i) {
         const FnPigment& pg = fn_pigments[i];
@@ -411,7 +434,7 @@ void Scene::validate_patterns() const {
         const Pigment& pg = pigments[i];
         const std::string name = "pigment " + std::to_string(i);
         if (pg.solid) continue;
-        check_pattern(pg.pattern, textures.size(), name);
+        check_pattern(pg.pattern, textures.size(), warps, name);
         if (!range(pg.first, pg.count, pigment_entries.size()))
             throw SceneError(name + ": its entries lie outside the pigment entries");
         for (uint32_t e = pg.first; e < pg.first + pg.count; ++e) {
@@ -426,7 +449,7 @@ void Scene::validate_patterns() const {
     for (size_t i = 0; i < normal_patterns.size(); ++i) {
         const NormalPattern& np = normal_patterns[i];
         const std::string name = "normal pattern " + std::to_string(i);
-        check_pattern(np.pattern, textures.size(), name);
+        check_pattern(np.pattern, textures.size(), warps, name);
         if (!range(np.slope_first, np.slope_count, slope_entries.size()))
             throw SceneError(name + " names slope map entries that do not exist");
         for (uint32_t k = 0; k < np.slope_count; ++k) {
@@ -458,7 +481,7 @@ void Scene::validate_patterns() const {
     for (size_t i = 0; i < material_switches.size(); ++i) {
         const MaterialSwitch& ms = material_switches[i];
         const std::string name = "material switch " + std::to_string(i);
-        check_pattern(ms.pattern, textures.size(), name);
+        check_pattern(ms.pattern, textures.size(), warps, name);
         if (ms.count == 0 || !range(ms.first, ms.count, material_entries.size()))
             throw SceneError(name + ": its entries lie outside the material entries");
         for (uint32_t e = ms.first; e < ms.first + ms.count; ++e)

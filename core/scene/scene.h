@@ -302,6 +302,7 @@ class Scene {
     std::vector<NormalMapEntry> normal_map_entries; // and their normal maps
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;
+    std::vector<Warp> warps;                // the patterns' warps (Pattern::warp_first)
     std::vector<Medium> media;              // indexed by Material::media_first
     std::vector<uint32_t> medium_densities; // pigments, indexed by Medium::density_first
     // User functions (core/scene/function.h), run by function patterns and isosurfaces:

@@ -49,6 +49,7 @@ struct SceneView {
     const SlopeEntry* slope_entries = nullptr;
     const NormalMapEntry* normal_map_entries = nullptr;
     const MaterialSwitch* material_switches = nullptr;
+    const Warp* warps = nullptr;
     const MaterialEntry* material_entries = nullptr;
     const Medium* media = nullptr;
     const uint32_t* medium_densities = nullptr;
@@ -95,7 +96,7 @@ struct SceneView {
           materials(p.materials.data()), pigments(p.pigments.data()),
           pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
           slope_entries(p.slope_entries.data()), normal_map_entries(p.normal_map_entries.data()),
-          material_switches(p.material_switches.data()),
+          material_switches(p.material_switches.data()), warps(p.warps.data()),
           material_entries(p.material_entries.data()), media(p.media.data()),
           medium_densities(p.medium_densities.data()), media_containers(p.media_containers.data()),
           media_container_count(uint32_t(p.media_containers.size())),

@@ -69,6 +69,7 @@ template <class Exec> class DeviceScene {
         put(p.slope_entries, v.slope_entries);
         put(p.normal_map_entries, v.normal_map_entries);
         put(p.material_switches, v.material_switches);
+        put(p.warps, v.warps);
         put(p.material_entries, v.material_entries);
         put(p.media, v.media);
         put(p.medium_densities, v.medium_densities);

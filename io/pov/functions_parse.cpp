@@ -102,7 +102,11 @@ void Parser::parse_pattern_function(PovFunction& f) {
         f.unsupported = "pattern function '" + name.text + "'";
         return;
     }
-    f.pattern = std::make_shared<const Pattern>(lower_pattern(pt, local));
+    if (!pt.warps.empty()) {
+        f.unsupported = "warp in a pattern function";
+        return;
+    }
+    f.pattern = std::make_shared<const Pattern>(lower_pattern(pt, local, nullptr));
 }
 
 void Parser::parse_pigment_function(PovFunction& f) {
@@ -128,7 +132,11 @@ void Parser::parse_pigment_function(PovFunction& f) {
             for (int i = 0; i < 5; ++i) out.color[i] = float(c[i]);
             pf->entries.push_back(out);
         }
-        pf->pattern = lower_pattern(pg->pattern, pg->local);
+        if (!pg->pattern.warps.empty()) {
+            f.unsupported = "warp in a pigment function";
+            return;
+        }
+        pf->pattern = lower_pattern(pg->pattern, pg->local, nullptr);
         pf->pigment.count = uint32_t(pf->entries.size());
         pf->pigment.list = pattern_is_list(k) ? 1 : 0;
     }

@@ -124,13 +124,28 @@ Highlights layer_highlights(const PovTexture& t) {
 } // namespace
 
 Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
-    Pattern p = lower_pattern(pt, eff);
+    std::vector<Warp> warps;
+    Pattern p = lower_pattern(pt, eff, &warps);
     if (uv_) { // (u, v, 0) -> the pattern's own space: no world, no mirror
         p.uv = true;
         ++uv_patterns_;
     } else { // Sheaf world -> POV-Ray world (the z mirror) -> the pattern's own space
         p.to_pattern = p.to_pattern * pov_to_sheaf();
     }
+    if (!chain_.warps.empty() && chain_.uv == p.uv && pt.kind != PatternKind::Image) {
+        // In a warped pigment's map: through its chain into its pattern space, then from
+        // there into this pattern's (to_pattern relative to the warped pigment's space).
+        const Affine rel =
+            p.uv ? p.to_pattern * chain_.eff : p.to_pattern * pov_to_sheaf() * chain_.eff;
+        std::vector<Warp> chain = chain_.warps;
+        chain.back().to_inner = rel * chain.back().to_inner;
+        chain.insert(chain.end(), warps.begin(), warps.end());
+        warps = std::move(chain);
+        p.to_pattern = chain_.to_pattern;
+    }
+    p.warp_first = uint32_t(scene_.warps.size());
+    p.warp_count = uint32_t(warps.size());
+    scene_.warps.insert(scene_.warps.end(), warps.begin(), warps.end());
     if (pt.kind == PatternKind::Function && pt.function) p.program = function(*pt.function);
     return p;
 }
@@ -164,7 +179,7 @@ int32_t MaterialBuilder::function(const PovFunction& f) {
     }
 }
 
-Pattern lower_pattern(const PovPattern& pt, const Affine& eff) {
+Pattern lower_pattern(const PovPattern& pt, const Affine& eff, std::vector<Warp>* warps) {
     Pattern p;
     p.kind = pt.kind;
     p.wave = pt.wave;
@@ -183,7 +198,24 @@ Pattern lower_pattern(const PovPattern& pt, const Affine& eff) {
                   float(pt.param[0]), float(pt.param[1]), pt.slope_altitude, float(pt.param[2]),
                   float(pt.param[3]), pt.slope_point_at);
     }
-    if (std::fabs(eff.determinant()) > 1e-30f) p.to_pattern = eff.inverse();
+    const auto inverse = [](const Affine& a) {
+        return std::fabs(a.determinant()) > 1e-30f ? a.inverse() : Affine();
+    };
+    const size_t n = warps ? pt.warps.size() : 0;
+    if (n == 0) {
+        p.to_pattern = inverse(eff);
+        return p;
+    }
+    // POV-Ray's chain: the world into the last warp's space (the transforms after it undone),
+    // each warp, then back through the transforms declared before it, down to the first.
+    p.to_pattern = pt.warps[n - 1].at * inverse(eff);
+    p.warp_first = uint32_t(warps->size());
+    p.warp_count = uint32_t(n);
+    for (size_t i = n; i-- > 0;) {
+        Warp w = pt.warps[i].warp;
+        w.to_inner = i > 0 ? pt.warps[i - 1].at * inverse(pt.warps[i].at) : inverse(pt.warps[i].at);
+        warps->push_back(w);
+    }
     return p;
 }
 
@@ -230,13 +262,21 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
         scene_.pigments.push_back(out);
         return int32_t(scene_.pigments.size() - 1);
     }
-    // Entries first: a pigment names only earlier pigments.
-    std::vector<PigmentEntry> entries;
-    entries.reserve(pg.entries.size());
-    for (const PovMapEntry& e : pg.entries) entries.push_back(entry(e, eff));
     out.solid = false;
     out.average = pg.average;
     out.pattern = pattern(pg.pattern, eff);
+    // Entries before the pigment itself: a pigment names only earlier pigments. They are
+    // evaluated through this pigment's warps, as POV-Ray does.
+    const WarpChain outer_chain = chain_;
+    if (out.pattern.warp_count > 0) {
+        const auto first = scene_.warps.begin() + out.pattern.warp_first;
+        chain_ = {out.pattern.to_pattern, std::vector<Warp>(first, first + out.pattern.warp_count),
+                  eff, out.pattern.uv};
+    }
+    std::vector<PigmentEntry> entries;
+    entries.reserve(pg.entries.size());
+    for (const PovMapEntry& e : pg.entries) entries.push_back(entry(e, eff));
+    chain_ = outer_chain;
     if (pg.pattern.kind == PatternKind::Image && pg.pattern.image)
         out.pattern.image = image(*pg.pattern.image, out.pattern.to_pattern);
     out.first = uint32_t(scene_.pigment_entries.size());

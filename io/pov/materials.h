@@ -20,8 +20,9 @@ inline Vec3 rgb(const Color5& c) {
 }
 
 /// The core pattern of `pt` in the space `eff` maps to its own (no mirror: a function's
-/// pattern reads POV-Ray coordinates).
-Pattern lower_pattern(const PovPattern& pt, const Affine& eff);
+/// pattern reads POV-Ray coordinates). Its warps are appended to `warps` (null: a pattern
+/// without warps is asked for).
+Pattern lower_pattern(const PovPattern& pt, const Affine& eff, std::vector<Warp>* warps);
 
 class MaterialBuilder {
   public:
@@ -63,6 +64,15 @@ class MaterialBuilder {
     bool uv_ = false;
     size_t uv_patterns_ = 0;
     std::set<uint32_t> uv_materials_;
+    // While a warped pigment's map entries are made: its chain (POV-Ray evaluates the entries
+    // at the point its pattern warped, so they inherit its warps).
+    struct WarpChain {
+        Affine to_pattern;       // its Pattern::to_pattern
+        std::vector<Warp> warps; // its warps, the last declared first
+        Affine eff;              // its placement in POV-Ray's space
+        bool uv = false;
+    };
+    WarpChain chain_;
 };
 
 } // namespace sheaf::io::pov

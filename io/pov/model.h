@@ -69,6 +69,13 @@ struct PovPattern {
     // the slope's and the altitude's low and high ends.
     Vec3 slope_altitude{0, 0, 0};
     bool slope_point_at = false;
+    // Warps in the order declared, each with the pattern's transforms declared before it
+    // (`at`: the pattern's local transform then; Warp::to_inner is set when lowered).
+    struct DeclaredWarp {
+        Warp warp;
+        Affine at;
+    };
+    std::vector<DeclaredWarp> warps;
 };
 
 struct PovPigment;

@@ -315,6 +315,7 @@ class Parser {
     /// `keyword` (io/pov/slope_pattern.cpp).
     void parse_slope(PovPattern& pt, const Token& keyword);
     bool parse_pattern_modifier(PovPattern& pt, Affine& local);
+    void parse_warp(PovPattern& pt, const Affine& local); // after `warp`
     void skip_to_block_end(); // after '{' was read: up to and including its '}'
     bool is_color_start(const Token& t);
     /// Whether a map entry (`[value ...]`) starts with its value: a number, a declared float

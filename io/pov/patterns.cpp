@@ -1,6 +1,6 @@
 // Patterns: the pattern keywords of pigments, normals and textures with their arguments, and
 // the modifiers every pattern takes (turbulence, octaves, omega, lambda, frequency, phase, the
-// waves, warp { turbulence }, transforms).
+// waves, the warps, transforms).
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
@@ -164,24 +164,7 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         pt.param[3] = parse_float();
     } else if (k == "warp") {
         advance();
-        expect_sym("{");
-        for (;;) {
-            const Token w = peek();
-            if (accept_sym("}")) break;
-            if (accept_kw("turbulence")) {
-                turbulence();
-            } else if (accept_kw("octaves")) {
-                pt.octaves = std::clamp(int(parse_float()), 1, 10);
-            } else if (accept_kw("omega")) {
-                pt.omega = parse_float();
-            } else if (accept_kw("lambda")) {
-                pt.lambda = parse_float();
-            } else {
-                unsupported(w, "warp '" + w.text + "' (ignored)");
-                skip_to_block_end();
-                break;
-            }
-        }
+        parse_warp(pt, local);
     } else if (k == "exponent" || k == "interior" || k == "exterior") {
         advance();
         parse_fractal_modifier(t, pt.fractal);
@@ -197,6 +180,96 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         return false;
     }
     return true;
+}
+
+void Parser::parse_warp(PovPattern& pt, const Affine& local) {
+    expect_sym("{");
+    const Token w = peek();
+    Warp out;
+    auto unit = [&](const Token& at, Vec3 v) { // an orientation
+        const float l = length(v);
+        if (!(l > 0) || !std::isfinite(l)) error_at(at, "a warp's orientation must not be zero");
+        return v / l;
+    };
+    if (accept_kw("turbulence")) { // warp { turbulence amount [octaves n] [omega w] [lambda l] }
+        out.kind = WarpKind::Turbulence;
+        const Value v = parse_expr();
+        out.a = v.type == VType::Float ? Vec3(float(v.v[0]))
+                                       : Vec3(float(v.v[0]), float(v.v[1]), float(v.v[2]));
+        out.f[0] = 0.5f, out.f[1] = 2.0f;
+        for (;;) {
+            if (accept_kw("octaves"))
+                out.octaves = int8_t(std::clamp(int(parse_float()), 1, 10));
+            else if (accept_kw("omega"))
+                out.f[0] = parse_float();
+            else if (accept_kw("lambda"))
+                out.f[1] = parse_float();
+            else
+                break;
+        }
+    } else if (accept_kw("repeat")) { // repeat <width along one axis> [offset v] [flip v]
+        out.kind = WarpKind::Repeat;
+        const Token at = peek();
+        const Vec3 v = parse_vector();
+        const int axes = (v.x != 0) + (v.y != 0) + (v.z != 0);
+        if (axes != 1)
+            error_at(at, axes == 0 ? "a repeat warp needs an axis: one component other than 0"
+                                   : "a repeat warp repeats along one axis only");
+        out.axis = v.x != 0 ? 0 : v.y != 0 ? 1 : 2;
+        out.f[0] = v.x != 0 ? v.x : v.y != 0 ? v.y : v.z;
+        out.b = Vec3(1.0f);
+        for (;;) {
+            if (accept_kw("offset")) {
+                out.a = parse_vector();
+            } else if (accept_kw("flip")) {
+                const Vec3 f = parse_vector();
+                out.b =
+                    Vec3(f.x != 0 ? -1.0f : 1.0f, f.y != 0 ? -1.0f : 1.0f, f.z != 0 ? -1.0f : 1.0f);
+            } else {
+                break;
+            }
+        }
+    } else if (accept_kw("planar")) { // planar [orientation [, offset]]
+        out.kind = WarpKind::Planar;
+        if (starts_expression(peek())) {
+            const Token at = peek();
+            out.b = unit(at, parse_vector());
+            accept_sym(",");
+            if (starts_expression(peek())) out.f[0] = parse_float();
+        }
+    } else if (is_kw("cylindrical") || is_kw("spherical") || is_kw("toroidal") || is_kw("cubic")) {
+        advance();
+        out.kind = w.text == "cylindrical" ? WarpKind::Cylindrical
+                   : w.text == "spherical" ? WarpKind::Spherical
+                   : w.text == "toroidal"  ? WarpKind::Toroidal
+                                           : WarpKind::Cubic;
+        for (;;) {
+            const Token m = peek();
+            if (out.kind != WarpKind::Cubic && accept_kw("orientation")) {
+                out.b = unit(m, parse_vector());
+            } else if (out.kind != WarpKind::Cubic && accept_kw("dist_exp")) {
+                out.f[0] = parse_float();
+            } else if (out.kind == WarpKind::Toroidal && accept_kw("major_radius")) {
+                out.f[1] = parse_float();
+            } else {
+                break;
+            }
+        }
+    } else if (is_kw("black_hole")) {
+        unsupported(w, "warp 'black_hole' (ignored)");
+        advance();
+        skip_to_block_end();
+        return;
+    } else {
+        error_expected(w, "a warp (turbulence, repeat, planar, cylindrical, spherical, "
+                          "toroidal, cubic or black_hole)");
+    }
+    expect_sym("}");
+    if (pt.kind == PatternKind::Image) {
+        unsupported(w, "warp of an image (ignored)");
+        return;
+    }
+    pt.warps.push_back({out, local});
 }
 
 void Parser::skip_to_block_end() {

@@ -496,6 +496,47 @@ TEST(PovTextures, UnsupportedPatternsAndWarpsWarn) {
     EXPECT_FLOAT_EQ(shape_material(r, 0).color.x, 0.5f); // the map's average
 }
 
+TEST(PovTextures, WarpsChainWithTheTransformsAroundThem) {
+    // POV-Ray's order: the translate after the warp is undone first, then the repeat folds x,
+    // then the scale before it is undone.
+    const PovResult r =
+        load_text("plane { y, 0 pigment { gradient x scale 2 warp { repeat x*0.5 offset y } "
+                  "translate <1, 0, 0> } }\n");
+    EXPECT_TRUE(r.warnings.empty());
+    const Pattern& pt = r.scene.pigments[size_t(shape_material(r).pigment)].pattern;
+    ASSERT_EQ(pt.warp_count, 1u);
+    ASSERT_EQ(r.scene.warps.size(), 1u);
+    EXPECT_EQ(r.scene.warps[0].kind, WarpKind::Repeat);
+    const Vec3 q = pattern_point(pt, Vec3(1.75f, 0, 0), r.scene.warps.data());
+    EXPECT_NEAR(q.x, 0.125f, 1e-5);
+    EXPECT_NEAR(q.y, 0.5f, 1e-5);
+    EXPECT_NO_THROW(r.scene.validate());
+    // The other warps are read with their options.
+    const PovResult all = load_text(
+        "plane { y, 0 pigment { bozo warp { planar z, 0.5 } warp { cylindrical orientation y "
+        "dist_exp 1 } warp { spherical } warp { toroidal major_radius 2 } warp { cubic } "
+        "warp { turbulence 0.5 octaves 3 lambda 3 } } }\n");
+    EXPECT_TRUE(all.warnings.empty());
+    ASSERT_EQ(all.scene.warps.size(), 6u);
+    EXPECT_EQ(all.scene.warps[0].kind, WarpKind::Turbulence); // the last declared first
+    EXPECT_EQ(all.scene.warps[0].octaves, 3);
+    EXPECT_FLOAT_EQ(all.scene.warps[0].f[1], 3.0f);
+    EXPECT_FLOAT_EQ(all.scene.warps[2].f[1], 2.0f);
+    EXPECT_EQ(all.scene.warps[4].b.y, 1.0f);
+    EXPECT_FLOAT_EQ(all.scene.warps[5].f[0], 0.5f);
+    EXPECT_NE(error_of("plane { y, 0 pigment { bozo warp { repeat <1, 1, 0> } } }")
+                  .find("1:43: error: a repeat warp repeats along one axis only"),
+              std::string::npos);
+    EXPECT_NE(error_of("plane { y, 0 pigment { bozo warp { repeat 0 } } }")
+                  .find("error: a repeat warp needs an axis"),
+              std::string::npos);
+    EXPECT_NE(error_of("plane { y, 0 pigment { bozo warp { cylindrical orientation 0 } } }")
+                  .find("error: a warp's orientation must not be zero"),
+              std::string::npos);
+    EXPECT_NE(error_of("plane { y, 0 pigment { bozo warp { } } }").find("expected a warp"),
+              std::string::npos);
+}
+
 TEST(PovTextures, SlopeMaps) {
     const PovResult r = load_text(
         "#declare SM = slope_map { [1 <0, -1>] [0, <1, 1>] [0.5 0.25] }\n"

@@ -44,9 +44,8 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},           {"cubic", 6},   {"density_file", 0}, {"facets", 0},
-        {"image_pattern", 0}, {"object", 2},  {"pavement", 0},     {"pigment_pattern", 0},
-        {"tiling", 0},        {"fractal", 0}, {"tiles", 2},
+        {"aoi", 0},    {"cubic", 6},    {"density_file", 0},    {"facets", 0}, {"image_pattern", 0},
+        {"object", 2}, {"pavement", 0}, {"pigment_pattern", 0}, {"tiling", 0}, {"fractal", 0},
     };
     return m;
 }

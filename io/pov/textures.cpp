@@ -114,6 +114,26 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
         }
         if (t.kind != TokKind::Ident) error_expected(t, "pigment, normal, finish or '}'");
         const std::string& k = t.text;
+        if (k == "tiles") { // tiles { texture {...} tile2 texture {...} }: a checker of two
+            advance();
+            expect_sym("{");
+            const Token first = peek();
+            if (!accept_kw("texture")) error_expected(first, "texture");
+            PovTextureRef a = parse_texture_layers(PovTexture{});
+            const Token between = peek();
+            if (!accept_kw("tile2")) error_expected(between, "tile2");
+            const Token second = peek();
+            if (!accept_kw("texture")) error_expected(second, "texture");
+            PovTextureRef b = parse_texture_layers(PovTexture{});
+            expect_sym("}");
+            tx = PovTexture{};
+            tx.is_map = true;
+            tx.map_pattern.kind = PatternKind::Checker;
+            tx.map_entries = {{0.0, a}, {0.0, b}};
+            list = 2;
+            list_given = true;
+            continue;
+        }
         PovPattern pt;
         bool supported = true;
         if (parse_pattern_name(pt, list, supported)) { // a texture pattern

@@ -176,6 +176,29 @@ TEST(PovTextures, LayersTextureMapsAndNormals) {
     EXPECT_NO_THROW(r.scene.validate());
 }
 
+// tiles { texture tile2 texture } is a checker of the two textures (each may be layered),
+// placed by the transforms after it.
+TEST(PovTextures, TilesAreACheckerOfTwoTextures) {
+    const PovResult r = load_text(
+        "plane { y, 0 texture { tiles { texture { pigment { rgb x } } tile2 texture { pigment "
+        "{ rgb y } } texture { pigment { rgbf <1, 1, 1, 0.5> } } } scale 2 } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Material& m = shape_material(r);
+    ASSERT_GE(m.select, 0);
+    const MaterialSwitch& sw = r.scene.material_switches[size_t(m.select)];
+    EXPECT_EQ(sw.pattern.kind, PatternKind::Checker);
+    ASSERT_EQ(sw.count, 2u);
+    EXPECT_NEAR(sw.pattern.to_pattern.point(Vec3(3, 0, 0)).x, 1.5f, 1e-5);
+    const Material& second = r.scene.materials[r.scene.material_entries[sw.first + 1].material];
+    ASSERT_GE(second.pigment, 0);
+    EXPECT_TRUE(r.scene.pigments[size_t(second.pigment)].layers); // two layers
+    EXPECT_NO_THROW(r.scene.validate());
+    EXPECT_NE(error_of("plane { y, 0 texture { tiles { texture { pigment { rgb 1 } } "
+                       "texture { pigment { rgb 0 } } } } }")
+                  .find("1:92: error: found '}', expected tile2"),
+              std::string::npos);
+}
+
 // A layered texture shines as POV-Ray's: each layer's phong and specular count in full,
 // weighed only by what the layers above let through, with the size of the top-most one.
 // The rest of the finish is the top-most mostly opaque layer's.

@@ -68,11 +68,17 @@ SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p,
     return sample_at(scene, image, s, t);
 }
 
+SHEAF_HD_NOINLINE float pigment_grey(const SceneView& scene, uint32_t pigment, Vec3 q, int depth);
+
 /// A continuous pattern's value at pattern-space point q of the surface at world point
 /// `world` whose normal, facing the ray, is n (zero where there is no surface: media, the
-/// sky); a function pattern runs its program (a value that is not finite counts as 0).
+/// sky); a function pattern runs its program (a value that is not finite counts as 0), a
+/// pigment pattern evaluates its pigment at q (`depth`: the pigments around this one).
 SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt, Vec3 q,
-                                      Vec3 world = Vec3(0.0f), Vec3 n = Vec3(0.0f)) {
+                                      Vec3 world = Vec3(0.0f), Vec3 n = Vec3(0.0f), int depth = 0) {
+    if (pt.kind == PatternKind::PigmentPattern)
+        return pattern_detail::shape_value(
+            pt, depth < kMaxDepth ? pigment_grey(scene, uint32_t(pt.pigment), q, depth + 1) : 0);
     if (pt.kind == PatternKind::Slope)
         return pattern_detail::shape_value(pt, slope_raw(pt, q, world, n));
     if (pt.kind != PatternKind::Function) return pattern_value_at(pt, q);
@@ -135,11 +141,19 @@ struct Evaluator {
             const int i = pattern_index_at(pt, q);
             return entry(entries[uint32_t(i) < pg.count ? uint32_t(i) : pg.count - 1], p, depth);
         }
-        const MapSpan m = map_span(entries, pg.count, pattern_value(scene, pt, q, at, normal));
+        const MapSpan m =
+            map_span(entries, pg.count, pattern_value(scene, pt, q, at, normal, depth));
         if (m.lo == m.hi) return entry(entries[m.lo], p, depth);
         return mix(entry(entries[m.lo], p, depth), entry(entries[m.hi], p, depth), m.t);
     }
 };
+
+/// The grey of pigment `pigment` (placed in a pattern's space) at that space's point q, as
+/// POV-Ray's pigment_pattern weighs it.
+SHEAF_HD_NOINLINE float pigment_grey(const SceneView& scene, uint32_t pigment, Vec3 q, int depth) {
+    const Vec3 c = Evaluator{scene, 0, 0, Vec3(0.0f)}.pigment(pigment, q, depth).rgb;
+    return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z;
+}
 
 // The value a pattern gives at a pattern-space point, for slopes: list patterns give their
 // index spread over [0, 1].

@@ -14,33 +14,34 @@ namespace sheaf {
 
 enum class PatternKind : uint8_t {
     // Continuous patterns: a value in [0, 1], then frequency, phase and the wave.
-    Gradient,    // frac(p . vector)
-    Marble,      // p.x with a triangle wave (turbulence makes the veins)
-    Wood,        // distance from the z axis, triangle wave
-    Onion,       // distance from the origin
-    Radial,      // angle around the y axis
-    Spherical,   // 1 at the origin to 0 at distance 1
-    Cylindrical, // 1 on the y axis to 0 at distance 1
-    Planar,      // 1 on the x-z plane to 0 at distance 1
-    Boxed,       // 1 at the origin to 0 on the unit cube
-    Leopard,     // ((sin x + sin y + sin z) / 3)^2
-    Bozo,        // smooth noise (also spotted, bumps)
-    Granite,     // fractal sum of |noise|
-    Agate,       // noise-bent bands
-    Wrinkles,    // fractal sum of noise
-    Dents,       // noise cubed
-    Crackle,     // cells of random points: second nearest minus nearest distance
-    Cells,       // a random value per unit cube
-    Ripples,     // concentric waves from fixed random centres
-    Waves,       // like ripples, with amplitude falling with distance
-    Spiral1,     // spiral bands (param[0] arms) around the z axis
-    Spiral2,     // two spirals crossing
-    Quilted,     // cushion-shaped cells
-    Mandel,      // the Mandelbrot set in the x-y plane (Pattern::fractal)
-    Julia,       // a Julia set in the x-y plane (Pattern::fractal, its c)
-    Slope,       // the surface's slope towards a direction, and its altitude (SlopeParams)
-    Function,    // a user function's value (core/scene/function.h): Pattern::program
-    Image,       // an image's colour (Pigment only): `image` in Scene::textures
+    Gradient,       // frac(p . vector)
+    Marble,         // p.x with a triangle wave (turbulence makes the veins)
+    Wood,           // distance from the z axis, triangle wave
+    Onion,          // distance from the origin
+    Radial,         // angle around the y axis
+    Spherical,      // 1 at the origin to 0 at distance 1
+    Cylindrical,    // 1 on the y axis to 0 at distance 1
+    Planar,         // 1 on the x-z plane to 0 at distance 1
+    Boxed,          // 1 at the origin to 0 on the unit cube
+    Leopard,        // ((sin x + sin y + sin z) / 3)^2
+    Bozo,           // smooth noise (also spotted, bumps)
+    Granite,        // fractal sum of |noise|
+    Agate,          // noise-bent bands
+    Wrinkles,       // fractal sum of noise
+    Dents,          // noise cubed
+    Crackle,        // cells of random points: second nearest minus nearest distance
+    Cells,          // a random value per unit cube
+    Ripples,        // concentric waves from fixed random centres
+    Waves,          // like ripples, with amplitude falling with distance
+    Spiral1,        // spiral bands (param[0] arms) around the z axis
+    Spiral2,        // two spirals crossing
+    Quilted,        // cushion-shaped cells
+    Mandel,         // the Mandelbrot set in the x-y plane (Pattern::fractal)
+    Julia,          // a Julia set in the x-y plane (Pattern::fractal, its c)
+    Slope,          // the surface's slope towards a direction, and its altitude (SlopeParams)
+    Function,       // a user function's value (core/scene/function.h): Pattern::program
+    Image,          // an image's colour (Pigment only): `image` in Scene::textures
+    PigmentPattern, // the grey of a pigment (`pigment`) evaluated at the pattern-space point
     // Discrete patterns: an index into the list of their entries.
     Checker,    // 2 entries
     Hexagon,    // 3 entries, tiles in the x-z plane
@@ -160,6 +161,10 @@ struct Pattern {
     Vec3 vector{0, 1, 0};       // Gradient: the direction
     float param[4] = {0, 0, 0, 0};
     int32_t image = -1;   // Image: index into Scene::textures
+    // PigmentPattern: index into Scene::pigments of a pigment placed in this pattern's space
+    // (its transforms map from there, not from the world), whose grey 0.297 red + 0.589
+    // green + 0.114 blue is the value.
+    int32_t pigment = -1;
     int32_t program = -1; // Function: index into Scene::fn_programs
     FractalParams fractal; // Mandel, Julia
     SlopeParams slope;     // Slope

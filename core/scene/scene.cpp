@@ -358,8 +358,13 @@ void check_warp(const Warp& w, const std::string& name) {
         throw SceneError(name + ": a warp's orientation must be a unit vector");
 }
 
+// `pigments`: how many pigments a pigment pattern may name (a pigment's pattern only earlier
+// ones, so pigments cannot hold themselves).
 void check_pattern(const Pattern& p, size_t textures, const std::vector<Warp>& warps,
-                   const std::string& name) {
+                   size_t pigments, const std::string& name) {
+    if (p.kind == PatternKind::PigmentPattern && (p.pigment < 0 || size_t(p.pigment) >= pigments))
+        throw SceneError(name + ": its pigment pattern names pigment " + std::to_string(p.pigment) +
+                         ", which is not an earlier pigment");
     if (!p.to_pattern.finite()) throw SceneError(name + ": its transform is not finite");
     if (size_t(p.warp_first) + p.warp_count > warps.size())
         throw SceneError(name + ": its warps lie outside the scene's warps");
@@ -381,10 +386,11 @@ void check_pattern(const Pattern& p, size_t textures, const std::vector<Warp>& w
 void Scene::validate_functions() const {
     for (size_t i = 0; i < fn_patterns.size(); ++i) {
         const Pattern& p = fn_patterns[i];
-        check_pattern(p, textures.size(), warps, "function pattern " + std::to_string(i));
-        if (p.kind == PatternKind::Function || p.kind == PatternKind::Image)
+        check_pattern(p, textures.size(), warps, 0, "function pattern " + std::to_string(i));
+        if (p.kind == PatternKind::Function || p.kind == PatternKind::Image ||
+            p.kind == PatternKind::PigmentPattern)
             throw SceneError("function pattern " + std::to_string(i) +
-                             ": a function's pattern is neither a function nor an image");
+                             ": a function's pattern is no function, image or pigment pattern");
         if (p.warp_count > 0)
             throw SceneError("function pattern " + std::to_string(i) +
                              ": a function's pattern has no warps");
@@ -434,7 +440,7 @@ void Scene::validate_patterns() const {
         const Pigment& pg = pigments[i];
         const std::string name = "pigment " + std::to_string(i);
         if (pg.solid) continue;
-        check_pattern(pg.pattern, textures.size(), warps, name);
+        check_pattern(pg.pattern, textures.size(), warps, i, name);
         if (!range(pg.first, pg.count, pigment_entries.size()))
             throw SceneError(name + ": its entries lie outside the pigment entries");
         for (uint32_t e = pg.first; e < pg.first + pg.count; ++e) {
@@ -449,7 +455,7 @@ void Scene::validate_patterns() const {
     for (size_t i = 0; i < normal_patterns.size(); ++i) {
         const NormalPattern& np = normal_patterns[i];
         const std::string name = "normal pattern " + std::to_string(i);
-        check_pattern(np.pattern, textures.size(), warps, name);
+        check_pattern(np.pattern, textures.size(), warps, pigments.size(), name);
         if (!range(np.slope_first, np.slope_count, slope_entries.size()))
             throw SceneError(name + " names slope map entries that do not exist");
         for (uint32_t k = 0; k < np.slope_count; ++k) {
@@ -481,7 +487,7 @@ void Scene::validate_patterns() const {
     for (size_t i = 0; i < material_switches.size(); ++i) {
         const MaterialSwitch& ms = material_switches[i];
         const std::string name = "material switch " + std::to_string(i);
-        check_pattern(ms.pattern, textures.size(), warps, name);
+        check_pattern(ms.pattern, textures.size(), warps, pigments.size(), name);
         if (ms.count == 0 || !range(ms.first, ms.count, material_entries.size()))
             throw SceneError(name + ": its entries lie outside the material entries");
         for (uint32_t e = ms.first; e < ms.first + ms.count; ++e)

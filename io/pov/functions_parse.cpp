@@ -98,7 +98,8 @@ void Parser::parse_pattern_function(PovFunction& f) {
     if (!parse_pattern_name(pt, list, supported)) error_expected(name, "a pattern");
     while (!accept_sym("}"))
         if (!parse_pattern_modifier(pt, local)) error_expected(peek(), "a pattern modifier or '}'");
-    if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::Function) {
+    if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::Function ||
+        pt.kind == PatternKind::PigmentPattern) {
         f.unsupported = "pattern function '" + name.text + "'";
         return;
     }
@@ -117,8 +118,9 @@ void Parser::parse_pigment_function(PovFunction& f) {
     if (pg->patterned) {
         const PatternKind k = pg->pattern.kind;
         if (pg->average || k == PatternKind::Image || k == PatternKind::Function ||
-            pg->entries.empty()) {
-            f.unsupported = "pigment function (of an average, image or function pigment)";
+            k == PatternKind::PigmentPattern || pg->entries.empty()) {
+            f.unsupported =
+                "pigment function (of an average, image, function or pigment_pattern pigment)";
             return;
         }
         for (const PovMapEntry& e : pg->entries) {

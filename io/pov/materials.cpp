@@ -129,7 +129,7 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     if (uv_) { // (u, v, 0) -> the pattern's own space: no world, no mirror
         p.uv = true;
         ++uv_patterns_;
-    } else { // Sheaf world -> POV-Ray world (the z mirror) -> the pattern's own space
+    } else if (!pattern_space_) { // Sheaf world -> POV-Ray world (the z mirror) -> its space
         p.to_pattern = p.to_pattern * pov_to_sheaf();
     }
     if (!chain_.warps.empty() && chain_.uv == p.uv && pt.kind != PatternKind::Image) {
@@ -147,6 +147,14 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     p.warp_count = uint32_t(warps.size());
     scene_.warps.insert(scene_.warps.end(), warps.begin(), warps.end());
     if (pt.kind == PatternKind::Function && pt.function) p.program = function(*pt.function);
+    if (pt.kind == PatternKind::PigmentPattern && pt.pigment) {
+        // Evaluated at this pattern's point: placed by its own transforms, inheriting nothing.
+        const FlagScope uv(uv_, false);
+        const FlagScope space(pattern_space_, true);
+        const WarpChain outer = std::exchange(chain_, WarpChain{});
+        p.pigment = pigment(*pt.pigment, Affine());
+        chain_ = outer;
+    }
     return p;
 }
 

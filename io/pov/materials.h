@@ -62,6 +62,9 @@ class MaterialBuilder {
     // While set, the patterns made are uv-mapped (Pattern::uv): inside a uv_mapping texture or
     // pigment. uv_patterns_ counts them, so material() can tell which materials have them.
     bool uv_ = false;
+    // While set, the patterns made are placed in another pattern's space (a pigment_pattern's
+    // pigment): their transforms map from there, with no mirror from Sheaf's world.
+    bool pattern_space_ = false;
     size_t uv_patterns_ = 0;
     std::set<uint32_t> uv_materials_;
     // While a warped pigment's map entries are made: its chain (POV-Ray evaluates the entries

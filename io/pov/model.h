@@ -51,6 +51,8 @@ struct PovImage {
 
 /// A pattern as parsed: its kind and modifiers. It lives in the space of the pigment, normal or
 /// texture that holds it.
+struct PovPigment;
+
 struct PovPattern {
     PatternKind kind = PatternKind::Gradient;
     Wave wave = Wave::Ramp;
@@ -76,9 +78,8 @@ struct PovPattern {
         Affine at;
     };
     std::vector<DeclaredWarp> warps;
+    std::shared_ptr<const PovPigment> pigment; // kind PigmentPattern
 };
-
-struct PovPigment;
 
 /// An entry of a colour map, pigment map or list: a colour, or a pigment.
 struct PovMapEntry {

@@ -36,7 +36,7 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
         {"wrinkles", {PatternKind::Wrinkles}}, {"function", {PatternKind::Function}},
         {"mandel", {PatternKind::Mandel}},     {"julia", {PatternKind::Julia}},
         {"magnet", {PatternKind::Mandel}}, // magnet 1 mandel 50, magnet 2 julia <c>, 50
-        {"slope", {PatternKind::Slope}},
+        {"slope", {PatternKind::Slope}},       {"pigment_pattern", {PatternKind::PigmentPattern}},
     };
     return m;
 }
@@ -44,8 +44,8 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},    {"cubic", 6},    {"density_file", 0},    {"facets", 0}, {"image_pattern", 0},
-        {"object", 2}, {"pavement", 0}, {"pigment_pattern", 0}, {"tiling", 0}, {"fractal", 0},
+        {"aoi", 0},    {"cubic", 6},    {"density_file", 0}, {"facets", 0},  {"image_pattern", 0},
+        {"object", 2}, {"pavement", 0}, {"tiling", 0},       {"fractal", 0},
     };
     return m;
 }
@@ -81,6 +81,7 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
             supported = pt.function->unsupported.empty();
         }
         if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
+        if (k == "pigment_pattern") pt.pigment = parse_pigment(PovPigment{});
         if (k == "mandel" || k == "julia" || k == "magnet") parse_fractal(pt, k);
         if (k == "slope") parse_slope(pt, t);
         if (k == "quilted") { // control0 and control1 follow as modifiers

@@ -560,6 +560,35 @@ TEST(PovTextures, WarpsChainWithTheTransformsAroundThem) {
               std::string::npos);
 }
 
+// pigment_pattern: the grey of a pigment placed in the pattern's space is the value, for
+// pigments and normals alike.
+TEST(PovTextures, PigmentPatternsUseAPigmentsGrey) {
+    const PovResult r = load_text(
+        "plane { y, 0 pigment { pigment_pattern { checker rgb 0, rgb 1 scale 2 } color_map {\n"
+        "  [0 rgb x] [1 rgb y] } scale 0.5 } }\n"
+        "plane { y, 0 normal { pigment_pattern { gradient x color_map { [0 rgb 0] [1 rgb 1] } "
+        "} 1 } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    EXPECT_NO_THROW(r.scene.validate());
+    const PreparedScene p = prepare_scene(r.scene);
+    const SceneView v(p);
+    const uint32_t pg = uint32_t(shape_material(r, 0).pigment);
+    ASSERT_EQ(r.scene.pigments[pg].pattern.kind, PatternKind::PigmentPattern);
+    // Sheaf (0.5, 0, 0.5) is POV-Ray's (0.5, 0, -0.5): the checker of scale 2 inside the
+    // pigment's scale 0.5 has its cell (0, 0, -1) there, white; (1.5, 0, 0.5) is black.
+    const SurfaceColor white = evaluate_pigment(v, pg, Vec3(0.5f, 0, 0.5f), 0, 0);
+    const SurfaceColor black = evaluate_pigment(v, pg, Vec3(1.5f, 0, 0.5f), 0, 0);
+    EXPECT_NEAR(white.rgb.y, 1.0f, 1e-5);
+    EXPECT_NEAR(white.rgb.x, 0.0f, 1e-5);
+    EXPECT_NEAR(black.rgb.x, 1.0f, 1e-5);
+    // A gradient x ramp's grey tilts the normal along x, by the generic slope normal's 0.15
+    // per unit of slope.
+    const uint32_t normal = uint32_t(shape_material(r, 1).normal);
+    const Vec3 n = perturb_normal(v, normal, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
+    EXPECT_NEAR(n.x, -0.15f / std::sqrt(1 + 0.15f * 0.15f), 1e-3);
+    EXPECT_NEAR(n.z, 0.0f, 1e-4);
+}
+
 TEST(PovTextures, SlopeMaps) {
     const PovResult r = load_text(
         "#declare SM = slope_map { [1 <0, -1>] [0, <1, 1>] [0.5 0.25] }\n"
@@ -732,13 +761,14 @@ TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
 TEST(PovTextures, NormalsComeFromArraysAndMayBeDeclaredFlat) {
     // The portfolio's allnormals.pov: normal { normalArr[i] }, of normals whose pattern Sheaf
     // does not have (declared flat, warned where used).
-    const PovResult r = load_text("#declare Flat = normal { pigment_pattern { agate } 1 }\n"
-                                  "#declare N = normal { ripples 0.7 }\n"
-                                  "#declare A = array[2] { Flat, N }\n"
-                                  "#declare B = array[2] { N, N }\n"
-                                  "sphere { 0, 1 pigment { rgb 1 } normal { B[1] } }\n"
-                                  "sphere { 0, 1 pigment { rgb 1 } normal { A[0] } }\n"
-                                  "sphere { 0, 1 pigment { rgb 1 } normal { A[1] } }\n");
+    const PovResult r =
+        load_text("#declare Flat = normal { image_pattern { png \"none.png\" } 1 }\n"
+                  "#declare N = normal { ripples 0.7 }\n"
+                  "#declare A = array[2] { Flat, N }\n"
+                  "#declare B = array[2] { N, N }\n"
+                  "sphere { 0, 1 pigment { rgb 1 } normal { B[1] } }\n"
+                  "sphere { 0, 1 pigment { rgb 1 } normal { A[0] } }\n"
+                  "sphere { 0, 1 pigment { rgb 1 } normal { A[1] } }\n");
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("scene.pov:1:"), std::string::npos) << r.warnings[0];
     EXPECT_EQ(r.scene.normal_patterns[size_t(shape_material(r, 0).normal)].pattern.kind,

@@ -45,6 +45,19 @@ TEST(PovExpressions, VectorsAndMembers) {
     EXPECT_EQ(declared("#declare V = <1 2 3>;", "V").dim, 3); // commas may be left out
 }
 
+// vturbulence(lambda, omega, octaves, point): the displacement a turbulence of 1 gives there,
+// the same at the same point, smaller for fewer octaves of a smaller omega.
+TEST(PovExpressions, VturbulenceDisplacesAsTurbulenceDoes) {
+    const double a = num("vlength(vturbulence(2, 0.5, 6, <0.3, 0, 1.7>))");
+    EXPECT_GT(a, 0.05);
+    EXPECT_LT(a, 8);
+    EXPECT_EQ(num("vturbulence(2, 0.5, 6, <0.3, 0, 1.7>).x"),
+              num("vturbulence(2, 0.5, 6, <0.3, 0, 1.7>).x"));
+    EXPECT_NE(num("vturbulence(2, 0.5, 6, <0.3, 0, 1.7>).x"),
+              num("vturbulence(2, 0.5, 6, <2.3, 0, 1.7>).x"));
+    EXPECT_NE(error_of("#declare V = vturbulence(2, 0.5, 6);").find("error"), std::string::npos);
+}
+
 TEST(PovExpressions, Colors) {
     Value c = declared("#declare C = rgb <1, 0.5, 0>;", "C");
     ASSERT_EQ(c.type, VType::Color);

@@ -48,8 +48,10 @@ SHEAF_HD_INLINE float radical_inverse(uint32_t i, uint32_t base) {
     return r;
 }
 
-/// True when light l lights hit h at all (the surface faces it, a spot reaches it).
+/// True when light l lights hit h at all (the hit is in its light group, faces it, and a
+/// spot reaches it).
 SHEAF_HD_INLINE bool lights_point(const Light& l, const SurfaceHit& h, const RayGenParams& p) {
+    if (!light_reaches_group(l, h.light_group)) return false;
     const LightSample s = sample_light(l, h.position, p.far);
     return dot(h.geo_normal, s.to_light) > 0 && dot(h.normal, s.to_light) > 0 &&
            max_component(s.radiance) > 0;

@@ -22,6 +22,7 @@ struct SurfaceHit {
     float transmit = 0; // share of light passing through untinted
     float t = 0;       // distance along the incoming ray
     bool front = true; // the ray arrived on the side the winding calls outside
+    uint16_t light_group = 0; // the material's (Material::light_group): which lights reach it
     /// Radiosity: 0 on camera, reflection and refraction paths; on a gathered path, the
     /// diffuse bounces so far (low 8 bits) and the gather sample the path began with (above).
     uint32_t gather = 0;

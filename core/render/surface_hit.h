@@ -18,6 +18,7 @@ namespace surface_detail {
 // POV-Ray, texture maps see the surface's normal and the pigment the one its normal pattern
 // tilted (slope patterns).
 SHEAF_HD_NOINLINE void finish_surface(const SceneView& scene, SurfaceHit& h, float uv_s, float uv_t) {
+    h.light_group = scene.materials[h.material].light_group; // the object's, as placed
     if (!h.front && scene.materials[h.material].inside >= 0)
         h.material = uint32_t(scene.materials[h.material].inside); // seen from inside
     h.material = resolve_material(scene, h.material, h.position, h.normal, uv_s, uv_t);

@@ -272,6 +272,8 @@ void Scene::validate() const {
                              ": a spot light needs 0 <= radius and 0 < falloff <= 180 degrees");
         if (li.fade_distance < 0 || li.fade_power < 0)
             throw SceneError(name + ": fade distance and power must be >= 0");
+        if (li.group > kMaxLightGroup)
+            throw SceneError(name + ": a light group above " + std::to_string(kMaxLightGroup));
     }
     const Camera& c = camera;
     if (!is_finite(c.position) || !is_finite(c.look_at) || !is_finite(c.up))

@@ -58,6 +58,9 @@ struct Material {
     Vec3 fade_color{0.0f, 0.0f, 0.0f}; // light inside fades to this colour:
     float fade_distance = 0.0f, fade_power = 0.0f; //   1 / (1 + (d / fade_distance)^fade_power)
     uint32_t media_first = 0, media_count = 0;     // the media inside: Scene::media
+    // POV-Ray's light groups: 0, lit by the lights in no group; g (1 .. kMaxLightGroup), lit
+    // by group g's lights only, and with kGlobalLights set also by the lights in no group.
+    uint16_t light_group = 0;
     // POV-Ray's fake caustics (interior { caustics c }, here 45 c): light a shadow ray carries
     // across this surface is scaled by 1 + |n.d|^caustics, n the shading normal and d the
     // ray's direction, so curved or bumpy glass casts bright spots; 0: none.
@@ -126,7 +129,17 @@ struct Light {
     float fade_power = 0.0f;
     bool shadowless = false; // lights without shadow rays
     bool highlights = true;  // false: diffuse light only (POV-Ray's shadowless lights)
+    uint16_t group = 0; // > 0: lights only materials of that light group (Material::light_group)
 };
+
+constexpr uint16_t kMaxLightGroup = 0x7fff;
+constexpr uint16_t kGlobalLights = 0x8000; // Material::light_group: also the ungrouped lights
+
+/// Whether light l lights a surface of light group `group` (Material::light_group).
+SHEAF_HD_INLINE bool light_reaches_group(const Light& l, uint16_t group) {
+    const uint16_t g = uint16_t(group & kMaxLightGroup);
+    return l.group == 0 ? g == 0 || (group & kGlobalLights) != 0 : l.group == g;
+}
 
 /// Perspective and orthographic views are rasterised. The others are POV-Ray's camera types
 /// whose pixels do not map to a plane: their primary rays are traced (core/raster/camera.h).

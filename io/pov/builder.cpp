@@ -55,9 +55,45 @@ struct Builder {
     std::map<uint32_t, Mesh> loose; // single triangles by material, in Sheaf world space
     size_t names = 0;
     bool geometry_only = false; // every surface material 0 (textures not built)
+    // Inside a light_group: its Material::light_group (its number, and kGlobalLights with
+    // global_lights on); 0 outside every group.
+    uint16_t group = 0;
+    uint16_t groups = 0;                                            // light groups so far
+    std::map<std::pair<uint32_t, uint16_t>, uint32_t> grouped = {}; // (material, group) -> copy
+
+    /// Builds `body` as the members of light group `o` when it is one.
+    template <class Body> auto in_group(const PovObject& o, Body body) {
+        if (!o.light_group) return body();
+        if (groups == kMaxLightGroup)
+            p.error_at(o.where, "more than " + std::to_string(kMaxLightGroup) + " light groups");
+        const uint16_t outer = group;
+        group = uint16_t(++groups | (o.global_lights ? kGlobalLights : 0));
+        struct Restore {
+            uint16_t& g;
+            uint16_t v;
+            ~Restore() { g = v; }
+        } restore{group, outer};
+        return body();
+    }
 
     uint32_t material(const PovTexture& t, const PovInterior* in, const PovTexture* inside) {
-        return geometry_only ? 0 : materials.material(t, in, inside);
+        if (geometry_only) return 0;
+        const uint32_t m = materials.material(t, in, inside);
+        if (group == 0) return m;
+        auto [it, added] = grouped.emplace(std::make_pair(m, group), 0);
+        if (added) { // a copy lit by the group's lights (plain materials are shared)
+            Material copy = scene.materials[m];
+            copy.light_group = group;
+            it->second = scene.add_material(copy);
+            ungrouped[it->second] = m;
+        }
+        return it->second;
+    }
+    std::map<uint32_t, uint32_t> ungrouped = {}; // grouped copy -> the material it copies
+
+    bool uses_uv(uint32_t m) const {
+        const auto it = ungrouped.find(m);
+        return materials.uses_uv(it == ungrouped.end() ? m : it->second);
     }
 
     /// The loose triangles as one mesh object per material.
@@ -94,6 +130,7 @@ struct Builder {
             top(placed, p.model.default_texture, nullptr, nullptr, 0);
         }
         Light l = pl.light;
+        l.group = uint16_t(group & kMaxLightGroup);
         // POV-Ray keeps the cosines: a radius whose cosine is not positive (radius -90 of the
         // "cosine falloff" idiom) makes no cone at all, which Sheaf's radius 90 means.
         l.spot_falloff = std::clamp(std::fabs(l.spot_falloff), 0.01f, 180.0f);
@@ -162,6 +199,14 @@ struct Builder {
     int node(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
              const PovTexture* parent_inside, uint8_t parent_flags, ShapeObject& so,
              bool in_union) {
+        return in_group(o, [&] {
+            return node_in(o, parent, parent_in, parent_inside, parent_flags, so, in_union);
+        });
+    }
+
+    int node_in(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
+                const PovTexture* parent_inside, uint8_t parent_flags, ShapeObject& so,
+                bool in_union) {
         const PovTexture& tex = o.texture ? *o.texture : parent;
         const PovInterior* in = o.interior ? o.interior.get() : parent_in;
         const PovTexture* inside = o.interior_texture ? o.interior_texture.get() : parent_inside;
@@ -197,7 +242,7 @@ struct Builder {
             if (o.shape.kind == ShapeKind::Isosurface) n.iso = isosurface(o);
             n.transform = o.local;
             n.material = material(tex, in, inside);
-            if (!geometry_only && materials.uses_uv(n.material))
+            if (!geometry_only && uses_uv(n.material))
                 p.unsupported(o.where, "uv_mapping on " + o.where.text +
                                            " (only meshes carry uv coordinates; the pattern is "
                                            "evaluated at the point's x and y)");
@@ -237,6 +282,11 @@ struct Builder {
 
     void top(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
              const PovTexture* parent_inside, uint8_t parent_flags) {
+        in_group(o, [&] { top_in(o, parent, parent_in, parent_inside, parent_flags); });
+    }
+
+    void top_in(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
+                const PovTexture* parent_inside, uint8_t parent_flags) {
         const PovTexture& tex = o.texture ? *o.texture : parent;
         const PovInterior* in = o.interior ? o.interior.get() : parent_in;
         const PovTexture* inside = o.interior_texture ? o.interior_texture.get() : parent_inside;

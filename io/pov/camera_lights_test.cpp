@@ -4,6 +4,7 @@
 
 #include "core/raster/camera.h"
 #include "core/render/frame_kernels.h"
+#include "core/render/renderer.h"
 
 #include <cmath>
 
@@ -382,6 +383,46 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
               "scene.pov:1:37: error: fog_alt must be greater than 0");
     EXPECT_EQ(error_of("fog { fog_type 3 distance 5 }"),
               "scene.pov:1:1: error: fog_type 3 is not 1 (constant) or 2 (ground)");
+}
+
+} // namespace
+} // namespace sheaf::io::pov
+
+namespace sheaf::io::pov {
+namespace {
+
+// Light groups: a group's lights light only its objects, and its objects only its lights (and
+// with global_lights on, the lights in no group too).
+TEST(PovLights, LightGroupsLightTheirOwnObjects) {
+    auto render = [](const std::string& extra, const std::string& global) {
+        const PovResult r = load_text(
+            "global_settings { assumed_gamma 1 }\n"
+            "camera { orthographic location <0, 10, 0> look_at 0 right x*4 up z*4 }\n"
+            "#declare W = texture { pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+            "light_group { light_source { <0, 10, 0> rgb 1 } box { <-2, -1, -2>, <0, 0, 2> "
+            "texture { W } } " +
+            global + " }\nbox { <0, -1, -2>, <2, 0, 2> texture { W } }\n" + extra);
+        EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+        EXPECT_NO_THROW(r.scene.validate());
+        const PreparedScene p = prepare_scene(r.scene);
+        RenderSettings rs = RenderSettings::resolve({}, r.scene.settings);
+        rs.width = rs.height = 32;
+        const Frame f = render_frame(p, rs);
+        auto at = [&](int x) { return f.rgba[4 * (16 * size_t(32) + size_t(x))]; };
+        return std::make_pair(at(24), at(8)); // x < 0 and x > 0 in POV-Ray's world
+    };
+    const auto alone = render("", "");
+    EXPECT_NEAR(alone.first, 1.0f, 0.02f);  // the group's box, under its light
+    EXPECT_NEAR(alone.second, 0.0f, 1e-6f); // the other, in no light
+    // A light in no group lights the box outside, not the group's ...
+    const std::string sun = "light_source { <0, 10, 0> rgb 0.5 }\n";
+    const auto other = render(sun, "");
+    EXPECT_NEAR(other.first, 1.0f, 0.02f);
+    EXPECT_NEAR(other.second, 0.5f, 0.02f);
+    // ... unless the group takes the global lights.
+    const auto global = render(sun, "global_lights on");
+    EXPECT_NEAR(global.first, 1.5f, 0.03f);
+    EXPECT_NEAR(global.second, 0.5f, 0.02f);
 }
 
 } // namespace

@@ -217,6 +217,9 @@ struct PovObject {
     bool hollow = false; // media around it fill it (`hollow`; set on a CSG, on its members too)
     bool uv_mapping = false; // its textures are uv-mapped (the object's uv_mapping)
     uint8_t flags = 0; // ObjectFlag bits: no_shadow, no_reflection, no_image
+    // A light_group (a union whose lights light only its objects, and its objects only its
+    // lights, and with global_lights also the lights in no group).
+    bool light_group = false, global_lights = false;
     PovLight light;
     Token where; // the keyword that started it, for warnings
 };

@@ -81,9 +81,9 @@ bool Parser::parse_object(PovObject& o) {
         return false;
     }
     if (k == "light_group") {
-        unsupported(kw, "light_group (rendered as a union; its lights light everything)");
         parse_csg(kw, o);
         o.op = CsgOp::Union;
+        o.light_group = true;
         return true;
     }
     if (k == "union" || k == "merge" || k == "intersection" || k == "difference") {
@@ -364,10 +364,12 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
         advance();
         set_hollow(o, parse_bool_opt(true));
     } else if (k == "sturm" || k == "no_radiosity" || k == "double_illuminate" ||
-               k == "split_union" || k == "cutaway_textures" || k == "hierarchy" || k == "smooth" ||
-               k == "global_lights") {
+               k == "split_union" || k == "cutaway_textures" || k == "hierarchy" || k == "smooth") {
         advance();
         parse_bool_opt(true);
+    } else if (k == "global_lights") {
+        advance();
+        o.global_lights = parse_bool_opt(true);
     } else if (k == "uv_mapping") { // the object's textures, given before or after it
         advance();
         o.uv_mapping = true;

@@ -42,7 +42,10 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
 void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
     const Nest nest(*this, peek()); // normal maps hold normals
     Value declared;
-    if (accept_declared(VType::Normal, declared, "a normal")) {
+    const Value* named = peek().kind == TokKind::Ident ? lookup(peek().text) : nullptr;
+    // Arrays take the path below: their elements may mix normals and flat ones.
+    if (named && named->type == VType::Normal &&
+        accept_declared(VType::Normal, declared, "a normal")) {
         n = declared.as<PovNormal>();
         have = true;
     } else if (const Token t = peek(); t.kind == TokKind::Ident) {

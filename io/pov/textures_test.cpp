@@ -768,7 +768,9 @@ TEST(PovTextures, NormalsComeFromArraysAndMayBeDeclaredFlat) {
                   "#declare B = array[2] { N, N }\n"
                   "sphere { 0, 1 pigment { rgb 1 } normal { B[1] } }\n"
                   "sphere { 0, 1 pigment { rgb 1 } normal { A[0] } }\n"
-                  "sphere { 0, 1 pigment { rgb 1 } normal { A[1] } }\n");
+                  "sphere { 0, 1 pigment { rgb 1 } normal { A[1] } }\n"
+                  "#declare C = array[2] { N, Flat }\n" // a flat one after a normal
+                  "sphere { 0, 1 pigment { rgb 1 } normal { C[1] } }\n");
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("scene.pov:1:"), std::string::npos) << r.warnings[0];
     EXPECT_EQ(r.scene.normal_patterns[size_t(shape_material(r, 0).normal)].pattern.kind,
@@ -776,6 +778,7 @@ TEST(PovTextures, NormalsComeFromArraysAndMayBeDeclaredFlat) {
     EXPECT_LT(shape_material(r, 1).normal, 0);
     EXPECT_EQ(r.scene.normal_patterns[size_t(shape_material(r, 2).normal)].pattern.kind,
               PatternKind::Ripples);
+    EXPECT_LT(shape_material(r, 3).normal, 0);
     EXPECT_NE(test::error_of("#declare C = array[1] { 3 }\nsphere { 0, 1 normal { C[0] } }")
                   .find("scene.pov:2:24: error: found 'C', expected a normal, not a float"),
               std::string::npos);

@@ -40,7 +40,7 @@ __global__ void device_code_instances(const Ray* rays, const TriangleVerts* tris
     sh.albedo = m.color;
     color[i] += direct_light(m, sh, Vec3(0, 0, 1), Vec3(1.0f)) + ambient_light(m, sh) +
                 interior_fade(m, 1.0f) + mirror_weight(m, sh);
-    const Vec3 q = pattern_point(Pattern{}, r.origin);
+    const Vec3 q = pattern_point(Pattern{}, r.origin, nullptr);
     color[i] += Vec3(pattern_value_at(Pattern{}, q) + float(pattern_index_at(Pattern{}, q)));
     Span spans[kMaxShapeSpans];
     const Shape shape{ShapeKind(i % 7), 0.3f, 0.5f, (i & 8) != 0};

@@ -249,6 +249,24 @@ SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
         const float k = dist_factor(len, w.f[0]);
         return orient(Vec3(theta * k, phi / (2.0f * kPi) * k, len), w.b);
     }
+    case WarpKind::BlackHole: {
+        Vec3 centre = w.a;
+        if (w.b.x > 0 || w.b.y > 0 || w.b.z > 0) { // repeated: the copy whose block holds p
+            const int bx = w.b.x > 0 ? floor_int(p.x / w.b.x) : 0;
+            const int by = w.b.y > 0 ? floor_int(p.y / w.b.y) : 0;
+            const int bz = w.b.z > 0 ? floor_int(p.z / w.b.z) : 0;
+            const uint32_t h = lattice_hash(bx, by, bz, 0x6b1au);
+            centre += Vec3(w.c.x * (2 * hash_unit(h) - 1),
+                           w.c.y * (2 * hash_unit(lattice_hash(bx, by, bz, h)) - 1),
+                           w.c.z * (2 * hash_unit(lattice_hash(bx, by, bz, h + 1)) - 1));
+            centre += Vec3(w.b.x * float(bx), w.b.y * float(by), w.b.z * float(bz));
+        }
+        const Vec3 d = p - centre;
+        const float len = length(d);
+        if (!(len < w.f[0])) return p;
+        const float s = hdm::fminf(hdm::powf((w.f[0] - len) / w.f[0], w.f[1]) * w.f[2], 1);
+        return p + d * (w.axis ? -s : s);
+    }
     case WarpKind::Cubic: {
         const float ax = fabsf(p.x), ay = fabsf(p.y), az = fabsf(p.z);
         const float third = 1.0f / 3.0f;

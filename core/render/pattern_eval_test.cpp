@@ -213,6 +213,14 @@ TEST(Warps, MappingWarpsFollowPovRaysFormulas) {
     tor.f[1] = 2; // major radius
     expect_near(warp_point(tor, Vec3(3, 0, 0)), Vec3(0, 0.5f, 1));
     expect_near(warp_point(tor, Vec3(2, -1, 0)), Vec3(0, 0.25f, 1));
+    Warp hole = warp(WarpKind::BlackHole); // radius 2 at the origin, falloff 1, strength 1
+    hole.f[0] = 2, hole.f[1] = 1, hole.f[2] = 1, hole.b = Vec3(0.0f);
+    expect_near(warp_point(hole, Vec3(1, 0, 0)), Vec3(1.5f, 0, 0)); // half its distance out
+    expect_near(warp_point(hole, Vec3(3, 0, 0)), Vec3(3, 0, 0));    // outside: unmoved
+    hole.axis = 1;                                                  // inverse: pulled in
+    expect_near(warp_point(hole, Vec3(1, 0, 0)), Vec3(0.5f, 0, 0));
+    hole.b = Vec3(10, 0, 0); // repeated along x: the copy around x = 10
+    expect_near(warp_point(hole, Vec3(11, 0, 0)), Vec3(10.5f, 0, 0));
     const Warp cubic = warp(WarpKind::Cubic);
     expect_near(warp_point(cubic, Vec3(2, 0, 0)), Vec3(0.625f, 0.5f, 2));
     expect_near(warp_point(cubic, Vec3(0, -2, 0)), Vec3(0.375f, 1.0f / 6, 2));

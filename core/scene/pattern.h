@@ -124,6 +124,10 @@ enum class WarpKind : uint8_t {
     Spherical,   // (longitude, latitude as fractions, distance from the origin)
     Toroidal,    // a torus of major radius f[1] around y unrolled: (angle, tube angle, distance)
     Cubic,       // a cube's faces unfolded on the x-y plane
+    BlackHole,   // points within f[0] of the centre a pushed from it by (1 - d / f[0])^f[1] *
+                 // f[2] of their distance (at most all of it; axis 1: pulled, POV-Ray's
+                 // inverse); repeated every b along the axes where b > 0, each copy's centre
+                 // jittered by up to c
 };
 
 /// One warp of a pattern's chain. `to_inner` maps the point, once warped, into the space of the
@@ -132,12 +136,13 @@ enum class WarpKind : uint8_t {
 /// like planar, turn their result to the unit `orientation` b (z: as it is).
 struct Warp {
     WarpKind kind = WarpKind::Turbulence;
-    uint8_t axis = 0;   // Repeat: 0 x, 1 y, 2 z
+    uint8_t axis = 0;   // Repeat: 0 x, 1 y, 2 z; BlackHole: 1 inverse
     int8_t octaves = 6; // Turbulence
     Affine to_inner;
-    Vec3 a{0, 0, 0};     // Turbulence: the amount; Repeat: the offset
-    Vec3 b{0, 0, 1};     // Repeat: the flip signs; Planar ... Toroidal: the orientation
-    float f[2] = {0, 0}; // see WarpKind
+    Vec3 a{0, 0, 0};        // Turbulence: the amount; Repeat: the offset
+    Vec3 b{0, 0, 1};        // Repeat: the flip signs; Planar ... Toroidal: the orientation
+    Vec3 c{0, 0, 0};        // BlackHole: the jitter
+    float f[3] = {0, 0, 0}; // see WarpKind
 };
 
 struct Pattern {

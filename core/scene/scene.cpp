@@ -347,10 +347,12 @@ void Scene::validate() const {
 namespace {
 
 void check_warp(const Warp& w, const std::string& name) {
-    if (!w.to_inner.finite() || !is_finite(w.a) || !is_finite(w.b) || !std::isfinite(w.f[0]) ||
-        !std::isfinite(w.f[1]))
+    if (!w.to_inner.finite() || !is_finite(w.a) || !is_finite(w.b) || !is_finite(w.c) ||
+        !std::isfinite(w.f[0]) || !std::isfinite(w.f[1]) || !std::isfinite(w.f[2]))
         throw SceneError(name + ": a warp parameter is not finite");
-    if (w.kind > WarpKind::Cubic) throw SceneError(name + ": a warp of an unknown kind");
+    if (w.kind > WarpKind::BlackHole) throw SceneError(name + ": a warp of an unknown kind");
+    if (w.kind == WarpKind::BlackHole && !(w.f[0] > 0))
+        throw SceneError(name + ": a black hole's radius must be above 0");
     if (w.kind == WarpKind::Turbulence && (w.octaves < 1 || w.octaves > 16))
         throw SceneError(name + ": a turbulence warp's octaves must lie between 1 and 16");
     if (w.kind == WarpKind::Repeat && (w.axis > 2 || w.f[0] == 0))

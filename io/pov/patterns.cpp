@@ -255,11 +255,50 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
                 break;
             }
         }
-    } else if (is_kw("black_hole")) {
-        unsupported(w, "warp 'black_hole' (ignored)");
-        advance();
-        skip_to_block_end();
-        return;
+    } else if (accept_kw("black_hole")) { // black_hole <centre>, radius [modifiers]
+        out.kind = WarpKind::BlackHole;
+        out.a = parse_vector();
+        accept_sym(",");
+        const Token at = peek();
+        out.f[0] = parse_float();
+        if (!(out.f[0] > 0)) error_at(at, "a black hole's radius must be above 0");
+        out.f[1] = 2, out.f[2] = 1; // falloff, strength
+        out.b = Vec3(0.0f);
+        bool repeat = false;
+        int type = 0;
+        // POV-Ray's checks, run each time repeat or turbulence is read: a repeated hole's
+        // centre is at least its radius from the block's edge, and a block holds it whole.
+        auto check = [&] {
+            if (!repeat) return;
+            for (int i = 0; i < 3; ++i) {
+                if (!(out.b[i] > 0)) continue;
+                if (out.a[i] < out.f[0]) out.a[i] = out.f[0];
+                out.b[i] = std::max(out.b[i], out.a[i] + out.f[0] + out.c[i]);
+                if (out.b[i] < 1e-6f) out.b[i] = 0;
+            }
+        };
+        for (;;) {
+            if (accept_kw("strength")) {
+                out.f[2] = parse_float();
+            } else if (accept_kw("falloff")) {
+                out.f[1] = parse_float();
+            } else if (accept_kw("inverse")) {
+                out.axis = 1;
+            } else if (accept_kw("type")) {
+                type = int(parse_float());
+            } else if (accept_kw("repeat")) {
+                out.b = parse_vector();
+                repeat = true;
+                check();
+            } else if (accept_kw("turbulence")) {
+                out.c = parse_vector();
+                check();
+            } else {
+                break;
+            }
+        }
+        if (!repeat) out.b = Vec3(0.0f);
+        if (type != 0) out.f[2] = 0; // POV-Ray moves points for type 0 only
     } else {
         error_expected(w, "a warp (turbulence, repeat, planar, cylindrical, spherical, "
                           "toroidal, cubic or black_hole)");

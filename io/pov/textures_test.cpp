@@ -602,6 +602,18 @@ TEST(PovTextures, PigmentPatternsUseAPigmentsGrey) {
     const uint32_t normal = uint32_t(shape_material(r, 1).normal);
     const Vec3 n = perturb_normal(v, normal, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
     EXPECT_NEAR(n.x, -0.15f / std::sqrt(1 + 0.15f * 0.15f), 1e-3);
+    // A warped pigment inside: its entries follow its chain in the pattern's own space (POV-Ray
+    // z, no mirror): at POV-Ray's (0.8, 0.5, 0.25) the checker's first entry, gradient z, is
+    // 0.25.
+    const PovResult w = load_text(
+        "plane { y, 0 pigment { pigment_pattern { checker pigment { gradient z color_map { "
+        "[0 rgb 0] [1 rgb 1] } }, rgb 0 warp { repeat x*0.5 } } color_map { [0 rgb 0] "
+        "[1 rgb 1] } } }\n");
+    EXPECT_TRUE(w.warnings.empty()) << w.warnings.front();
+    const PreparedScene wp = prepare_scene(w.scene);
+    const SurfaceColor c = evaluate_pigment(SceneView(wp), uint32_t(shape_material(w).pigment),
+                                            Vec3(0.8f, 0.5f, -0.25f), 0, 0);
+    EXPECT_NEAR(c.rgb.x, 0.25f, 1e-4);
     EXPECT_NEAR(n.z, 0.0f, 1e-4);
 }
 

@@ -111,3 +111,64 @@ TEST(SceneValidate, CsgDeeperThanTheLimitIsAnError) {
 
 } // namespace
 } // namespace sheaf
+
+namespace sheaf {
+namespace {
+
+// Warps, pigment patterns and light groups: what the POV reader cannot produce but another
+// host could is an error, not a read past an array or a pigment that holds itself.
+TEST(SceneValidate, WarpsPigmentPatternsAndLightGroupsAreChecked) {
+    auto patterned = [](const Warp& w) {
+        Scene s = one_sphere({});
+        Pigment pg;
+        pg.solid = false;
+        pg.pattern.kind = PatternKind::Bozo;
+        pg.pattern.warp_count = 1;
+        s.pigments.push_back(pg);
+        s.warps.push_back(w);
+        return s;
+    };
+    Warp repeat;
+    repeat.kind = WarpKind::Repeat;
+    repeat.f[0] = 2;
+    EXPECT_EQ(error_of(patterned(repeat)), "");
+    repeat.f[0] = 0;
+    EXPECT_EQ(error_of(patterned(repeat)),
+              "pigment 0: a repeat warp needs an axis and a width other than 0");
+    Warp hole;
+    hole.kind = WarpKind::BlackHole;
+    EXPECT_EQ(error_of(patterned(hole)), "pigment 0: a black hole's radius must be above 0");
+    Warp cyl;
+    cyl.kind = WarpKind::Cylindrical;
+    cyl.b = Vec3(0, 2, 0);
+    EXPECT_EQ(error_of(patterned(cyl)), "pigment 0: a warp's orientation must be a unit vector");
+    Scene outside = patterned(Warp());
+    outside.warps.clear();
+    EXPECT_EQ(error_of(outside), "pigment 0: its warps lie outside the scene's warps");
+
+    Scene self = one_sphere({});
+    Pigment pp;
+    pp.solid = false;
+    pp.pattern.kind = PatternKind::PigmentPattern;
+    pp.pattern.pigment = 0; // itself
+    self.pigments.push_back(pp);
+    EXPECT_EQ(error_of(self),
+              "pigment 0: its pigment pattern names pigment 0, which is not an earlier pigment");
+
+    Scene lit = one_sphere({});
+    Light l;
+    l.group = kMaxLightGroup + 1;
+    lit.add_light(l);
+    EXPECT_EQ(error_of(lit), "light 0: a light group above 32767");
+    // Which lights reach which surfaces.
+    Light grouped;
+    grouped.group = 3;
+    EXPECT_TRUE(light_reaches_group(grouped, 3));
+    EXPECT_FALSE(light_reaches_group(grouped, 0));
+    EXPECT_FALSE(light_reaches_group(Light(), 3));
+    EXPECT_TRUE(light_reaches_group(Light(), 3 | kGlobalLights));
+    EXPECT_TRUE(light_reaches_group(Light(), 0));
+}
+
+} // namespace
+} // namespace sheaf

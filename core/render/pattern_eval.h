@@ -202,21 +202,12 @@ SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
         return p + w.a * vector_turbulence(p, w.octaves, w.f[0], w.f[1]) * kTurbulenceScale;
     case WarpKind::Repeat: {
         const float width = w.f[0];
-        const float c = w.axis == 0 ? p.x : w.axis == 1 ? p.y : p.z;
-        const float block = floorf(c / width);
+        const float block = floorf(p[w.axis] / width);
         Vec3 r = p;
-        const float in = c - block * width;
-        if (w.axis == 0) r.x = in;
-        if (w.axis == 1) r.y = in;
-        if (w.axis == 2) r.z = in;
+        r[w.axis] = p[w.axis] - block * width;
         if (int(block) & 1) { // odd slabs mirrored where flip says
-            r = Vec3(r.x * w.b.x, r.y * w.b.y, r.z * w.b.z);
-            const float f = w.axis == 0 ? w.b.x : w.axis == 1 ? w.b.y : w.b.z;
-            if (f < 0) {
-                if (w.axis == 0) r.x += width;
-                if (w.axis == 1) r.y += width;
-                if (w.axis == 2) r.z += width;
-            }
+            r = r * w.b;
+            if (w.b[w.axis] < 0) r[w.axis] += width;
         }
         return r + w.a * block;
     }

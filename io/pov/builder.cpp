@@ -66,13 +66,8 @@ struct Builder {
         if (!o.light_group) return body();
         if (groups == kMaxLightGroup)
             p.error_at(o.where, "more than " + std::to_string(kMaxLightGroup) + " light groups");
-        const uint16_t outer = group;
-        group = uint16_t(++groups | (o.global_lights ? kGlobalLights : 0));
-        struct Restore {
-            uint16_t& g;
-            uint16_t v;
-            ~Restore() { g = v; }
-        } restore{group, outer};
+        const ScopedValue<uint16_t> scope(
+            group, uint16_t(++groups | (o.global_lights ? kGlobalLights : 0)));
         return body();
     }
 

@@ -13,19 +13,6 @@ namespace {
 
 constexpr int kMaxDepth = 12; // nested texture maps; deeper ones use their first entry
 
-/// Sets a flag for a scope and puts its old value back after.
-class FlagScope {
-  public:
-    FlagScope(bool& flag, bool value) : flag_(flag), old_(flag) { flag_ = value; }
-    ~FlagScope() { flag_ = old_; }
-    FlagScope(const FlagScope&) = delete;
-    FlagScope& operator=(const FlagScope&) = delete;
-
-  private:
-    bool& flag_;
-    bool old_;
-};
-
 std::string key_of(const Material& m) {
     std::ostringstream k;
     k.precision(9);
@@ -150,17 +137,16 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     if (pt.kind == PatternKind::Function && pt.function) p.program = function(*pt.function);
     if (pt.kind == PatternKind::PigmentPattern && pt.pigment) {
         // Evaluated at this pattern's point: placed by its own transforms, inheriting nothing.
-        const FlagScope uv(uv_, false);
-        const FlagScope space(pattern_space_, true);
-        const WarpChain outer = std::exchange(chain_, WarpChain{});
+        const ScopedValue<bool> uv(uv_, false);
+        const ScopedValue<bool> space(pattern_space_, true);
+        const ScopedValue<WarpChain> chain(chain_, WarpChain{});
         p.pigment = pigment(*pt.pigment, Affine());
-        chain_ = outer;
     }
     return p;
 }
 
 int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
-    const FlagScope space(uv_, false); // normals are evaluated in space (uv_mapping warned)
+    const ScopedValue<bool> space(uv_, false); // normals are evaluated in space (uv_mapping warned)
     // A map's entries first, placed by its transforms too (the parser left them no maps).
     std::vector<NormalMapEntry> map;
     for (const auto& [value, entry] : n.map)
@@ -264,7 +250,7 @@ PigmentEntry MaterialBuilder::entry(const PovMapEntry& e, const Affine& eff) {
 int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
     // A uv-mapped pigment is placed by its own transforms only.
     const Affine eff = pg.uv ? pg.local : outer * pg.local;
-    const FlagScope uv(uv_, uv_ || pg.uv);
+    const ScopedValue<bool> uv(uv_, uv_ || pg.uv);
     Pigment out;
     if (!pg.patterned) {
         for (int i = 0; i < 5; ++i) out.color[i] = float(pg.color[i]);
@@ -276,16 +262,18 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
     out.pattern = pattern(pg.pattern, eff);
     // Entries before the pigment itself: a pigment names only earlier pigments. They are
     // evaluated through this pigment's warps, as POV-Ray does.
-    const WarpChain outer_chain = chain_;
-    if (out.pattern.warp_count > 0) {
-        const auto first = scene_.warps.begin() + out.pattern.warp_first;
-        chain_ = {out.pattern.to_pattern, std::vector<Warp>(first, first + out.pattern.warp_count),
-                  eff, out.pattern.uv};
-    }
     std::vector<PigmentEntry> entries;
-    entries.reserve(pg.entries.size());
-    for (const PovMapEntry& e : pg.entries) entries.push_back(entry(e, eff));
-    chain_ = outer_chain;
+    {
+        const auto first = scene_.warps.begin() + out.pattern.warp_first;
+        const ScopedValue<WarpChain> chain(
+            chain_, out.pattern.warp_count == 0
+                        ? chain_
+                        : WarpChain{out.pattern.to_pattern,
+                                    std::vector<Warp>(first, first + out.pattern.warp_count), eff,
+                                    out.pattern.uv});
+        entries.reserve(pg.entries.size());
+        for (const PovMapEntry& e : pg.entries) entries.push_back(entry(e, eff));
+    }
     if (pg.pattern.kind == PatternKind::Image && pg.pattern.image)
         out.pattern.image = image(*pg.pattern.image, out.pattern.to_pattern);
     out.first = uint32_t(scene_.pigment_entries.size());
@@ -321,7 +309,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
     // does not move them); its normal and media stay in space, placed as usual.
     const Affine space = outer * t.local;
     const Affine eff = t.uv ? t.uv_local : space;
-    const FlagScope uv(uv_, uv_ || t.uv);
+    const ScopedValue<bool> uv(uv_, uv_ || t.uv);
     if (t.is_map && !t.map_entries.empty()) {
         if (depth >= kMaxDepth) return material_in(*t.map_entries.front().second, in, space, depth);
         std::vector<MaterialEntry> entries;
@@ -396,7 +384,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
                 Vec3(float(pm.absorption[0]), float(pm.absorption[1]), float(pm.absorption[2]));
             md.samples = uint32_t(pm.samples);
             std::vector<uint32_t> densities;
-            const FlagScope space_densities(uv_, false); // a medium has no surface
+            const ScopedValue<bool> space_densities(uv_, false); // a medium has no surface
             for (const auto& d : pm.densities)
                 densities.push_back(uint32_t(pigment(*d, outer * in->local * pm.local)));
             md.density_first = uint32_t(scene_.medium_densities.size());
@@ -419,7 +407,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         std::vector<PigmentEntry> layers;
         for (const PovTextureRef& l : t.below) {
             const PovPigment& lp = l->pigment ? *l->pigment : black;
-            const FlagScope layer_uv(uv_, l->uv);
+            const ScopedValue<bool> layer_uv(uv_, l->uv);
             layers.push_back(entry({0, lp.color, std::make_shared<PovPigment>(lp)},
                                    l->uv ? l->uv_local : outer * l->local));
         }

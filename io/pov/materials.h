@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 
 namespace sheaf::io::pov {
 
@@ -23,6 +24,20 @@ inline Vec3 rgb(const Color5& c) {
 /// pattern reads POV-Ray coordinates). Its warps are appended to `warps` (null: a pattern
 /// without warps is asked for).
 Pattern lower_pattern(const PovPattern& pt, const Affine& eff, std::vector<Warp>* warps);
+
+/// Sets `slot` to `value` for a scope and puts its old value back after (also when the scope
+/// ends by an error).
+template <class T> class ScopedValue {
+  public:
+    ScopedValue(T& slot, T value) : slot_(slot), old_(std::move(slot)) { slot_ = std::move(value); }
+    ~ScopedValue() { slot_ = std::move(old_); }
+    ScopedValue(const ScopedValue&) = delete;
+    ScopedValue& operator=(const ScopedValue&) = delete;
+
+  private:
+    T& slot_;
+    T old_;
+};
 
 class MaterialBuilder {
   public:

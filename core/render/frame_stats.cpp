@@ -20,16 +20,23 @@ void declare_frame_keys(Stats& st) {
 }
 
 float scene_extent(const PreparedScene& scene) {
+    float e = geometry_extent(scene);
+    for (const Light& l : scene.lights) e = std::max(e, length(l.position));
+    return e;
+}
+
+float geometry_extent(const PreparedScene& scene) {
     float e = 1e-3f;
     for (const Sphere& s : scene.object_sphere) // unbounded objects (planes) do not count
         if (std::isfinite(s.radius)) e = std::max(e, length(s.center) + s.radius);
-    for (const Light& l : scene.lights) e = std::max(e, length(l.position));
     return std::max(e, length(scene.camera.position));
 }
 
 RayGenParams frame_ray_params(const PreparedScene& scene, const RenderSettings& s) {
     RayGenParams p;
-    p.epsilon = 1e-5f * scene_extent(scene);
+    // Hits lie on the objects and rays start there or at the camera, so their rounding grows
+    // with those; a light far away must not push rays past surfaces 0.001 apart.
+    p.epsilon = 1e-5f * geometry_extent(scene);
     p.far = 4.0f * scene_extent(scene);
     p.ao_samples = s.ao_samples;
     p.ao_distance = s.ao_distance;

@@ -17,6 +17,8 @@ void declare_frame_keys(Stats& st);
 
 /// How far the scene reaches from the origin (bounded objects, lights, the camera).
 float scene_extent(const PreparedScene& scene);
+/// The same without the lights: how far the objects (those with bounds) and the camera reach.
+float geometry_extent(const PreparedScene& scene);
 
 /// The ray generation parameters of a frame: offsets relative to the scene's extent.
 RayGenParams frame_ray_params(const PreparedScene& scene, const RenderSettings& s);

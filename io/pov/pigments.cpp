@@ -279,10 +279,12 @@ void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
             const bool filter = t.text == "filter";
             if (accept_kw("all")) {
                 (filter ? img->filter_all : img->transmit_all) = parse_float();
-            } else { // a palette index: read and not used
+            } else { // a palette index: OpenImageIO gives the palette's colours, not indices
                 parse_float();
                 accept_sym(",");
                 parse_float();
+                unsupported(t, std::string(filter ? "filter" : "transmit") +
+                                   " of a palette index (ignored)");
             }
         } else if (!parse_pattern_modifier(pg.pattern, pg.local)) {
             error_expected(t, "an image_map item (map_type, once, interpolate, filter ...)");

@@ -8,6 +8,7 @@
 
 #include "core/math/hd_math.h"
 #include "core/rays/ray_batch.h"
+#include "core/render/media.h"
 #include "core/render/shade.h"
 #include "core/render/surface.h"
 #include "core/scene/scene_view.h"
@@ -156,8 +157,10 @@ SHEAF_HD_INLINE void shadow_ray_write(const SceneView& scene, const SurfaceHit* 
     r.tmax = ls.distance;
     out.rays[slot] = r;
     out.pixel[slot] = h.pixel;
+    // The media on the way fade the light (their extinction), as POV-Ray's shadow rays do.
+    const Vec3 through = media_transmittance(scene, target, ls.to_light, ls.distance);
     out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h, ls.to_light,
-                                                   ls.radiance * scale, l.highlights);
+                                                   ls.radiance * through * scale, l.highlights);
     out.light[slot] = li;
 }
 

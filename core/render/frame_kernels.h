@@ -9,6 +9,7 @@
 #include "core/raster/rasterizer.h"
 #include "core/rays/ray_gen.h"
 #include "core/render/media.h"
+#include "core/render/media_light.h"
 #include "core/render/mesh_camera.h"
 #include "core/render/shade.h"
 #include "core/render/surface_hit.h"
@@ -57,9 +58,12 @@ SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, 
 
 /// The fog between the ray's origin and the hit: scales the hit's throughput, and returns
 /// the fog's own colour the ray brings. The media of the containers on the way come first:
-/// they fade the hit and add their own light.
-SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h) {
+/// they fade the hit and add their own light. `seg`, when given, receives the way's media
+/// segment (core/render/media_light.h).
+SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h,
+                                 MediaSegment* seg = nullptr) {
     const Vec3 origin = h.position - h.incoming * h.t;
+    if (seg) *seg = media_segment(scene, origin, h.incoming, h.t, h.throughput, h.pixel);
     Vec3 media(0.0f);
     if (scene.media_container_count > 0) {
         Vec3 keep, add;
@@ -105,6 +109,7 @@ struct PrimarySample {
     float depth = INFINITY;
     Vec3 normal, albedo;
     uint32_t object = 0xFFFFFFFFu;
+    MediaSegment segment; // the camera ray's way, for the light its media scatter
 };
 
 /// Sample i (x = i % W, y = i / W) with visibility key `vis`: the pixel's camera ray meets the
@@ -117,6 +122,7 @@ SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const Camer
     if (!primary_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), ray)) return out;
     if (vis == kEmptyPixel) {
         out.radiance = leave_scene(scene, ray.origin, ray.dir, Vec3(1.0f));
+        out.segment = media_segment(scene, ray.origin, ray.dir, INFINITY, Vec3(1.0f), uint32_t(i));
         return out;
     }
     const uint32_t prim = vis_prim(vis);
@@ -135,7 +141,7 @@ SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const Camer
     SurfaceHit h = make_surface_hit(scene, ray, prim, t);
     h.pixel = uint32_t(i);
     h.throughput = Vec3(1.0f);
-    out.radiance = through_fog(scene, h);
+    out.radiance = through_fog(scene, h, &out.segment);
     out.hit = true;
     out.h = h;
     out.depth = t;
@@ -165,13 +171,14 @@ SHEAF_HD_INLINE Vec3 unshadowed_terms(const SceneView& scene, const SurfaceHit& 
 /// weight; light leaving an object through its far side fades by its interior, then the fog
 /// on the way scales it. `fog` receives the fog's colour the ray brings.
 SHEAF_HD_INLINE SurfaceHit bounce_hit(const SceneView& scene, const Ray& ray, uint64_t closest,
-                                      uint32_t pixel, Vec3 weight, Vec3& fog) {
+                                      uint32_t pixel, Vec3 weight, Vec3& fog,
+                                      MediaSegment* seg = nullptr) {
     SurfaceHit h = make_surface_hit(scene, ray, hit_prim(closest), hit_t(closest));
     h.pixel = pixel;
     h.throughput = weight;
     // Leaving an object through its far side: what its interior faded.
     if (!h.front) h.throughput = h.throughput * interior_fade(scene.materials[h.material], h.t);
-    fog = through_fog(scene, h);
+    fog = through_fog(scene, h, seg);
     return h;
 }
 

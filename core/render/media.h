@@ -6,19 +6,79 @@
 #pragma once
 
 #include "core/math/hd_math.h"
+#include "core/render/shade.h"
 #include "core/render/surface_texture.h"
 #include "core/scene/analytic.h"
 #include "core/scene/scene_view.h"
 
 namespace sheaf {
 
+/// POV-Ray's phase function of medium md at cosine c of the angle between the way to the light
+/// and the way the ray goes (c = 1: the light lies straight ahead, behind the medium).
+SHEAF_HD_INLINE float scatter_phase(const Medium& md, float c) {
+    switch (md.scatter_type) {
+    case ScatterType::MieHazy:
+        return 0.576655375f * (1.0f + 9.0f * hdm::powf(0.5f * (1.0f + c), 8.0f));
+    case ScatterType::MieMurky:
+        return 0.495714547f * (1.0f + 50.0f * hdm::powf(0.5f * (1.0f + c), 32.0f));
+    case ScatterType::Rayleigh:
+        return 0.799372013f * (1.0f + c * c);
+    case ScatterType::HenyeyGreenstein: {
+        const float g = md.eccentricity, d = 1.0f + g * g - 2.0f * g * c;
+        return d > 0 ? (1.0f - g * g) / (d * sqrtf(d)) : 0.0f;
+    }
+    case ScatterType::Isotropic:
+        break;
+    }
+    return 1.0f;
+}
+
+/// The phase of material m's media, averaged over them as POV-Ray averages it (their summed
+/// scattering multiplies it).
+SHEAF_HD_INLINE float media_phase(const SceneView& scene, const Material& m, float c) {
+    float k = 0;
+    for (uint32_t i = m.media_first; i < m.media_first + m.media_count; ++i)
+        k += scatter_phase(scene.media[i], c);
+    return m.media_count > 0 ? k / float(m.media_count) : 0.0f;
+}
+
+/// Whether light l scatters in the media of material m: it interacts with media and lights the
+/// material's light group.
+SHEAF_HD_INLINE bool light_scatters_in(const Light& l, const Material& m) {
+    return l.media_interaction && light_reaches_group(l, m.light_group);
+}
+
+/// The light of the shadowless lights that material m's media scatter at p back along unit
+/// `dir` (towards where the ray comes from), per unit of scattering: they need no shadow ray.
+SHEAF_HD_INLINE Vec3 shadowless_scatter(const SceneView& scene, const Material& m, Vec3 p,
+                                        Vec3 dir) {
+    Vec3 c(0.0f);
+    for (uint32_t li = 0; li < scene.light_count; ++li) {
+        const Light& l = scene.lights[li];
+        if (!l.shadowless || !light_scatters_in(l, m)) continue;
+        const LightSample ls = sample_light(l, p, 1.0f);
+        c += ls.radiance * media_phase(scene, m, dot(ls.to_light, dir));
+    }
+    return c;
+}
+
+/// Visits nothing: media walks that only integrate.
+struct NoScatterVisit {
+    SHEAF_HD void operator()(const Material&, Vec3, Vec3) const {}
+};
+
 /// The media of material `m` over the d units of a ray from `from` along unit `dir`: `keep`
-/// is the share of light from the far end that arrives at `from` (exp of minus the absorption
-/// integrated), `add` the light the media give off on the way that arrives there (each step's
-/// emission, faded by the absorption between it and `from`). Densities multiply the
-/// emission and the absorption channel by channel.
+/// is the share of light from the far end that arrives at `from` (exp of minus the extinction
+/// integrated: absorption plus `extinction` times scattering), `add` the light the media give
+/// off on the way that arrives there (each step's emission and the shadowless lights it
+/// scatters, faded by the extinction between it and `from`). Densities multiply the emission,
+/// absorption and scattering channel by channel. At each step that scatters, `visit(m, p, w)`
+/// is called with the step's middle p and w, the share of light scattered there (phase 1)
+/// that arrives at `from`: the lights that cast shadows reach p through shadow rays
+/// (core/render/media_light.h).
+template <class Visit>
 SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Vec3 from, Vec3 dir,
-                                   float d, Vec3& keep, Vec3& add) {
+                                   float d, Vec3& keep, Vec3& add, const Visit& visit) {
     keep = Vec3(1.0f);
     add = Vec3(0.0f);
     if (m.media_count == 0 || !(d > 0) || !(d <= 1e30f)) return;
@@ -28,40 +88,51 @@ SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Ve
     const float step = d / float(steps);
     for (uint32_t i = 0; i < steps; ++i) {
         const Vec3 p = from + dir * ((float(i) + 0.5f) * step);
-        Vec3 emission(0.0f), absorption(0.0f);
+        Vec3 emission(0.0f), absorption(0.0f), scattering(0.0f);
         for (uint32_t k = m.media_first; k < m.media_first + m.media_count; ++k) {
             const Medium& md = scene.media[k];
             Vec3 density(1.0f);
             for (uint32_t j = md.density_first; j < md.density_first + md.density_count; ++j)
                 density = density * evaluate_pigment(scene, scene.medium_densities[j], p, 0, 0).rgb;
             emission += md.emission * density;
-            absorption += md.absorption * density;
+            absorption += (md.absorption + md.scattering * md.extinction) * density;
+            scattering += md.scattering * density;
         }
         // Huge emissions times huge densities overflow: keep both finite (NaN: none), so that
         // a step that absorbs everything adds nothing rather than 0 x infinity.
         for (int c = 0; c < 3; ++c) {
             const float e = emission[c] == emission[c] ? emission[c] : 0.0f;
             const float a = absorption[c] == absorption[c] ? absorption[c] : 0.0f;
+            const float s = scattering[c] == scattering[c] ? scattering[c] : 0.0f;
             emission[c] = hdm::fminf(hdm::fmaxf(e, -1e30f), 1e30f);
             absorption[c] = hdm::fminf(hdm::fmaxf(a, 0.0f), 1e30f);
+            scattering[c] = hdm::fminf(hdm::fmaxf(s, 0.0f), 1e30f);
         }
-        // Half the step's absorption lies between its middle and its near end.
+        // Half the step's extinction lies between its middle and its near end.
         const Vec3 half(hdm::expf(-0.5f * absorption.x * step),
                         hdm::expf(-0.5f * absorption.y * step),
                         hdm::expf(-0.5f * absorption.z * step));
+        if (max_component(scattering) > 0) {
+            const Vec3 w = keep * half * scattering * step;
+            emission += scattering * shadowless_scatter(scene, m, p, dir);
+            visit(m, p, w);
+        }
         add += keep * half * emission * step;
         keep = keep * half * half;
     }
 }
 
-/// The media of every container along the ray from `origin` along unit `dir` up to t_end
-/// (infinite for rays that leave the scene): what arrives at `origin` of light from t_end
-/// (`keep`) and the light the media give off on the way (`add`). Parts of different
-/// containers are taken in the order of the containers, each part in ray order.
-SHEAF_HD_INLINE void media_along(const SceneView& scene, Vec3 origin, Vec3 dir, float t_end,
-                                 Vec3& keep, Vec3& add) {
-    keep = Vec3(1.0f);
-    add = Vec3(0.0f);
+SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Vec3 from, Vec3 dir,
+                                   float d, Vec3& keep, Vec3& add) {
+    through_media(scene, m, from, dir, d, keep, add, NoScatterVisit());
+}
+
+/// Calls f(m, t0, t1) for every part [t0, t1] of the ray from `origin` along unit `dir` up to
+/// t_end (infinite for rays that leave the scene) that lies in a container's media of material
+/// m: the containers in their order, each one's parts in ray order.
+template <class F>
+SHEAF_HD_INLINE void for_media_parts(const SceneView& scene, Vec3 origin, Vec3 dir, float t_end,
+                                     const F& f) {
     for (uint32_t c = 0; c < scene.media_container_count; ++c) {
         const uint32_t a = scene.media_containers[c];
         if (!ray_meets_sphere(scene.prim_sphere[scene.tri_count + a], origin, dir)) continue;
@@ -85,13 +156,64 @@ SHEAF_HD_INLINE void media_along(const SceneView& scene, Vec3 origin, Vec3 dir, 
             if (leaf == 0xFFFFFFFFu) continue;
             const Material& m = scene.materials[resolve_material(
                 scene, scene.shape_material[leaf], origin + dir * (0.5f * (t0 + t1)))];
-            if (m.media_count == 0) continue;
-            Vec3 k, e;
-            through_media(scene, m, origin + dir * t0, dir, t1 - t0, k, e);
-            add += keep * e;
-            keep = keep * k;
+            if (m.media_count > 0) f(m, t0, t1);
         }
     }
+}
+
+/// The media of every container along the ray from `origin` along unit `dir` up to t_end
+/// (infinite for rays that leave the scene): what arrives at `origin` of light from t_end
+/// (`keep`) and the light the media give off on the way (`add`). Parts of different
+/// containers are taken in the order of the containers, each part in ray order. `visit` sees
+/// every step that scatters, its share w already faded by the containers before it.
+template <class Visit>
+SHEAF_HD_INLINE void media_along(const SceneView& scene, Vec3 origin, Vec3 dir, float t_end,
+                                 Vec3& keep, Vec3& add, const Visit& visit) {
+    keep = Vec3(1.0f);
+    add = Vec3(0.0f);
+    for_media_parts(scene, origin, dir, t_end, [&](const Material& m, float t0, float t1) {
+        Vec3 k, e;
+        const Vec3 before = keep;
+        through_media(scene, m, origin + dir * t0, dir, t1 - t0, k, e,
+                      [&](const Material& mm, Vec3 p, Vec3 w) { visit(mm, p, before * w); });
+        add += keep * e;
+        keep = keep * k;
+    });
+}
+
+SHEAF_HD_INLINE void media_along(const SceneView& scene, Vec3 origin, Vec3 dir, float t_end,
+                                 Vec3& keep, Vec3& add) {
+    media_along(scene, origin, dir, t_end, keep, add, NoScatterVisit());
+}
+
+/// The share of light that crosses the media between `from` and from + dir * d: exp of minus
+/// the extinction integrated, as POV-Ray fades the light a shadow ray carries through the
+/// interiors it crosses. Media without densities are constant: exact in one step; the others
+/// take their light_samples steps (POV-Ray samples shadow rays without refining).
+SHEAF_HD_INLINE Vec3 media_transmittance(const SceneView& scene, Vec3 from, Vec3 dir, float d) {
+    Vec3 optical(0.0f);
+    if (scene.media_container_count == 0) return Vec3(1.0f);
+    for_media_parts(scene, from, dir, d, [&](const Material& m, float t0, float t1) {
+        uint32_t steps = 1;
+        for (uint32_t k = m.media_first; k < m.media_first + m.media_count; ++k)
+            if (scene.media[k].density_count > 0 && scene.media[k].light_samples > steps)
+                steps = scene.media[k].light_samples;
+        const float step = (t1 - t0) / float(steps);
+        for (uint32_t i = 0; i < steps; ++i) {
+            const Vec3 p = from + dir * (t0 + (float(i) + 0.5f) * step);
+            for (uint32_t k = m.media_first; k < m.media_first + m.media_count; ++k) {
+                const Medium& md = scene.media[k];
+                Vec3 density(1.0f);
+                for (uint32_t j = md.density_first; j < md.density_first + md.density_count; ++j)
+                    density =
+                        density * evaluate_pigment(scene, scene.medium_densities[j], p, 0, 0).rgb;
+                const Vec3 e = (md.absorption + md.scattering * md.extinction) * density * step;
+                for (int c = 0; c < 3; ++c)
+                    optical[c] += e[c] == e[c] ? hdm::fminf(hdm::fmaxf(e[c], 0.0f), 1e30f) : 0.0f;
+            }
+        }
+    });
+    return Vec3(hdm::expf(-optical.x), hdm::expf(-optical.y), hdm::expf(-optical.z));
 }
 
 } // namespace sheaf

@@ -119,5 +119,124 @@ TEST(Media, EveryAccelAndTheWavefrontAgree) {
     }
 }
 
+TEST(Media, ShadowRaysFadeByTheExtinctionOnTheirWay) {
+    Medium fog;
+    fog.absorption = Vec3(0.08f);
+    Medium mist; // scattering takes extinction x scattering away too
+    mist.scattering = Vec3(0.1f);
+    mist.extinction = 0.5f;
+    Scene s;
+    s.add_shape("container", Shape{ShapeKind::Box}, test::add_media_material(s, {fog, mist}),
+                Affine::scale(Vec3(4.0f)));
+    const PreparedScene scene = prepare_scene(s);
+    const SceneView view(scene);
+    const Vec3 p(-2.0f, -1.0f, 1.266f), l(-5, 5, -5);
+    const Vec3 d = l - p;
+    const float len = length(d);
+    // Inside until x = -4: two thirds of the way.
+    EXPECT_NEAR(media_transmittance(view, p, d / len, len).x,
+                std::exp(-(0.08f + 0.05f) * len * 2.0f / 3.0f), 1e-4f);
+    // From outside, through the whole box along x: 8 units.
+    EXPECT_NEAR(media_transmittance(view, Vec3(-6, 0, 0), Vec3(1, 0, 0), 12.0f).y,
+                std::exp(-0.13f * 8.0f), 1e-4f);
+    EXPECT_EQ(media_transmittance(view, Vec3(-6, 0, 0), Vec3(-1, 0, 0), 12.0f).z, 1.0f);
+}
+
+TEST(Media, PhaseFunctionsAreTheirPovRayFormulas) {
+    Medium md;
+    EXPECT_EQ(scatter_phase(md, -1.0f), 1.0f); // isotropic
+    md.scatter_type = ScatterType::Rayleigh;
+    EXPECT_NEAR(scatter_phase(md, 0.0f), 0.799372f, 1e-6f);
+    EXPECT_NEAR(scatter_phase(md, 1.0f), 2 * 0.799372f, 1e-6f);
+    md.scatter_type = ScatterType::MieHazy;
+    EXPECT_NEAR(scatter_phase(md, 1.0f), 0.576655f * 10, 1e-5f);
+    EXPECT_NEAR(scatter_phase(md, -1.0f), 0.576655f, 1e-6f);
+    md.scatter_type = ScatterType::MieMurky;
+    EXPECT_NEAR(scatter_phase(md, 1.0f), 0.495715f * 51, 1e-4f);
+    md.scatter_type = ScatterType::HenyeyGreenstein;
+    md.eccentricity = 0.0f;
+    EXPECT_NEAR(scatter_phase(md, 0.3f), 1.0f, 1e-6f);
+    md.eccentricity = 0.5f; // forward: most where the light lies straight ahead (c = 1)
+    EXPECT_NEAR(scatter_phase(md, 1.0f), 0.75f / 0.125f, 1e-4f);
+    EXPECT_NEAR(scatter_phase(md, -1.0f), 0.75f / (2.25f * 1.5f), 1e-4f);
+}
+
+// A unit sphere of scattering medium (no extinction unless asked), lit from straight above by
+// parallel light of colour 1; an opaque slab above its x < 0 half when `shade`.
+Scene scattering_sphere(float extinction, bool shade, bool shadowless) {
+    Medium mist;
+    mist.scattering = Vec3(0.2f, 0.1f, 0.05f);
+    mist.extinction = extinction;
+    Scene s = sphere_of({mist});
+    Light sun;
+    sun.type = LightType::Parallel;
+    sun.direction = Vec3(0, -1, 0);
+    sun.shadowless = shadowless;
+    s.add_light(sun);
+    if (shade)
+        s.add_shape("slab", Shape{ShapeKind::Box}, s.add_material(Material{}),
+                    Affine::translate(Vec3(-2.0f, 2.0f, 0)) *
+                        Affine::scale(Vec3(2.0f, 0.1f, 2.0f)));
+    return s;
+}
+
+TEST(Media, ScatteredLightIsTheScatteringTimesTheChordAndShadowsCutIt) {
+    // Through the middle the ray crosses 2 units: 2 x scattering x the light, phase 1.
+    const Frame lit = render(prepare_scene(scattering_sphere(0, false, false)), {}, 33, 33);
+    EXPECT_NEAR(pixel(lit, 16, 16)[0], 0.4f, 1e-4f);
+    EXPECT_NEAR(pixel(lit, 16, 16)[1], 0.2f, 1e-4f);
+    EXPECT_NEAR(pixel(lit, 16, 16)[2], 0.1f, 1e-4f);
+    EXPECT_EQ(pixel(lit, 0, 0)[0], 0.0f);
+    // A shadowless light needs no shadow rays and gives the same.
+    const Frame fill = render(prepare_scene(scattering_sphere(0, false, true)), {}, 33, 33);
+    EXPECT_NEAR(pixel(fill, 16, 16)[0], pixel(lit, 16, 16)[0], 1e-5f);
+    EXPECT_NEAR(pixel(fill, 10, 20)[1], pixel(lit, 10, 20)[1], 1e-5f);
+    // With extinction the light fades on its way in and on its way out.
+    const Frame dim = render(prepare_scene(scattering_sphere(1, false, false)), {}, 33, 33);
+    EXPECT_LT(pixel(dim, 16, 16)[0], 0.8f * pixel(lit, 16, 16)[0]);
+    EXPECT_GT(pixel(dim, 16, 16)[0], 0.4f * pixel(lit, 16, 16)[0]);
+    // The slab shades the x < 0 half: nothing scattered there, the other half as before.
+    const Frame shaded = render(prepare_scene(scattering_sphere(0, true, false)), {}, 33, 33);
+    EXPECT_LT(pixel(shaded, 10, 16)[0], 1e-4f);
+    EXPECT_NEAR(pixel(shaded, 22, 16)[0], pixel(lit, 22, 16)[0], 1e-5f);
+    // A light that does not interact with media scatters nothing.
+    Scene off = scattering_sphere(0, false, false);
+    off.lights[0].media_interaction = false;
+    EXPECT_EQ(pixel(render(prepare_scene(off), {}, 33, 33), 16, 16)[0], 0.0f);
+}
+
+TEST(Media, ScatteringIsTheSameOnEveryAccelAndTheWavefront) {
+    // Six lights (more than a step's share of four, two of them shadowless), a slab's shadow,
+    // a mirror floor seen through the medium (reflection rays' segments), extinction.
+    Scene s = scattering_sphere(1, true, false);
+    s.media[0].scatter_type = ScatterType::HenyeyGreenstein;
+    s.media[0].eccentricity = 0.4f;
+    for (int i = 0; i < 5; ++i) {
+        Light l{Vec3(float(i) - 2.0f, 3.0f, 1.0f), Vec3(0.3f, 0.2f, 0.1f * float(i))};
+        l.shadowless = i % 3 == 1;
+        s.add_light(l);
+    }
+    Material mirror;
+    mirror.mirror = 0.6f;
+    s.add_shape("floor", Shape{ShapeKind::Box}, s.add_material(mirror),
+                Affine::translate(Vec3(0, -1.5f, 0)) * Affine::scale(Vec3(4, 0.1f, 4)));
+    s.camera.position = Vec3(0, 1, 5);
+    const PreparedScene scene = prepare_scene(s);
+    const Frame crsh = render(scene, {}, 40, 30);
+    Scene clear = s; // the media's own shadow rays: 32 steps a crossing, 4 lights a step
+    clear.media[0].scattering = Vec3(0.0f);
+    EXPECT_GT(crsh.stats.get("rays.shadow"),
+              render(prepare_scene(clear), {}, 40, 30).stats.get("rays.shadow") + 10000);
+    for (const test::SettingList& kv :
+         {test::SettingList{{"accel", "brute"}}, test::SettingList{{"accel", "rah"}}}) {
+        const Frame other = render(scene, kv, 40, 30);
+        EXPECT_EQ(0, std::memcmp(crsh.rgba.data(), other.rgba.data(), crsh.rgba.size() * 4))
+            << kv[0].second;
+    }
+    const RenderSettings rs = test::settings_for(scene, {}, 40, 30);
+    test::expect_same_frame(render_frame_cpu(scene, rs), render_frame_wavefront_cpu(scene, rs),
+                            "scattering");
+}
+
 } // namespace
 } // namespace sheaf

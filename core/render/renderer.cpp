@@ -7,7 +7,9 @@
 #include "core/rays/ray_gen.h"
 #include "core/render/frame_kernels.h"
 #include "core/render/frame_stats.h"
+#include "core/render/media_light.h"
 #include "core/rsh/trace.h"
+#include "core/sort/radix_sort.h"
 
 #include <tbb/task_arena.h>
 
@@ -37,7 +39,10 @@ class FramePipeline {
         params_ = frame_ray_params(scene_, s_);
         units_ = cull_units_for(scene_, s_);
 
+        scatter_ = media_scatter_light(scene_);
         std::vector<SurfaceHit> hits = primary();
+        scatter_light(segments_);
+        release_segments();
         report(0.1f);
         for (int bounce = 0; bounce <= s_.trace_depth && !hits.empty(); ++bounce) {
             hits = shade_wave(hits, bounce);
@@ -156,6 +161,7 @@ class FramePipeline {
         normal_.assign(vis.size(), Vec3(0.0f));
         albedo_.assign(vis.size(), Vec3(0.0f));
         object_.assign(vis.size(), 0xFFFFFFFFu);
+        if (scatter_) take_segments(vis.size());
         parallel_for(
             "gbuffer.resolve", vis.size(),
             [&](size_t i) {
@@ -167,6 +173,7 @@ class FramePipeline {
                 normal_[i] = ps.normal;
                 albedo_[i] = ps.albedo;
                 object_[i] = ps.object;
+                if (scatter_) segments_[i] = ps.segment;
             },
             1024);
         memory_.sub(int64_t(vis.size() * sizeof(uint64_t)));
@@ -183,6 +190,53 @@ class FramePipeline {
 
     void count_tests(const RayBatch& batch, const TraceResult& r) {
         for (size_t i = 0; i < batch.size(); ++i) tests_[batch.pixel[i]] += r.tests[i];
+    }
+
+    // Room for n media segments, counted by the memory guard until release_segments.
+    void take_segments(size_t n) {
+        release_segments();
+        memory_.add(int64_t(n * sizeof(MediaSegment)));
+        segments_.assign(n, MediaSegment());
+    }
+    void release_segments() {
+        memory_.sub(int64_t(segments_.size() * sizeof(MediaSegment)));
+        segments_.clear();
+        segments_.shrink_to_fit();
+    }
+
+    // The light the media along `segs` scatter from the lights that cast shadows: their
+    // shadow rays (core/render/media_light.h), traced in batches of consecutive segments.
+    void scatter_light(const std::vector<MediaSegment>& segs) {
+        if (!scatter_) return;
+        const size_t per = media_segments_per_batch(scene_);
+        for (size_t first = 0; first < segs.size(); first += per) {
+            const size_t n = std::min(per, segs.size() - first);
+            const MediaSegment* seg = segs.data() + first;
+            RayBatch b(RayType::Shadow, memory_);
+            {
+                PhaseTimer t(st_, "time_ms.ray_creation");
+                std::vector<uint32_t> offset(n);
+                parallel_for(
+                    "raygen.media_count", n,
+                    [&](size_t i) { offset[i] = media_light_count(view_, seg[i], params_); }, 256);
+                uint64_t most = 0;
+                for (uint32_t c : offset) most += c;
+                check_batch_bound(most, RayType::Shadow);
+                b.resize(exclusive_scan_inplace(offset));
+                const RaySlots slots{b.rays.data(), b.pixel.data(), b.weight.data(),
+                                     b.light.data()};
+                parallel_for(
+                    "raygen.media_fill", n,
+                    [&](size_t i) { media_light_fill(view_, seg[i], offset[i], params_, slots); },
+                    256);
+            }
+            if (b.size() == 0) continue;
+            TraceResult r;
+            trace_batch(scene_, *units_, b, s_, st_, memory_, r);
+            PhaseTimer t(st_, "time_ms.shading");
+            accumulate(b, r);
+            count_tests(b, r);
+        }
     }
 
     // Shades one wave of hits; returns the hits of its reflection, refraction and radiosity
@@ -231,14 +285,22 @@ class FramePipeline {
             PhaseTimer t(st_, "time_ms.shading");
             count_tests(*b, r);
             std::vector<uint32_t> slot(b->size());
+            // Radiosity's gather rays leave media out of their scattering, as POV-Ray's
+            // radiosity does unless told `media on`.
+            const bool segments = scatter_ && b != &diffuse;
+            if (segments) take_segments(b->size());
             uint32_t count = 0;
             for (size_t i = 0; i < b->size(); ++i) {
                 slot[i] = count;
-                if (r.closest[i] != kNoHit)
+                if (r.closest[i] != kNoHit) {
                     ++count;
-                else
-                    radiance_[b->pixel[i]] +=
-                        leave_scene(view_, b->rays[i].origin, b->rays[i].dir, b->weight[i]);
+                    continue;
+                }
+                const Ray& ray = b->rays[i];
+                radiance_[b->pixel[i]] += leave_scene(view_, ray.origin, ray.dir, b->weight[i]);
+                if (segments)
+                    segments_[i] = media_segment(view_, ray.origin, ray.dir, INFINITY, b->weight[i],
+                                                 b->pixel[i]);
             }
             const size_t base = next.size();
             if (b == &diffuse) { // as many as the rays gathered: refused before they are taken
@@ -253,13 +315,18 @@ class FramePipeline {
                     if (r.closest[i] == kNoHit) return;
                     SurfaceHit& h = next[base + slot[i]];
                     h = bounce_hit(view_, b->rays[i], r.closest[i], b->pixel[i], b->weight[i],
-                                   fog_[slot[i]]);
+                                   fog_[slot[i]], segments ? &segments_[i] : nullptr);
                     if (b->type == RayType::Diffuse) h.gather = b->light[i];
                 },
                 1024);
             if (scene_.fog.distance > 0 ||
                 !scene_.media_containers.empty()) // in ray order: the same sums on every accel
                 for (size_t k = 0; k < count; ++k) radiance_[next[base + k].pixel] += fog_[k];
+            if (segments) {
+                t.stop(); // scatter_light times its own phases
+                scatter_light(segments_);
+                release_segments();
+            }
         }
         memory_.sub(hit_bytes_); // the wave shaded here goes when its successor comes back
         hit_bytes_ = gathered_bytes;
@@ -303,6 +370,8 @@ class FramePipeline {
     std::vector<Vec3> fog_; // fog colour brought by each hit of the wave being built
     std::vector<uint32_t> object_;
     std::vector<uint32_t> tests_;
+    bool scatter_ = false;               // media scatter the lights that cast shadows
+    std::vector<MediaSegment> segments_; // the ways of the rays being shaded, for scatter_light
     int64_t hit_bytes_ = 0; // the current wave's gathered points, counted by memory_
 };
 

@@ -519,8 +519,15 @@ void Scene::validate_patterns() const {
         if (!is_finite(md.emission) || !is_finite(md.absorption) || md.absorption.x < 0 ||
             md.absorption.y < 0 || md.absorption.z < 0)
             throw SceneError(name + ": emission must be finite and absorption finite and >= 0");
-        if (md.samples < 1 || md.samples > 1024)
-            throw SceneError(name + ": samples must lie in 1..1024");
+        if (!is_finite(md.scattering) || md.scattering.x < 0 || md.scattering.y < 0 ||
+            md.scattering.z < 0 || !(md.extinction >= 0 && md.extinction <= 1e30f))
+            throw SceneError(name + ": scattering and extinction must be finite and >= 0");
+        if (uint8_t(md.scatter_type) < 1 || uint8_t(md.scatter_type) > 5)
+            throw SceneError(name + ": the scattering type must be 1..5");
+        if (!(md.eccentricity > -1 && md.eccentricity < 1))
+            throw SceneError(name + ": the eccentricity must lie strictly between -1 and 1");
+        if (md.samples < 1 || md.samples > 1024 || md.light_samples < 1 || md.light_samples > 1024)
+            throw SceneError(name + ": samples and light_samples must lie in 1..1024");
         if (!range(md.density_first, md.density_count, medium_densities.size()))
             throw SceneError(name + ": its densities lie outside the medium densities");
         for (uint32_t d = md.density_first; d < md.density_first + md.density_count; ++d)

@@ -77,10 +77,27 @@ struct Material {
 /// densities' colours at the point (Scene::medium_densities: pigment indices), integrated
 /// along the part of a ray inside the object at `samples` evenly spaced points
 /// (core/render/media.h).
+/// How a medium scatters light towards the viewer, POV-Ray's `scattering { type, … }`: the
+/// phase function of the angle between the way to the light and the way the ray goes.
+enum class ScatterType : uint8_t {
+    Isotropic = 1,        // the same every way
+    MieHazy = 2,          // small particles: 0.577 (1 + 9 ((1 + cos) / 2)^8)
+    MieMurky = 3,         // larger particles: 0.496 (1 + 50 ((1 + cos) / 2)^32)
+    Rayleigh = 4,         // very small particles: 0.799 (1 + cos^2)
+    HenyeyGreenstein = 5, // (1 - g^2) / (1 + g^2 - 2 g cos)^1.5, g the eccentricity
+};
+
 struct Medium {
     Vec3 emission{0.0f, 0.0f, 0.0f}, absorption{0.0f, 0.0f, 0.0f};
+    /// Light scattered towards the ray per unit length; it also takes `extinction` times
+    /// itself away from the light passing through (POV-Ray's extinction, 1 by default).
+    Vec3 scattering{0.0f, 0.0f, 0.0f};
+    ScatterType scatter_type = ScatterType::Isotropic;
+    float eccentricity = 0.0f; // HenyeyGreenstein's g, in (-1, 1)
+    float extinction = 1.0f;
     uint32_t density_first = 0, density_count = 0;
-    uint32_t samples = 32;
+    uint32_t samples = 32;      // steps along each part of a ray inside
+    uint32_t light_samples = 8; // steps along a shadow ray's part inside (with densities)
 };
 
 /// What an object takes part in: bits of Object::flags and ShapeObject::flags.
@@ -129,6 +146,7 @@ struct Light {
     float fade_power = 0.0f;
     bool shadowless = false; // lights without shadow rays
     bool highlights = true;  // false: diffuse light only (POV-Ray's shadowless lights)
+    bool media_interaction = true; // false: media do not scatter this light
     uint16_t group = 0; // > 0: lights only materials of that light group (Material::light_group)
 };
 

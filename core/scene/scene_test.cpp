@@ -172,3 +172,36 @@ TEST(SceneValidate, WarpsPigmentPatternsAndLightGroupsAreChecked) {
 
 } // namespace
 } // namespace sheaf
+
+namespace sheaf {
+namespace {
+
+TEST(SceneValidate, ScatteringMediaAreChecked) {
+    auto with = [](const Medium& md) {
+        Scene s = one_sphere({});
+        s.media.push_back(md);
+        return s;
+    };
+    Medium md;
+    md.scattering = Vec3(0.1f);
+    md.scatter_type = ScatterType::HenyeyGreenstein;
+    md.eccentricity = 0.9f;
+    EXPECT_EQ(error_of(with(md)), "");
+    md.eccentricity = 1.0f;
+    EXPECT_EQ(error_of(with(md)), "medium 0: the eccentricity must lie strictly between -1 and 1");
+    md.eccentricity = 0;
+    md.scatter_type = ScatterType(6);
+    EXPECT_EQ(error_of(with(md)), "medium 0: the scattering type must be 1..5");
+    md.scatter_type = ScatterType::Isotropic;
+    md.scattering = Vec3(0.1f, -0.1f, 0);
+    EXPECT_EQ(error_of(with(md)), "medium 0: scattering and extinction must be finite and >= 0");
+    md.scattering = Vec3(0.1f);
+    md.extinction = NAN;
+    EXPECT_EQ(error_of(with(md)), "medium 0: scattering and extinction must be finite and >= 0");
+    md.extinction = 1;
+    md.light_samples = 0;
+    EXPECT_EQ(error_of(with(md)), "medium 0: samples and light_samples must lie in 1..1024");
+}
+
+} // namespace
+} // namespace sheaf

@@ -49,7 +49,10 @@ template <class Exec> class DeviceFrame {
         DeviceTracer<Exec> tracer(ex_, host_, scene_, *units, uploaded.cull, s_, st_, clock_);
         tracer_ = &tracer;
 
+        scatter_ = media_scatter_light(host_);
         DeviceHits<Exec> hits = primary();
+        scatter_light(segments_, samples);
+        segments_ = DeviceBuffer<MediaSegment, Exec>();
         report(0.1f);
         for (int bounce = 0; bounce <= s_.trace_depth && hits.n > 0; ++bounce) {
             hits = shade_wave(hits, bounce);
@@ -171,6 +174,8 @@ template <class Exec> class DeviceFrame {
         Vec3* normal = normal_.data();
         Vec3* albedo = albedo_.data();
         uint32_t* object = object_.data();
+        if (scatter_) segments_ = DeviceBuffer<MediaSegment, Exec>(ex_, samples);
+        MediaSegment* segment = segments_.data();
         ex_.launch("gbuffer.resolve", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
             const PrimarySample ps = primary_sample(scene, cam, W, i, vis[i]);
             radiance[i] = ps.radiance;
@@ -178,6 +183,7 @@ template <class Exec> class DeviceFrame {
             normal[i] = ps.normal;
             albedo[i] = ps.albedo;
             object[i] = ps.object;
+            if (segment) segment[i] = ps.segment;
             if (ps.hit) out[slot[i]] = ps.h;
         });
         clock_.stop("gbuffer");
@@ -348,6 +354,38 @@ template <class Exec> class DeviceFrame {
         clock_.stop("shading");
     }
 
+    // The light the media along the n segments scatter from the lights that cast shadows:
+    // their shadow rays (core/render/media_light.h), traced in batches of consecutive
+    // segments as the CPU renderer batches them.
+    void scatter_light(const DeviceBuffer<MediaSegment, Exec>& segments, size_t n) {
+        if (!scatter_) return;
+        const SceneView scene = scene_;
+        const RayGenParams params = params_;
+        const size_t per = media_segments_per_batch(host_);
+        for (size_t first = 0; first < n; first += per) {
+            const size_t count = n - first < per ? n - first : per;
+            const MediaSegment* seg = segments.data() + first;
+            clock_.start("ray_creation");
+            DeviceBuffer<uint32_t, Exec> offset_buf(ex_, count);
+            uint32_t* offset = offset_buf.data();
+            const uint32_t total =
+                count_and_scan(ex_, "raygen.media_count", count, offset,
+                               [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
+                                   return media_light_count(scene, seg[i], params);
+                               });
+            DeviceBatch<Exec> b(ex_, RayType::Shadow, total);
+            const RaySlots slots = b.slots();
+            ex_.launch("raygen.media_fill", count, [=] SHEAF_HD_LAMBDA(size_t i) {
+                media_light_fill(scene, seg[i], offset[i], params, slots);
+            });
+            clock_.stop("ray_creation");
+            if (total == 0) continue;
+            DeviceTraceResult<Exec> r;
+            tracer_->trace(b, r);
+            add_unoccluded(b, r);
+        }
+    }
+
     void count_tests(const DeviceBatch<Exec>& b, const DeviceTraceResult<Exec>& r) {
         const uint32_t* pixel = b.pixel.data();
         const uint32_t* tests = r.tests.data();
@@ -386,10 +424,21 @@ template <class Exec> class DeviceFrame {
         Vec3* fog = fog_buf.data();
         SurfaceHit* out = next.h.data() + next.n;
         const uint32_t* tag = b.type == RayType::Diffuse ? b.light.data() : nullptr;
+        // Radiosity's gather rays leave media out of their scattering, as POV-Ray's radiosity
+        // does unless told `media on`.
+        DeviceBuffer<MediaSegment, Exec> segments;
+        if (scatter_ && b.type != RayType::Diffuse)
+            segments = DeviceBuffer<MediaSegment, Exec>(ex_, b.n);
+        MediaSegment* segment = segments.data();
         ex_.launch("shade.next", b.n, [=] SHEAF_HD_LAMBDA(size_t i) {
-            if (closest[i] == kNoHit) return;
-            out[slot[i]] =
-                bounce_hit(scene, rays[i], closest[i], pixel[i], weight[i], fog[slot[i]]);
+            if (closest[i] == kNoHit) {
+                if (segment)
+                    segment[i] = media_segment(scene, rays[i].origin, rays[i].dir, INFINITY,
+                                               weight[i], pixel[i]);
+                return;
+            }
+            out[slot[i]] = bounce_hit(scene, rays[i], closest[i], pixel[i], weight[i], fog[slot[i]],
+                                      segment ? &segment[i] : nullptr);
             if (tag) out[slot[i]].gather = tag[i];
         });
         if (host_.fog.distance > 0 ||
@@ -403,6 +452,7 @@ template <class Exec> class DeviceFrame {
                 });
         next.n += count;
         clock_.stop("shading");
+        scatter_light(segments, b.n);
     }
 
     // Box filter of the aa x aa samples of each pixel; passes from the centre sample; the
@@ -448,6 +498,8 @@ template <class Exec> class DeviceFrame {
     DeviceBuffer<float, Exec> depth_;
     DeviceBuffer<Vec3, Exec> normal_, albedo_;
     DeviceBuffer<uint32_t, Exec> object_;
+    bool scatter_ = false;                      // media scatter the lights that cast shadows
+    DeviceBuffer<MediaSegment, Exec> segments_; // the camera rays' ways, for scatter_light
 };
 
 } // namespace sheaf::wavefront

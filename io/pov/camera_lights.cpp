@@ -234,8 +234,10 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
             parse_float();
         } else if (k == "area_illumination") {
             parse_bool_opt(true);
-        } else if (k == "jitter" || k == "circular" || k == "orient" || k == "media_interaction" ||
-                   k == "media_attenuation") {
+        } else if (k == "media_interaction") {
+            l.light.media_interaction = parse_bool_opt(true);
+        } else if (k == "jitter" || k == "circular" || k == "orient" ||
+                   k == "media_attenuation") { // the atmosphere's media, which Sheaf lacks
             parse_bool_opt(true);
         } else if (k == "looks_like") {
             // Modelled around the origin; the builder places it at the light, casting no

@@ -382,7 +382,13 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
             md.emission = Vec3(float(pm.emission[0]), float(pm.emission[1]), float(pm.emission[2]));
             md.absorption =
                 Vec3(float(pm.absorption[0]), float(pm.absorption[1]), float(pm.absorption[2]));
+            md.scattering =
+                Vec3(float(pm.scattering[0]), float(pm.scattering[1]), float(pm.scattering[2]));
+            md.scatter_type = ScatterType(pm.scatter_type);
+            md.eccentricity = float(pm.eccentricity);
+            md.extinction = float(pm.extinction);
             md.samples = uint32_t(pm.samples);
+            md.light_samples = uint32_t(pm.light_samples);
             std::vector<uint32_t> densities;
             const ScopedValue<bool> space_densities(uv_, false); // a medium has no surface
             for (const auto& d : pm.densities)

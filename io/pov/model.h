@@ -157,9 +157,12 @@ bool same_texture(const PovTextureRef& a, const PovTextureRef& b);
 
 /// media { emission absorption density { ... } samples transforms }: an interior's medium.
 struct PovMedia {
-    std::array<double, 3> emission{0, 0, 0}, absorption{0, 0, 0};
+    std::array<double, 3> emission{0, 0, 0}, absorption{0, 0, 0}, scattering{0, 0, 0};
+    int scatter_type = 1; // POV-Ray's scattering types 1..5 (ScatterType)
+    double eccentricity = 0, extinction = 1;
     std::vector<std::shared_ptr<const PovPigment>> densities; // multiplied
     int samples = 32; // steps along each ray inside (core/render/media.h)
+    int light_samples = 8; // intervals x samples: steps along a shadow ray inside
     Affine local;     // the medium's own transforms, applied to its densities
 };
 

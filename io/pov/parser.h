@@ -325,6 +325,7 @@ class Parser {
     void parse_finish(PovFinish& f);
     PovInterior parse_interior(const PovInterior& base);
     PovMedia parse_media();
+    void parse_scattering(PovMedia& m);
     PovPigment parse_density();
     PovTexture current_default() const { return model.default_texture; }
 

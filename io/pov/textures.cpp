@@ -343,6 +343,39 @@ PovPigment Parser::parse_density() {
     return d;
 }
 
+// scattering { TYPE, COLOUR [eccentricity G] [extinction E] }
+void Parser::parse_scattering(PovMedia& m) {
+    expect_sym("{");
+    const Token at = peek();
+    const double type = parse_float();
+    if (!(type >= 1 && type <= 5) || type != std::floor(type))
+        error_at(at, "a scattering type must be 1 (isotropic), 2 (Mie hazy), 3 (Mie murky), 4 "
+                     "(Rayleigh) or 5 (Henyey-Greenstein)");
+    m.scatter_type = int(type);
+    accept_sym(",");
+    const Token ct = peek();
+    const Color5 c = parse_color();
+    for (int i = 0; i < 3; ++i)
+        if (!(std::fabs(c[i]) <= 1e30) || c[i] < 0)
+            error_at(ct, "a medium's scattering must be finite and not negative");
+    m.scattering = {c[0], c[1], c[2]};
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) return;
+        if (accept_kw("eccentricity")) {
+            m.eccentricity = parse_float();
+            if (!(m.eccentricity > -1 && m.eccentricity < 1))
+                error_at(t, "eccentricity must lie strictly between -1 and 1");
+        } else if (accept_kw("extinction")) {
+            m.extinction = parse_float();
+            if (!(m.extinction >= 0 && m.extinction <= 1e30))
+                error_at(t, "extinction must be finite and not negative");
+        } else {
+            error_expected(t, "eccentricity, extinction or '}'");
+        }
+    }
+}
+
 PovMedia Parser::parse_media() {
     expect_sym("{");
     PovMedia m;
@@ -380,8 +413,7 @@ PovMedia Parser::parse_media() {
                    k == "jitter" || k == "aa_threshold" || k == "aa_level") {
             parse_float(); // Sheaf's steps are fixed (core/render/media.h)
         } else if (k == "scattering") {
-            unsupported(t, "media scattering (the medium only gives off and absorbs light)");
-            skip_block();
+            parse_scattering(m);
         } else {
             error_expected(t, "a media item (emission, absorption, density, samples ...)");
         }
@@ -389,6 +421,7 @@ PovMedia Parser::parse_media() {
     // POV-Ray's method 3 takes `samples` per interval and refines where they differ; fixed
     // steps need more: at least 32 along each crossing.
     m.samples = std::clamp(intervals * samples, 32, 1024);
+    m.light_samples = std::clamp(intervals * samples, 1, 1024);
     return m;
 }
 

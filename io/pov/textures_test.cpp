@@ -853,12 +853,35 @@ sphere { 0, 1 pigment { rgbf 1 } interior { media { emission 1 } } translate -x 
     EXPECT_TRUE(s.shape_objects[1].flags & kSolid);
 }
 
-TEST(PovMedia, ScatteringAndDensityFilesAreWarned) {
-    const PovResult r = load_text("sphere { 0, 1 hollow interior { media { scattering { 1, 0.1 } "
-                                  "density { density_file df3 \"x.df3\" interpolate 1 } } } }");
-    ASSERT_EQ(r.warnings.size(), 2u);
-    EXPECT_NE(r.warnings[0].find("media scattering"), std::string::npos);
-    EXPECT_NE(r.warnings[1].find("density_file"), std::string::npos);
+TEST(PovMedia, ScatteringIsReadAndDensityFilesAreWarned) {
+    const PovResult r = load_text(
+        "light_source { 0, 1 media_interaction off media_attenuation on }\n"
+        "sphere { 0, 1 hollow interior { media { scattering { 1, 0.1 } "
+        "density { density_file df3 \"x.df3\" interpolate 1 } } "
+        "media { scattering { 5, <0.1, 0.2, 0.3> eccentricity -0.5 extinction 0.25 } } } }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("density_file"), std::string::npos);
+    ASSERT_EQ(r.scene.media.size(), 2u);
+    EXPECT_EQ(r.scene.media[0].scatter_type, ScatterType::Isotropic);
+    EXPECT_FLOAT_EQ(r.scene.media[0].scattering.y, 0.1f);
+    EXPECT_FLOAT_EQ(r.scene.media[0].extinction, 1.0f);
+    EXPECT_EQ(r.scene.media[1].scatter_type, ScatterType::HenyeyGreenstein);
+    EXPECT_FLOAT_EQ(r.scene.media[1].scattering.z, 0.3f);
+    EXPECT_FLOAT_EQ(r.scene.media[1].eccentricity, -0.5f);
+    EXPECT_FLOAT_EQ(r.scene.media[1].extinction, 0.25f);
+    ASSERT_EQ(r.scene.lights.size(), 1u);
+    EXPECT_FALSE(r.scene.lights[0].media_interaction);
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { scattering { 6, 1 } } } }"),
+              "scene.pov:1:47: error: a scattering type must be 1 (isotropic), 2 (Mie hazy), 3 "
+              "(Mie murky), 4 (Rayleigh) or 5 (Henyey-Greenstein)");
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { scattering { 1, -1 } } } }"),
+              "scene.pov:1:50: error: a medium's scattering must be finite and not negative");
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { scattering { 5, 1 eccentricity 1 } } } }"),
+              "scene.pov:1:52: error: eccentricity must lie strictly between -1 and 1");
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { scattering { 1, 1 extinction -1 } } } }"),
+              "scene.pov:1:52: error: extinction must be finite and not negative");
+    EXPECT_EQ(error_of("sphere { 0, 1 interior { media { scattering { 1, 1 glow } } } }"),
+              "scene.pov:1:52: error: found 'glow', expected eccentricity, extinction or '}'");
     const PovResult m = load_text("mesh { triangle { 0, x, y } hollow interior { media { "
                                   "emission 1 } } }");
     ASSERT_EQ(m.warnings.size(), 1u);

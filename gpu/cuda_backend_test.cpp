@@ -91,9 +91,10 @@ TEST(Cuda, PipelineTestScenesMatchTheCpu) {
         {{"hierarchy.depth", "1"}, {"hierarchy.arity", "64"}, {"cull.distance", "false"}},
     };
     const std::vector<std::pair<std::string, Scene>> scenes = {
-        {"glass", test::glass_mirror_scene()}, {"lights", test::lights_scene(false)},
-        {"ortho", test::lights_scene(true)},   {"csg", test::csg_scene()},
-        {"procedural", test::procedural_scene()}};
+        {"glass", test::glass_mirror_scene()},    {"lights", test::lights_scene(false)},
+        {"ortho", test::lights_scene(true)},      {"csg", test::csg_scene()},
+        {"procedural", test::procedural_scene()}, {"media", test::media_scene()},
+        {"scattering", test::scattering_scene()}};
     for (const auto& [name, s] : scenes) {
         const PreparedScene scene = prepare_scene(s);
         for (const SettingList& kv : variants) expect_cuda_matches_cpu(scene, name, kv);

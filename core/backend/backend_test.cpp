@@ -111,6 +111,11 @@ TEST(Backend, DeepCsgStaysOnTheCpu) {
               kDeviceStackBase + kDeviceStackPerCsgLevel);
     EXPECT_EQ(device_stack_bytes(prepare_scene(test::julia_scene())),
               kDeviceStackBase + kDeviceStackPerCsgLevel);
+    // Scattering media run the media light kernel, whose chain is deeper.
+    Scene scattering = test::media_scene();
+    scattering.media[0].scattering = Vec3(0.1f);
+    EXPECT_EQ(device_stack_bytes(prepare_scene(scattering)),
+              kDeviceStackBase + kDeviceStackPerCsgLevel + kDeviceStackMediaLight);
 
     CudaBackendStatus device;
     device.usable = true;

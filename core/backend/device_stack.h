@@ -4,8 +4,12 @@
 // a level. Everything else is on the stack once: the deepest chain is the G-buffer kernel's
 // frame (4,704 bytes; the media's span lists are in the shading kernels' frames) + one
 // csg_spans level + the largest out-of-line leaf (a julia fractal's march, 280 + 2,416; a
-// lathe's 296 + 2,328): 14,576 bytes, so the base is 16 KiB. The pattern, pigment and normal
+// lathe's 296 + 2,328): 14,576 bytes (14,896 since the G-buffer kernel's frame grew to 5,024
+// with the media segment it writes), so the base is 16 KiB. The pattern, pigment and normal
 // code is called, not inlined (pigments nest at 128 bytes a level), far below that.
+// A scene whose media scatter also runs the media light kernel (core/render/media_light.h:
+// a media walk whose steps walk the media again towards each light): its frame is 6,944
+// bytes, so its chain is 16,816 bytes, and such scenes get 1 KiB more.
 // The device reserves the stack for every resident thread (about 270,000 on an H100), so it
 // is capped; a scene nested more deeply renders on the CPU (backend=auto) or is an error
 // (backend=cuda).
@@ -23,6 +27,7 @@ namespace sheaf {
 constexpr size_t kDeviceStackBase = size_t(16) << 10;
 constexpr size_t kDeviceStackPerCsgLevel = size_t(10) << 10;
 constexpr size_t kDeviceStackCap = size_t(96) << 10;
+constexpr size_t kDeviceStackMediaLight = size_t(1) << 10;
 
 /// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each
 /// node's height is computed once (roots may share subtrees).
@@ -65,7 +70,11 @@ inline int csg_nesting(const PreparedScene& s) {
 
 /// The stack the device code needs for `s`, in bytes (may exceed kDeviceStackCap).
 inline size_t device_stack_bytes(const PreparedScene& s) {
-    return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel;
+    bool scatters = false;
+    for (const Medium& md : s.media)
+        scatters = scatters || md.scattering.x > 0 || md.scattering.y > 0 || md.scattering.z > 0;
+    return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel +
+           (scatters ? kDeviceStackMediaLight : 0);
 }
 
 } // namespace sheaf

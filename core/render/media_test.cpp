@@ -206,21 +206,7 @@ TEST(Media, ScatteredLightIsTheScatteringTimesTheChordAndShadowsCutIt) {
 }
 
 TEST(Media, ScatteringIsTheSameOnEveryAccelAndTheWavefront) {
-    // Six lights (more than a step's share of four, two of them shadowless), a slab's shadow,
-    // a mirror floor seen through the medium (reflection rays' segments), extinction.
-    Scene s = scattering_sphere(1, true, false);
-    s.media[0].scatter_type = ScatterType::HenyeyGreenstein;
-    s.media[0].eccentricity = 0.4f;
-    for (int i = 0; i < 5; ++i) {
-        Light l{Vec3(float(i) - 2.0f, 3.0f, 1.0f), Vec3(0.3f, 0.2f, 0.1f * float(i))};
-        l.shadowless = i % 3 == 1;
-        s.add_light(l);
-    }
-    Material mirror;
-    mirror.mirror = 0.6f;
-    s.add_shape("floor", Shape{ShapeKind::Box}, s.add_material(mirror),
-                Affine::translate(Vec3(0, -1.5f, 0)) * Affine::scale(Vec3(4, 0.1f, 4)));
-    s.camera.position = Vec3(0, 1, 5);
+    const Scene s = test::scattering_scene();
     const PreparedScene scene = prepare_scene(s);
     const Frame crsh = render(scene, {}, 40, 30);
     Scene clear = s; // the media's own shadow rays: 32 steps a crossing, 4 lights a step

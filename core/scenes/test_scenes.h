@@ -300,6 +300,37 @@ inline Scene media_scene(bool inside = false) {
     return s;
 }
 
+/// Scattering media: a unit sphere of Henyey-Greenstein medium with extinction under a parallel
+/// light, an opaque slab shading half of it, five more lights (more than a step's share of
+/// four; two shadowless) and a mirror floor seen through it (reflection rays' segments).
+inline Scene scattering_scene() {
+    Scene s;
+    Medium mist;
+    mist.scattering = Vec3(0.2f, 0.1f, 0.05f);
+    mist.scatter_type = ScatterType::HenyeyGreenstein;
+    mist.eccentricity = 0.4f;
+    s.add_shape("container", Shape{ShapeKind::Sphere}, add_media_material(s, {mist}));
+    Light sun;
+    sun.type = LightType::Parallel;
+    sun.direction = Vec3(0, -1, 0);
+    s.add_light(sun);
+    s.add_shape("slab", Shape{ShapeKind::Box}, s.add_material(Material{}),
+                Affine::translate(Vec3(-2.0f, 2.0f, 0)) * Affine::scale(Vec3(2.0f, 0.1f, 2.0f)));
+    for (int i = 0; i < 5; ++i) {
+        Light l{Vec3(float(i) - 2.0f, 3.0f, 1.0f), Vec3(0.3f, 0.2f, 0.1f * float(i))};
+        l.shadowless = i % 3 == 1;
+        s.add_light(l);
+    }
+    Material mirror;
+    mirror.mirror = 0.6f;
+    s.add_shape("floor", Shape{ShapeKind::Box}, s.add_material(mirror),
+                Affine::translate(Vec3(0, -1.5f, 0)) * Affine::scale(Vec3(4, 0.1f, 4)));
+    s.camera.position = Vec3(0, 1, 5);
+    s.camera.look_at = Vec3(0, 0, 0);
+    s.camera.fov_y_degrees = 30;
+    return s;
+}
+
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
 /// normal pattern with a slope map, normal maps (a list and an average), an inside material,
 /// variable, Fresnel and metallic reflection, conserve_energy, a texture map by slope and

@@ -19,7 +19,10 @@
 namespace sheaf {
 
 struct RayGenParams {
-    float epsilon = 1e-4f; // offset from surfaces, in scene units
+    float epsilon = 1e-4f; // offset from surfaces of the rays that leave them, in scene units
+    // Where shadow rays end above surfaces: they start at the lights, so the rounding of their
+    // end grows with the lights' distance too.
+    float shadow_epsilon = 1e-4f;
     float far = 1e4f;      // beyond the scene: where parallel lights' shadow rays start
     int ao_samples = 0;
     float ao_distance = 1.0f;
@@ -148,7 +151,7 @@ SHEAF_HD_INLINE void shadow_ray_write(const SceneView& scene, const SurfaceHit* 
     const SurfaceHit& h = hits[hit];
     const Light& l = scene.lights[li];
     // The ray starts at the light and ends just above the surface.
-    const Vec3 target = h.position + h.geo_normal * p.epsilon;
+    const Vec3 target = h.position + h.geo_normal * p.shadow_epsilon;
     const LightSample ls = sample_light(l, target, p.far);
     Ray r;
     r.origin = ls.origin;

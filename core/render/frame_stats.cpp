@@ -34,9 +34,11 @@ float geometry_extent(const PreparedScene& scene) {
 
 RayGenParams frame_ray_params(const PreparedScene& scene, const RenderSettings& s) {
     RayGenParams p;
-    // Hits lie on the objects and rays start there or at the camera, so their rounding grows
-    // with those; a light far away must not push rays past surfaces 0.001 apart.
+    // Rays that leave surfaces start on the objects, so their rounding grows with the objects
+    // and the camera: a light far away must not push them past surfaces 0.001 apart. Shadow
+    // rays start at the lights, so their end keeps the offset of the whole scene.
     p.epsilon = 1e-5f * geometry_extent(scene);
+    p.shadow_epsilon = 1e-5f * scene_extent(scene);
     p.far = 4.0f * scene_extent(scene);
     p.ao_samples = s.ao_samples;
     p.ao_distance = s.ao_distance;

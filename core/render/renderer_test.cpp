@@ -440,5 +440,30 @@ TEST(Renderer, CudaBackendIsAClearErrorInThisBuild) {
     }
 }
 
+// Rays leaving a surface are offset by the objects' extent, not the lights': a light 5,000
+// units away must not make rays through a clear box skip the red floor 0.001 below its top
+// (POV-Ray's media3.pov went black so).
+TEST(Renderer, AFarLightDoesNotPushRaysPastCloseSurfaces) {
+    Scene s;
+    Material clear;
+    clear.ambient = clear.diffuse = 0, clear.transmission = 1, clear.ior = 1;
+    clear.fresnel_split = false;
+    s.add_shape("clear", Shape{ShapeKind::Box}, s.add_material(clear),
+                Affine::translate(Vec3(0, -0.4995f, 0)) * Affine::scale(Vec3(2, 0.5005f, 2)));
+    Material red;
+    red.color = Vec3(1, 0, 0);
+    s.add_shape("floor", Shape{ShapeKind::Box}, s.add_material(red),
+                Affine::translate(Vec3(0, -0.5f, 0)) * Affine::scale(Vec3(1, 0.5f, 1)));
+    s.add_light(Light{Vec3(3000, 3000, -3000), Vec3(1.0f)});
+    s.camera.position = Vec3(0, 3, -3);
+    s.camera.look_at = Vec3(0, 0, 0);
+    Settings st;
+    st.set("width", "16"), st.set("height", "16");
+    const Frame f = render_frame(prepare_scene(s), RenderSettings::resolve(st, {}));
+    const float* centre = &f.rgba[4 * (8 * 16 + 8)];
+    EXPECT_GT(centre[0], 0.3f);
+    EXPECT_LT(centre[1], 0.01f);
+}
+
 } // namespace
 } // namespace sheaf

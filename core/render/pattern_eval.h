@@ -168,8 +168,19 @@ SHEAF_HD_INLINE float shape_value(const Pattern& pt, float raw) {
 
 } // namespace pattern_detail
 
-/// Turbulence displaces by its amount times this and the fractal vector noise.
-constexpr float kTurbulenceScale = 4.0f;
+/// Classic turbulence displaces a pattern's point by its amount times the fractal vector noise
+/// (POV-Ray's DTurbulence, whose length vturbulence gives), as POV-Ray displaces it, and
+/// warp { turbulence } likewise. POV-Ray's marble, wood, agate and spirals instead bend their
+/// bands by the scalar turbulence inside the pattern; Sheaf displaces their point by this
+/// factor more, which bends them about as far.
+constexpr float kBandTurbulenceScale = 4.0f;
+
+SHEAF_HD_INLINE float turbulence_scale(PatternKind k) {
+    return k == PatternKind::Marble || k == PatternKind::Wood || k == PatternKind::Agate ||
+                   k == PatternKind::Spiral1 || k == PatternKind::Spiral2
+               ? kBandTurbulenceScale
+               : 1.0f;
+}
 
 namespace pattern_detail {
 
@@ -199,7 +210,7 @@ SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
     using namespace pattern_detail;
     switch (w.kind) {
     case WarpKind::Turbulence:
-        return p + w.a * vector_turbulence(p, w.octaves, w.f[0], w.f[1]) * kTurbulenceScale;
+        return p + w.a * vector_turbulence(p, w.octaves, w.f[0], w.f[1]);
     case WarpKind::Repeat: {
         const float width = w.f[0];
         const float block = floorf(p[w.axis] / width);
@@ -286,10 +297,9 @@ SHEAF_HD_NOINLINE Vec3 pattern_point(const Pattern& pt, Vec3 world, const Warp* 
         const Warp& w = warps[pt.warp_first + i];
         p = w.to_inner.point(warp_point(w, p));
     }
-    // The factor makes `turbulence 0.1` move points about as far as it does in POV-Ray.
     if (pt.has_turbulence)
         p += pt.turbulence * vector_turbulence(p, pt.octaves, pt.omega, pt.lambda) *
-             kTurbulenceScale;
+             turbulence_scale(pt.kind);
     return p;
 }
 

@@ -17,6 +17,37 @@ Pattern make(PatternKind k) {
     return p;
 }
 
+// Classic turbulence displaces by the amount times the fractal vector noise, as POV-Ray's
+// DTurbulence does (vturbulence's length); the band patterns POV-Ray bends inside the pattern
+// (marble, wood, agate, the spirals) by kBandTurbulenceScale times that; warp { turbulence }
+// like the first.
+TEST(Patterns, TurbulenceDisplacesAsPovRayDoes) {
+    const Vec3 world(0.3f, -1.7f, 2.2f);
+    const Vec3 noise = vector_turbulence(world, 6, 0.5f, 2.0f);
+    ASSERT_GT(length(noise), 0.05f);
+    Pattern pt;
+    pt.has_turbulence = true;
+    pt.turbulence = Vec3(0.3f, 0.2f, 0.1f);
+    for (PatternKind k : {PatternKind::Gradient, PatternKind::Bozo, PatternKind::Checker}) {
+        pt.kind = k;
+        const Vec3 d = pattern_point(pt, world, nullptr) - world;
+        EXPECT_NEAR(d.x, 0.3f * noise.x, 1e-5f);
+        EXPECT_NEAR(d.z, 0.1f * noise.z, 1e-5f);
+    }
+    for (PatternKind k : {PatternKind::Marble, PatternKind::Wood, PatternKind::Agate,
+                          PatternKind::Spiral1, PatternKind::Spiral2}) {
+        pt.kind = k;
+        const Vec3 d = pattern_point(pt, world, nullptr) - world;
+        EXPECT_NEAR(d.y, kBandTurbulenceScale * 0.2f * noise.y, 1e-5f);
+    }
+    Warp w;
+    w.kind = WarpKind::Turbulence;
+    w.a = Vec3(0.5f);
+    w.f[0] = 0.5f, w.f[1] = 2.0f;
+    const Vec3 d = warp_point(w, world) - world;
+    EXPECT_NEAR(d.x, 0.5f * vector_turbulence(world, w.octaves, 0.5f, 2.0f).x, 1e-5f);
+}
+
 TEST(Patterns, CheckerAlternatesInEveryAxis) {
     const Pattern p = make(PatternKind::Checker);
     EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 0.5f, 0.5f)), 0);

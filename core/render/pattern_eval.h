@@ -176,10 +176,7 @@ SHEAF_HD_INLINE float shape_value(const Pattern& pt, float raw) {
 constexpr float kBandTurbulenceScale = 4.0f;
 
 SHEAF_HD_INLINE float turbulence_scale(PatternKind k) {
-    return k == PatternKind::Marble || k == PatternKind::Wood || k == PatternKind::Agate ||
-                   k == PatternKind::Spiral1 || k == PatternKind::Spiral2
-               ? kBandTurbulenceScale
-               : 1.0f;
+    return bends_by_own_turbulence(k) ? kBandTurbulenceScale : 1.0f;
 }
 
 namespace pattern_detail {

@@ -51,6 +51,14 @@ enum class PatternKind : uint8_t {
 };
 
 /// Discrete patterns choose an entry; continuous ones give a value.
+/// The band patterns POV-Ray bends by its scalar turbulence inside the pattern (marble, wood,
+/// agate, the spirals): their classic turbulence is theirs alone, where the other patterns'
+/// moves the point their maps' entries are evaluated at too.
+SHEAF_HD_INLINE bool bends_by_own_turbulence(PatternKind k) {
+    return k == PatternKind::Marble || k == PatternKind::Wood || k == PatternKind::Agate ||
+           k == PatternKind::Spiral1 || k == PatternKind::Spiral2;
+}
+
 SHEAF_HD_INLINE bool pattern_is_list(PatternKind k) {
     return k == PatternKind::Checker || k == PatternKind::Hexagon || k == PatternKind::Brick ||
            k == PatternKind::Square || k == PatternKind::Triangular;

@@ -261,16 +261,24 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
     out.average = pg.average;
     out.pattern = pattern(pg.pattern, eff);
     // Entries before the pigment itself: a pigment names only earlier pigments. They are
-    // evaluated through this pigment's warps, as POV-Ray does.
+    // evaluated through this pigment's warps and its classic turbulence (the last stage of
+    // POV-Ray's warp list, which marble, wood, agate and the spirals keep to themselves), as
+    // POV-Ray does.
     std::vector<PigmentEntry> entries;
     {
-        const auto first = scene_.warps.begin() + out.pattern.warp_first;
+        const Pattern& pp = out.pattern;
+        const auto first = scene_.warps.begin() + pp.warp_first;
+        std::vector<Warp> warps(first, first + pp.warp_count);
+        if (pp.has_turbulence && !bends_by_own_turbulence(pp.kind)) {
+            Warp turb;
+            turb.kind = WarpKind::Turbulence;
+            turb.a = pp.turbulence;
+            turb.octaves = pp.octaves;
+            turb.f[0] = pp.omega, turb.f[1] = pp.lambda;
+            warps.push_back(turb);
+        }
         const ScopedValue<WarpChain> chain(
-            chain_, out.pattern.warp_count == 0
-                        ? chain_
-                        : WarpChain{out.pattern.to_pattern,
-                                    std::vector<Warp>(first, first + out.pattern.warp_count), eff,
-                                    out.pattern.uv});
+            chain_, warps.empty() ? chain_ : WarpChain{pp.to_pattern, warps, eff, pp.uv});
         entries.reserve(pg.entries.size());
         for (const PovMapEntry& e : pg.entries) entries.push_back(entry(e, eff));
     }

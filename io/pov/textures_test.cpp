@@ -517,6 +517,33 @@ TEST(PovTextures, UnsupportedPatternsWarn) {
     EXPECT_FLOAT_EQ(shape_material(r, 0).color.x, 0.5f); // the map's average
 }
 
+// POV-Ray evaluates a pigment map's entries at the point its pattern's warps and classic
+// turbulence moved; marble, wood, agate and the spirals keep their turbulence to themselves.
+TEST(PovTextures, MapEntriesInheritClassicTurbulence) {
+    for (const char* kind : {"bozo", "marble"}) {
+        const PovResult r = load_text(std::string("plane { y, 0 pigment { ") + kind +
+                                      " turbulence 0.5 octaves 3 pigment_map { [0 checker rgb 0 "
+                                      "rgb 1] [1 rgb 1] } } }\n");
+        EXPECT_TRUE(r.warnings.empty());
+        const Pigment& outer = r.scene.pigments[size_t(shape_material(r).pigment)];
+        ASSERT_EQ(outer.count, 2u);
+        const Pattern& entry =
+            r.scene.pigments[size_t(r.scene.pigment_entries[outer.first].pigment)].pattern;
+        const Vec3 world(0.4f, 0.1f, -0.3f);
+        const Vec3 moved = pattern_point(outer.pattern, world, r.scene.warps.data());
+        const Vec3 at = pattern_point(entry, world, r.scene.warps.data());
+        if (std::string(kind) == "bozo") {
+            ASSERT_EQ(entry.warp_count, 1u);
+            EXPECT_EQ(r.scene.warps[entry.warp_first].kind, WarpKind::Turbulence);
+            EXPECT_EQ(r.scene.warps[entry.warp_first].octaves, 3);
+            EXPECT_NEAR(length(at - moved), 0.0f, 1e-5f); // the checker sees the bozo's point
+        } else {
+            EXPECT_EQ(entry.warp_count, 0u);
+            EXPECT_GT(length(at - moved), 1e-3f);
+        }
+    }
+}
+
 TEST(PovTextures, WarpsChainWithTheTransformsAroundThem) {
     // POV-Ray's order: the translate after the warp is undone first, then the repeat folds x,
     // then the scale before it is undone.

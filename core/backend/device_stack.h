@@ -7,9 +7,10 @@
 // lathe's 296 + 2,328): 14,576 bytes (14,896 since the G-buffer kernel's frame grew to 5,024
 // with the media segment it writes), so the base is 16 KiB. The pattern, pigment and normal
 // code is called, not inlined (pigments nest at 128 bytes a level), far below that.
-// A scene whose media scatter also runs the media light kernel (core/render/media_light.h:
-// a media walk whose steps walk the media again towards each light): its frame is 6,944
-// bytes, so its chain is 16,816 bytes, and such scenes get 1 KiB more.
+// A scene whose media scatter the light of a light that casts shadows also runs the media
+// light kernel (core/render/media_light.h: a media walk whose steps walk the media again
+// towards each light): its frame is 6,944 bytes, so its chain is 16,816 bytes, and such
+// scenes (PreparedScene::media_scatter_light) get 1 KiB more.
 // The device reserves the stack for every resident thread (about 270,000 on an H100), so it
 // is capped; a scene nested more deeply renders on the CPU (backend=auto) or is an error
 // (backend=cuda).
@@ -70,11 +71,8 @@ inline int csg_nesting(const PreparedScene& s) {
 
 /// The stack the device code needs for `s`, in bytes (may exceed kDeviceStackCap).
 inline size_t device_stack_bytes(const PreparedScene& s) {
-    bool scatters = false;
-    for (const Medium& md : s.media)
-        scatters = scatters || md.scattering.x > 0 || md.scattering.y > 0 || md.scattering.z > 0;
     return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel +
-           (scatters ? kDeviceStackMediaLight : 0);
+           (s.media_scatter_light() ? kDeviceStackMediaLight : 0);
 }
 
 } // namespace sheaf

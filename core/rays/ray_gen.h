@@ -90,6 +90,21 @@ SHEAF_HD_INLINE Vec3 cosine_direction(Vec3 n, Vec3 t, Vec3 b, uint32_t index, ui
 
 } // namespace raygen_detail
 
+/// A point that takes `per` of `lights` lights takes every stride-th one, stride =
+/// ceil(lights / per), so each light has chance 1 / stride and carries stride times its light.
+SHEAF_HD_INLINE uint32_t light_share_stride(uint32_t lights, uint32_t per) {
+    return lights <= per ? 1u : (lights + per - 1) / per;
+}
+
+/// Which of the stride shares a point takes: a hash of its sample and tag (its path, or its
+/// step along a ray), so neighbouring points take different lights.
+SHEAF_HD_INLINE uint32_t light_share_offset(uint32_t pixel, uint32_t tag, uint32_t stride) {
+    if (stride <= 1) return 0;
+    uint32_t x = pixel * 0x9E3779B9u ^ (tag * 0x85EBCA6Bu);
+    x ^= x >> 16, x *= 0x7FEB352Du, x ^= x >> 15, x *= 0x846CA68Bu, x ^= x >> 16;
+    return x % stride;
+}
+
 /// Which (hit, light) pairs a wave's shadow rays come from. The wave's first `camera` hits
 /// (camera, reflection and refraction paths) take every light, light-major: element k <
 /// camera * lights is light k / camera at hit k % camera, so rays that leave the same light
@@ -107,8 +122,7 @@ struct ShadowLayout {
         return camera * lights + (hits - camera) * raygen_detail::kGatherLights;
     }
     SHEAF_HD uint32_t stride() const {
-        const uint32_t k = raygen_detail::kGatherLights;
-        return lights <= k ? 1u : (lights + k - 1) / k;
+        return light_share_stride(lights, raygen_detail::kGatherLights);
     }
     /// Element e's hit and light, and the factor on its light; false when it has none.
     SHEAF_HD bool pair(const SurfaceHit* h, size_t e, size_t& hit, uint32_t& light,
@@ -121,9 +135,7 @@ struct ShadowLayout {
         const size_t g = e - lit;
         hit = camera + g / raygen_detail::kGatherLights;
         const uint32_t j = uint32_t(g % raygen_detail::kGatherLights), s = stride();
-        uint32_t x = h[hit].pixel * 0x9E3779B9u ^ (h[hit].gather * 0x85EBCA6Bu);
-        x ^= x >> 16, x *= 0x7FEB352Du, x ^= x >> 15, x *= 0x846CA68Bu, x ^= x >> 16;
-        light = x % s + j * s;
+        light = light_share_offset(h[hit].pixel, h[hit].gather, s) + j * s;
         scale = float(s);
         return light < lights;
     }

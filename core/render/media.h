@@ -62,6 +62,20 @@ SHEAF_HD_INLINE Vec3 shadowless_scatter(const SceneView& scene, const Material& 
     return c;
 }
 
+/// The product of medium md's densities' colours at p (1 without densities).
+SHEAF_HD_INLINE Vec3 medium_density(const SceneView& scene, const Medium& md, Vec3 p) {
+    Vec3 density(1.0f);
+    for (uint32_t j = md.density_first; j < md.density_first + md.density_count; ++j)
+        density = density * evaluate_pigment(scene, scene.medium_densities[j], p, 0, 0).rgb;
+    return density;
+}
+
+/// x kept finite: NaN as 0, clamped to [lo, 1e30]. Huge emissions times huge densities
+/// overflow, and a step that absorbs everything must add nothing rather than 0 x infinity.
+SHEAF_HD_INLINE float media_finite(float x, float lo) {
+    return x == x ? hdm::fminf(hdm::fmaxf(x, lo), 1e30f) : 0.0f;
+}
+
 /// Visits nothing: media walks that only integrate.
 struct NoScatterVisit {
     SHEAF_HD void operator()(const Material&, Vec3, Vec3) const {}
@@ -91,22 +105,15 @@ SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Ve
         Vec3 emission(0.0f), absorption(0.0f), scattering(0.0f);
         for (uint32_t k = m.media_first; k < m.media_first + m.media_count; ++k) {
             const Medium& md = scene.media[k];
-            Vec3 density(1.0f);
-            for (uint32_t j = md.density_first; j < md.density_first + md.density_count; ++j)
-                density = density * evaluate_pigment(scene, scene.medium_densities[j], p, 0, 0).rgb;
+            const Vec3 density = medium_density(scene, md, p);
             emission += md.emission * density;
-            absorption += (md.absorption + md.scattering * md.extinction) * density;
+            absorption += md.attenuation() * density;
             scattering += md.scattering * density;
         }
-        // Huge emissions times huge densities overflow: keep both finite (NaN: none), so that
-        // a step that absorbs everything adds nothing rather than 0 x infinity.
         for (int c = 0; c < 3; ++c) {
-            const float e = emission[c] == emission[c] ? emission[c] : 0.0f;
-            const float a = absorption[c] == absorption[c] ? absorption[c] : 0.0f;
-            const float s = scattering[c] == scattering[c] ? scattering[c] : 0.0f;
-            emission[c] = hdm::fminf(hdm::fmaxf(e, -1e30f), 1e30f);
-            absorption[c] = hdm::fminf(hdm::fmaxf(a, 0.0f), 1e30f);
-            scattering[c] = hdm::fminf(hdm::fmaxf(s, 0.0f), 1e30f);
+            emission[c] = media_finite(emission[c], -1e30f);
+            absorption[c] = media_finite(absorption[c], 0.0f);
+            scattering[c] = media_finite(scattering[c], 0.0f);
         }
         // Half the step's extinction lies between its middle and its near end.
         const Vec3 half(hdm::expf(-0.5f * absorption.x * step),
@@ -201,16 +208,12 @@ SHEAF_HD_INLINE Vec3 media_transmittance(const SceneView& scene, Vec3 from, Vec3
         const float step = (t1 - t0) / float(steps);
         for (uint32_t i = 0; i < steps; ++i) {
             const Vec3 p = from + dir * (t0 + (float(i) + 0.5f) * step);
+            Vec3 a(0.0f);
             for (uint32_t k = m.media_first; k < m.media_first + m.media_count; ++k) {
                 const Medium& md = scene.media[k];
-                Vec3 density(1.0f);
-                for (uint32_t j = md.density_first; j < md.density_first + md.density_count; ++j)
-                    density =
-                        density * evaluate_pigment(scene, scene.medium_densities[j], p, 0, 0).rgb;
-                const Vec3 e = (md.absorption + md.scattering * md.extinction) * density * step;
-                for (int c = 0; c < 3; ++c)
-                    optical[c] += e[c] == e[c] ? hdm::fminf(hdm::fmaxf(e[c], 0.0f), 1e30f) : 0.0f;
+                a += md.attenuation() * medium_density(scene, md, p);
             }
+            for (int c = 0; c < 3; ++c) optical[c] += media_finite(a[c], 0.0f) * step;
         }
     });
     return Vec3(hdm::expf(-optical.x), hdm::expf(-optical.y), hdm::expf(-optical.z));

@@ -51,20 +51,13 @@ SHEAF_HD_INLINE void media_light_rays(const SceneView& scene, const MediaSegment
                                       const RayGenParams& p, bool fade, const Emit& emit) {
     if (!(max_component(s.weight) > 0) || scene.light_count == 0) return;
     const uint32_t lights = scene.light_count;
-    const uint32_t stride =
-        lights <= kMediaLights ? 1u : (lights + kMediaLights - 1) / kMediaLights;
+    const uint32_t stride = light_share_stride(lights, kMediaLights);
     const uint32_t per = lights < kMediaLights ? lights : kMediaLights;
     uint32_t step = 0;
     Vec3 keep, add;
     media_along(
         scene, s.origin, s.dir, s.t_end, keep, add, [&](const Material& m, Vec3 at, Vec3 w) {
-            uint32_t o = 0;
-            if (stride > 1) {
-                uint32_t x = s.pixel * 0x9E3779B9u ^ (step * 0x85EBCA6Bu);
-                x ^= x >> 16, x *= 0x7FEB352Du, x ^= x >> 15, x *= 0x846CA68Bu, x ^= x >> 16;
-                o = x % stride;
-            }
-            ++step;
+            const uint32_t o = light_share_offset(s.pixel, step++, stride);
             for (uint32_t j = 0; j < per; ++j) {
                 const uint32_t li = o + j * stride;
                 if (li >= lights) break;
@@ -106,15 +99,6 @@ SHEAF_HD_INLINE void media_light_fill(const SceneView& scene, const MediaSegment
         out.light[slot] = li;
         ++slot;
     });
-}
-
-/// Whether any ray of the scene's frames sends media shadow rays: a container's medium
-/// scatters and a light that casts shadows interacts with media.
-inline bool media_scatter_light(const PreparedScene& scene) {
-    bool scatters = false, lit = false;
-    for (const Medium& md : scene.media) scatters = scatters || max_component(md.scattering) > 0;
-    for (const Light& l : scene.lights) lit = lit || (!l.shadowless && l.media_interaction);
-    return scatters && lit && !scene.media_containers.empty();
 }
 
 /// How many segments go into one batch of media shadow rays: about 4M rays at the most steps

@@ -39,7 +39,7 @@ class FramePipeline {
         params_ = frame_ray_params(scene_, s_);
         units_ = cull_units_for(scene_, s_);
 
-        scatter_ = media_scatter_light(scene_);
+        scatter_ = scene_.media_scatter_light();
         std::vector<SurfaceHit> hits = primary();
         scatter_light(segments_);
         release_segments();

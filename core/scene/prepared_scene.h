@@ -122,6 +122,14 @@ struct PreparedScene {
     bool prim_flag(uint32_t prim, uint8_t flag) const {
         return prim < prim_flags.size() && (prim_flags[prim] & flag) != 0;
     }
+    /// Whether frames send media shadow rays (core/render/media_light.h): a container's medium
+    /// scatters and a light that casts shadows interacts with media.
+    bool media_scatter_light() const {
+        bool scatters = false, lit = false;
+        for (const Medium& md : media) scatters = scatters || md.scatters();
+        for (const Light& l : lights) lit = lit || (!l.shadowless && l.media_interaction);
+        return scatters && lit && !media_containers.empty();
+    }
 };
 
 /// Validates and flattens. Throws SceneError.

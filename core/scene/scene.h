@@ -72,11 +72,6 @@ struct Material {
     Vec3 irid_wavelength{0.25f, 0.18f, 0.14f};
 };
 
-/// A participating medium inside an object (POV-Ray's interior media): the light it gives off
-/// (emission) and takes away (absorption) per unit length, each times the product of its
-/// densities' colours at the point (Scene::medium_densities: pigment indices), integrated
-/// along the part of a ray inside the object at `samples` evenly spaced points
-/// (core/render/media.h).
 /// How a medium scatters light towards the viewer, POV-Ray's `scattering { type, … }`: the
 /// phase function of the angle between the way to the light and the way the ray goes.
 enum class ScatterType : uint8_t {
@@ -87,6 +82,11 @@ enum class ScatterType : uint8_t {
     HenyeyGreenstein = 5, // (1 - g^2) / (1 + g^2 - 2 g cos)^1.5, g the eccentricity
 };
 
+/// A participating medium inside an object (POV-Ray's interior media): the light it gives off
+/// (emission) and takes away (absorption) per unit length, each times the product of its
+/// densities' colours at the point (Scene::medium_densities: pigment indices), integrated
+/// along the part of a ray inside the object at `samples` evenly spaced points
+/// (core/render/media.h).
 struct Medium {
     Vec3 emission{0.0f, 0.0f, 0.0f}, absorption{0.0f, 0.0f, 0.0f};
     /// Light scattered towards the ray per unit length; it also takes `extinction` times
@@ -98,6 +98,12 @@ struct Medium {
     uint32_t density_first = 0, density_count = 0;
     uint32_t samples = 32;      // steps along each part of a ray inside
     uint32_t light_samples = 8; // steps along a shadow ray's part inside (with densities)
+
+    SHEAF_HD bool scatters() const {
+        return scattering.x > 0 || scattering.y > 0 || scattering.z > 0;
+    }
+    /// What the medium takes away per unit length at density 1: absorption and extinction.
+    SHEAF_HD Vec3 attenuation() const { return absorption + scattering * extinction; }
 };
 
 /// What an object takes part in: bits of Object::flags and ShapeObject::flags.

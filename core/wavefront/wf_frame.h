@@ -49,7 +49,7 @@ template <class Exec> class DeviceFrame {
         DeviceTracer<Exec> tracer(ex_, host_, scene_, *units, uploaded.cull, s_, st_, clock_);
         tracer_ = &tracer;
 
-        scatter_ = media_scatter_light(host_);
+        scatter_ = host_.media_scatter_light();
         DeviceHits<Exec> hits = primary();
         scatter_light(segments_, samples);
         segments_ = DeviceBuffer<MediaSegment, Exec>();

@@ -12,6 +12,7 @@
 #include "core/math/hd_math.h"
 #include "core/render/noise.h"
 #include "core/render/pattern_eval.h"
+#include "core/scene/fn_internal.h"
 #include "core/scene/pattern.h"
 
 #include <cstdint>
@@ -80,37 +81,6 @@ enum class FnMath : uint8_t {
     Degrees,
     Radians,
 };
-
-/// POV-Ray's internal functions (functions.inc's internal(N)) that Sheaf evaluates; each takes
-/// x, y, z and then the listed parameters.
-enum class FnInternal : uint8_t {
-    Ph = 47,         // f_ph: the angle from the y axis
-    R = 57,          // f_r: the distance from the origin
-    RoundedBox = 60, // f_rounded_box(x, y, z, radius, half x, half y, half z)
-    Sphere = 61,     // f_sphere(x, y, z, radius)
-    Th = 69,         // f_th: the angle around the y axis, from z towards x
-    Torus = 70,      // f_torus(x, y, z, major, minor) around the y axis
-    Noise3d = 76,    // f_noise3d: noise in [0, 1] (Sheaf's, as the bozo pattern's)
-};
-
-/// The number of parameters after x, y, z; -1 when Sheaf does not evaluate internal(id).
-inline int fn_internal_extra(int id) {
-    switch (id) {
-    case 47:
-    case 57:
-    case 69:
-    case 76:
-        return 0;
-    case 61:
-        return 1;
-    case 70:
-        return 2;
-    case 60:
-        return 4;
-    default:
-        return -1;
-    }
-}
 
 struct FnInstr {
     FnOp op = FnOp::Const;
@@ -219,34 +189,6 @@ SHEAF_HD_INLINE double math(FnMath m, double a) {
 }
 
 } // namespace fn_detail
-
-/// Internal function `id` over x, y, z and its parameters p (fn_internal_extra(id) of them).
-SHEAF_HD_INLINE double fn_internal(int id, double x, double y, double z, const double* p) {
-    using fn_detail::sq;
-    switch (FnInternal(id)) {
-    case FnInternal::Ph:
-        return hdm::atan2(sqrt(x * x + z * z), y);
-    case FnInternal::R:
-        return sqrt(x * x + y * y + z * z);
-    case FnInternal::RoundedBox: {
-        const double r = p[0];
-        const double dx = fabs(x) - (p[1] - r), dy = fabs(y) - (p[2] - r),
-                     dz = fabs(z) - (p[3] - r);
-        const double ox = dx > 0 ? dx : 0, oy = dy > 0 ? dy : 0, oz = dz > 0 ? dz : 0;
-        const double inner = dx > dy ? (dx > dz ? dx : dz) : (dy > dz ? dy : dz);
-        return sqrt(ox * ox + oy * oy + oz * oz) + (inner < 0 ? inner : 0) - r;
-    }
-    case FnInternal::Sphere:
-        return sqrt(x * x + y * y + z * z) - p[0];
-    case FnInternal::Th:
-        return hdm::atan2(x, z);
-    case FnInternal::Torus:
-        return sqrt(sq(sqrt(x * x + z * z) - p[0]) + y * y) - p[1];
-    case FnInternal::Noise3d:
-        return noise01(Vec3(float(x), float(y), float(z)));
-    }
-    return 0;
-}
 
 /// Pattern `pt` (a function's: no warps, Scene::validate checks) as a function at (x, y, z): a
 /// continuous pattern's value in [0, 1], a list pattern's entry spread over [0, 1] (checker: 0 or

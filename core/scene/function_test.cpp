@@ -60,6 +60,57 @@ TEST(Function, ConditionsSelectAndMathFollowPovRay) {
             EXPECT_NEAR(m({a, b}), std::max(std::sin(a) + std::log10(b), std::pow(a, b)), 1e-14);
 }
 
+// The shapes and fractal noises of functions.inc that terrains, water and the internal
+// function demo use: each against its definition at points where it is known.
+TEST(Function, InternalHelixSuperellipsoidAndFractalNoises) {
+    auto f = [](FnInternal id, double x, double y, double z, std::vector<double> p) {
+        EXPECT_EQ(int(p.size()), fn_internal_extra(int(id)));
+        return fn_internal(int(id), x, y, z, p.data());
+    };
+    // Superellipsoid 1, 1 is the unit sphere: 1 - r.
+    EXPECT_NEAR(f(FnInternal::Superellipsoid, 0, 0, 0, {1, 1}), 1, 1e-12);
+    EXPECT_NEAR(f(FnInternal::Superellipsoid, 0.6, 0, 0.8, {1, 1}), 0, 1e-12);
+    EXPECT_NEAR(f(FnInternal::Superellipsoid, 0, 2, 0, {1, 1}), -1, 1e-12);
+    // Flatter exponents square it off: a box corner's point is inside.
+    EXPECT_GT(f(FnInternal::Superellipsoid, 0.7, 0.7, 0.7, {0.1, 0.1}), 0);
+    EXPECT_LT(f(FnInternal::Superellipsoid, 0.7, 0.7, 0.7, {1, 1}), 0);
+    // One helix of period 1, minor 0.2, major 1, round section: its strand's middle at angle
+    // pi (x = -1, y = 0) is minor inside; half a turn up along y the strand has moved away.
+    const std::vector<double> helix = {1, 1, 0.2, 1, 1, 1, 0};
+    EXPECT_NEAR(f(FnInternal::Helix1, -1, 0, 0, helix), -0.2, 1e-9);
+    EXPECT_NEAR(f(FnInternal::Helix1, -1.1, 0, 0, helix), -0.1, 1e-9);
+    EXPECT_GT(f(FnInternal::Helix1, -1, 0.5 * 3.14159265358979, 0, helix), 0.5);
+    // A square section (0) turned 45 degrees is a diamond: 0.1 out along the axis is
+    // 0.1 sqrt(1/2) from its middle in the square's measure (the larger turned coordinate).
+    const std::vector<double> square = {1, 1, 0.2, 1, 1, 0, 45};
+    EXPECT_NEAR(f(FnInternal::Helix1, -1.1, 0, 0, square), -0.2 + 0.1 * std::sqrt(0.5), 1e-9);
+
+    // One octave of each fractal is its noise n, as its definition shapes it.
+    const double x = 0.3, y = 1.7, z = -2.2;
+    const double n = fn_internal(int(FnInternal::Noise3d), x, y, z, nullptr);
+    EXPECT_NEAR(f(FnInternal::NoiseGenerator, x, y, z, {2}), n, 0);
+    EXPECT_NEAR(f(FnInternal::RidgedMf, x, y, z, {0.5, 2, 1, 1, 2, 0}),
+                (1 - std::fabs(2 * n - 1)) * (1 - std::fabs(2 * n - 1)), 1e-6);
+    EXPECT_NEAR(f(FnInternal::HeteroMf, x, y, z, {0.5, 2, 1, 0.3, 1, 0}), 2 * n - 1 + 0.3, 1e-6);
+    EXPECT_NEAR(f(FnInternal::Ridge, x, y, z, {2, 1, 0.5, 0.2, 0.4, 0}),
+                (std::fabs(n - 0.4) / 0.6 - 0.2) / 0.8, 1e-6);
+    // More octaves add detail: a gain of 0 silences the ridged octaves after the first; the
+    // heterogeneous one adds weight^k times the signal per octave.
+    EXPECT_NEAR(f(FnInternal::RidgedMf, x, y, z, {0.5, 2, 6, 1, 0, 0}),
+                f(FnInternal::RidgedMf, x, y, z, {0.5, 2, 1, 1, 2, 0}), 1e-12);
+    double sum = 0;
+    for (double octaves : {1.0, 2.0, 3.5, 8.0}) {
+        const double v = f(FnInternal::RidgedMf, x, y, z, {0.5, 2.1, octaves, 1, 2, 0});
+        EXPECT_GE(v, sum - 1e-12) << octaves; // every octave adds a square, weighted >= 0
+        EXPECT_LE(v, 1 / (1 - std::pow(2.1, -0.5))) << octaves;
+        sum = v;
+    }
+    // A count of octaves no scene could mean ends, and stays finite.
+    EXPECT_TRUE(std::isfinite(f(FnInternal::RidgedMf, x, y, z, {0.5, 2, 1e12, 1, 2, 0})));
+    EXPECT_TRUE(std::isfinite(f(FnInternal::HeteroMf, x, y, z, {0.5, 2, 1e12, 0.3, 1e9, 0})));
+    EXPECT_TRUE(std::isfinite(f(FnInternal::Ridge, x, y, z, {2, 1e12, 0.5, 0.2, 0.4, 0})));
+}
+
 TEST(Function, InternalShapesAndPatterns) {
     const double r5[1] = {0.5};
     EXPECT_NEAR(fn_internal(int(FnInternal::Sphere), 0, 2, 0, r5), 1.5, 1e-12);

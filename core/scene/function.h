@@ -199,8 +199,14 @@ SHEAF_HD_INLINE double fn_pattern(const Pattern& pt, double x, double y, double 
     return pattern_value_at(pt, q);
 }
 
-/// Component `comp` (FnComponent) of function pigment `pg` at (x, y, z); gray is POV-Ray's
-/// 0.297 red + 0.589 green + 0.114 blue.
+/// Component `comp` (FnComponent) of colour c (red, green, blue, filter, transmit); gray is
+/// POV-Ray's 0.297 red + 0.589 green + 0.114 blue.
+SHEAF_HD_INLINE double fn_component(const float* c, int comp) {
+    if (comp >= 0 && comp < 5) return c[comp];
+    return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+}
+
+/// Component `comp` (FnComponent) of function pigment `pg` at (x, y, z).
 SHEAF_HD_INLINE double fn_pigment(const FnView& fv, const FnPigment& pg, int comp, double x,
                                   double y, double z) {
     float c[5];
@@ -218,8 +224,7 @@ SHEAF_HD_INLINE double fn_pigment(const FnView& fv, const FnPigment& pg, int com
                 c[k] = e[m.lo].color[k] * (1.0f - m.t) + e[m.hi].color[k] * m.t;
         }
     }
-    if (comp >= 0 && comp < 5) return c[comp];
-    return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+    return fn_component(c, comp);
 }
 
 /// Runs program `program` on its arguments (params of them). NaN stays NaN.

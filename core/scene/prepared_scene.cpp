@@ -151,6 +151,27 @@ bool has_media(const Scene& s, uint32_t m) {
 
 } // namespace
 
+void copy_texture_tables(const Scene& scene, PreparedScene& p) {
+    p.materials = scene.materials;
+    p.pigments = scene.pigments;
+    p.pigment_entries = scene.pigment_entries;
+    p.normal_patterns = scene.normal_patterns;
+    p.slope_entries = scene.slope_entries;
+    p.normal_map_entries = scene.normal_map_entries;
+    p.material_switches = scene.material_switches;
+    p.warps = scene.warps;
+    p.material_entries = scene.material_entries;
+    p.media = scene.media;
+    p.medium_densities = scene.medium_densities;
+    p.fn_programs = scene.fn_programs;
+    p.fn_code = scene.fn_code;
+    p.fn_patterns = scene.fn_patterns;
+    p.fn_pigments = scene.fn_pigments;
+    p.fn_pigment_entries = scene.fn_pigment_entries;
+    p.working_gamma = scene.working_gamma;
+    p.textures = scene.textures;
+}
+
 PreparedScene prepare_scene(const Scene& scene) {
     scene.validate();
     PreparedScene p;
@@ -294,26 +315,9 @@ PreparedScene prepare_scene(const Scene& scene) {
             if (n.op == CsgOp::Leaf && passes[n.material]) f |= kPrimMayPass;
         p.prim_flags[p.tris.size() + so] = f;
     }
-    p.materials = scene.materials;
-    p.pigments = scene.pigments;
-    p.pigment_entries = scene.pigment_entries;
-    p.normal_patterns = scene.normal_patterns;
-    p.slope_entries = scene.slope_entries;
-    p.normal_map_entries = scene.normal_map_entries;
-    p.material_switches = scene.material_switches;
-    p.warps = scene.warps;
-    p.material_entries = scene.material_entries;
-    p.media = scene.media;
-    p.medium_densities = scene.medium_densities;
-    p.fn_programs = scene.fn_programs;
-    p.fn_code = scene.fn_code;
-    p.fn_patterns = scene.fn_patterns;
-    p.fn_pigments = scene.fn_pigments;
-    p.fn_pigment_entries = scene.fn_pigment_entries;
+    copy_texture_tables(scene, p);
     p.sky = scene.sky;
     p.fog = scene.fog;
-    p.working_gamma = scene.working_gamma;
-    p.textures = scene.textures;
     p.lights = scene.lights;
     p.camera = scene.camera;
     prepare_camera_faces(scene, p);

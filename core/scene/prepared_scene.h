@@ -135,4 +135,10 @@ struct PreparedScene {
 /// Validates and flattens. Throws SceneError.
 PreparedScene prepare_scene(const Scene& scene);
 
+/// Copies what materials, pigments, patterns, media and functions read (their tables, the
+/// image textures' list, the working gamma) from `scene`, as prepare_scene does: a
+/// PreparedScene with only these evaluates pigments (the POV reader's pigment functions at
+/// parse time). Not validated: prepare_scene validates the whole scene.
+void copy_texture_tables(const Scene& scene, PreparedScene& p);
+
 } // namespace sheaf

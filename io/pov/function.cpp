@@ -1,5 +1,6 @@
 // User-function evaluation and the float built-ins (see function.h).
 #include "io/pov/function.h"
+#include "io/pov/pigment_scene.h"
 
 #include "core/scene/function.h"
 
@@ -201,8 +202,8 @@ double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
 } // namespace
 
 double PigmentFunction::at(int comp, double x, double y, double z) const {
-    const FnView v{nullptr, nullptr, &pattern, &pigment, entries.data()};
-    return fn_pigment(v, pigment, comp, x, y, z);
+    if (!scene) return 0;
+    return fn_component(scene->at(x, y, z).data(), comp);
 }
 
 double PovFunction::eval(const double* args, int n, uint64_t& steps) const {

@@ -47,13 +47,18 @@ struct FnNode {
     int height = 1; // levels of the tree below and including this node
 };
 
-/// A pigment function's pigment in the core's terms (core/scene/function.h): its pattern (in
-/// the function's space), the pigment with pattern 0 and first entry 0, its colours.
+struct PigmentScene;
+
+/// A pigment function's pigment. For the render's programs (core/scene/function.h), when it
+/// is a solid colour or a colour map or list over a pattern without warps: its pattern (in
+/// the function's space), the pigment with pattern 0 and first entry 0, its colours. For the
+/// scene language, any pigment: `scene` (io/pov/pigment_scene.h).
 struct PigmentFunction {
     Pattern pattern;
     FnPigment pigment;
     std::vector<PigmentEntry> entries;
-    /// Component `comp` (FnComponent) at (x, y, z).
+    std::shared_ptr<const PigmentScene> scene;
+    /// Component `comp` (FnComponent) at (x, y, z), as the scene language evaluates it.
     double at(int comp, double x, double y, double z) const;
 };
 
@@ -63,7 +68,10 @@ struct FnStepsExceeded {};
 struct PovFunction {
     std::vector<std::string> params; // x, y, z when none were given
     FnNode body;
-    std::string unsupported; // non-empty: what it uses that the reader cannot evaluate
+    // Non-empty: what it uses that the render's programs cannot run (function patterns,
+    // isosurfaces), and what the scene language cannot evaluate either (height fields, calls
+    // in expressions); the second implies the first.
+    std::string unsupported, language_unsupported;
     Token where;             // its `function` keyword
     // Instead of a body: internal(N) (core/scene/function.h's fn_internal) over x, y, z and
     // its parameters, or a pattern's value at x, y, z (in the function's own space).

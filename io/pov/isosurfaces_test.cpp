@@ -182,6 +182,46 @@ TEST(PovHeightFields, HeightsFromGreyImagesAndFunctions) {
     EXPECT_NE(r.warnings[0].find("unsupported height_field from a pot file"), std::string::npos);
 }
 
+// The scene language evaluates any pigment (io/pov/pigment_scene.h): pigment maps of
+// patterned pigments, pigment_pattern, average and warps, as the render evaluates them.
+TEST(PovHeightFields, HeightsFromAnyPigmentFunction) {
+    // gradient x blends black and a gradient y pigment: the grey is x * y.
+    PovResult r = load_text("height_field { function 5, 5 { pigment { gradient x pigment_map { "
+                            "[0 rgb 0] [1 gradient y color_map { [0 rgb 0] [1 rgb 1] }] } } } }");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    EXPECT_NEAR(height_at(r, 0.5f, 0.25f), 0.5 * 0.75, 1e-4); // y = 1 at z = 0
+    EXPECT_NEAR(height_at(r, 0.75f, 0.5f), 0.75 * 0.5, 1e-4);
+    EXPECT_NEAR(height_at(r, 0.25f, 1), 0, 1e-4);
+    // A pigment_pattern's grey through a colour map, repeated every half unit along x.
+    r = load_text("height_field { function 5, 5 { pigment { pigment_pattern { gradient x "
+                  "color_map { [0 rgb 0] [1 rgb 1] } } color_map { [0 rgb 1] [1 rgb 0] } "
+                  "warp { repeat 0.5 * x } } } }");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+    EXPECT_NEAR(height_at(r, 0.25f, 0.5f), 0.75, 1e-4);
+    EXPECT_NEAR(height_at(r, 0.75f, 0.5f), 0.75, 1e-4); // 0.75 repeats 0.25
+    // An average, and a call in the language of a function of such a pigment.
+    r = load_text("height_field { function 3, 3 { pigment { average pigment_map { "
+                  "[1 rgb 0.2] [1 rgb 0.6] } } } }");
+    EXPECT_NEAR(height_at(r, 0.5f, 0.5f), 0.4, 1e-4);
+    const std::string flip = "#declare F = function { pigment { pigment_pattern { gradient x "
+                             "color_map { [0 rgb 0] [1 rgb 1] } } color_map { [0 rgb <1, 0, 0>] "
+                             "[1 rgb <0, 0, 1>] } } }\n";
+    EXPECT_NEAR(test::declared(flip + "#declare V = F(0.25, 0, 0).red;", "V").v[0], 0.75, 1e-6);
+    EXPECT_NEAR(test::declared(flip + "#declare G = function { F(x, y, z).blue * 2 }\n"
+                                      "#declare V = G(0.25, 0, 0);",
+                               "V")
+                    .v[0],
+                0.5, 1e-6);
+    // The render's programs still cannot run such a pigment: an isosurface of it is warned.
+    r = load_text(flip + "isosurface { function { F(x, y, z).red - 0.5 } }");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("unsupported isosurface of a pigment function (of an average, "
+                                 "image, function or pigment_pattern pigment)"),
+              std::string::npos)
+        << r.warnings[0];
+}
+
 TEST(PovHeightFields, PalettePngsGiveTheirIndices) {
     const std::string path = "/usr/share/povray-3.7/include/fract003.png";
     if (!std::ifstream(path)) GTEST_SKIP() << path << " (povray-includes) is not installed";

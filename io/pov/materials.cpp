@@ -145,6 +145,14 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     return p;
 }
 
+int32_t MaterialBuilder::function_pigment(const PovPigment& pg) {
+    // As a pigment_pattern's pigment: at the function's point, placed by its own transforms.
+    const ScopedValue<bool> uv(uv_, false);
+    const ScopedValue<bool> space(pattern_space_, true);
+    const ScopedValue<WarpChain> chain(chain_, WarpChain{});
+    return pigment(pg, Affine());
+}
+
 int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
     const ScopedValue<bool> space(uv_, false); // normals are evaluated in space (uv_mapping warned)
     // A map's entries first, placed by its transforms too (the parser left them no maps).

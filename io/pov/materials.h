@@ -52,6 +52,9 @@ class MaterialBuilder {
     /// The program of user function `f` (function patterns, isosurfaces); a function that
     /// cannot be compiled is an error at its place.
     int32_t function(const PovFunction& f);
+    /// Pigment `pg` in a function's space (the point as the function receives it, no mirror):
+    /// its index in Scene::pigments.
+    int32_t function_pigment(const PovPigment& pg);
     /// Normal `n` placed by `eff`, its map's entries first: its index in Scene::normal_patterns.
     int32_t normal(const PovNormal& n, const Affine& eff);
     /// Whether `material` (one material() made) has patterns evaluated at uv coordinates.

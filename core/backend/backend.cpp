@@ -48,11 +48,15 @@ BackendChoice choose_backend(const PreparedScene& scene, Backend requested,
         return c;
     }
     std::string why = wavefront_unsupported(scene);
-    if (why.empty() && device_stack_bytes(scene) > kDeviceStackCap)
-        why = "CSG nested " + std::to_string(csg_nesting(scene)) +
-              " levels deep needs more device stack than the CUDA module allows (" +
+    if (why.empty() && device_stack_bytes(scene) > kDeviceStackCap) {
+        const int fn = fn_pigment_nesting(scene);
+        why = "CSG nested " + std::to_string(csg_nesting(scene)) + " levels deep" +
+              (fn > 0 ? " with functions reading pigments nested " + std::to_string(fn) + " deep"
+                      : std::string()) +
+              " needs more device stack than the CUDA module allows (" +
               std::to_string((kDeviceStackCap - kDeviceStackBase) / kDeviceStackPerCsgLevel) +
               " levels)";
+    }
     if (!why.empty()) {
         c.line = "backend: cpu (" + why + ")";
         c.why_not = why;

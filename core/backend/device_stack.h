@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace sheaf {
@@ -29,6 +30,7 @@ constexpr size_t kDeviceStackBase = size_t(16) << 10;
 constexpr size_t kDeviceStackPerCsgLevel = size_t(10) << 10;
 constexpr size_t kDeviceStackCap = size_t(96) << 10;
 constexpr size_t kDeviceStackMediaLight = size_t(1) << 10;
+constexpr size_t kDeviceStackPerFnLevel = size_t(2) << 10;
 
 /// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each
 /// node's height is computed once (roots may share subtrees).
@@ -69,9 +71,59 @@ inline int csg_nesting(const PreparedScene& s) {
     return deepest;
 }
 
+/// How many times, nested, a pigment's evaluation may pass through a function program that
+/// reads a scene pigment (a pigment function, core/render/surface_texture.h's FnSceneContext)
+/// or a pigment pattern: 0 when no program does. At most kFnNestingLimit (the evaluator's
+/// depth limit stops deeper chains, and tables that name each other).
+constexpr int kFnNestingLimit = 16;
+inline int fn_pigment_nesting(const PreparedScene& s) {
+    // below[p]: the crossings under pigment p (-1: not yet known, -2: being computed).
+    std::vector<int> below(s.pigments.size(), -1);
+    std::vector<int> program_below(s.fn_programs.size(), -1);
+    std::function<int(int32_t, int)> pigment;
+    std::function<int(const Pattern&, int)> pattern;
+    auto program = [&](int32_t pg, int depth) {
+        if (pg < 0 || size_t(pg) >= s.fn_programs.size()) return 0;
+        if (program_below[size_t(pg)] >= 0) return program_below[size_t(pg)];
+        const FnProgram& f = s.fn_programs[size_t(pg)];
+        int most = 0;
+        for (uint32_t i = f.first; i < f.first + f.count && i < s.fn_code.size(); ++i) {
+            const FnInstr& in = s.fn_code[i];
+            if (in.op == FnOp::Pigment && in.arg < s.fn_pigments.size() &&
+                s.fn_pigments[in.arg].scene_pigment >= 0)
+                most = std::max(most, 1 + pigment(s.fn_pigments[in.arg].scene_pigment, depth + 1));
+            if (in.op == FnOp::Pattern && in.arg < s.fn_patterns.size())
+                most = std::max(most, 1 + pattern(s.fn_patterns[in.arg], depth + 1));
+        }
+        return program_below[size_t(pg)] = std::min(most, kFnNestingLimit);
+    };
+    pattern = [&](const Pattern& pt, int depth) {
+        if (pt.kind == PatternKind::PigmentPattern) return pigment(pt.pigment, depth);
+        if (pt.kind == PatternKind::Function) return program(pt.program, depth);
+        return 0;
+    };
+    pigment = [&](int32_t pg, int depth) {
+        if (pg < 0 || size_t(pg) >= s.pigments.size() || depth > kFnNestingLimit) return 0;
+        int& b = below[size_t(pg)];
+        if (b >= 0) return b;
+        if (b == -2) return kFnNestingLimit; // a cycle: as deep as the evaluator goes
+        b = -2;
+        const Pigment& p = s.pigments[size_t(pg)];
+        int most = p.solid ? 0 : pattern(p.pattern, depth);
+        for (uint32_t i = p.first; i < p.first + p.count && i < s.pigment_entries.size(); ++i)
+            most = std::max(most, pigment(s.pigment_entries[i].pigment, depth));
+        return b = std::min(most, kFnNestingLimit);
+    };
+    int most = 0;
+    for (size_t pg = 0; pg < s.fn_programs.size(); ++pg)
+        most = std::max(most, program(int32_t(pg), 0));
+    return most;
+}
+
 /// The stack the device code needs for `s`, in bytes (may exceed kDeviceStackCap).
 inline size_t device_stack_bytes(const PreparedScene& s) {
     return kDeviceStackBase + size_t(csg_nesting(s)) * kDeviceStackPerCsgLevel +
+           size_t(fn_pigment_nesting(s)) * kDeviceStackPerFnLevel +
            (s.media_scatter_light() ? kDeviceStackMediaLight : 0);
 }
 

@@ -286,11 +286,11 @@ SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
 }
 
 /// The pattern-space point of world point `world`: through the pattern's transforms and
-/// warps (`warps`: the scene's warp array, read when the pattern has any), then its
-/// turbulence.
+/// warps (`warps`: the scene's warp array, read when the pattern has any; none without it),
+/// then its turbulence.
 SHEAF_HD_NOINLINE Vec3 pattern_point(const Pattern& pt, Vec3 world, const Warp* warps) {
     Vec3 p = pt.to_pattern.point(world);
-    for (uint32_t i = 0; i < pt.warp_count; ++i) {
+    for (uint32_t i = 0; warps && i < pt.warp_count; ++i) {
         const Warp& w = warps[pt.warp_first + i];
         p = w.to_inner.point(warp_point(w, p));
     }

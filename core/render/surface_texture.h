@@ -70,6 +70,16 @@ SHEAF_HD_INLINE Vec3 sample_image(const SceneView& scene, int32_t image, Vec3 p,
 
 SHEAF_HD_NOINLINE float pigment_grey(const SceneView& scene, uint32_t pigment, Vec3 q, int depth);
 
+/// What a program run on a scene reads (core/scene/function.h): any pattern (warps, pigment
+/// patterns) and any pigment (FnPigment::scene_pigment), inside `depth` levels of pigments,
+/// patterns and functions.
+struct FnSceneContext {
+    const SceneView& scene;
+    int depth;
+    SHEAF_HD double pattern(uint32_t i, double x, double y, double z) const;
+    SHEAF_HD double pigment(uint32_t i, int comp, double x, double y, double z) const;
+};
+
 /// A continuous pattern's value at pattern-space point q of the surface at world point
 /// `world` whose normal, facing the ray, is n (zero where there is no surface: media, the
 /// sky); a function pattern runs its program (a value that is not finite counts as 0), a
@@ -83,7 +93,9 @@ SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt,
         return pattern_detail::shape_value(pt, slope_raw(pt, q, world, n));
     if (pt.kind != PatternKind::Function) return pattern_value_at(pt, q);
     if (!scene.functions.programs || pt.program < 0) return 0.0f;
-    const float raw = float(fn_eval3(scene.functions, uint32_t(pt.program), q.x, q.y, q.z));
+    const double args[3] = {q.x, q.y, q.z};
+    const float raw =
+        float(fn_eval(scene.functions, uint32_t(pt.program), args, FnSceneContext{scene, depth}));
     return pattern_detail::shape_value(pt, raw - raw == 0 ? raw : 0.0f);
 }
 
@@ -155,6 +167,25 @@ SHEAF_HD_NOINLINE float pigment_grey(const SceneView& scene, uint32_t pigment, V
     return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z;
 }
 
+/// A function pattern's value: a list pattern's entry 0 or not (0 or 1), as fn_pattern.
+SHEAF_HD_NOINLINE double FnSceneContext::pattern(uint32_t i, double x, double y, double z) const {
+    const Pattern& pt = scene.functions.patterns[i];
+    const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)), scene.warps);
+    if (pattern_is_list(pt.kind)) return pattern_index_at(pt, q) != 0 ? 1.0 : 0.0;
+    return depth < kMaxDepth ? pattern_value(scene, pt, q, Vec3(0.0f), Vec3(0.0f), depth + 1) : 0.0;
+}
+
+SHEAF_HD_NOINLINE double FnSceneContext::pigment(uint32_t i, int comp, double x, double y,
+                                                 double z) const {
+    const FnPigment& fp = scene.functions.pigments[i];
+    if (fp.scene_pigment < 0 || depth >= kMaxDepth)
+        return fn_pigment(scene.functions, fp, comp, x, y, z);
+    const SurfaceColor c = Evaluator{scene, 0, 0, Vec3(0.0f)}.pigment(
+        uint32_t(fp.scene_pigment), Vec3(float(x), float(y), float(z)), depth + 1);
+    const float rgbft[5] = {c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit};
+    return fn_component(rgbft, comp);
+}
+
 // The value a pattern gives at a pattern-space point, for slopes: list patterns give their
 // index spread over [0, 1].
 SHEAF_HD_INLINE float slope_value(const SceneView& scene, const Pattern& pt, Vec3 q, Vec3 world,
@@ -205,6 +236,13 @@ SHEAF_HD_INLINE uint32_t resolve_material(const SceneView& scene, uint32_t mater
 SHEAF_HD_INLINE SurfaceColor evaluate_pigment(const SceneView& scene, uint32_t pigment, Vec3 p,
                                               float uv_s, float uv_t, Vec3 n = Vec3(0.0f)) {
     return texture_detail::Evaluator{scene, uv_s, uv_t, n}.pigment(pigment, p, 0);
+}
+
+/// Function pattern `pattern` (of SceneView::functions) at (x, y, z), as programs run on the
+/// scene read it.
+SHEAF_HD_INLINE double evaluate_fn_pattern(const SceneView& scene, uint32_t pattern, double x,
+                                           double y, double z) {
+    return texture_detail::FnSceneContext{scene, 0}.pattern(pattern, x, y, z);
 }
 
 namespace texture_detail {

@@ -92,10 +92,15 @@ struct FnInstr {
 /// A pigment a function reads (POV-Ray's `function { pigment { ... } }`): a solid colour
 /// (count 0), or function pattern `pattern` choosing among the function pigment entries
 /// [first, first + count): blended by value, or by index when `list`.
+/// `scene_pigment`: the same pigment in Scene::pigments (-1: none), which a program run on a
+/// scene reads instead (FnSceneContext, core/render/surface_texture.h), so that any pigment
+/// works there; a pigment this small form cannot hold is black in it (the POV reader warns
+/// isosurfaces of such functions, the only programs run without a scene).
 struct FnPigment {
     uint32_t pattern = 0, first = 0, count = 0;
     uint32_t list = 0;
     float color[5] = {0, 0, 0, 0, 0};
+    int32_t scene_pigment = -1;
 };
 
 /// A compiled function: instructions [first, first + count) of the scene's function code,
@@ -126,6 +131,7 @@ struct FnView {
     const Pattern* patterns = nullptr; // the patterns Pattern instructions read
     const FnPigment* pigments = nullptr;           // the pigments Pigment instructions read
     const PigmentEntry* pigment_entries = nullptr; // their entries (colours only)
+    const Warp* warps = nullptr;                   // the scene's warps, which patterns name
 };
 
 namespace fn_detail {
@@ -193,8 +199,9 @@ SHEAF_HD_INLINE double math(FnMath m, double a) {
 /// Pattern `pt` (a function's: no warps, Scene::validate checks) as a function at (x, y, z): a
 /// continuous pattern's value in [0, 1], a list pattern's entry spread over [0, 1] (checker: 0 or
 /// 1).
-SHEAF_HD_INLINE double fn_pattern(const Pattern& pt, double x, double y, double z) {
-    const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)), nullptr);
+SHEAF_HD_INLINE double fn_pattern(const FnView& fv, const Pattern& pt, double x, double y,
+                                  double z) {
+    const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)), fv.warps);
     if (pattern_is_list(pt.kind)) return pattern_index_at(pt, q) != 0 ? 1.0 : 0.0;
     return pattern_value_at(pt, q);
 }
@@ -214,7 +221,7 @@ SHEAF_HD_INLINE double fn_pigment(const FnView& fv, const FnPigment& pg, int com
     if (pg.count > 0) {
         const Pattern& pt = fv.patterns[pg.pattern];
         const PigmentEntry* e = fv.pigment_entries + pg.first;
-        const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)), nullptr);
+        const Vec3 q = pattern_point(pt, Vec3(float(x), float(y), float(z)), fv.warps);
         if (pg.list) {
             const uint32_t i = uint32_t(pattern_index_at(pt, q));
             for (int k = 0; k < 5; ++k) c[k] = e[i < pg.count ? i : pg.count - 1].color[k];
@@ -227,8 +234,23 @@ SHEAF_HD_INLINE double fn_pigment(const FnView& fv, const FnPigment& pg, int com
     return fn_component(c, comp);
 }
 
-/// Runs program `program` on its arguments (params of them). NaN stays NaN.
-SHEAF_HD_NOINLINE double fn_eval(const FnView& fv, uint32_t program, const double* args) {
+/// What a program reads of its function tables alone: patterns without warps or pigments,
+/// pigments in their small form (isosurfaces run programs so).
+struct FnTablesContext {
+    const FnView& fv;
+    SHEAF_HD double pattern(uint32_t i, double x, double y, double z) const {
+        return fn_pattern(fv, fv.patterns[i], x, y, z);
+    }
+    SHEAF_HD double pigment(uint32_t i, int comp, double x, double y, double z) const {
+        return fn_pigment(fv, fv.pigments[i], comp, x, y, z);
+    }
+};
+
+/// Runs program `program` on its arguments (params of them), its Pattern and Pigment
+/// instructions read through `ctx` (FnTablesContext, or a scene's). NaN stays NaN.
+template <class Context>
+SHEAF_HD_NOINLINE double fn_eval(const FnView& fv, uint32_t program, const double* args,
+                                 const Context& ctx) {
     using fn_detail::math;
     const FnProgram& pg = fv.programs[program];
     double s[kFnStack];
@@ -299,9 +321,8 @@ SHEAF_HD_NOINLINE double fn_eval(const FnView& fv, uint32_t program, const doubl
         if (in.op == FnOp::Pattern || in.op == FnOp::Pigment) {
             if (sp < 3) return 0;
             double* p = &s[sp - 3];
-            p[0] = in.op == FnOp::Pattern
-                       ? fn_pattern(fv.patterns[in.arg], p[0], p[1], p[2])
-                       : fn_pigment(fv, fv.pigments[in.arg], in.count, p[0], p[1], p[2]);
+            p[0] = in.op == FnOp::Pattern ? ctx.pattern(in.arg, p[0], p[1], p[2])
+                                          : ctx.pigment(in.arg, in.count, p[0], p[1], p[2]);
             sp -= 2;
             continue;
         }
@@ -369,6 +390,10 @@ SHEAF_HD_NOINLINE double fn_eval(const FnView& fv, uint32_t program, const doubl
         --sp;
     }
     return sp > 0 ? s[sp - 1] : 0;
+}
+
+SHEAF_HD_INLINE double fn_eval(const FnView& fv, uint32_t program, const double* args) {
+    return fn_eval(fv, program, args, FnTablesContext{fv});
 }
 
 /// Program `program` at a point.

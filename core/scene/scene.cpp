@@ -389,15 +389,15 @@ void check_pattern(const Pattern& p, size_t textures, const std::vector<Warp>& w
 
 void Scene::validate_functions() const {
     for (size_t i = 0; i < fn_patterns.size(); ++i) {
+        // Warps and pigment patterns are read when a program runs on a scene (patterns);
+        // isosurfaces read them without (the POV reader warns such functions there). The
+        // renderer's depth limit (kMaxDepth) bounds pigments and functions that name each other.
         const Pattern& p = fn_patterns[i];
-        check_pattern(p, textures.size(), warps, 0, "function pattern " + std::to_string(i));
-        if (p.kind == PatternKind::Function || p.kind == PatternKind::Image ||
-            p.kind == PatternKind::PigmentPattern)
+        check_pattern(p, textures.size(), warps, pigments.size(),
+                      "function pattern " + std::to_string(i));
+        if (p.kind == PatternKind::Function || p.kind == PatternKind::Image)
             throw SceneError("function pattern " + std::to_string(i) +
-                             ": a function's pattern is no function, image or pigment pattern");
-        if (p.warp_count > 0)
-            throw SceneError("function pattern " + std::to_string(i) +
-                             ": a function's pattern has no warps");
+                             ": a function's pattern is no function or image");
     }
     for (size_t i = 0; i < fn_pigments.size(); ++i) {
         const FnPigment& pg = fn_pigments[i];
@@ -407,6 +407,9 @@ void Scene::validate_functions() const {
             throw SceneError(name + ": its pattern or entries do not exist");
         if (pg.count > 0 && (pg.list != 0) != pattern_is_list(fn_patterns[pg.pattern].kind))
             throw SceneError(name + ": a list pattern's entries must be a list");
+        if (pg.scene_pigment >= 0 && size_t(pg.scene_pigment) >= pigments.size())
+            throw SceneError(name + ": its pigment " + std::to_string(pg.scene_pigment) +
+                             " does not exist");
     }
     for (size_t i = 0; i < fn_programs.size(); ++i) {
         const std::string why = check_fn_program(fn_programs[i], fn_code.data(), fn_code.size(),

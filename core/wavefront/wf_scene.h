@@ -70,6 +70,7 @@ template <class Exec> class DeviceScene {
         put(p.normal_map_entries, v.normal_map_entries);
         put(p.material_switches, v.material_switches);
         put(p.warps, v.warps);
+        v.functions.warps = v.warps; // the same device copy
         put(p.material_entries, v.material_entries);
         put(p.media, v.media);
         put(p.medium_densities, v.medium_densities);

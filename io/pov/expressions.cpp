@@ -509,7 +509,7 @@ Value Parser::parse_array_init(const std::vector<size_t>& sizes, const Token& t)
 }
 
 Value Parser::call_function(const Token& t, const PovFunction& f) {
-    if (!f.language_unsupported.empty() && !f.transform) unsupported(t, f.language_unsupported);
+    if (!f.scene_unsupported.empty() && !f.transform) unsupported(t, f.scene_unsupported);
     expect_sym("(");
     std::vector<double> args;
     if (!accept_sym(")")) {
@@ -519,7 +519,7 @@ Value Parser::call_function(const Token& t, const PovFunction& f) {
             expect_sym(",", "',' or ')'");
         }
     }
-    if (args.size() != f.params.size() && f.language_unsupported.empty())
+    if (args.size() != f.params.size() && f.scene_unsupported.empty())
         error_at(t, "'" + t.text + "' takes " + std::to_string(f.params.size()) +
                         " arguments, not " + std::to_string(args.size()));
     if (f.transform) { // a transform function gives the point transformed

@@ -1,6 +1,8 @@
 // PovFunction -> FnProgram (see fn_compile.h).
 #include "io/pov/fn_compile.h"
 
+#include "io/pov/materials.h"
+
 #include <map>
 
 namespace sheaf::io::pov {
@@ -53,11 +55,15 @@ void FnCompiler::push(FnOp op, uint16_t arg, double value, uint8_t count) {
                              " values at once (calls nested too deeply)");
 }
 
-uint16_t FnCompiler::pattern(const Pattern& p) {
-    if (auto it = patterns_.find(&p); it != patterns_.end()) return it->second;
+uint16_t FnCompiler::add_pattern(const Pattern& p) {
     if (scene_.fn_patterns.size() >= 0xFFFF) throw FnCompileError("too many pattern functions");
     scene_.fn_patterns.push_back(p);
-    const uint16_t id = uint16_t(scene_.fn_patterns.size() - 1);
+    return uint16_t(scene_.fn_patterns.size() - 1);
+}
+
+uint16_t FnCompiler::pattern(const PatternFunction& p) {
+    if (auto it = patterns_.find(&p); it != patterns_.end()) return it->second;
+    const uint16_t id = add_pattern(materials_.function_pattern(*p.source, p.local));
     patterns_.emplace(&p, id);
     return id;
 }
@@ -66,8 +72,9 @@ uint16_t FnCompiler::pigment(const PigmentFunction& p) {
     if (auto it = pigments_.find(&p); it != pigments_.end()) return it->second;
     if (scene_.fn_pigments.size() >= 0xFFFF) throw FnCompileError("too many pigment functions");
     FnPigment pg = p.pigment;
+    if (p.source) pg.scene_pigment = materials_.function_pigment(*p.source);
     if (pg.count > 0) {
-        pg.pattern = pattern(p.pattern);
+        pg.pattern = add_pattern(p.pattern);
         pg.first = uint32_t(scene_.fn_pigment_entries.size());
         scene_.fn_pigment_entries.insert(scene_.fn_pigment_entries.end(), p.entries.begin(),
                                          p.entries.end());
@@ -80,7 +87,7 @@ uint16_t FnCompiler::pigment(const PigmentFunction& p) {
 
 // The arguments are on the stack; calls f on them (a pigment function: its `component`).
 void FnCompiler::call(const PovFunction& f, size_t nargs, int component) {
-    if (!f.unsupported.empty()) throw FnCompileError(f.unsupported);
+    if (!f.scene_unsupported.empty()) throw FnCompileError(f.scene_unsupported);
     if (f.pigment) {
         push(FnOp::Pigment, pigment(*f.pigment), 0, uint8_t(component));
         return;
@@ -164,6 +171,14 @@ void FnCompiler::emit(const FnNode& n, uint32_t base) {
 
 int32_t FnCompiler::program(const PovFunction& f) {
     if (auto it = programs_.find(&f); it != programs_.end()) return it->second;
+    // Lowering a function's pigment or pattern may compile the functions they use: the
+    // program being compiled waits.
+    struct Outer {
+        FnCompiler& c;
+        std::vector<FnInstr> code;
+        int depth, deepest;
+        ~Outer() { c.code_ = std::move(code), c.depth_ = depth, c.deepest_ = deepest; }
+    } outer{*this, std::move(code_), depth_, deepest_};
     code_.clear();
     const size_t params = f.params.size();
     if (params > size_t(kFnStack)) throw FnCompileError("a function of too many parameters");
@@ -172,7 +187,7 @@ int32_t FnCompiler::program(const PovFunction& f) {
         for (size_t i = 0; i < params; ++i) push(FnOp::Load, uint16_t(i));
         call(f, params, int(FnComponent::Gray));
     } else {
-        if (!f.unsupported.empty()) throw FnCompileError(f.unsupported);
+        if (!f.scene_unsupported.empty()) throw FnCompileError(f.scene_unsupported);
         emit(f.body, 0);
     }
     // Leave exactly the result: drop the parameters below it.

@@ -20,9 +20,12 @@ struct FnCompileError : std::runtime_error {
 /// The most instructions one program may have (inline calls included).
 constexpr size_t kMaxFnCode = size_t(1) << 16;
 
+class MaterialBuilder;
+
 class FnCompiler {
   public:
-    explicit FnCompiler(Scene& scene) : scene_(scene) {}
+    /// Compiles into `scene`; `materials` lowers the pigments and patterns functions read.
+    FnCompiler(Scene& scene, MaterialBuilder& materials) : scene_(scene), materials_(materials) {}
     /// The index of `f`'s program in the scene's fn_programs, compiled on its first use.
     /// Throws FnCompileError.
     int32_t program(const PovFunction& f);
@@ -31,12 +34,14 @@ class FnCompiler {
     void emit(const FnNode& n, uint32_t base);
     void call(const PovFunction& f, size_t nargs, int component);
     void push(FnOp op, uint16_t arg = 0, double value = 0, uint8_t count = 0);
-    uint16_t pattern(const Pattern& p);
+    uint16_t add_pattern(const Pattern& p);
+    uint16_t pattern(const PatternFunction& p);
     uint16_t pigment(const PigmentFunction& p);
 
     Scene& scene_;
+    MaterialBuilder& materials_;
     std::map<const PovFunction*, int32_t> programs_;
-    std::map<const Pattern*, uint16_t> patterns_;
+    std::map<const PatternFunction*, uint16_t> patterns_;
     std::map<const PigmentFunction*, uint16_t> pigments_;
     std::vector<FnInstr> code_; // the program being compiled
     int depth_ = 0, deepest_ = 0;

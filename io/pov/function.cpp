@@ -1,6 +1,6 @@
 // User-function evaluation and the float built-ins (see function.h).
 #include "io/pov/function.h"
-#include "io/pov/pigment_scene.h"
+#include "io/pov/function_scene.h"
 
 #include "core/scene/function.h"
 
@@ -203,7 +203,11 @@ double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
 
 double PigmentFunction::at(int comp, double x, double y, double z) const {
     if (!scene) return 0;
-    return fn_component(scene->at(x, y, z).data(), comp);
+    return fn_component(scene->color_at(x, y, z).data(), comp);
+}
+
+double PatternFunction::at(double x, double y, double z) const {
+    return scene ? scene->value_at(x, y, z) : 0;
 }
 
 double PovFunction::eval(const double* args, int n, uint64_t& steps) const {
@@ -213,7 +217,7 @@ double PovFunction::eval(const double* args, int n, uint64_t& steps) const {
         double a[8] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (int i = 0; i < n && i < 8; ++i) a[i] = args[i];
         if (pigment) return pigment->at(int(FnComponent::Gray), a[0], a[1], a[2]);
-        return pattern ? fn_pattern(*pattern, a[0], a[1], a[2])
+        return pattern ? pattern->at(a[0], a[1], a[2])
                        : fn_internal(internal, a[0], a[1], a[2], a + 3);
     }
     return eval_node(body, args, n, steps);

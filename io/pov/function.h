@@ -47,19 +47,35 @@ struct FnNode {
     int height = 1; // levels of the tree below and including this node
 };
 
-struct PigmentScene;
+struct FunctionScene;
+struct PovPattern;
+struct PovPigment;
 
-/// A pigment function's pigment. For the render's programs (core/scene/function.h), when it
-/// is a solid colour or a colour map or list over a pattern without warps: its pattern (in
-/// the function's space), the pigment with pattern 0 and first entry 0, its colours. For the
-/// scene language, any pigment: `scene` (io/pov/pigment_scene.h).
+/// A pigment function's pigment: as parsed (the render lowers it into its scene, where
+/// programs read any pigment), in a scene of its own for the scene language
+/// (io/pov/function_scene.h), and in the small form programs read without a scene
+/// (isosurfaces, core/scene/function.h), when it is a solid colour or a colour map or list
+/// over a pattern without warps: its pattern (in the function's space), the pigment with
+/// pattern 0 and first entry 0, its colours.
 struct PigmentFunction {
+    std::shared_ptr<const PovPigment> source;
+    std::shared_ptr<const FunctionScene> scene;
     Pattern pattern;
     FnPigment pigment;
     std::vector<PigmentEntry> entries;
-    std::shared_ptr<const PigmentScene> scene;
     /// Component `comp` (FnComponent) at (x, y, z), as the scene language evaluates it.
     double at(int comp, double x, double y, double z) const;
+};
+
+/// A pattern function's pattern (`function { pattern { ... } }`): as parsed with its
+/// transforms (the render lowers it into its scene), and in a scene of its own for the scene
+/// language.
+struct PatternFunction {
+    std::shared_ptr<const PovPattern> source;
+    Affine local;
+    std::shared_ptr<const FunctionScene> scene;
+    /// The value at (x, y, z), as the scene language evaluates it.
+    double at(double x, double y, double z) const;
 };
 
 /// Thrown by PovFunction::eval when the steps allowed run out.
@@ -68,15 +84,15 @@ struct FnStepsExceeded {};
 struct PovFunction {
     std::vector<std::string> params; // x, y, z when none were given
     FnNode body;
-    // Non-empty: what it uses that the render's programs cannot run (function patterns,
-    // isosurfaces), and what the scene language cannot evaluate either (height fields, calls
-    // in expressions); the second implies the first.
-    std::string unsupported, language_unsupported;
-    Token where;             // its `function` keyword
+    // Non-empty: what it uses that programs without a scene cannot run (isosurfaces), and
+    // what cannot be evaluated on a scene either (function patterns, the scene language's
+    // height fields and calls); the second implies the first.
+    std::string unsupported, scene_unsupported;
+    Token where; // its `function` keyword
     // Instead of a body: internal(N) (core/scene/function.h's fn_internal) over x, y, z and
     // its parameters, or a pattern's value at x, y, z (in the function's own space).
     int internal = -1;
-    std::shared_ptr<const Pattern> pattern;
+    std::shared_ptr<const PatternFunction> pattern;
     std::shared_ptr<const PigmentFunction> pigment; // a pigment function (gray when a number)
     // A transform function (`function { transform { ... } }`): called in the scene language
     // it gives the point transformed, a vector (transforms.inc's vtransform); a function body

@@ -5,9 +5,9 @@
 // transformed when the scene language calls it; spline and image functions are accepted and
 // marked unsupported (they evaluate to 0).
 #include "io/image/texture_sampler.h"
+#include "io/pov/function_scene.h"
 #include "io/pov/materials.h"
 #include "io/pov/parser.h"
-#include "io/pov/pigment_scene.h"
 
 #include "core/base/error.h"
 #include "core/scene/function.h"
@@ -48,10 +48,10 @@ Value Parser::parse_function(const Token& t) {
         Affine m;
         parse_transform_item(m); // transform { ... } or transform NAME
         f->transform = std::make_shared<const Affine>(m);
-        f->unsupported = f->language_unsupported = "transform function in a function";
+        f->unsupported = f->scene_unsupported = "transform function in a function";
         expect_sym("}", "'}'");
     } else if (is_kw_tok(b, "spline") || is_kw_tok(b, "image_map")) {
-        f->unsupported = f->language_unsupported = b.text + " function";
+        f->unsupported = f->scene_unsupported = b.text + " function";
         int depth = 1;
         while (depth > 0) {
             const Token& s = peek();
@@ -61,14 +61,14 @@ Value Parser::parse_function(const Token& t) {
             advance();
         }
     } else {
-        const std::string saved = fn_unsupported_, saved_language = fn_language_unsupported_;
+        const std::string saved = fn_unsupported_, saved_scene = fn_scene_unsupported_;
         fn_unsupported_.clear();
-        fn_language_unsupported_.clear();
+        fn_scene_unsupported_.clear();
         f->body = parse_fn(f->params, 0);
         f->unsupported = fn_unsupported_;
-        f->language_unsupported = fn_language_unsupported_;
+        f->scene_unsupported = fn_scene_unsupported_;
         fn_unsupported_ = saved;
-        fn_language_unsupported_ = saved_language;
+        fn_scene_unsupported_ = saved_scene;
         expect_sym("}", "'}' or an operator");
     }
     Value v;
@@ -84,7 +84,7 @@ void Parser::parse_internal_function(PovFunction& f) {
     expect_sym(")");
     const int extra = id >= 0 && id < 256 ? fn_internal_extra(int(id)) : -1;
     if (extra < 0) {
-        f.unsupported = f.language_unsupported = "internal function " + std::to_string(int(id));
+        f.unsupported = f.scene_unsupported = "internal function " + std::to_string(int(id));
         return;
     }
     f.internal = int(id);
@@ -103,25 +103,28 @@ void Parser::parse_pattern_function(PovFunction& f) {
     if (!parse_pattern_name(pt, list, supported)) error_expected(name, "a pattern");
     while (!accept_sym("}"))
         if (!parse_pattern_modifier(pt, local)) error_expected(peek(), "a pattern modifier or '}'");
-    if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::Function ||
-        pt.kind == PatternKind::PigmentPattern) {
-        f.unsupported = f.language_unsupported = "pattern function '" + name.text + "'";
+    if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::Function) {
+        f.unsupported = f.scene_unsupported = "pattern function '" + name.text + "'";
         return;
     }
-    if (!pt.warps.empty()) {
-        f.unsupported = f.language_unsupported = "warp in a pattern function";
-        return;
-    }
-    f.pattern = std::make_shared<const Pattern>(lower_pattern(pt, local, nullptr));
+    // Programs run without a scene (isosurfaces) read no pigments.
+    if (pt.kind == PatternKind::PigmentPattern)
+        f.unsupported = "pattern function '" + name.text + "'";
+    auto pf = std::make_shared<PatternFunction>();
+    pf->source = std::make_shared<const PovPattern>(std::move(pt));
+    pf->local = local;
+    pf->scene = function_scene(nullptr, pf.get());
+    f.pattern = std::move(pf);
 }
 
 void Parser::parse_pigment_function(PovFunction& f) {
     advance();
     const std::shared_ptr<const PovPigment> pg = parse_pigment(PovPigment());
     auto pf = std::make_shared<PigmentFunction>();
-    pf->scene = pigment_scene(*pg);
+    pf->source = pg;
+    pf->scene = function_scene(pg.get(), nullptr);
     f.pigment = pf;
-    // The render's programs read a solid colour or a colour map or list over a pattern.
+    // Programs run without a scene read a solid colour or a colour map or list over a pattern.
     for (int i = 0; i < 5; ++i) pf->pigment.color[i] = float(pg->color[i]);
     if (pg->patterned) {
         const PatternKind k = pg->pattern.kind;
@@ -152,13 +155,18 @@ void Parser::parse_pigment_function(PovFunction& f) {
     }
 }
 
-std::shared_ptr<const PigmentScene> Parser::pigment_scene(const PovPigment& pg) {
-    auto ps = std::make_shared<PigmentScene>();
-    MaterialBuilder builder(*this, ps->scene);
-    ps->pigment = builder.function_pigment(pg);
-    copy_texture_tables(ps->scene, ps->tables);
-    attach_texture_sampler(ps->tables);
-    return ps;
+std::shared_ptr<const FunctionScene> Parser::function_scene(const PovPigment* pigment,
+                                                            const PatternFunction* pattern) {
+    auto fs = std::make_shared<FunctionScene>();
+    MaterialBuilder builder(*this, fs->scene);
+    if (pigment) fs->pigment = builder.function_pigment(*pigment);
+    if (pattern) {
+        fs->scene.fn_patterns.push_back(builder.function_pattern(*pattern->source, pattern->local));
+        fs->pattern = 0;
+    }
+    copy_texture_tables(fs->scene, fs->tables);
+    attach_texture_sampler(fs->tables);
+    return fs;
 }
 
 namespace {
@@ -319,11 +327,11 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
             n.fn = std::static_pointer_cast<const PovFunction>(v->ptr);
             if (!n.fn->unsupported.empty() && fn_unsupported_.empty()) // warned when called
                 fn_unsupported_ = n.fn->unsupported + " ('" + t.text + "')";
-            if (!n.fn->language_unsupported.empty() && fn_language_unsupported_.empty())
-                fn_language_unsupported_ = n.fn->language_unsupported + " ('" + t.text + "')";
+            if (!n.fn->scene_unsupported.empty() && fn_scene_unsupported_.empty())
+                fn_scene_unsupported_ = n.fn->scene_unsupported + " ('" + t.text + "')";
             n.args = args();
             set_height(n);
-            if (n.args.size() != n.fn->params.size() && n.fn->language_unsupported.empty())
+            if (n.args.size() != n.fn->params.size() && n.fn->scene_unsupported.empty())
                 error_at(t, "'" + t.text + "' takes " + std::to_string(n.fn->params.size()) +
                                 " arguments");
             // Evaluation recurses through the called body too.

@@ -42,8 +42,8 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
         w = int(fw), h = int(fh);
         const Value v = parse_function(src);
         const auto fn = std::static_pointer_cast<const PovFunction>(v.ptr);
-        if (!fn->language_unsupported.empty()) {
-            unsupported(src, "height_field of a " + fn->language_unsupported + " (left out)");
+        if (!fn->scene_unsupported.empty()) {
+            unsupported(src, "height_field of a " + fn->scene_unsupported + " (left out)");
             skip_rest_of_block();
             return false;
         }

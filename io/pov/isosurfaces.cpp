@@ -31,7 +31,7 @@ bool Parser::parse_isosurface(const Token& kw, PovObject& o) {
             fn_at = t;
             const Value v = parse_function(t);
             fn = std::static_pointer_cast<const PovFunction>(v.ptr);
-            if (fn->params.size() != 3 && fn->unsupported.empty())
+            if (fn->params.size() != 3 && fn->scene_unsupported.empty())
                 error_at(t, "an isosurface's function must take x, y and z");
         } else if (accept_kw("contained_by")) {
             expect_sym("{");

@@ -182,7 +182,7 @@ TEST(PovHeightFields, HeightsFromGreyImagesAndFunctions) {
     EXPECT_NE(r.warnings[0].find("unsupported height_field from a pot file"), std::string::npos);
 }
 
-// The scene language evaluates any pigment (io/pov/pigment_scene.h): pigment maps of
+// The scene language evaluates any pigment (io/pov/function_scene.h): pigment maps of
 // patterned pigments, pigment_pattern, average and warps, as the render evaluates them.
 TEST(PovHeightFields, HeightsFromAnyPigmentFunction) {
     // gradient x blends black and a gradient y pigment: the grey is x * y.

@@ -153,6 +153,13 @@ int32_t MaterialBuilder::function_pigment(const PovPigment& pg) {
     return pigment(pg, Affine());
 }
 
+Pattern MaterialBuilder::function_pattern(const PovPattern& pt, const Affine& local) {
+    const ScopedValue<bool> uv(uv_, false);
+    const ScopedValue<bool> space(pattern_space_, true);
+    const ScopedValue<WarpChain> chain(chain_, WarpChain{});
+    return pattern(pt, local);
+}
+
 int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
     const ScopedValue<bool> space(uv_, false); // normals are evaluated in space (uv_mapping warned)
     // A map's entries first, placed by its transforms too (the parser left them no maps).

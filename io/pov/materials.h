@@ -41,7 +41,10 @@ template <class T> class ScopedValue {
 
 class MaterialBuilder {
   public:
-    MaterialBuilder(Parser& p, Scene& scene) : p_(p), scene_(scene), functions_(scene) {}
+    MaterialBuilder(Parser& p, Scene& scene) : p_(p), scene_(scene), functions_(scene, *this) {}
+    // Its function compiler refers back to it.
+    MaterialBuilder(const MaterialBuilder&) = delete;
+    MaterialBuilder& operator=(const MaterialBuilder&) = delete;
 
     /// The material of texture `t` (its own transforms included) with interior `in` (may be
     /// null), showing texture `inside` (may be null; POV-Ray's interior_texture) from inside.
@@ -55,6 +58,9 @@ class MaterialBuilder {
     /// Pigment `pg` in a function's space (the point as the function receives it, no mirror):
     /// its index in Scene::pigments.
     int32_t function_pigment(const PovPigment& pg);
+    /// Pattern `pt` placed by `local` in a function's space, its warps and pigment added to the
+    /// scene.
+    Pattern function_pattern(const PovPattern& pt, const Affine& local);
     /// Normal `n` placed by `eff`, its map's entries first: its index in Scene::normal_patterns.
     int32_t normal(const PovNormal& n, const Affine& eff);
     /// Whether `material` (one material() made) has patterns evaluated at uv coordinates.

@@ -45,7 +45,7 @@ constexpr int kMaxFunctionHeight = 10'000;
 constexpr size_t kMaxArrayDimensions = 5;
 
 struct ObjectProbe;  // io/pov/probe.h
-struct PigmentScene; // io/pov/pigment_scene.h
+struct FunctionScene; // io/pov/function_scene.h
 
 struct Macro {
     std::shared_ptr<const TokenFile> file;
@@ -195,13 +195,15 @@ class Parser {
     void parse_internal_function(PovFunction& f);
     void parse_pattern_function(PovFunction& f);
     void parse_pigment_function(PovFunction& f);
-    /// Pigment `pg` in a scene of its own, for the language's evaluation of pigment functions.
-    std::shared_ptr<const PigmentScene> pigment_scene(const PovPigment& pg);
+    /// A pigment function's pigment or a pattern function's pattern in a scene of its own, for
+    /// the language's evaluation of the function.
+    std::shared_ptr<const FunctionScene> function_scene(const PovPigment* pigment,
+                                                        const PatternFunction* pattern);
     FnNode parse_fn(const std::vector<std::string>& params, int level);
     FnNode parse_fn_primary(const std::vector<std::string>& params);
     FnNode parse_fn_atom(const std::vector<std::string>& params);
     std::string fn_unsupported_; // what the function being compiled uses that is unsupported
-    std::string fn_language_unsupported_; // ... and that the language cannot evaluate
+    std::string fn_scene_unsupported_; // ... and that the language cannot evaluate
     /// If the next token is a declared identifier (an array element with its indices) of
     /// type `t`, consumes it into `out`. A declared identifier of another type is an error
     /// naming `expected`.

@@ -76,9 +76,9 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (k == "function") { // its body, or a declared function called over x, y, z
             const Value f = parse_function(t);
             pt.function = std::static_pointer_cast<const PovFunction>(f.ptr);
-            if (pt.function->params.size() != 3 && pt.function->unsupported.empty())
+            if (pt.function->params.size() != 3 && pt.function->scene_unsupported.empty())
                 error_at(t, "a function pattern's function must take x, y and z");
-            supported = pt.function->unsupported.empty();
+            supported = pt.function->scene_unsupported.empty();
         }
         if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
         if (k == "pigment_pattern") pt.pigment = parse_pigment(PovPigment{});

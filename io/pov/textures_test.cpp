@@ -3,6 +3,7 @@
 // maps, sky_sphere; what is not supported warns and falls back to an average.
 #include "io/pov/pov_test_util.h"
 
+#include "core/backend/device_stack.h"
 #include "core/render/surface_texture.h"
 #include "core/scene/prepared_scene.h"
 #include "io/image/texture_sampler.h"
@@ -508,10 +509,64 @@ TEST(PovTextures, BumpMapsTiltTheNormalByTheImage) {
         << ri.warnings[0];
 }
 
-TEST(PovTextures, UnsupportedPatternsWarn) {
+// Function patterns run on the scene: the pigment and pattern functions they call read any
+// pigment and pattern (pigment maps, pigment_pattern, warps), as the render evaluates them.
+TEST(PovTextures, FunctionPatternsReadAnyPigmentOrPattern) {
     const PovResult r = load_text(
-        "sphere { 0, 1 pigment { function { pigment { bozo pigment_map { [0 checker] [1 rgb 1] } "
-        "} } color_map { [0 rgb 0] [1 rgb 1] } } }\n");
+        "#declare F = function { pigment { gradient x pigment_map { [0 rgb 0] [1 gradient y "
+        "color_map { [0 rgb 0] [1 rgb 1] }] } } }\n"
+        "#declare P = function { pattern { pigment_pattern { gradient x color_map { [0 rgb 1] "
+        "[1 rgb 0] } } } }\n"
+        "#declare W = function { pattern { gradient x warp { repeat 0.5 * x } } }\n"
+        "plane { z, 0 pigment { function { F(x, y, z).gray } color_map { [0 rgb 0] [1 rgb 1] } "
+        "} }\n"
+        "plane { z, 0 pigment { function { P(x, y, z) } color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+        "plane { z, 0 pigment { function { W(x, y, z) } color_map { [0 rgb 0] [1 rgb 1] } } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    EXPECT_NO_THROW(r.scene.validate());
+    const PreparedScene p = prepare_scene(r.scene);
+    const SceneView v(p);
+    auto at = [&](size_t shape, float x, float y) {
+        const uint32_t pg = uint32_t(shape_material(r, shape).pigment);
+        return evaluate_pigment(v, pg, Vec3(x, y, 0), 0, 0).rgb.x;
+    };
+    EXPECT_NEAR(at(0, 0.5f, 0.25f), 0.5f * 0.25f, 1e-4); // x * y
+    EXPECT_NEAR(at(0, 0.75f, 0.5f), 0.75f * 0.5f, 1e-4);
+    EXPECT_NEAR(at(1, 0.25f, 0), 0.75f, 1e-4); // 1 - x
+    EXPECT_NEAR(at(2, 0.75f, 0), 0.25f, 1e-4); // 0.75 repeats 0.25
+    // Each function that reads a scene pigment is a level of the device's recursion, which
+    // its stack holds (core/backend/device_stack.h): one here, two when a pigment function's
+    // pigment is itself a function pattern of F.
+    EXPECT_EQ(fn_pigment_nesting(p), 1);
+    const PovResult nested = load_text(
+        "#declare F = function { pigment { gradient x pigment_map { [0 rgb 0] [1 gradient y "
+        "color_map { [0 rgb 0] [1 rgb 1] }] } } }\n"
+        "#declare G = function { pigment { function { F(x, y, z).gray } color_map { [0 rgb 0] "
+        "[1 rgb 1] } } }\n"
+        "plane { z, 0 pigment { function { G(x, y, z).red } color_map { [0 rgb 0] [1 rgb 1] } "
+        "} }\n");
+    const PreparedScene pn = prepare_scene(nested.scene);
+    EXPECT_EQ(fn_pigment_nesting(pn), 2);
+    EXPECT_EQ(device_stack_bytes(pn), kDeviceStackBase + 2 * kDeviceStackPerFnLevel);
+    EXPECT_EQ(fn_pigment_nesting(prepare_scene(load_text("sphere { 0, 1 pigment { function "
+                                                         "{ x } } }")
+                                                   .scene)),
+              0);
+    // An isosurface runs programs without the scene: one that reads a pigment map is warned.
+    const PovResult iso =
+        load_text("#declare F = function { pigment { gradient x pigment_map { [0 rgb 0] [1 "
+                  "gradient y color_map { [0 rgb 0] [1 rgb 1] }] } } }\n"
+                  "isosurface { function { F(x, y, z).gray - 0.2 } }\n");
+    ASSERT_EQ(iso.warnings.size(), 1u);
+    EXPECT_NE(
+        iso.warnings[0].find("unsupported isosurface of a pigment function (of a pigment map)"),
+        std::string::npos)
+        << iso.warnings[0];
+}
+
+TEST(PovTextures, UnsupportedPatternsWarn) {
+    const PovResult r = load_text("sphere { 0, 1 pigment { function { pattern { tiling 3 } } "
+                                  "color_map { [0 rgb 0] [1 rgb 1] } } }\n");
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("unsupported pigment pattern 'function'"), std::string::npos);
     EXPECT_FLOAT_EQ(shape_material(r, 0).color.x, 0.5f); // the map's average

@@ -1,15 +1,20 @@
-#include "io/pov/pigment_scene.h"
+#include "io/pov/function_scene.h"
 
 #include "core/render/surface_texture.h"
 #include "core/scene/scene_view.h"
 
 namespace sheaf::io::pov {
 
-std::array<float, 5> PigmentScene::at(double x, double y, double z) const {
+std::array<float, 5> FunctionScene::color_at(double x, double y, double z) const {
     if (pigment < 0) return {0, 0, 0, 0, 0};
     const SurfaceColor c = evaluate_pigment(SceneView(tables), uint32_t(pigment),
                                             Vec3(float(x), float(y), float(z)), 0, 0);
     return {c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit};
+}
+
+double FunctionScene::value_at(double x, double y, double z) const {
+    if (pattern < 0) return 0;
+    return evaluate_fn_pattern(SceneView(tables), uint32_t(pattern), x, y, z);
 }
 
 } // namespace sheaf::io::pov

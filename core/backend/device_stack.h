@@ -11,6 +11,11 @@
 // light kernel (core/render/media_light.h: a media walk whose steps walk the media again
 // towards each light): its frame is 6,944 bytes, so its chain is 16,816 bytes, and such
 // scenes (PreparedScene::media_scatter_light) get 1 KiB more.
+// A function pattern whose program reads a scene pigment (core/render/surface_texture.h's
+// FnSceneContext) evaluates that pigment, which may hold another such pattern: each nested
+// level is the program's frame (728 bytes), the context's (160), the pigment's and an entry's
+// (112 + 16) and pattern_value's (96), 1,112 bytes, so a level gets 2 KiB
+// (fn_pigment_nesting counts the levels).
 // The device reserves the stack for every resident thread (about 270,000 on an H100), so it
 // is capped; a scene nested more deeply renders on the CPU (backend=auto) or is an error
 // (backend=cuda).

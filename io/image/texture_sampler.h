@@ -11,4 +11,10 @@ namespace sheaf::io {
 /// textures are left as they are.
 void attach_texture_sampler(PreparedScene& scene);
 
+/// What scene readers are given to sample the images of pigments they evaluate themselves
+/// (POV-Ray's pigment functions in the scene language): attach_texture_sampler, or nullptr in
+/// programs that read no images (as RasterReader, io/image/raster.h: they do not link
+/// OpenImageIO).
+using SamplerAttacher = void (*)(PreparedScene& scene);
+
 } // namespace sheaf::io

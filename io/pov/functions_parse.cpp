@@ -4,7 +4,6 @@
 // patterns are functions too, and pigment functions; a transform function gives the point
 // transformed when the scene language calls it; spline and image functions are accepted and
 // marked unsupported (they evaluate to 0).
-#include "io/image/texture_sampler.h"
 #include "io/pov/function_scene.h"
 #include "io/pov/materials.h"
 #include "io/pov/parser.h"
@@ -113,16 +112,17 @@ void Parser::parse_pattern_function(PovFunction& f) {
     auto pf = std::make_shared<PatternFunction>();
     pf->source = std::make_shared<const PovPattern>(std::move(pt));
     pf->local = local;
-    pf->scene = function_scene(nullptr, pf.get());
+    pf->scene = function_scene(name, nullptr, pf.get());
     f.pattern = std::move(pf);
 }
 
 void Parser::parse_pigment_function(PovFunction& f) {
+    const Token at = peek(); // `pigment`
     advance();
     const std::shared_ptr<const PovPigment> pg = parse_pigment(PovPigment());
     auto pf = std::make_shared<PigmentFunction>();
     pf->source = pg;
-    pf->scene = function_scene(pg.get(), nullptr);
+    pf->scene = function_scene(at, pg.get(), nullptr);
     f.pigment = pf;
     // Programs run without a scene read a solid colour or a colour map or list over a pattern.
     for (int i = 0; i < 5; ++i) pf->pigment.color[i] = float(pg->color[i]);
@@ -155,8 +155,8 @@ void Parser::parse_pigment_function(PovFunction& f) {
     }
 }
 
-std::shared_ptr<const FunctionScene> Parser::function_scene(const PovPigment* pigment,
-                                                            const PatternFunction* pattern) {
+std::shared_ptr<const FunctionScene>
+Parser::function_scene(const Token& at, const PovPigment* pigment, const PatternFunction* pattern) {
     auto fs = std::make_shared<FunctionScene>();
     MaterialBuilder builder(*this, fs->scene);
     if (pigment) fs->pigment = builder.function_pigment(*pigment);
@@ -165,7 +165,11 @@ std::shared_ptr<const FunctionScene> Parser::function_scene(const PovPigment* pi
         fs->pattern = 0;
     }
     copy_texture_tables(fs->scene, fs->tables);
-    attach_texture_sampler(fs->tables);
+    if (!fs->tables.textures.empty()) {
+        if (!options_.attach_sampler)
+            error_at(at, "an image in a function's pigment: this program reads no images");
+        options_.attach_sampler(fs->tables);
+    }
     return fs;
 }
 

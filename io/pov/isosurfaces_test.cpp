@@ -5,6 +5,7 @@
 #include "core/render/surface_texture.h"
 #include "core/scene/analytic.h"
 #include "core/scene/prepared_scene.h"
+#include "io/image/texture_sampler.h"
 
 #include <cmath>
 #include <fstream>
@@ -220,6 +221,30 @@ TEST(PovHeightFields, HeightsFromAnyPigmentFunction) {
                                  "image, function or pigment_pattern pigment)"),
               std::string::npos)
         << r.warnings[0];
+}
+
+// An image in a function's pigment is sampled through the program's sampler; a program that
+// reads no images (the CUDA test, which does not link OpenImageIO) gets an error there.
+TEST(PovHeightFields, ImagesInPigmentFunctionsNeedASampler) {
+    test::TempDir d;
+    d.write("g.pgm", "P2\n2 1\n255\n0 255\n");
+    const std::string scene = d.write(
+        "scene.pov", "height_field { function 5, 5 { pigment { image_map { pgm \"g.pgm\" } } } }");
+    PovOptions images;
+    images.attach_sampler = &attach_texture_sampler;
+    const PovResult r = load_pov_scene(scene, images);
+    ASSERT_EQ(r.scene.meshes.size(), 1u);
+    EXPECT_NEAR(height_at(r, 0.25f, 0.5f), 0, 0.02); // the black pixel
+    EXPECT_NEAR(height_at(r, 0.75f, 0.5f), 1, 0.02); // the white one
+    try {
+        load_pov_scene(scene, {});
+        ADD_FAILURE() << "a function's image loaded without a sampler";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("scene.pov:1:32: error: an image in a function's "
+                                             "pigment: this program reads no images"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(PovHeightFields, PalettePngsGiveTheirIndices) {

@@ -197,7 +197,7 @@ class Parser {
     void parse_pigment_function(PovFunction& f);
     /// A pigment function's pigment or a pattern function's pattern in a scene of its own, for
     /// the language's evaluation of the function.
-    std::shared_ptr<const FunctionScene> function_scene(const PovPigment* pigment,
+    std::shared_ptr<const FunctionScene> function_scene(const Token& at, const PovPigment* pigment,
                                                         const PatternFunction* pattern);
     FnNode parse_fn(const std::vector<std::string>& params, int level);
     FnNode parse_fn_primary(const std::vector<std::string>& params);

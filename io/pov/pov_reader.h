@@ -8,6 +8,7 @@
 
 #include "core/scene/scene.h"
 #include "io/image/raster.h"
+#include "io/image/texture_sampler.h"
 #include "io/pov/animation.h"
 
 #include <string>
@@ -22,6 +23,9 @@ struct PovOptions {
     int image_width = 512, image_height = 512; // what image_width and image_height give
     RasterReader read_raster = nullptr;        // height_field images (io::read_raster); without it,
                                                // a height field from an image is an error
+    SamplerAttacher attach_sampler = nullptr;  // images of pigment functions the language
+                                               // evaluates (io::attach_texture_sampler); without
+                                               // it, such an image is an error
     Clock clock;                               // clock, frame_number ... (animation.h)
     std::vector<std::pair<std::string, double>> declares; // POV-Ray's Declare=NAME=VALUE: floats
                                                           // declared before the scene's first line

@@ -512,9 +512,10 @@ TEST(PovTextures, BumpMapsTiltTheNormalByTheImage) {
 // Function patterns run on the scene: the pigment and pattern functions they call read any
 // pigment and pattern (pigment maps, pigment_pattern, warps), as the render evaluates them.
 TEST(PovTextures, FunctionPatternsReadAnyPigmentOrPattern) {
+    const std::string f = "#declare F = function { pigment { gradient x pigment_map { [0 rgb 0] "
+                          "[1 gradient y color_map { [0 rgb 0] [1 rgb 1] }] } } }\n";
     const PovResult r = load_text(
-        "#declare F = function { pigment { gradient x pigment_map { [0 rgb 0] [1 gradient y "
-        "color_map { [0 rgb 0] [1 rgb 1] }] } } }\n"
+        f +
         "#declare P = function { pattern { pigment_pattern { gradient x color_map { [0 rgb 1] "
         "[1 rgb 0] } } } }\n"
         "#declare W = function { pattern { gradient x warp { repeat 0.5 * x } } }\n"
@@ -539,12 +540,10 @@ TEST(PovTextures, FunctionPatternsReadAnyPigmentOrPattern) {
     // pigment is itself a function pattern of F.
     EXPECT_EQ(fn_pigment_nesting(p), 1);
     const PovResult nested = load_text(
-        "#declare F = function { pigment { gradient x pigment_map { [0 rgb 0] [1 gradient y "
-        "color_map { [0 rgb 0] [1 rgb 1] }] } } }\n"
-        "#declare G = function { pigment { function { F(x, y, z).gray } color_map { [0 rgb 0] "
-        "[1 rgb 1] } } }\n"
-        "plane { z, 0 pigment { function { G(x, y, z).red } color_map { [0 rgb 0] [1 rgb 1] } "
-        "} }\n");
+        f + "#declare G = function { pigment { function { F(x, y, z).gray } color_map { [0 rgb 0] "
+            "[1 rgb 1] } } }\n"
+            "plane { z, 0 pigment { function { G(x, y, z).red } color_map { [0 rgb 0] [1 rgb 1] } "
+            "} }\n");
     const PreparedScene pn = prepare_scene(nested.scene);
     EXPECT_EQ(fn_pigment_nesting(pn), 2);
     EXPECT_EQ(device_stack_bytes(pn), kDeviceStackBase + 2 * kDeviceStackPerFnLevel);
@@ -553,10 +552,7 @@ TEST(PovTextures, FunctionPatternsReadAnyPigmentOrPattern) {
                                                    .scene)),
               0);
     // An isosurface runs programs without the scene: one that reads a pigment map is warned.
-    const PovResult iso =
-        load_text("#declare F = function { pigment { gradient x pigment_map { [0 rgb 0] [1 "
-                  "gradient y color_map { [0 rgb 0] [1 rgb 1] }] } } }\n"
-                  "isosurface { function { F(x, y, z).gray - 0.2 } }\n");
+    const PovResult iso = load_text(f + "isosurface { function { F(x, y, z).gray - 0.2 } }\n");
     ASSERT_EQ(iso.warnings.size(), 1u);
     EXPECT_NE(
         iso.warnings[0].find("unsupported isosurface of a pigment function (of a pigment map)"),

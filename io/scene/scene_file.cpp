@@ -30,6 +30,7 @@ SceneFile read_pov(const std::string& path, const SceneFileOptions& options) {
     po.image_width = options.image_width;
     po.image_height = options.image_height;
     po.read_raster = options.read_raster;
+    po.attach_sampler = options.attach_sampler;
     if (const std::string problem = pov::animation_problem(options.animation); !problem.empty())
         throw SceneError(path + ": error: " + problem);
     po.clock = pov::clock_for(options.animation);

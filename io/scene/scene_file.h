@@ -4,6 +4,7 @@
 
 #include "core/scene/scene.h"
 #include "io/image/raster.h"
+#include "io/image/texture_sampler.h"
 #include "io/pov/animation.h"
 
 #include <string>
@@ -20,6 +21,9 @@ struct SceneFileOptions {
                                                // scenes that ask (POV-Ray's image_width)
     RasterReader read_raster = nullptr;        // images a scene builds geometry from (POV-Ray's
                                                // height_field): io::read_raster, or none (an error)
+    SamplerAttacher attach_sampler = nullptr;  // images of pigments the reader evaluates
+                                               // (POV-Ray's pigment functions in the language):
+                                               // io::attach_texture_sampler, or none (an error)
     pov::Animation animation; // the frame a POV-Ray scene is read for (its clock, frame_number)
     std::vector<std::pair<std::string, double>> declares; // POV-Ray's Declare=NAME=VALUE
 };

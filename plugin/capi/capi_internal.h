@@ -74,6 +74,7 @@ struct SheafSceneT : SheafRefCounted {
     sheaf::io::SceneFileOptions load_options = [] {
         sheaf::io::SceneFileOptions o;
         o.read_raster = &sheaf::io::read_raster; // height fields from images (OpenImageIO)
+        o.attach_sampler = &sheaf::io::attach_texture_sampler; // and pigment functions' images
         return o;
     }();
     bool subdivision_limit = false;

@@ -44,6 +44,7 @@ SCENES = [
     ("scenes/text.pov", "exact"),
     ("scenes/turned.pov", "exact"),
     ("scenes/sweeps.pov", "exact"),
+    ("scenes/functions.pov", "exact"),
     ("examples/objects/polygon.pov", "exact"),
     ("scenes/caustics.pov", "exact"),
     ("examples/objects/prism2.pov", "exact"),

@@ -161,8 +161,10 @@ Parser::function_scene(const Token& at, const PovPigment* pigment, const Pattern
     MaterialBuilder builder(*this, fs->scene);
     if (pigment) fs->pigment = builder.function_pigment(*pigment);
     if (pattern) {
-        fs->scene.fn_patterns.push_back(builder.function_pattern(*pattern->source, pattern->local));
-        fs->pattern = 0;
+        // Lowering it may compile functions its pigment reads, which add patterns first.
+        const Pattern p = builder.function_pattern(*pattern->source, pattern->local);
+        fs->scene.fn_patterns.push_back(p);
+        fs->pattern = int32_t(fs->scene.fn_patterns.size() - 1);
     }
     copy_texture_tables(fs->scene, fs->tables);
     if (!fs->tables.textures.empty()) {

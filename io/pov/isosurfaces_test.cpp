@@ -273,6 +273,15 @@ TEST(PovIsosurfaces, InternalAndPatternFunctionsEvaluateInTheLanguage) {
     EXPECT_NEAR(value("S(3, 4, 0, 1)"), 4, 1e-12);
     EXPECT_NEAR(value("C(1.5, 0.5, 0.5)"), 1, 1e-12);
     EXPECT_NEAR(value("C(0.5, 0.5, 0.5)"), 0, 1e-12);
+    // A pattern function of a pigment_pattern whose pigment is a function pattern of another
+    // pattern function: the grey of the inverted map of y.
+    EXPECT_NEAR(test::declared("#declare A = function { pattern { gradient y } }\n"
+                               "#declare B = function { pattern { pigment_pattern { function { "
+                               "A(x, y, z) } color_map { [0 rgb 1] [1 rgb 0] } } } }\n"
+                               "#declare V = B(0.25, 0.75, 0);",
+                               "V")
+                    .v[0],
+                0.25, 1e-6);
     EXPECT_EQ(error_of("#declare S = function { internal(61) }\n#declare V = S(1, 2, 3);"),
               "scene.pov:2:14: error: 'S' takes 4 arguments, not 3");
 }

@@ -116,6 +116,11 @@ TEST(Backend, DeepCsgStaysOnTheCpu) {
     scattering.media[0].scattering = Vec3(0.1f);
     EXPECT_EQ(device_stack_bytes(prepare_scene(scattering)),
               kDeviceStackBase + kDeviceStackPerCsgLevel + kDeviceStackMediaLight);
+    // So does a scattering atmosphere; one that only absorbs does not.
+    Scene air = test::atmosphere_scene();
+    const size_t lit = device_stack_bytes(prepare_scene(air));
+    air.media[0].scattering = Vec3(0.0f);
+    EXPECT_EQ(lit, device_stack_bytes(prepare_scene(air)) + kDeviceStackMediaLight);
 
     CudaBackendStatus device;
     device.usable = true;

@@ -7,10 +7,13 @@
 // lathe's 296 + 2,328): 14,576 bytes (14,896 since the G-buffer kernel's frame grew to 5,024
 // with the media segment it writes), so the base is 16 KiB. The pattern, pigment and normal
 // code is called, not inlined (pigments nest at 128 bytes a level), far below that.
-// A scene whose media scatter the light of a light that casts shadows also runs the media
-// light kernel (core/render/media_light.h: a media walk whose steps walk the media again
-// towards each light): its frame is 6,944 bytes, so its chain is 16,816 bytes, and such
-// scenes (PreparedScene::media_scatter_light) get 1 KiB more.
+// A scene whose media (a container's or the atmosphere's) scatter the light of a light that
+// casts shadows also runs the media light kernel (core/render/media_light.h: a media walk
+// whose steps walk the media again towards each light): its frame is 7,176 bytes on sm_90
+// since the atmosphere (6,944 before), so its chain is 17,296 bytes, and such scenes
+// (PreparedScene::media_scatter_light) get 2 KiB more. The G-buffer kernel's frame is 4,992
+// bytes with the atmosphere (its part of the media walk shares the containers' loop and span
+// list: a second list took it to 6,608).
 // A function pattern whose program reads a scene pigment (core/render/surface_texture.h's
 // FnSceneContext) evaluates that pigment, which may hold another such pattern: each nested
 // level is the program's frame (728 bytes), the context's (160), the pigment's and an entry's
@@ -34,7 +37,7 @@ namespace sheaf {
 constexpr size_t kDeviceStackBase = size_t(16) << 10;
 constexpr size_t kDeviceStackPerCsgLevel = size_t(10) << 10;
 constexpr size_t kDeviceStackCap = size_t(96) << 10;
-constexpr size_t kDeviceStackMediaLight = size_t(1) << 10;
+constexpr size_t kDeviceStackMediaLight = size_t(2) << 10;
 constexpr size_t kDeviceStackPerFnLevel = size_t(2) << 10;
 
 /// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each

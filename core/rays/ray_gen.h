@@ -172,8 +172,10 @@ SHEAF_HD_INLINE void shadow_ray_write(const SceneView& scene, const SurfaceHit* 
     r.tmax = ls.distance;
     out.rays[slot] = r;
     out.pixel[slot] = h.pixel;
-    // The media on the way fade the light (their extinction), as POV-Ray's shadow rays do.
-    const Vec3 through = media_transmittance(scene, target, ls.to_light, ls.distance);
+    // The media on the way fade the light (their extinction), as POV-Ray's shadow rays do;
+    // the atmosphere's only for lights with media_attenuation.
+    const Vec3 through =
+        media_transmittance(scene, target, ls.to_light, ls.distance, l.media_attenuation);
     out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h, ls.to_light,
                                                    ls.radiance * through * scale, l.highlights);
     out.light[slot] = li;

@@ -44,15 +44,16 @@ SHEAF_HD_INLINE uint64_t cast_analytic_pixel(const SceneView& scene, const Camer
     return vis;
 }
 
-/// What a ray from `origin` leaving the scene along `dir` brings with weight w: the sky,
-/// through the fog, and the light of the media it crosses.
-SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, Vec3 w) {
+/// What a ray of sample `pixel` from `origin` leaving the scene along `dir` brings with weight
+/// w: the sky, through the fog, and the light of the media it crosses.
+SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, Vec3 w,
+                                 uint32_t pixel) {
     float keep;
     Vec3 add;
     fog_over(scene.fog, origin, dir, INFINITY, keep, add);
     Vec3 media_keep(1.0f), media_add(0.0f);
-    if (scene.media_container_count > 0)
-        media_along(scene, origin, dir, INFINITY, media_keep, media_add);
+    if (scene.has_media())
+        media_along(scene, origin, dir, INFINITY, media_keep, media_add, media_jitter(pixel));
     return w * ((sky_color(scene, dir) * keep + add) * media_keep + media_add * keep);
 }
 
@@ -65,9 +66,9 @@ SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h,
     const Vec3 origin = h.position - h.incoming * h.t;
     if (seg) *seg = media_segment(scene, origin, h.incoming, h.t, h.throughput, h.pixel);
     Vec3 media(0.0f);
-    if (scene.media_container_count > 0) {
+    if (scene.has_media()) {
         Vec3 keep, add;
-        media_along(scene, origin, h.incoming, h.t, keep, add);
+        media_along(scene, origin, h.incoming, h.t, keep, add, media_jitter(h.pixel));
         media = h.throughput * add;
         h.throughput = h.throughput * keep;
     }
@@ -121,7 +122,7 @@ SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const Camer
     Ray ray;
     if (!primary_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), ray)) return out;
     if (vis == kEmptyPixel) {
-        out.radiance = leave_scene(scene, ray.origin, ray.dir, Vec3(1.0f));
+        out.radiance = leave_scene(scene, ray.origin, ray.dir, Vec3(1.0f), uint32_t(i));
         out.segment = media_segment(scene, ray.origin, ray.dir, INFINITY, Vec3(1.0f), uint32_t(i));
         return out;
     }

@@ -1,8 +1,8 @@
 // Light that media scatter towards the viewer from lights that cast shadows. Every ray that
 // brings light to a sample (camera, reflection, refraction) leaves a segment: where it starts,
 // its direction, where it stops and what it carries. Each step of a scattering medium along a
-// segment (core/render/media.h) sends a shadow ray to each light (to at most
-// kMediaLights of them, a different share at each step, when there are more), carrying the
+// segment (core/render/media.h) sends a shadow ray to each light whose light arrives there
+// (to at most kMediaLights of them, a different share at each step, when more do), carrying the
 // light that arrives if nothing is in the way. The rays go through the ray hierarchy like the
 // surfaces' shadow rays; the CPU renderer and the wavefront pipeline count, scan and fill them
 // with the functions here, in the same order.
@@ -40,37 +40,55 @@ SHEAF_HD_INLINE MediaSegment media_segment(const SceneView& scene, Vec3 origin, 
 /// A scattering step sends shadow rays to this many lights at most.
 constexpr uint32_t kMediaLights = 4;
 
+/// Whether light l lights the scattering step at `at` in material m's media through a shadow
+/// ray: it casts shadows, scatters in the media and its light arrives there (a spotlight's
+/// cone holds the point); `ls` receives its sample.
+SHEAF_HD_INLINE bool media_light_reaches(const Light& l, const Material& m, Vec3 at,
+                                         const RayGenParams& p, LightSample& ls) {
+    if (l.shadowless || !light_scatters_in(l, m)) return false; // shadowless: media.h adds it
+    ls = sample_light(l, at, p.far);
+    return max_component(ls.radiance) > 0;
+}
+
 /// Calls emit(ray, weight, light) for the shadow ray of every (scattering step, light) pair of
 /// segment s: the ray runs from the light to the step's middle, and weight is the light that
-/// arrives at the segment's start when nothing is in the way. With more than kMediaLights
-/// lights, step k takes lights o + j * stride (j < kMediaLights), o drawn per step from a hash
-/// of the sample and k, each carrying stride times its light. `fade`: weights include the media
-/// between the step and the light (media_transmittance); counting needs no weights.
+/// arrives at the segment's start when nothing is in the way. Only the lights whose light
+/// arrives at the step count (media_light_reaches: narrow spotlights reach few steps). With
+/// more than kMediaLights of them, step k takes lights o + j * stride of them
+/// (j < kMediaLights), o drawn per step from a hash of the sample and k, each carrying stride
+/// times its light. `fade`: weights include the media between the step and the light
+/// (media_transmittance); counting needs no weights.
 template <class Emit>
 SHEAF_HD_INLINE void media_light_rays(const SceneView& scene, const MediaSegment& s,
                                       const RayGenParams& p, bool fade, const Emit& emit) {
     if (!(max_component(s.weight) > 0) || scene.light_count == 0) return;
-    const uint32_t lights = scene.light_count;
-    const uint32_t stride = light_share_stride(lights, kMediaLights);
-    const uint32_t per = lights < kMediaLights ? lights : kMediaLights;
     uint32_t step = 0;
     Vec3 keep, add;
     media_along(
-        scene, s.origin, s.dir, s.t_end, keep, add, [&](const Material& m, Vec3 at, Vec3 w) {
-            const uint32_t o = light_share_offset(s.pixel, step++, stride);
-            for (uint32_t j = 0; j < per; ++j) {
-                const uint32_t li = o + j * stride;
-                if (li >= lights) break;
+        scene, s.origin, s.dir, s.t_end, keep, add,
+        [&](const Material& m, Vec3 at, Vec3 w) {
+            const uint32_t tag = step++;
+            if (!(max_component(s.weight * w) > 0)) return;
+            uint32_t reach = 0;
+            LightSample ls;
+            for (uint32_t li = 0; li < scene.light_count; ++li)
+                reach += media_light_reaches(scene.lights[li], m, at, p, ls) ? 1u : 0u;
+            const uint32_t stride = light_share_stride(reach, kMediaLights);
+            const uint32_t o = light_share_offset(s.pixel, tag, stride);
+            for (uint32_t li = 0, k = 0; li < scene.light_count; ++li) {
                 const Light& l = scene.lights[li];
-                if (l.shadowless || !light_scatters_in(l, m))
-                    continue; // shadowless: media.h adds it
-                const LightSample ls = sample_light(l, at, p.far);
+                if (!media_light_reaches(l, m, at, p, ls)) continue;
+                const uint32_t c = k++; // its place among the lights that reach the step
+                if (c < o || (c - o) % stride != 0) continue;
+                if ((c - o) / stride >= kMediaLights) break;
                 Vec3 weight = s.weight * w * ls.radiance *
                               (media_phase(scene, m, dot(ls.to_light, s.dir)) * float(stride));
                 if (!(max_component(weight) > 0)) continue;
-                // The media on the way to the light fade it (counting needs no weights).
+                // The media on the way to the light fade it: the containers', and the
+                // atmosphere's for lights with media_attenuation (counting needs no weights).
                 if (fade)
-                    weight = weight * media_transmittance(scene, at, ls.to_light, ls.distance);
+                    weight = weight * media_transmittance(scene, at, ls.to_light, ls.distance,
+                                                          l.media_attenuation);
                 Ray r;
                 r.origin = ls.origin;
                 r.dir = -ls.to_light;
@@ -78,7 +96,8 @@ SHEAF_HD_INLINE void media_light_rays(const SceneView& scene, const MediaSegment
                 r.tmax = ls.distance;
                 emit(r, weight, li);
             }
-        });
+        },
+        media_jitter(s.pixel));
 }
 
 /// How many shadow rays segment s sends (media_light_rays).

@@ -297,7 +297,8 @@ class FramePipeline {
                     continue;
                 }
                 const Ray& ray = b->rays[i];
-                radiance_[b->pixel[i]] += leave_scene(view_, ray.origin, ray.dir, b->weight[i]);
+                radiance_[b->pixel[i]] +=
+                    leave_scene(view_, ray.origin, ray.dir, b->weight[i], b->pixel[i]);
                 if (segments)
                     segments_[i] = media_segment(view_, ray.origin, ray.dir, INFINITY, b->weight[i],
                                                  b->pixel[i]);
@@ -320,7 +321,7 @@ class FramePipeline {
                 },
                 1024);
             if (scene_.fog.distance > 0 ||
-                !scene_.media_containers.empty()) // in ray order: the same sums on every accel
+                scene_.has_media()) // in ray order: the same sums on every accel
                 for (size_t k = 0; k < count; ++k) radiance_[next[base + k].pixel] += fog_[k];
             if (segments) {
                 t.stop(); // scatter_light times its own phases

@@ -288,9 +288,14 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_name.push_back(obj.name);
         p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
-    if (!p.media_containers.empty())
+    p.atmosphere = scene.atmosphere;
+    if (p.has_media())
         for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
             if (!(scene.shape_objects[so].flags & kSolid)) continue;
+            if (p.atmosphere >= 0) { // the atmosphere is everywhere
+                p.media_solids.push_back(uint32_t(so));
+                continue;
+            }
             const Sphere& s = p.prim_sphere[p.tris.size() + so];
             for (uint32_t c : p.media_containers) {
                 const Sphere& b = p.prim_sphere[p.tris.size() + c];

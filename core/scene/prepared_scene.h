@@ -88,9 +88,10 @@ struct PreparedScene {
     std::vector<Medium> media;
     std::vector<uint32_t> medium_densities;
     // The analytic primitives some of whose shapes hold media (0-based among the analytic
-    // ones; core/render/media.h), and the solid ones (kSolid) that media leave out, of those
-    // whose bounds meet a container's.
+    // ones; core/render/media.h), and the solid ones (kSolid) that media leave out: all of
+    // them with an atmosphere, else those whose bounds meet a container's.
     std::vector<uint32_t> media_containers, media_solids;
+    int32_t atmosphere = -1;            // Scene::atmosphere
     std::vector<FnProgram> fn_programs; // user functions (Scene::fn_programs ...)
     std::vector<FnInstr> fn_code;
     std::vector<Pattern> fn_patterns;
@@ -122,13 +123,16 @@ struct PreparedScene {
     bool prim_flag(uint32_t prim, uint8_t flag) const {
         return prim < prim_flags.size() && (prim_flags[prim] & flag) != 0;
     }
-    /// Whether frames send media shadow rays (core/render/media_light.h): a container's medium
-    /// scatters and a light that casts shadows interacts with media.
+    /// Whether rays cross media: containers' or the atmosphere's.
+    bool has_media() const { return !media_containers.empty() || atmosphere >= 0; }
+    /// Whether frames send media shadow rays (core/render/media_light.h): a medium of a
+    /// container or of the atmosphere scatters and a light that casts shadows interacts with
+    /// media.
     bool media_scatter_light() const {
         bool scatters = false, lit = false;
         for (const Medium& md : media) scatters = scatters || md.scatters();
         for (const Light& l : lights) lit = lit || (!l.shadowless && l.media_interaction);
-        return scatters && lit && !media_containers.empty();
+        return scatters && lit && has_media();
     }
 };
 

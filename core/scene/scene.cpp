@@ -516,6 +516,10 @@ void Scene::validate_patterns() const {
         if (!range(mt.media_first, mt.media_count, media.size()))
             throw SceneError(name + ": its media lie outside the scene's media");
     }
+    if (atmosphere >= int32_t(materials.size()) ||
+        (atmosphere >= 0 && materials[size_t(atmosphere)].media_count == 0))
+        throw SceneError("the atmosphere names material " + std::to_string(atmosphere) +
+                         ", which does not exist or holds no media");
     for (size_t i = 0; i < media.size(); ++i) {
         const Medium& md = media[i];
         const std::string name = "medium " + std::to_string(i);

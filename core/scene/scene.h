@@ -153,6 +153,7 @@ struct Light {
     bool shadowless = false; // lights without shadow rays
     bool highlights = true;  // false: diffuse light only (POV-Ray's shadowless lights)
     bool media_interaction = true; // false: media do not scatter this light
+    bool media_attenuation = false; // true: the atmosphere's media fade its light on its way
     uint16_t group = 0; // > 0: lights only materials of that light group (Material::light_group)
 };
 
@@ -353,6 +354,10 @@ class Scene {
     Vec3 background{0, 0, 0};
     int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene
     Fog fog;
+    /// >= 0: the material whose media fill the space outside solid objects (POV-Ray's
+    /// atmospheric `media`; only its media are read). Rays that leave the scene cross
+    /// kAtmosphereFar units of it (core/render/media.h).
+    int32_t atmosphere = -1;
     /// The gamma of the space colours are given and computed in (POV-Ray's assumed_gamma): the
     /// frame's value v is light v^working_gamma, and image textures are read into that space.
     /// 1: linear light (the default; every format but legacy POV-Ray scenes).

@@ -57,6 +57,7 @@ struct SceneView {
     uint32_t media_container_count = 0;
     const uint32_t* media_solids = nullptr; // PreparedScene::media_solids
     uint32_t media_solid_count = 0;
+    int32_t atmosphere = -1; // PreparedScene::atmosphere
     FnView functions; // user functions: function patterns, isosurfaces
     int32_t sky = -1;
     Fog fog;
@@ -100,13 +101,10 @@ struct SceneView {
           material_entries(p.material_entries.data()), media(p.media.data()),
           medium_densities(p.medium_densities.data()), media_containers(p.media_containers.data()),
           media_container_count(uint32_t(p.media_containers.size())),
-          media_solids(p.media_solids.data()),
-          media_solid_count(uint32_t(p.media_solids.size())), functions{p.fn_programs.data(),
-                                                                        p.fn_code.data(),
-                                                                        p.fn_patterns.data(),
-                                                                        p.fn_pigments.data(),
-                                                                        p.fn_pigment_entries.data(),
-                                                                        p.warps.data()},
+          media_solids(p.media_solids.data()), media_solid_count(uint32_t(p.media_solids.size())),
+          atmosphere(p.atmosphere), functions{p.fn_programs.data(),        p.fn_code.data(),
+                                              p.fn_patterns.data(),        p.fn_pigments.data(),
+                                              p.fn_pigment_entries.data(), p.warps.data()},
           sky(p.sky), fog(p.fog), lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
           camera_faces(p.camera_faces.data()), camera_face_count(uint32_t(p.camera_faces.size())),
           camera_meshes(p.camera_meshes.data()),
@@ -122,6 +120,8 @@ struct SceneView {
                 blobs, blob_elements, isosurfaces,    functions,   julias};
     }
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
+    /// Whether rays cross media: containers' or the atmosphere's (core/render/media.h).
+    SHEAF_HD bool has_media() const { return media_container_count > 0 || atmosphere >= 0; }
     SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }
     /// Whether primitive `prim`'s object has ObjectFlag `flag` (or kPrimMayPass).
     SHEAF_HD bool prim_flag(uint32_t prim, uint8_t flag) const {

@@ -331,6 +331,57 @@ inline Scene scattering_scene() {
     return s;
 }
 
+/// The atmosphere (Scene::atmosphere): a scattering, absorbing medium everywhere outside solid
+/// objects, inside a hollow room; a spotlight fading through it (media_attenuation) whose beam
+/// crosses the view past a solid ball, a transparent solid ball the atmosphere leaves out, six
+/// more spotlights behind the camera (more lights than a step takes, none reaching the
+/// steps in view) and a point light.
+inline Scene atmosphere_scene() {
+    Scene s;
+    Material wall;
+    wall.color = Vec3(0.6f), wall.diffuse = 0.7f;
+    s.add_shape("room", Shape{ShapeKind::Sphere}, s.add_material(wall), Affine::scale(Vec3(12.0f)));
+    Material white;
+    const uint32_t ball = s.add_shape("ball", Shape{ShapeKind::Sphere}, s.add_material(white),
+                                      Affine::translate(Vec3(-1.0f, 1.0f, -2.0f)));
+    s.shape_objects[ball].flags = kSolid;
+    Material glass;
+    glass.color = Vec3(1.0f);
+    glass.ambient = glass.diffuse = 0, glass.transmission = 1, glass.ior = 1;
+    glass.fresnel_split = false;
+    const uint32_t clear =
+        s.add_shape("glass", Shape{ShapeKind::Sphere}, s.add_material(glass),
+                    Affine::translate(Vec3(1.5f, -0.5f, 0.0f)) * Affine::scale(Vec3(0.8f)));
+    s.shape_objects[clear].flags = kSolid;
+    Medium air;
+    air.scattering = Vec3(0.05f, 0.04f, 0.03f);
+    air.absorption = Vec3(0.01f);
+    air.samples = 40;
+    air.light_samples = 4;
+    Material atmosphere;
+    atmosphere.media_first = uint32_t(s.media.size());
+    atmosphere.media_count = 1;
+    s.media.push_back(air);
+    s.atmosphere = int32_t(s.add_material(atmosphere));
+    Light spot{Vec3(-1.0f, 6.0f, -2.0f), Vec3(3.0f)};
+    spot.type = LightType::Spot;
+    spot.direction = Vec3(0, -1, 0);
+    spot.spot_radius = 12, spot.spot_falloff = 16;
+    spot.media_attenuation = true;
+    s.add_light(spot);
+    for (int i = 0; i < 6; ++i) {
+        Light back = spot;
+        back.position = Vec3(float(i) - 2.5f, 6.0f, 9.0f);
+        back.media_attenuation = i % 2 == 0;
+        s.add_light(back);
+    }
+    s.add_light(Light{Vec3(3.0f, 4.0f, 4.0f), Vec3(0.5f)});
+    s.camera.position = Vec3(0, 0.5f, 6);
+    s.camera.look_at = Vec3(0, 0.5f, 0);
+    s.camera.fov_y_degrees = 50;
+    return s;
+}
+
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
 /// normal pattern with a slope map, normal maps (a list and an average), an inside material,
 /// variable, Fresnel and metallic reflection, conserve_energy, a texture map by slope and

@@ -412,7 +412,7 @@ template <class Exec> class DeviceFrame {
             [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
             [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                 if (closest[i] != kNoHit) return false;
-                v = leave_scene(scene, rays[i].origin, rays[i].dir, weight[i]);
+                v = leave_scene(scene, rays[i].origin, rays[i].dir, weight[i], pixel[i]);
                 return true;
             });
         DeviceBuffer<uint32_t, Exec> slot_buf(ex_, b.n);
@@ -442,7 +442,7 @@ template <class Exec> class DeviceFrame {
             if (tag) out[slot[i]].gather = tag[i];
         });
         if (host_.fog.distance > 0 ||
-            !host_.media_containers.empty()) // in ray order: the same sums on every accel
+            host_.has_media()) // in ray order: the same sums on every accel
             accumulate_in_order(
                 ex_, count, radiance_.data(),
                 [=] SHEAF_HD_LAMBDA(size_t k) -> uint32_t { return out[k].pixel; },

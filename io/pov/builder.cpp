@@ -452,6 +452,7 @@ double build_scene(Parser& p, Scene& scene) {
     b.camera();
     scene.background = rgb(m.background);
     scene.sky = b.materials.sky(m.sky.pigments, m.sky.local);
+    if (!m.atmosphere.empty()) scene.atmosphere = int32_t(b.materials.atmosphere(m.atmosphere));
     if (m.fog) {
         scene.fog.distance = float(m.fog_distance);
         scene.fog.color = rgb(m.fog_color);

@@ -236,8 +236,9 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
             parse_bool_opt(true);
         } else if (k == "media_interaction") {
             l.light.media_interaction = parse_bool_opt(true);
-        } else if (k == "jitter" || k == "circular" || k == "orient" ||
-                   k == "media_attenuation") { // the atmosphere's media, which Sheaf lacks
+        } else if (k == "media_attenuation") { // the atmosphere's media fade its light
+            l.light.media_attenuation = parse_bool_opt(true);
+        } else if (k == "jitter" || k == "circular" || k == "orient") {
             parse_bool_opt(true);
         } else if (k == "looks_like") {
             // Modelled around the origin; the builder places it at the light, casting no
@@ -455,6 +456,10 @@ void Parser::parse_atmospheric(const Token& kw) {
         model.fog_up = normalize(transform.vector(up));
         if (!(length(model.fog_up) > 0)) error_at(kw, "the fog's up vector must not be zero");
         model.fog = model.fog_distance > 0;
+        return;
+    }
+    if (kw.text == "media") { // the atmosphere's; several add up, as in POV-Ray
+        model.atmosphere.push_back(parse_media());
         return;
     }
     unsupported(kw, kw.text);

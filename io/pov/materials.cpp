@@ -399,30 +399,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         m.caustics = float(std::max(in->caustics, 0.0) * 45.0);
         m.fade_color =
             Vec3(float(in->fade_color[0]), float(in->fade_color[1]), float(in->fade_color[2]));
-        m.media_first = uint32_t(scene_.media.size());
-        for (const PovMedia& pm : in->media) {
-            Medium md;
-            md.emission = Vec3(float(pm.emission[0]), float(pm.emission[1]), float(pm.emission[2]));
-            md.absorption =
-                Vec3(float(pm.absorption[0]), float(pm.absorption[1]), float(pm.absorption[2]));
-            md.scattering =
-                Vec3(float(pm.scattering[0]), float(pm.scattering[1]), float(pm.scattering[2]));
-            md.scatter_type = ScatterType(pm.scatter_type);
-            md.eccentricity = float(pm.eccentricity);
-            md.extinction = float(pm.extinction);
-            md.samples = uint32_t(pm.samples);
-            md.light_samples = uint32_t(pm.light_samples);
-            std::vector<uint32_t> densities;
-            const ScopedValue<bool> space_densities(uv_, false); // a medium has no surface
-            for (const auto& d : pm.densities)
-                densities.push_back(uint32_t(pigment(*d, outer * in->local * pm.local)));
-            md.density_first = uint32_t(scene_.medium_densities.size());
-            md.density_count = uint32_t(densities.size());
-            scene_.medium_densities.insert(scene_.medium_densities.end(), densities.begin(),
-                                           densities.end());
-            scene_.media.push_back(md);
-        }
-        m.media_count = uint32_t(in->media.size());
+        add_media(m, in->media, outer * in->local);
     } else {
         m.ior = 1.0f;
     }
@@ -476,6 +453,41 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         plain_.emplace(key, id);
         return id;
     }
+    return scene_.add_material(m);
+}
+
+void MaterialBuilder::add_media(Material& m, const std::vector<PovMedia>& media,
+                                const Affine& space) {
+    m.media_first = uint32_t(scene_.media.size());
+    for (const PovMedia& pm : media) {
+        Medium md;
+        md.emission = Vec3(float(pm.emission[0]), float(pm.emission[1]), float(pm.emission[2]));
+        md.absorption =
+            Vec3(float(pm.absorption[0]), float(pm.absorption[1]), float(pm.absorption[2]));
+        md.scattering =
+            Vec3(float(pm.scattering[0]), float(pm.scattering[1]), float(pm.scattering[2]));
+        md.scatter_type = ScatterType(pm.scatter_type);
+        md.eccentricity = float(pm.eccentricity);
+        md.extinction = float(pm.extinction);
+        md.samples = uint32_t(pm.samples);
+        md.light_samples = uint32_t(pm.light_samples);
+        std::vector<uint32_t> densities;
+        const ScopedValue<bool> space_densities(uv_, false); // a medium has no surface
+        for (const auto& d : pm.densities)
+            densities.push_back(uint32_t(pigment(*d, space * pm.local)));
+        md.density_first = uint32_t(scene_.medium_densities.size());
+        md.density_count = uint32_t(densities.size());
+        scene_.medium_densities.insert(scene_.medium_densities.end(), densities.begin(),
+                                       densities.end());
+        scene_.media.push_back(md);
+    }
+    m.media_count = uint32_t(media.size());
+}
+
+uint32_t MaterialBuilder::atmosphere(const std::vector<PovMedia>& media) {
+    Material m;
+    m.ior = 1.0f;
+    add_media(m, media, Affine());
     return scene_.add_material(m);
 }
 

@@ -50,6 +50,8 @@ class MaterialBuilder {
     /// null), showing texture `inside` (may be null; POV-Ray's interior_texture) from inside.
     uint32_t material(const PovTexture& t, const PovInterior* in,
                       const PovTexture* inside = nullptr);
+    /// The material that holds the atmosphere's media (Scene::atmosphere), placed in the world.
+    uint32_t atmosphere(const std::vector<PovMedia>& media);
     /// The sky_sphere's pigments as one (layered) pigment; -1 when there are none.
     int32_t sky(const std::vector<std::shared_ptr<const PovPigment>>& layers, const Affine& local);
     /// The program of user function `f` (function patterns, isosurfaces); a function that
@@ -71,6 +73,9 @@ class MaterialBuilder {
                          int depth);
     int32_t pigment(const PovPigment& pg, const Affine& eff);
     PigmentEntry entry(const PovMapEntry& e, const Affine& eff);
+    /// Adds `media` to the scene, their densities placed by `space` and each medium's own
+    /// transforms, as m's media.
+    void add_media(Material& m, const std::vector<PovMedia>& media, const Affine& space);
     /// A pigment composing `layers` (bottom first) by their filter and transmit.
     int32_t layer_pigment(const std::vector<PigmentEntry>& layers);
     Pattern pattern(const PovPattern& pt, const Affine& eff);

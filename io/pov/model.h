@@ -155,7 +155,8 @@ PovTextureRef uv_mapped(const PovTextureRef& t);
 /// object.
 bool same_texture(const PovTextureRef& a, const PovTextureRef& b);
 
-/// media { emission absorption density { ... } samples transforms }: an interior's medium.
+/// media { emission absorption density { ... } samples transforms }: an interior's medium, or
+/// the atmosphere's (PovModel::atmosphere).
 struct PovMedia {
     std::array<double, 3> emission{0, 0, 0}, absorption{0, 0, 0}, scattering{0, 0, 0};
     int scatter_type = 1; // POV-Ray's scattering types 1..5 (ScatterType)
@@ -283,6 +284,8 @@ struct PovModel {
     Color5 fog_color{0, 0, 0, 0, 0};
     double fog_offset = 0, fog_alt = 0;
     Vec3 fog_up{0, 1, 0};
+    /// The scene's own `media { … }` statements: the atmosphere (Scene::atmosphere).
+    std::vector<PovMedia> atmosphere;
 };
 
 /// The object's axis-aligned bounding box in POV-Ray's coordinates (min_extent, max_extent;

@@ -25,8 +25,8 @@ import shutil
 import subprocess
 import sys
 
-TOLERANCE = {"exact": (0.01, 2.0), "area": (0.02, 5.0), "noise": (0.06, 25.0),
-             "radiosity": (0.03, 5.0)}
+TOLERANCE = {"exact": (0.01, 2.0), "area": (0.02, 5.0), "media": (0.02, 5.0),
+             "noise": (0.06, 25.0), "radiosity": (0.03, 5.0)}
 
 # (scene, class): examples/... are POV-Ray's example scenes, scenes/... the project's own.
 SCENES = [
@@ -45,6 +45,7 @@ SCENES = [
     ("scenes/turned.pov", "exact"),
     ("scenes/sweeps.pov", "exact"),
     ("scenes/functions.pov", "exact"),
+    ("scenes/beams.pov", "exact"),
     ("examples/objects/polygon.pov", "exact"),
     ("scenes/caustics.pov", "exact"),
     ("examples/objects/prism2.pov", "exact"),
@@ -65,6 +66,8 @@ SCENES = [
     ("scenes/mesh_camera.pov", "exact"),
     ("examples/interior/media/media4.pov", "exact"),
     ("examples/interior/media/media5.pov", "exact"),
+    ("examples/interior/media/media1.pov", "exact"),
+    ("examples/interior/media/media2.pov", "media"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

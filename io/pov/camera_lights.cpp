@@ -570,8 +570,14 @@ Value Parser::parse_rvalue() {
             v.str = k;
             return v;
         }
+        if (k == "spline") {
+            advance();
+            Value v = Value::boxed(VType::Other, parse_spline());
+            v.str = k;
+            return v;
+        }
         if (k == "fog" || k == "media" || k == "rainbow" || k == "density" ||
-            k == "interior_texture" || k == "spline" || k == "density_map" || k == "photons" ||
+            k == "interior_texture" || k == "density_map" || k == "photons" ||
             k == "radiosity" || k == "material_map") {
             advance();
             Value v;

@@ -391,15 +391,8 @@ Value Parser::parse_identifier(const Token& t) {
         Value v = *found;
         if (v.type == VType::Array && is_sym_tok(peek_cont(), "[")) v = index_value(v, t);
         raise_pending(v);
-        if (v.type == VType::Other && v.str == "spline" && is_sym_tok(peek_cont(), "(")) {
-            unsupported(t, "spline (gives <0,0,0>)");
-            advance();
-            while (!accept_sym(")")) {
-                parse_expr();
-                accept_sym(",");
-            }
-            return Value::vec3(0, 0, 0);
-        }
+        if (v.type == VType::Other && v.str == "spline" && is_sym_tok(peek_cont(), "("))
+            return call_spline(v.as<PovSpline>());
         if (v.type == VType::Function && is_sym_tok(peek_cont(), "(")) {
             const auto fn = std::static_pointer_cast<PovFunction>(v.ptr);
             return call_function(t, *fn);
@@ -509,6 +502,7 @@ Value Parser::parse_array_init(const std::vector<size_t>& sizes, const Token& t)
 }
 
 Value Parser::call_function(const Token& t, const PovFunction& f) {
+    if (f.spline) return call_spline(*f.spline); // the spline's point, a vector
     if (!f.scene_unsupported.empty() && !f.transform) unsupported(t, f.scene_unsupported);
     expect_sym("(");
     std::vector<double> args;

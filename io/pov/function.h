@@ -48,6 +48,7 @@ struct FnNode {
 };
 
 struct FunctionScene;
+struct PovSpline;
 struct PovPattern;
 struct PovPigment;
 
@@ -98,6 +99,9 @@ struct PovFunction {
     // it gives the point transformed, a vector (transforms.inc's vtransform); a function body
     // cannot use it (`unsupported` says so).
     std::shared_ptr<const Affine> transform;
+    // A spline function (`function { spline { ... } }`): called in the scene language it
+    // gives the spline's point, a vector; a function body cannot use it.
+    std::shared_ptr<const PovSpline> spline;
     /// Evaluates the body; each node evaluated takes one of `steps` (FnStepsExceeded when
     /// none is left).
     double eval(const double* args, int n, uint64_t& steps) const;

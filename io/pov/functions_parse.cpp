@@ -49,7 +49,12 @@ Value Parser::parse_function(const Token& t) {
         f->transform = std::make_shared<const Affine>(m);
         f->unsupported = f->scene_unsupported = "transform function in a function";
         expect_sym("}", "'}'");
-    } else if (is_kw_tok(b, "spline") || is_kw_tok(b, "image_map")) {
+    } else if (is_kw_tok(b, "spline")) {
+        advance();
+        f->spline = std::make_shared<const PovSpline>(parse_spline());
+        f->unsupported = f->scene_unsupported = "spline function in a function";
+        expect_sym("}", "'}'");
+    } else if (is_kw_tok(b, "image_map")) {
         f->unsupported = f->scene_unsupported = b.text + " function";
         int depth = 1;
         while (depth > 0) {
@@ -329,6 +334,9 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
             return n;
         }
         if (v->type == VType::Function) {
+            // What its declaration met that is unsupported (a pigment function's pigment of
+            // an unsupported pattern) is warned where it is used, as in expressions.
+            raise_pending(*v);
             n.op = FnNode::Call;
             n.fn = std::static_pointer_cast<const PovFunction>(v->ptr);
             if (!n.fn->unsupported.empty() && fn_unsupported_.empty()) // warned when called

@@ -9,6 +9,7 @@
 #include "io/pov/lexer.h"
 #include "io/pov/model.h"
 #include "io/pov/pov_reader.h"
+#include "io/pov/splines.h"
 #include "io/pov/value.h"
 
 #include <cstdint>
@@ -190,6 +191,9 @@ class Parser {
     Value index_value(const Value& base, const Token& t);
     bool builtin_call(const Token& t, Value& out);
     Value call_function(const Token& t, const PovFunction& f);
+    /// S(t [, TYPE]) after a spline's name: its point at t (io/pov/splines.cpp).
+    Value call_spline(const PovSpline& s);
+    bool accept_spline_kind(SplineKind& kind);
     Value parse_function(const Token& t);
     /// `internal(N)` and `pattern { ... }` as a function's whole body (into `f`).
     void parse_internal_function(PovFunction& f);
@@ -331,6 +335,8 @@ class Parser {
     void parse_finish(PovFinish& f);
     PovInterior parse_interior(const PovInterior& base);
     PovMedia parse_media();
+    /// spline { [TYPE] TIME, POINT … } after `spline`, or a declared one extended.
+    PovSpline parse_spline();
     void parse_scattering(PovMedia& m);
     PovPigment parse_density();
     PovTexture current_default() const { return model.default_texture; }

@@ -94,7 +94,8 @@ TEST(Cuda, PipelineTestScenesMatchTheCpu) {
         {"glass", test::glass_mirror_scene()},    {"lights", test::lights_scene(false)},
         {"ortho", test::lights_scene(true)},      {"csg", test::csg_scene()},
         {"procedural", test::procedural_scene()}, {"media", test::media_scene()},
-        {"scattering", test::scattering_scene()}, {"atmosphere", test::atmosphere_scene()}};
+        {"scattering", test::scattering_scene()}, {"atmosphere", test::atmosphere_scene()},
+        {"rainbow", test::rainbow_scene()}};
     for (const auto& [name, s] : scenes) {
         const PreparedScene scene = prepare_scene(s);
         for (const SettingList& kv : variants) expect_cuda_matches_cpu(scene, name, kv);

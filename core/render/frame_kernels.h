@@ -11,6 +11,7 @@
 #include "core/render/media.h"
 #include "core/render/media_light.h"
 #include "core/render/mesh_camera.h"
+#include "core/render/rainbow.h"
 #include "core/render/shade.h"
 #include "core/render/surface_hit.h"
 #include "core/render/surface_texture.h"
@@ -54,7 +55,13 @@ SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, 
     Vec3 media_keep(1.0f), media_add(0.0f);
     if (scene.has_media())
         media_along(scene, origin, dir, INFINITY, media_keep, media_add, media_jitter(pixel));
-    return w * ((sky_color(scene, dir) * keep + add) * media_keep + media_add * keep);
+    Vec3 sky = sky_color(scene, dir);
+    if (scene.rainbow_count > 0) { // on the sky, before the fog
+        Vec3 mul, rb;
+        rainbow_over(scene, dir, kAtmosphereFar, pixel, mul, rb);
+        sky = sky * mul + rb;
+    }
+    return w * ((sky * keep + add) * media_keep + media_add * keep);
 }
 
 /// The fog between the ray's origin and the hit: scales the hit's throughput, and returns
@@ -71,6 +78,12 @@ SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h,
         media_along(scene, origin, h.incoming, h.t, keep, add, media_jitter(h.pixel));
         media = h.throughput * add;
         h.throughput = h.throughput * keep;
+    }
+    if (scene.rainbow_count > 0) { // after the media, before the fog
+        Vec3 mul, rb;
+        rainbow_over(scene, h.incoming, h.t, h.pixel, mul, rb);
+        media += h.throughput * rb;
+        h.throughput = h.throughput * mul;
     }
     float keep;
     Vec3 add;

@@ -146,10 +146,6 @@ SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Ve
     through_media(scene, m, from, dir, d, keep, add, NoScatterVisit());
 }
 
-/// How far a ray that leaves the scene crosses the atmosphere's media: POV-Ray's distance
-/// (measured with povray: an emission of 1e-11 per unit gives such a ray 0.2).
-constexpr float kAtmosphereFar = 2e10f;
-
 /// Takes the parts inside solid objects (kSolid, all but analytic object `self`) out of
 /// `spans`, the ray's parts in some media: POV-Ray's media fill only hollow objects.
 SHEAF_HD_INLINE void leave_solids(const SceneView& scene, const Ray& ray, uint32_t self,

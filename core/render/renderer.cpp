@@ -320,8 +320,7 @@ class FramePipeline {
                     if (b->type == RayType::Diffuse) h.gather = b->light[i];
                 },
                 1024);
-            if (scene_.fog.distance > 0 ||
-                scene_.has_media()) // in ray order: the same sums on every accel
+            if (scene_.lights_the_way()) // in ray order: the same sums on every accel
                 for (size_t k = 0; k < count; ++k) radiance_[next[base + k].pixel] += fog_[k];
             if (segments) {
                 t.stop(); // scatter_light times its own phases

@@ -192,6 +192,11 @@ SHEAF_HD_INLINE double fog_depth(const Fog& f, Vec3 origin, Vec3 dir, float d) {
     return double(d) * mean / f.distance;
 }
 
+/// How far a ray that leaves the scene crosses the atmosphere's media and a rainbow's fog:
+/// POV-Ray's distance (measured with povray: an emission of 1e-11 per unit gives such a ray
+/// 0.2, and a rainbow of distance 1e10 keeps exp(-2) of the background).
+constexpr float kAtmosphereFar = 2e10f;
+
 /// Fog along a ray segment (from `origin` along unit `dir`, length d, infinite for rays that
 /// leave the scene): the far colour keeps `keep` of itself and the fog adds `add`.
 /// As POV-Ray: the far colour keeps max(exp(-depth), transmit), the fog's colour fills the

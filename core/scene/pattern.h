@@ -310,4 +310,19 @@ struct Fog {
     Vec3 up{0, 1, 0};
 };
 
+/// POV-Ray's rainbow: a band of colour around the antisolar direction, added to each ray as a
+/// fog of its own (core/render/rainbow.h). A ray at angle a from `antisolar` takes the colour
+/// of pigment `colors` at ((a - start) / width, 0, 0) while that lies in [0, 1); the ray's
+/// angle around `antisolar`, from `up`, must not pass `arc` (radians), and beyond `falloff`
+/// the band fades out towards it.
+struct Rainbow {
+    Vec3 antisolar{0, 0, 1};            // unit
+    Vec3 up{0, 1, 0}, right{1, 0, 0};   // unit, square to antisolar and to each other
+    float start = 0, width = 0;         // radians (a negative width turns the band round)
+    float distance = 1e30f;             // its fog: a surface at depth d keeps exp(-d / distance)
+    float jitter = 0;                   // the band's index moves by up to this, per sample
+    float arc = 1e30f, falloff = 1e30f; // radians from up
+    uint32_t colors = 0;                // a pigment
+};
+
 } // namespace sheaf

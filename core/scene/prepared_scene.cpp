@@ -323,6 +323,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     copy_texture_tables(scene, p);
     p.sky = scene.sky;
     p.fog = scene.fog;
+    p.rainbows = scene.rainbows;
     p.lights = scene.lights;
     p.camera = scene.camera;
     prepare_camera_faces(scene, p);

@@ -99,6 +99,7 @@ struct PreparedScene {
     std::vector<PigmentEntry> fn_pigment_entries;
     int32_t sky = -1;
     Fog fog;
+    std::vector<Rainbow> rainbows;
     std::vector<Texture> textures;
     std::shared_ptr<const TextureSampler> sampler; // set by the IO layer when there are textures
     // Set by prepare_scene: the culling units of this geometry, computed once per
@@ -125,6 +126,9 @@ struct PreparedScene {
     }
     /// Whether rays cross media: containers' or the atmosphere's.
     bool has_media() const { return !media_containers.empty() || atmosphere >= 0; }
+    /// Whether rays that meet surfaces bring light of their own from the way: fog, media,
+    /// rainbows (summed in ray order, so that every accel gives the same sums).
+    bool lights_the_way() const { return fog.distance > 0 || has_media() || !rainbows.empty(); }
     /// Whether frames send media shadow rays (core/render/media_light.h): a medium of a
     /// container or of the atmosphere scatters and a light that casts shadows interacts with
     /// media.

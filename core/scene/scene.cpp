@@ -559,6 +559,19 @@ void Scene::validate_patterns() const {
     };
     for (size_t m = 0; m < materials.size(); ++m) visit(uint32_t(m));
     if (sky >= int32_t(pigments.size())) throw SceneError("the sky names a missing pigment");
+    for (size_t i = 0; i < rainbows.size(); ++i) {
+        const Rainbow& r = rainbows[i];
+        const std::string name = "rainbow " + std::to_string(i);
+        if (r.colors >= pigments.size()) throw SceneError(name + " names a missing pigment");
+        const auto unit = [](Vec3 v) { return is_finite(v) && std::fabs(length(v) - 1) < 1e-3f; };
+        if (!unit(r.antisolar) || !unit(r.up) || !unit(r.right))
+            throw SceneError(name + ": its directions must be unit vectors");
+        if (!(r.width != 0 && std::fabs(r.width) <= 1e30f) || !(std::fabs(r.start) <= 1e30f) ||
+            !(r.distance > 0) || !(r.jitter >= 0 && r.jitter <= 1e30f) || !(r.arc >= 0) ||
+            !(r.falloff >= 0) || r.falloff > r.arc)
+            throw SceneError(name + ": width must not be 0, distance must be positive, jitter "
+                                    "not negative, and the falloff angle within the arc");
+    }
     if (!(fog.distance >= 0) || !is_finite(fog.color))
         throw SceneError("the fog's distance or colour is out of range");
     if (!(working_gamma >= 0.1f && working_gamma <= 10.0f))

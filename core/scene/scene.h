@@ -354,6 +354,7 @@ class Scene {
     Vec3 background{0, 0, 0};
     int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene
     Fog fog;
+    std::vector<Rainbow> rainbows; // core/render/rainbow.h
     /// >= 0: the material whose media fill the space outside solid objects (POV-Ray's
     /// atmospheric `media`; only its media are read). Rays that leave the scene cross
     /// kAtmosphereFar units of it (core/render/media.h).

@@ -61,6 +61,8 @@ struct SceneView {
     FnView functions; // user functions: function patterns, isosurfaces
     int32_t sky = -1;
     Fog fog;
+    const Rainbow* rainbows = nullptr;
+    uint32_t rainbow_count = 0;
     const Light* lights = nullptr;
     uint32_t light_count = 0;
     // Projection::Mesh (PreparedScene::camera_faces ...).
@@ -105,9 +107,10 @@ struct SceneView {
           atmosphere(p.atmosphere), functions{p.fn_programs.data(),        p.fn_code.data(),
                                               p.fn_patterns.data(),        p.fn_pigments.data(),
                                               p.fn_pigment_entries.data(), p.warps.data()},
-          sky(p.sky), fog(p.fog), lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
-          camera_faces(p.camera_faces.data()), camera_face_count(uint32_t(p.camera_faces.size())),
-          camera_meshes(p.camera_meshes.data()),
+          sky(p.sky), fog(p.fog), rainbows(p.rainbows.data()),
+          rainbow_count(uint32_t(p.rainbows.size())), lights(p.lights.data()),
+          light_count(uint32_t(p.lights.size())), camera_faces(p.camera_faces.data()),
+          camera_face_count(uint32_t(p.camera_faces.size())), camera_meshes(p.camera_meshes.data()),
           camera_mesh_count(uint32_t(p.camera_meshes.size())),
           camera_uv_cells(p.camera_uv_cells.empty() ? nullptr : p.camera_uv_cells.data()),
           camera_uv_faces(p.camera_uv_faces.data()), background(p.background),

@@ -382,6 +382,33 @@ inline Scene atmosphere_scene() {
     return s;
 }
 
+/// Two rainbows (core/render/rainbow.h) over a sky: one whose band fills part of an arc and
+/// fades out beyond its falloff, its colours filtering and letting through what is behind,
+/// over a ball and a floor near enough to take some of it; one jittered, its band turned round
+/// (negative width).
+inline Scene rainbow_scene() {
+    Scene s = lights_scene(false);
+    s.background = Vec3(0.2f, 0.3f, 0.6f);
+    Rainbow bow;
+    bow.antisolar = normalize(Vec3(0.1f, 0.0f, -1.0f));
+    bow.right = normalize(cross(Vec3(0, 1, 0), bow.antisolar));
+    bow.up = cross(bow.antisolar, bow.right);
+    bow.start = 0.2f, bow.width = 0.25f, bow.distance = 8.0f;
+    bow.arc = 1.2f, bow.falloff = 0.6f;
+    bow.colors = uint32_t(add_pigment(s, PatternKind::Gradient,
+                                      {pigment_entry(0, Vec3(1, 0, 0), 0.5f),
+                                       pigment_entry(0.5f, Vec3(0, 1, 0), 0, 0.4f),
+                                       pigment_entry(1, Vec3(0, 0, 1), 0.3f, 0.2f)}));
+    s.rainbows.push_back(bow);
+    Rainbow pale = bow;
+    pale.start = 0.9f, pale.width = -0.15f, pale.jitter = 0.05f, pale.distance = 1e7f;
+    pale.arc = pale.falloff = 1e30f;
+    pale.colors = uint32_t(add_pigment(
+        s, PatternKind::Gradient, {pigment_entry(0, Vec3(1.0f)), pigment_entry(1, Vec3(1, 1, 0))}));
+    s.rainbows.push_back(pale);
+    return s;
+}
+
 /// Every procedural feature: patterned, layered and transmitting pigments, turbulence, a
 /// normal pattern with a slope map, normal maps (a list and an average), an inside material,
 /// variable, Fresnel and metallic reflection, conserve_energy, a texture map by slope and

@@ -441,8 +441,7 @@ template <class Exec> class DeviceFrame {
                                       segment ? &segment[i] : nullptr);
             if (tag) out[slot[i]].gather = tag[i];
         });
-        if (host_.fog.distance > 0 ||
-            host_.has_media()) // in ray order: the same sums on every accel
+        if (host_.lights_the_way()) // in ray order: the same sums on every accel
             accumulate_in_order(
                 ex_, count, radiance_.data(),
                 [=] SHEAF_HD_LAMBDA(size_t k) -> uint32_t { return out[k].pixel; },

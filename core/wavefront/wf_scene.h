@@ -77,6 +77,7 @@ template <class Exec> class DeviceScene {
         put(p.media_containers, v.media_containers);
         put(p.media_solids, v.media_solids);
         put(p.lights, v.lights);
+        put(p.rainbows, v.rainbows);
         put(p.camera_faces, v.camera_faces);
         put(p.camera_meshes, v.camera_meshes);
         put(p.camera_uv_cells, v.camera_uv_cells);

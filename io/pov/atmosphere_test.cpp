@@ -1,6 +1,6 @@
 // The atmosphere's media (POV-Ray's `media { … }` outside any object): read into
 // Scene::atmosphere with lights' media_attenuation, densities placed in the world, errors at
-// their place, and a render against the numbers povray gives.
+// their place, and a render against the numbers povray gives; rainbows likewise.
 #include "io/pov/pov_test_util.h"
 
 #include "core/render/media.h"
@@ -81,6 +81,48 @@ sphere { 0, 20 hollow pigment { rgb 0 } finish { ambient 0 diffuse 0 } })";
         const Frame f = render_frame(prepare_scene(r.scene), rs);
         EXPECT_NEAR(f.rgba[4 * (16 * 33 + 16)], hollow ? 0.25f : 0.23f, 2e-4f) << hollow;
     }
+}
+
+TEST(PovRainbow, ABandAroundTheDirectionAsPovRayDrawsIt) {
+    // A grey ramp over the band 15..25 degrees off +z (angle 20, width 10), the camera looking
+    // along +z: povray 3.7 gives sRGB 55 (0.037) at 15.38 degrees, 188 (0.503) at 20.05 and
+    // nothing past 25 (columns 127, 136, 147 of 200, the middle row).
+    const PovResult r = load_text(R"(
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location 0 look_at z angle 90 right x up y }
+background { rgb 0 }
+rainbow { angle 20 width 10 distance 1e-3 direction <0, 0, 1>
+  colour_map { [0 rgb 0] [1 rgb 1] } })");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    ASSERT_EQ(r.scene.rainbows.size(), 1u);
+    EXPECT_NEAR(r.scene.rainbows[0].antisolar.z, -1.0f, 1e-6f); // POV-Ray's +z is Sheaf's -z
+    RenderSettings rs = RenderSettings::resolve({}, r.scene.settings);
+    rs.width = rs.height = 200;
+    const Frame f = render_frame(prepare_scene(r.scene), rs);
+    const auto at = [&](int x) { return f.rgba[4 * (100 * 200 + size_t(x))]; };
+    EXPECT_NEAR(at(127), 0.037f, 0.01f);
+    EXPECT_NEAR(at(136), 0.503f, 0.01f);
+    EXPECT_EQ(at(147), 0.0f);
+    EXPECT_EQ(at(100), 0.0f);
+    // No colour map or a zero width: nothing, as in POV-Ray.
+    EXPECT_TRUE(load_text("rainbow { angle 40 width 5 direction z }").scene.rainbows.empty());
+}
+
+TEST(PovRainbow, ErrorsNameTheirPlace) {
+    EXPECT_EQ(error_of("rainbow { arc_angle 400 }"),
+              "scene.pov:1:11: error: a rainbow's arc_angle must lie between 0 and 360 degrees");
+    EXPECT_EQ(error_of("rainbow { direction z arc_angle 90 falloff_angle 120 }"),
+              "scene.pov:1:1: error: a rainbow's arc_angle is smaller than its falloff_angle");
+    EXPECT_EQ(error_of("rainbow { angle 40 }"),
+              "scene.pov:1:1: error: a rainbow's direction must not be zero");
+    EXPECT_EQ(error_of("rainbow { direction y }"),
+              "scene.pov:1:1: error: a rainbow's up vector must not lie along its direction");
+    EXPECT_EQ(error_of("rainbow { direction z distance 0 }"),
+              "scene.pov:1:23: error: a rainbow's distance must be greater than 0");
+    EXPECT_EQ(error_of("rainbow { direction z glow 1 }"),
+              "scene.pov:1:23: error: found 'glow', expected a rainbow item (angle, width, "
+              "distance, direction, color_map ...)");
 }
 
 } // namespace

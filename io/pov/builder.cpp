@@ -453,6 +453,21 @@ double build_scene(Parser& p, Scene& scene) {
     scene.background = rgb(m.background);
     scene.sky = b.materials.sky(m.sky.pigments, m.sky.local);
     if (!m.atmosphere.empty()) scene.atmosphere = int32_t(b.materials.atmosphere(m.atmosphere));
+    for (const PovModel::Rainbow& r : m.rainbows) {
+        if (!r.colors || !(r.width != 0)) continue; // shows nothing, as in POV-Ray
+        Rainbow out;
+        const Vec3 dir = normalize(b.flip.vector(r.direction));
+        const Vec3 right = normalize(cross(b.flip.vector(r.up), dir));
+        out.antisolar = dir, out.right = right, out.up = normalize(cross(dir, right));
+        const double rad = M_PI / 180;
+        // POV-Ray's angle is the band's middle; a negative width turns the colours round.
+        out.start = float((r.angle - r.width / 2) * rad), out.width = float(r.width * rad);
+        out.distance = float(r.distance), out.jitter = float(r.jitter);
+        // arc_angle and falloff_angle span both sides of up.
+        out.arc = float(r.arc / 2 * rad), out.falloff = float(r.falloff / 2 * rad);
+        out.colors = uint32_t(b.materials.sky({r.colors}, Affine()));
+        scene.rainbows.push_back(out);
+    }
     if (m.fog) {
         scene.fog.distance = float(m.fog_distance);
         scene.fog.color = rgb(m.fog_color);

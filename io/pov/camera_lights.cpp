@@ -458,12 +458,62 @@ void Parser::parse_atmospheric(const Token& kw) {
         model.fog = model.fog_distance > 0;
         return;
     }
+    if (kw.text == "rainbow") {
+        parse_rainbow(kw);
+        return;
+    }
     if (kw.text == "media") { // the atmosphere's; several add up, as in POV-Ray
         model.atmosphere.push_back(parse_media());
         return;
     }
     unsupported(kw, kw.text);
     skip_block();
+}
+
+void Parser::parse_rainbow(const Token& kw) {
+    expect_sym("{");
+    PovModel::Rainbow r;
+    bool arc = false, falloff = false;
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) break;
+        if (accept_kw("angle")) {
+            r.angle = parse_float();
+        } else if (accept_kw("width")) {
+            r.width = parse_float();
+        } else if (accept_kw("distance")) {
+            r.distance = parse_float();
+            if (!(r.distance > 0)) error_at(t, "a rainbow's distance must be greater than 0");
+        } else if (accept_kw("jitter")) {
+            r.jitter = std::fabs(parse_float());
+        } else if (accept_kw("direction")) {
+            r.direction = parse_vector();
+        } else if (accept_kw("up")) {
+            r.up = parse_vector();
+        } else if (accept_kw("arc_angle") || accept_kw("falloff_angle")) {
+            const double a = parse_float();
+            if (!(a >= 0 && a <= 360))
+                error_at(t, "a rainbow's " + t.text + " must lie between 0 and 360 degrees");
+            (t.text == "arc_angle" ? r.arc : r.falloff) = a;
+            (t.text == "arc_angle" ? arc : falloff) = true;
+        } else if (accept_kw("color_map") || accept_kw("colour_map")) {
+            auto pg = std::make_shared<PovPigment>();
+            pg->patterned = true;
+            pg->pattern.kind = PatternKind::Gradient;
+            pg->pattern.vector = Vec3(1, 0, 0);
+            pg->entries = parse_color_map();
+            r.colors = std::move(pg);
+        } else {
+            error_expected(t, "a rainbow item (angle, width, distance, direction, color_map ...)");
+        }
+    }
+    if (arc && !falloff) r.falloff = r.arc; // POV-Ray: no fading unless a falloff is given
+    if (r.falloff > r.arc) error_at(kw, "a rainbow's arc_angle is smaller than its falloff_angle");
+    if (!(length(r.direction) > 0)) error_at(kw, "a rainbow's direction must not be zero");
+    if (!(length(r.up) > 0)) error_at(kw, "a rainbow's up vector must not be zero");
+    if (length(cross(r.direction, r.up)) <= 1e-6f * length(r.direction) * length(r.up))
+        error_at(kw, "a rainbow's up vector must not lie along its direction");
+    model.rainbows.push_back(std::move(r));
 }
 
 Value Parser::parse_rvalue() {

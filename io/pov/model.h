@@ -286,6 +286,15 @@ struct PovModel {
     Vec3 fog_up{0, 1, 0};
     /// The scene's own `media { … }` statements: the atmosphere (Scene::atmosphere).
     std::vector<PovMedia> atmosphere;
+    /// rainbow { … }: as written (degrees, POV-Ray's coordinates); `colors` is a gradient x
+    /// over the colour map (none: the rainbow shows nothing, as in POV-Ray).
+    struct Rainbow {
+        double angle = 0, width = 0, distance = 1e7, jitter = 0;
+        double arc = 360, falloff = 360; // degrees
+        Vec3 direction{0, 0, 0}, up{0, 1, 0};
+        std::shared_ptr<const PovPigment> colors;
+    };
+    std::vector<Rainbow> rainbows;
 };
 
 /// The object's axis-aligned bounding box in POV-Ray's coordinates (min_extent, max_extent;

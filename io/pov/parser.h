@@ -352,6 +352,7 @@ class Parser {
                               double v);
     void parse_background();
     void parse_atmospheric(const Token& kw);
+    void parse_rainbow(const Token& kw);
     PovSky parse_sky_sphere(); // after the keyword sky_sphere
     bool parse_statement(); // one top-level item; false at the end of the scene
 

@@ -68,6 +68,7 @@ SCENES = [
     ("examples/interior/media/media5.pov", "exact"),
     ("examples/interior/media/media1.pov", "exact"),
     ("examples/interior/media/media2.pov", "media"),
+    ("examples/interior/rainbow1.pov", "exact"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

@@ -26,11 +26,11 @@ SHEAF_HD_INLINE void rainbow_over(const SceneView& scene, Vec3 dir, float depth,
         const Rainbow& r = scene.rainbows[i];
         // The angle around the antisolar direction, from up.
         const float x = dot(dir, r.right), y = dot(dir, r.up), l = sqrtf(x * x + y * y);
-        const float around = acosf(hdm::fminf(hdm::fmaxf(l > 0 ? y / l : y, -1.0f), 1.0f));
+        const float around = hdm::acosf(hdm::fminf(hdm::fmaxf(l > 0 ? y / l : y, -1.0f), 1.0f));
         if (around > r.arc) continue;
         const float c = dot(dir, r.antisolar);
         if (c < 0) continue;
-        float index = (acosf(hdm::fminf(c, 1.0f)) - r.start) / r.width;
+        float index = (hdm::acosf(hdm::fminf(c, 1.0f)) - r.start) / r.width;
         if (r.jitter > 0)
             index += (2.0f * hash_unit(lattice_hash(int(pixel), int(i), 0, 0x7261696eu)) - 1.0f) *
                      r.jitter;

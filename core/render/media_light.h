@@ -69,10 +69,15 @@ SHEAF_HD_INLINE void media_light_rays(const SceneView& scene, const MediaSegment
         [&](const Material& m, Vec3 at, Vec3 w) {
             const uint32_t tag = step++;
             if (!(max_component(s.weight * w) > 0)) return;
-            uint32_t reach = 0;
+            // With no more lights than a step takes, all that reach it are taken: no need to
+            // count them first (each count samples every light).
+            uint32_t reach = scene.light_count;
             LightSample ls;
-            for (uint32_t li = 0; li < scene.light_count; ++li)
-                reach += media_light_reaches(scene.lights[li], m, at, p, ls) ? 1u : 0u;
+            if (reach > kMediaLights) {
+                reach = 0;
+                for (uint32_t li = 0; li < scene.light_count; ++li)
+                    reach += media_light_reaches(scene.lights[li], m, at, p, ls) ? 1u : 0u;
+            }
             const uint32_t stride = light_share_stride(reach, kMediaLights);
             const uint32_t o = light_share_offset(s.pixel, tag, stride);
             for (uint32_t li = 0, k = 0; li < scene.light_count; ++li) {

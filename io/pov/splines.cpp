@@ -56,6 +56,10 @@ void PovSpline::insert(double time, const Point& point, int components) {
         entries.insert(it, Entry{time, point});
 }
 
+void PovSpline::finish() {
+    moments = natural_moments(entries);
+}
+
 std::array<double, 5> PovSpline::at(double t, SplineKind how) const {
     const std::vector<Entry>& e = entries;
     const size_t n = e.size();
@@ -109,7 +113,9 @@ std::array<double, 5> PovSpline::at(double t, SplineKind how) const {
         return out;
     }
     if (how == SplineKind::Natural) {
-        const std::vector<Point> m = natural_moments(e);
+        std::vector<Point> computed; // a spline not finished yet
+        const std::vector<Point>& m =
+            moments.size() == n ? moments : (computed = natural_moments(e));
         const double h = e[i + 1].time - e[i].time, s = t - e[i].time;
         for (size_t k = 0; k < 5; ++k) {
             const double m0 = m[i][k], m1 = m[i + 1][k];
@@ -165,6 +171,7 @@ PovSpline Parser::parse_spline() {
         accept_sym(",");
     }
     if (s.entries.empty()) error_at(open, "a spline needs at least one point");
+    s.finish();
     return s;
 }
 

@@ -20,10 +20,15 @@ struct PovSpline {
     SplineKind kind = SplineKind::Linear;
     int dim = 1;                // the most components a point has: the dimension of a value
     std::vector<Entry> entries; // by increasing time
+    /// The natural spline's second derivatives at the entries, once the spline is read
+    /// (finish); empty until then.
+    std::vector<std::array<double, 5>> moments;
 
     /// Adds a point at `time`, keeping the times in order; a time given again replaces its
     /// point, but for the last time, whose new point is dropped (as POV-Ray 3.7 does).
     void insert(double time, const std::array<double, 5>& point, int components);
+    /// Computes what evaluation derives from the entries (the natural spline's moments).
+    void finish();
     /// The point at time t, as `kind` interpolates it.
     std::array<double, 5> at(double t, SplineKind kind) const;
     std::array<double, 5> at(double t) const { return at(t, kind); }

@@ -18,9 +18,10 @@ enum class RayType : uint8_t {
     Refraction = 2,
     Ao = 3,
     Diffuse = 4,
-    Camera = 5
+    Camera = 5,
+    Photon = 6 // photons from the lights (core/render/photon_pass.h): closest hit
 };
-constexpr int kRayTypeCount = 6;
+constexpr int kRayTypeCount = 7;
 
 inline const char* ray_type_name(RayType t) {
     switch (t) {
@@ -36,6 +37,8 @@ inline const char* ray_type_name(RayType t) {
         return "diffuse";
     case RayType::Camera:
         return "camera";
+    case RayType::Photon:
+        return "photon";
     }
     return "?";
 }

@@ -165,13 +165,36 @@ SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const Camer
     return out;
 }
 
-/// The terms of hit h that need no ray: emission, ambient (unless AO traces it), shadowless
-/// lights; weighted by the hit's throughput.
+/// The light the frame's photon map brings to h (POV-Ray's caustics): every photon the
+/// search finds lights h as a light from where it came, its power over the cosine between
+/// that way and the geometric normal (at least 0.1), all over the searched disc's area.
+/// Objects that collect no photons gather none; photons from behind the surface bring
+/// nothing. Not inlined: the search's stack stays out of the shading kernels' frames (the
+/// device never has photons: the wavefront leaves photon scenes to the CPU renderer).
+SHEAF_HD_NOINLINE Vec3 photon_light(const SceneView& scene, const Material& m,
+                                    const SurfaceHit& h) {
+    const PhotonMapView& pm = scene.photon_map;
+    if (pm.count == 0 || (m.diffuse == 0 && m.specular == 0 && m.blinn == 0)) return Vec3(0.0f);
+    if (scene.prim_flag(h.prim, kNoPhotonCollect)) return Vec3(0.0f);
+    float r2 = 0;
+    if (photon_gather(pm, h.position, h.geo_normal, r2) == 0 || !(r2 > 0)) return Vec3(0.0f);
+    Vec3 sum(0.0f);
+    for_photons_near(pm, h.position, h.geo_normal, r2, [&](const Photon& ph) {
+        if (dot(h.normal, ph.from) < 1e-5f) return;
+        const float cos_raw = hdm::fmaxf(0.1f, hdm::fminf(1.0f, dot(h.geo_normal, ph.from)));
+        sum += direct_light(m, h, ph.from, ph.power / cos_raw);
+    });
+    return sum / (kPi * r2);
+}
+
+/// The terms of hit h that need no ray: emission, ambient (unless AO traces it), the photon
+/// map's light, shadowless lights; weighted by the hit's throughput.
 SHEAF_HD_INLINE Vec3 unshadowed_terms(const SceneView& scene, const SurfaceHit& h, bool trace_ao,
                                       const RayGenParams& p) {
     const Material& m = scene.materials[h.material];
     Vec3 c = m.emission;
     if (!trace_ao) c += ambient_light(m, h);
+    c += photon_light(scene, m, h);
     for (uint32_t li = 0; li < scene.light_count; ++li) {
         const Light& l = scene.lights[li];
         if (!l.shadowless || !lights_point(l, h, p)) continue;

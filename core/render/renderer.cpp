@@ -8,6 +8,7 @@
 #include "core/render/frame_kernels.h"
 #include "core/render/frame_stats.h"
 #include "core/render/media_light.h"
+#include "core/render/photon_pass.h"
 #include "core/rsh/trace.h"
 #include "core/sort/radix_sort.h"
 
@@ -38,6 +39,8 @@ class FramePipeline {
         memory_.add(int64_t(radiance_.size() * sizeof(Vec3)));
         params_ = frame_ray_params(scene_, s_);
         units_ = cull_units_for(scene_, s_);
+        photons_ = shoot_photons(scene_, *units_, s_, st_, memory_);
+        view_.photon_map = photons_.view();
 
         scatter_ = scene_.media_scatter_light();
         std::vector<SurfaceHit> hits = primary();
@@ -250,10 +253,16 @@ class FramePipeline {
             if (trace_ao) generate_ao_rays(view_, hits, params_, ao);
         }
         {
-            // Terms that need no ray: emission, ambient (unless AO traces it), shadowless lights.
+            // Terms that need no ray: emission, ambient (unless AO traces it), the photons'
+            // light, shadowless lights. Computed in parallel (a photon search is not cheap),
+            // added in order.
             PhaseTimer t(st_, "time_ms.shading");
-            for (const SurfaceHit& h : hits)
-                radiance_[h.pixel] += unshadowed_terms(view_, h, trace_ao, params_);
+            std::vector<Vec3> terms(hits.size());
+            parallel_for(
+                "shade.unshadowed", hits.size(),
+                [&](size_t i) { terms[i] = unshadowed_terms(view_, hits[i], trace_ao, params_); },
+                256);
+            for (size_t i = 0; i < hits.size(); ++i) radiance_[hits[i].pixel] += terms[i];
         }
         TraceResult r;
         trace_batch(scene_, *units_, shadow, s_, st_, memory_, r);
@@ -355,7 +364,8 @@ class FramePipeline {
     }
 
     const PreparedScene& scene_;
-    const SceneView view_{scene_};
+    SceneView view_{scene_}; // and the frame's photon map
+    PhotonMap photons_;
     const RenderSettings& s_;
     const ProgressFn& progress_;
     Frame& f_;

@@ -48,12 +48,13 @@ SHEAF_HD_INLINE bool passes(const SceneView& scene, bool shadow, uint32_t prim) 
 }
 
 /// Objects without shadows let shadow and AO rays pass; objects without reflections are not
-/// seen by reflection rays, objects without an image not by camera rays: the object flags a
-/// batch of this type skips.
+/// seen by reflection rays, objects without an image not by camera rays, objects photons pass
+/// not by photons: the object flags a batch of this type skips.
 SHEAF_HD_INLINE uint8_t skip_flags(RayType type) {
     return any_hit_query(type)           ? uint8_t(kNoShadow)
            : type == RayType::Reflection ? uint8_t(kNoReflection)
            : type == RayType::Camera     ? uint8_t(kNoImage)
+           : type == RayType::Photon     ? uint8_t(kPassPhotons)
                                          : uint8_t(0);
 }
 

@@ -225,6 +225,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_sphere.push_back(min_sphere(pts));
         p.object_material.push_back(obj.material);
         p.object_name.push_back(obj.name);
+        p.object_photons.push_back(obj.photons);
     }
     // Analytic objects: one primitive each, its CSG tree flattened into the scene's arrays.
     std::map<const GlyphOutline*, uint32_t> glyphs_seen;
@@ -286,6 +287,7 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_sphere.push_back(bound);
         p.object_material.push_back(first_material);
         p.object_name.push_back(obj.name);
+        p.object_photons.push_back(obj.photons);
         p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
     p.atmosphere = scene.atmosphere;
@@ -309,21 +311,29 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.prim_flags.resize(p.prim_count());
     std::vector<char> passes(scene.materials.size());
     for (size_t m = 0; m < passes.size(); ++m) passes[m] = material_may_pass(scene, uint32_t(m));
+    // With photons on, a target they refract through casts a whole shadow, as in POV-Ray:
+    // the light through it comes as photons.
+    auto photon_shadow = [&](const PhotonObject& po) {
+        return scene.photons.enabled() && po.target > 0 && po.refraction != PhotonSwitch::Off;
+    };
     for (size_t o = 0; o < scene.objects.size(); ++o) {
-        const uint8_t f =
-            uint8_t(scene.objects[o].flags | (passes[scene.objects[o].material] ? kPrimMayPass : 0));
+        const bool may_pass =
+            passes[scene.objects[o].material] && !photon_shadow(scene.objects[o].photons);
+        const uint8_t f = uint8_t(scene.objects[o].flags | (may_pass ? kPrimMayPass : 0));
         for (uint32_t i = p.object_begin[o]; i < p.object_begin[o + 1]; ++i) p.prim_flags[i] = f;
     }
     for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
         uint8_t f = scene.shape_objects[so].flags;
-        for (const CsgNode& n : scene.shape_objects[so].nodes)
-            if (n.op == CsgOp::Leaf && passes[n.material]) f |= kPrimMayPass;
+        if (!photon_shadow(scene.shape_objects[so].photons))
+            for (const CsgNode& n : scene.shape_objects[so].nodes)
+                if (n.op == CsgOp::Leaf && passes[n.material]) f |= kPrimMayPass;
         p.prim_flags[p.tris.size() + so] = f;
     }
     copy_texture_tables(scene, p);
     p.sky = scene.sky;
     p.fog = scene.fog;
     p.rainbows = scene.rainbows;
+    p.photons = scene.photons;
     p.lights = scene.lights;
     p.camera = scene.camera;
     prepare_camera_faces(scene, p);

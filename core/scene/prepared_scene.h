@@ -57,6 +57,7 @@ struct PreparedScene {
     std::vector<Sphere> object_sphere;  // minimal enclosing sphere (Welzl/Gaertner)
     std::vector<uint32_t> object_material;
     std::vector<std::string> object_name;
+    std::vector<PhotonObject> object_photons; // what each object does with photons
 
     std::vector<PlacedShape> shapes;      // every leaf of every analytic object
     std::vector<PolyCoeffs> polys;        // of the poly leaves, indexed by Shape::index
@@ -100,6 +101,7 @@ struct PreparedScene {
     int32_t sky = -1;
     Fog fog;
     std::vector<Rainbow> rainbows;
+    PhotonSettings photons; // Scene::photons
     std::vector<Texture> textures;
     std::shared_ptr<const TextureSampler> sampler; // set by the IO layer when there are textures
     // Set by prepare_scene: the culling units of this geometry, computed once per
@@ -126,6 +128,13 @@ struct PreparedScene {
     }
     /// Whether rays cross media: containers' or the atmosphere's.
     bool has_media() const { return !media_containers.empty() || atmosphere >= 0; }
+    /// Whether frames shoot photons: photons are on and some object is their target.
+    bool has_photons() const {
+        if (!photons.enabled()) return false;
+        for (const PhotonObject& o : object_photons)
+            if (o.target > 0) return true;
+        return false;
+    }
     /// Whether rays that meet surfaces bring light of their own from the way: fog, media,
     /// rainbows (summed in ray order, so that every accel gives the same sums).
     bool lights_the_way() const { return fog.distance > 0 || has_media() || !rainbows.empty(); }

@@ -340,6 +340,7 @@ void Scene::validate() const {
     for (size_t t = 0; t < textures.size(); ++t)
         if (textures[t].path.empty())
             throw SceneError("texture " + std::to_string(t) + " has no file");
+    validate_photons();
     validate_patterns();
     validate_functions();
 }
@@ -576,6 +577,39 @@ void Scene::validate_patterns() const {
         throw SceneError("the fog's distance or colour is out of range");
     if (!(working_gamma >= 0.1f && working_gamma <= 10.0f))
         throw SceneError("the working gamma is out of range (0.1 to 10)");
+}
+
+void Scene::validate_photons() const {
+    const PhotonSettings& p = photons;
+    if (!std::isfinite(p.spacing) || p.spacing < 0)
+        throw SceneError("photons: spacing must be a finite number, 0 (off) or more");
+    if (p.count > 20'000'000) throw SceneError("photons: a count of at most 20 million photons");
+    if (!std::isfinite(p.radius_scale) || !(p.radius_scale > 0))
+        throw SceneError("photons: the gather radius's multiplier must be a finite number above 0");
+    for (size_t l = 0; l < lights.size(); ++l)
+        if (!std::isfinite(lights[l].photon_weight) || lights[l].photon_weight < 0)
+            throw SceneError("light " + std::to_string(l) +
+                             ": photon_weight must be a finite number, 0 or more");
+    if (!std::isfinite(p.radius) || p.radius < 0)
+        throw SceneError(
+            "photons: the gather radius must be a finite number, 0 (estimated) or more");
+    if (p.gather_min > p.gather_max || p.gather_max == 0)
+        throw SceneError("photons: gather needs 0 <= min <= max and max >= 1");
+    if (!std::isfinite(p.jitter) || p.jitter < 0 || p.jitter > 1)
+        throw SceneError("photons: jitter must lie between 0 and 1");
+    if (!std::isfinite(p.expand_tolerance) || p.expand_tolerance < 0 || p.steps < 1 || p.steps > 16)
+        throw SceneError("photons: expand_thresholds needs a tolerance >= 0, and steps 1 to 16");
+    if (!std::isfinite(p.adc_bailout) || p.adc_bailout < 0 || p.adc_bailout >= 1)
+        throw SceneError("photons: adc_bailout must lie in [0, 1)");
+    auto check = [](const PhotonObject& o, const std::string& name) {
+        if (!std::isfinite(o.target) || o.target < 0)
+            throw SceneError(name + ": a photon target's spacing multiplier must be a finite "
+                                    "number above 0");
+    };
+    for (size_t o = 0; o < objects.size(); ++o)
+        check(objects[o].photons, "object " + std::to_string(o));
+    for (size_t o = 0; o < shape_objects.size(); ++o)
+        check(shape_objects[o].photons, "shape object " + std::to_string(o));
 }
 
 } // namespace sheaf

@@ -6,6 +6,7 @@
 #include "core/geometry/shape.h"
 #include "core/math/affine.h"
 #include "core/scene/pattern.h"
+#include "core/scene/photon_settings.h"
 
 #include <cstdint>
 #include <map>
@@ -108,11 +109,13 @@ struct Medium {
 
 /// What an object takes part in: bits of Object::flags and ShapeObject::flags.
 enum ObjectFlag : uint8_t {
-    kNoShadow = 1,     // casts no shadow (shadow and ambient-occlusion rays pass)
-    kNoReflection = 2, // not seen in reflections
-    kNoImage = 4,      // not seen by the camera (still in shadows and reflections)
-    kSolid = 8,        // media of objects around it do not fill it (POV-Ray's objects without
-                       // `hollow`; analytic objects only)
+    kNoShadow = 1,         // casts no shadow (shadow and ambient-occlusion rays pass)
+    kNoReflection = 2,     // not seen in reflections
+    kNoImage = 4,          // not seen by the camera (still in shadows and reflections)
+    kSolid = 8,            // media of objects around it do not fill it (POV-Ray's objects without
+                           // `hollow`; analytic objects only)
+    kPassPhotons = 16,     // photons pass it unchanged (POV-Ray's pass_through)
+    kNoPhotonCollect = 32, // keeps no photons and gathers none (POV-Ray's collect off)
 };
 
 /// How a texture finds its (s, t) coordinates at a surface point.
@@ -155,6 +158,10 @@ struct Light {
     bool media_interaction = true; // false: media do not scatter this light
     bool media_attenuation = false; // true: the atmosphere's media fade its light on its way
     uint16_t group = 0; // > 0: lights only materials of that light group (Material::light_group)
+    // Photons it sends reflect and refract where the object's switches allow
+    // (photon_switch_on); photons are off unless the scene's PhotonSettings are on.
+    PhotonSwitch photon_reflection = PhotonSwitch::Unset, photon_refraction = PhotonSwitch::Unset;
+    float photon_weight = 1.0f; // its photons carry color x this (an area light's one shooter)
 };
 
 constexpr uint16_t kMaxLightGroup = 0x7fff;
@@ -272,6 +279,7 @@ struct Object {
     uint32_t material = 0;
     Affine transform;
     uint8_t flags = 0; // ObjectFlag bits
+    PhotonObject photons;
 };
 
 /// Clip: the surface of the first child where it lies inside all the others (POV-Ray's
@@ -306,6 +314,7 @@ struct ShapeObject {
     uint32_t root = 0;
     Affine transform; // object space -> world
     uint8_t flags = 0; // ObjectFlag bits
+    PhotonObject photons;
 };
 
 /// The deepest nesting of CSG operations in `o` (a lone shape: 0), against kMaxCsgNesting.
@@ -359,6 +368,8 @@ class Scene {
     /// atmospheric `media`; only its media are read). Rays that leave the scene cross
     /// kAtmosphereFar units of it (core/render/media.h).
     int32_t atmosphere = -1;
+    /// Photon mapping (caustics): on when photons.spacing > 0 (core/render/photon_pass.h).
+    PhotonSettings photons;
     /// The gamma of the space colours are given and computed in (POV-Ray's assumed_gamma): the
     /// frame's value v is light v^working_gamma, and image textures are read into that space.
     /// 1: linear light (the default; every format but legacy POV-Ray scenes).
@@ -373,6 +384,7 @@ class Scene {
   private:
     void validate_patterns() const;
     void validate_functions() const;
+    void validate_photons() const;
 };
 
 } // namespace sheaf

@@ -4,6 +4,7 @@
 // copyable: kernels take it by value.
 #pragma once
 
+#include "core/render/photon_gather.h"
 #include "core/scene/prepared_scene.h"
 
 #include <cstdint>
@@ -63,6 +64,8 @@ struct SceneView {
     Fog fog;
     const Rainbow* rainbows = nullptr;
     uint32_t rainbow_count = 0;
+    // The frame's photon map (core/render/photon_pass.h); empty unless the frame shot photons.
+    PhotonMapView photon_map;
     const Light* lights = nullptr;
     uint32_t light_count = 0;
     // Projection::Mesh (PreparedScene::camera_faces ...).

@@ -52,6 +52,7 @@ struct Builder {
     Scene& scene;
     MaterialBuilder materials;
     Affine flip = pov_to_sheaf();
+    PhotonObject photons_;          // the photons block of the unions around the object being built
     std::map<uint32_t, Mesh> loose; // single triangles by material, in Sheaf world space
     size_t names = 0;
     bool geometry_only = false; // every surface material 0 (textures not built)
@@ -154,8 +155,23 @@ struct Builder {
                 const float v = pl.n2 > 1 ? (j + 0.5f + jitter(rng)) / pl.n2 - 0.5f : 0.0f;
                 Light s = l;
                 s.position = flip.point(pl.light.position + pl.axis1 * u + pl.axis2 * v);
+                // POV-Ray's area lights shoot photons as one light; the middle sample shoots
+                // them for all.
+                if (i == pl.n1 / 2 && j == pl.n2 / 2)
+                    s.photon_weight = float(n);
+                else
+                    s.photon_reflection = s.photon_refraction = PhotonSwitch::Off;
                 scene.add_light(s);
             }
+    }
+
+    /// o's photons block over what the unions around it passed down: its own settings win.
+    PhotonObject photons_of(const PovObject& o) const {
+        PhotonObject r = photons_;
+        if (o.photons.target > 0) r.target = o.photons.target;
+        if (o.photons.reflection != PhotonSwitch::Unset) r.reflection = o.photons.reflection;
+        if (o.photons.refraction != PhotonSwitch::Unset) r.refraction = o.photons.refraction;
+        return r;
     }
 
     void mesh(const PovObject& o, const PovTexture& tex, const PovInterior* in,
@@ -177,17 +193,20 @@ struct Builder {
                 const uint32_t obj = scene.add_mesh_object(name(o), submesh(*o.mesh, faces),
                                                            material(ft, in, inside), t);
                 scene.objects[obj].flags = flags;
+                scene.objects[obj].photons = photons_of(o);
             }
             return;
         }
         const uint32_t mat = material(tex, in, inside);
+        const PhotonObject photons = photons_of(o);
         if (o.mesh->triangle_count() == 1 && o.mesh->normals.empty() && o.mesh->uvs.empty() &&
-            flags == 0) {
+            flags == 0 && !(photons.target > 0)) {
             append_mesh(loose[mat], *o.mesh, t);
             return;
         }
         const uint32_t id = scene.add_mesh_object(name(o), *o.mesh, mat, t);
         scene.objects[id].flags = flags;
+        scene.objects[id].photons = photons;
     }
 
     /// Adds the CSG node for `o` to `so`; -1 when nothing of it can be shown analytically.
@@ -292,8 +311,12 @@ struct Builder {
             return mesh(o, tex, in, inside, flags);
         }
         if (o.kind == PovKind::Csg && o.op == CsgOp::Union && !o.inverse) {
-            // A union of separate objects renders exactly as those objects.
+            // A union of separate objects renders exactly as those objects (its photons block
+            // passes to them: each is a target the way the union was).
+            const PhotonObject outer = photons_;
+            photons_ = photons_of(o);
             for (const PovObject& c : o.children) top(c, tex, in, inside, flags);
+            photons_ = outer;
             return;
         }
         ShapeObject built; // children before parents
@@ -320,6 +343,7 @@ struct Builder {
                                     " (unions of separate objects do not count)");
         // POV-Ray's objects are solid unless `hollow`: media around them leave them out.
         so.flags = uint8_t(flags | (o.hollow ? 0 : kSolid));
+        so.photons = photons_of(o);
         scene.add_shape_object(std::move(so));
     }
 
@@ -446,13 +470,14 @@ double build_scene(Parser& p, Scene& scene) {
     // POV-Ray computes in its working space: colours stay as written, and the frame's values
     // are light to the power of the gamma (Scene::working_gamma).
     scene.working_gamma = float(gamma);
-    Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, 0};
+    Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, {}, 0};
     for (const PovObject& o : m.objects) b.top(o, m.default_texture, nullptr, nullptr, 0);
     b.add_loose();
     b.camera();
     scene.background = rgb(m.background);
     scene.sky = b.materials.sky(m.sky.pigments, m.sky.local);
     if (!m.atmosphere.empty()) scene.atmosphere = int32_t(b.materials.atmosphere(m.atmosphere));
+    scene.photons = m.photons;
     for (const PovModel::Rainbow& r : m.rainbows) {
         if (!r.colors || !(r.width != 0)) continue; // shows nothing, as in POV-Ray
         Rainbow out;
@@ -495,7 +520,7 @@ double build_scene(Parser& p, Scene& scene) {
 void build_object_geometry(Parser& p, const PovObject& o, Scene& scene) {
     scene.add_material(Material{});
     p.captures_.emplace_back(); // its warnings were given where it was made
-    Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, 0, true};
+    Builder b{p, scene, MaterialBuilder(p, scene), pov_to_sheaf(), {}, {}, 0, true};
     try {
         b.top(o, p.model.default_texture, nullptr, nullptr, 0);
         b.add_loose();

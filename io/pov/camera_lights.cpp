@@ -254,7 +254,7 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
             unsupported(t, k + " (ignored)");
             skip_block();
         } else if (k == "photons") {
-            skip_block();
+            parse_light_photons(l.light);
         } else {
             error_expected(t, "a light item (spotlight, point_at, area_light ...)");
         }
@@ -282,7 +282,9 @@ void Parser::parse_global_settings() {
             model.ambient_light = {c[0], c[1], c[2]};
         } else if (k == "radiosity") {
             parse_radiosity();
-        } else if (k == "photons" || k == "subsurface") {
+        } else if (k == "photons") {
+            parse_photon_settings();
+        } else if (k == "subsurface") {
             unsupported(t, k);
             if (is_sym_tok(peek(), "{")) skip_block();
         } else if (k == "irid_wavelength") {

@@ -220,7 +220,8 @@ struct PovObject {
     bool inverse = false;
     bool hollow = false; // media around it fill it (`hollow`; set on a CSG, on its members too)
     bool uv_mapping = false; // its textures are uv-mapped (the object's uv_mapping)
-    uint8_t flags = 0; // ObjectFlag bits: no_shadow, no_reflection, no_image
+    uint8_t flags = 0;       // ObjectFlag bits: no_shadow, no_reflection, no_image, photons'
+    PhotonObject photons;    // its photons block (a union's passes to its parts)
     // A light_group (a union whose lights light only its objects, and its objects only its
     // lights, and with global_lights also the lights in no group).
     bool light_group = false, global_lights = false;
@@ -295,6 +296,7 @@ struct PovModel {
         std::shared_ptr<const PovPigment> colors;
     };
     std::vector<Rainbow> rainbows;
+    PhotonSettings photons; // global_settings photons
 };
 
 /// The object's axis-aligned bounding box in POV-Ray's coordinates (min_extent, max_extent;

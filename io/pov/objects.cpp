@@ -347,10 +347,7 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
         o.interior_texture = parse_texture_layers(model.default_texture);
     } else if (k == "photons") {
         advance();
-        if (is_sym_tok(peek(), "{"))
-            skip_block();
-        else
-            next();
+        parse_object_photons(o);
     } else if (k == "radiosity") {
         advance();
         skip_block();

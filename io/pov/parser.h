@@ -353,6 +353,10 @@ class Parser {
     void parse_background();
     void parse_atmospheric(const Token& kw);
     void parse_rainbow(const Token& kw);
+    // photons.cpp: the scene's, an object's and a light's photon blocks.
+    void parse_photon_settings();
+    void parse_object_photons(PovObject& o);
+    void parse_light_photons(Light& l);
     PovSky parse_sky_sphere(); // after the keyword sky_sphere
     bool parse_statement(); // one top-level item; false at the end of the scene
 

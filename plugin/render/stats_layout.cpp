@@ -10,7 +10,8 @@ namespace render {
 
 namespace {
 
-constexpr const char* kTypes[] = {"shadow", "reflection", "refraction", "ao", "diffuse", "camera"};
+constexpr const char* kTypes[] = {"shadow",  "reflection", "refraction", "ao",
+                                  "diffuse", "camera",     "photon"};
 
 bool starts_with(const std::string& s, const std::string& prefix) {
     return s.compare(0, prefix.size(), prefix) == 0;

@@ -534,13 +534,12 @@ static void test_scene_files(void) {
     /* The include lives in a folder of its own, found only through the include_path option. */
     (void)system("mkdir -p capi_test_inc");
     write_text("capi_test_inc/capi_test_colors.inc", "#declare Gold = rgb <1, 0.8, 0.2>;\n");
-    write_text(
-        "capi_test_scene.pov",
-        "#include \"capi_test_colors.inc\"\n"
-        "camera { location <0, 1, -5> look_at <0, 0, 0> }\n"
-        "light_source { <3, 5, -4> rgb 1 }\n"
-        "sphere { 0, 1 pigment { Gold } }\n"
-        "box { <-2, -1, -2>, <2, -0.9, 2> pigment { rgb 1 } }\nglobal_settings { photons { } }\n");
+    write_text("capi_test_scene.pov", "#include \"capi_test_colors.inc\"\n"
+                                      "camera { location <0, 1, -5> look_at <0, 0, 0> }\n"
+                                      "light_source { <3, 5, -4> rgb 1 }\n"
+                                      "sphere { 0, 1 pigment { Gold } }\n"
+                                      "box { <-2, -1, -2>, <2, -0.9, 2> pigment { rgb 1 } "
+                                      "}\nglobal_settings { subsurface { } }\n");
 
     OK(sheafSceneNew(&s));
     expect_error(sheafSceneLoadFile(s, "capi_test_scene.pov"), SHEAF_ERROR_SCENE,
@@ -548,10 +547,10 @@ static void test_scene_files(void) {
     OK(sheafSceneSetLoadOption(s, "include_path", "capi_test_inc"));
     OK(sheafSceneLoadFile(s, "capi_test_scene.pov"));
     OK(sheafSceneGetWarningCount(s, &count));
-    CHECK(count == 1, "the scene has %zu warnings, expected 1 (photons)", count);
+    CHECK(count == 1, "the scene has %zu warnings, expected 1 (subsurface)", count);
     OK(sheafSceneGetWarning(s, 0, &message));
-    CHECK(message && strstr(message, "capi_test_scene.pov:6:") && strstr(message, "photons"),
-          "warning '%s' should name the file, line 6 and photons", message ? message : "(null)");
+    CHECK(message && strstr(message, "capi_test_scene.pov:6:") && strstr(message, "subsurface"),
+          "warning '%s' should name the file, line 6 and subsurface", message ? message : "(null)");
     expect_error(sheafSceneGetWarning(s, 1, &message), SHEAF_ERROR_INVALID_ARGUMENT,
                  "warning out of range", "warning 1", NULL);
 
@@ -564,10 +563,10 @@ static void test_scene_files(void) {
     OK(sheafFrameRelease(frame));
     OK(sheafRendererRelease(r));
 
-    /* Strict: the unsupported photons are an error, and the loaded scene stays as it was. */
+    /* Strict: the unsupported subsurface is an error, and the loaded scene stays as it was. */
     OK(sheafSceneSetLoadOption(s, "strict", "1"));
     expect_error(sheafSceneLoadFile(s, "capi_test_scene.pov"), SHEAF_ERROR_SCENE, "strict",
-                 "photons", NULL);
+                 "subsurface", NULL);
     OK(sheafSceneGetWarningCount(s, &count));
     CHECK(count == 1, "a failed load changed the warnings (%zu)", count);
     expect_error(sheafSceneSetLoadOption(s, "strict", "maybe"), SHEAF_ERROR_INVALID_ARGUMENT,

@@ -107,7 +107,7 @@ camera { location <0, 1, -4> look_at 0 }
 light_source { <2, 4, -3> rgb 1 }
 sphere { 0, 1 pigment { Col } }
 plane { y, -1 pigment { rgb 1 } }
-global_settings { photons { } }
+global_settings { subsurface { } }
 POV
 expect_rc pov_file 0 "$OUT/scene.pov" --include-path "$OUT/inc" "${S[@]}" -o "$OUT/scene.png"
 expect_in "$OUT/pov_file.err" "scene.pov:6:" "a POV scene's warning names file and line"

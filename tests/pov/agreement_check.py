@@ -11,6 +11,9 @@ Each scene has a class, and the class its tolerance:
   noise   mean <= 0.06,  share <= 25%: noise patterns (bozo, granite, marble, wood, turbulence)
           whose noise is Sheaf's own: alike in feature size and distribution, not pixel for
           pixel (docs/pov.md).
+  media, photons  mean <= 0.02, share <= 5%: media whose beams are narrower than the steps
+          read them; caustics, whose photons both shoot in rings (the estimates agree, the
+          grain does not pixel for pixel).
   radiosity  mean <= 0.03, share <= 5%: radiosity; Sheaf gathers at every pixel, with the
           noise of its count of rays, where POV-Ray interpolates a cache of gathered samples.
 A scene also fails when POV-Ray's picture is constant (nothing to compare) or either renderer
@@ -26,6 +29,7 @@ import subprocess
 import sys
 
 TOLERANCE = {"exact": (0.01, 2.0), "area": (0.02, 5.0), "media": (0.02, 5.0),
+             "photons": (0.02, 5.0),
              "noise": (0.06, 25.0), "radiosity": (0.03, 5.0)}
 
 # (scene, class): examples/... are POV-Ray's example scenes, scenes/... the project's own.
@@ -69,6 +73,7 @@ SCENES = [
     ("examples/interior/media/media1.pov", "exact"),
     ("examples/interior/media/media2.pov", "media"),
     ("examples/interior/rainbow1.pov", "exact"),
+    ("examples/lights/phot_met_glass.pov", "photons"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

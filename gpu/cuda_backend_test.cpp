@@ -95,7 +95,7 @@ TEST(Cuda, PipelineTestScenesMatchTheCpu) {
         {"ortho", test::lights_scene(true)},      {"csg", test::csg_scene()},
         {"procedural", test::procedural_scene()}, {"media", test::media_scene()},
         {"scattering", test::scattering_scene()}, {"atmosphere", test::atmosphere_scene()},
-        {"rainbow", test::rainbow_scene()}};
+        {"rainbow", test::rainbow_scene()},       {"photons", test::photon_scene()}};
     for (const auto& [name, s] : scenes) {
         const PreparedScene scene = prepare_scene(s);
         for (const SettingList& kv : variants) expect_cuda_matches_cpu(scene, name, kv);

@@ -2,10 +2,14 @@
 // the radius estimated from a known density.
 #include "core/render/photon_gather.h"
 #include "core/render/photon_pass.h"
+#include "core/render/renderer.h"
+#include "core/scenes/test_scenes.h"
+#include "core/wavefront/wavefront.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -71,6 +75,34 @@ TEST(PhotonGather, ASearchKeepsAboutGatherMaxAndTheRadiusFollowsTheDensity) {
     // A point with no photons near: nothing, even after the wider search.
     m.radius = 0.5f, m.step = 1.0f, m.steps = 2;
     EXPECT_EQ(photon_gather(m, Vec3(50, 0, 50), Vec3(0, 1, 0), r2), 0u);
+}
+
+TEST(PhotonGather, FramesAgreeOnEveryAccelAndTheWavefront) {
+    // The photon pass runs before both pipelines on the host; the wavefront gathers the same
+    // map on the executing side.
+    const PreparedScene scene = prepare_scene(test::photon_scene());
+    const RenderSettings rs = test::settings_for(scene, {}, 64, 48);
+    const Frame crsh = render_frame(scene, rs);
+    EXPECT_GT(crsh.stats.get("photons.stored"), 1000.0);
+    const PreparedScene plain = prepare_scene([] {
+        Scene s = test::photon_scene();
+        s.photons = PhotonSettings();
+        return s;
+    }());
+    const Frame without = render_frame(plain, rs);
+    double changed = 0;
+    for (size_t i = 0; i < crsh.rgba.size(); ++i)
+        changed += std::fabs(crsh.rgba[i] - without.rgba[i]);
+    EXPECT_GT(changed, 5.0); // the caustics show
+    for (const test::SettingList& kv :
+         {test::SettingList{{"accel", "brute"}}, test::SettingList{{"accel", "rah"}}}) {
+        const Frame other = render_frame(scene, test::settings_for(scene, kv, 64, 48));
+        EXPECT_EQ(0, std::memcmp(crsh.rgba.data(), other.rgba.data(), crsh.rgba.size() * 4))
+            << kv[0].second;
+    }
+    EXPECT_EQ(wavefront_unsupported(scene), "");
+    test::expect_same_frame(render_frame_cpu(scene, rs), render_frame_wavefront_cpu(scene, rs),
+                            "photons");
 }
 
 } // namespace

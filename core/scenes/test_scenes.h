@@ -336,6 +336,44 @@ inline Scene scattering_scene() {
 /// crosses the view past a solid ball, a transparent solid ball the atmosphere leaves out, six
 /// more spotlights behind the camera (more lights than a step takes, none reaching the
 /// steps in view) and a point light.
+/// Photons (core/render/photon_pass.h): a glass ball and a mirror ball, both targets, over a
+/// floor inside a room, lit by a spotlight and a fading point light; the glass focuses a
+/// caustic under it, the mirror throws one on the wall.
+inline Scene photon_scene() {
+    Scene s;
+    Material wall;
+    wall.color = Vec3(0.8f, 0.75f, 0.7f), wall.diffuse = 0.8f, wall.ambient = 0.05f;
+    s.add_shape("room", Shape{ShapeKind::Sphere}, s.add_material(wall), Affine::scale(Vec3(8.0f)));
+    Material glass;
+    glass.color = Vec3(0.9f, 1.0f, 0.9f);
+    glass.ambient = glass.diffuse = 0, glass.transmission = 1, glass.ior = 1.5f;
+    const uint32_t ball = s.add_shape("glass", Shape{ShapeKind::Sphere}, s.add_material(glass),
+                                      Affine::translate(Vec3(-1.0f, -1.0f, 0.0f)));
+    s.shape_objects[ball].photons.target = 1.0f;
+    s.shape_objects[ball].photons.refraction = PhotonSwitch::On;
+    s.shape_objects[ball].flags = kNoPhotonCollect;
+    Material mirror;
+    mirror.color = Vec3(0.2f), mirror.diffuse = 0.1f, mirror.mirror = 0.9f;
+    const uint32_t chrome =
+        s.add_shape("mirror", Shape{ShapeKind::Sphere}, s.add_material(mirror),
+                    Affine::translate(Vec3(1.6f, -1.3f, -0.5f)) * Affine::scale(Vec3(0.7f)));
+    s.shape_objects[chrome].photons.target = 1.5f;
+    s.shape_objects[chrome].photons.reflection = PhotonSwitch::On;
+    Light spot{Vec3(-1.0f, 5.0f, 0.5f), Vec3(1.5f)};
+    spot.type = LightType::Spot;
+    spot.direction = Vec3(0, -1, -0.1f);
+    spot.spot_radius = 25, spot.spot_falloff = 35;
+    s.add_light(spot);
+    Light lamp{Vec3(3.0f, 3.0f, 3.0f), Vec3(0.8f)};
+    lamp.fade_distance = 4, lamp.fade_power = 2;
+    s.add_light(lamp);
+    s.photons.spacing = 0.02f;
+    s.camera.position = Vec3(0, 1.5f, 6);
+    s.camera.look_at = Vec3(0, -1.5f, 0);
+    s.camera.fov_y_degrees = 55;
+    return s;
+}
+
 inline Scene atmosphere_scene() {
     Scene s;
     Material wall;

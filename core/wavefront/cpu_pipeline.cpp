@@ -11,7 +11,6 @@ namespace sheaf {
 std::string wavefront_unsupported(const PreparedScene& scene) {
     if (scene.sampler && !scene.textures.empty())
         return "the scene has image textures, which are sampled on the host only (OpenImageIO)";
-    if (scene.has_photons()) return "the scene has photons, which only the CPU renderer shoots";
     return {};
 }
 

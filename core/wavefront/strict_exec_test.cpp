@@ -198,9 +198,11 @@ TEST(StrictExec, BuiltinScenesMatchTheCpuRenderer) {
 // Launches and reductions in a child process sealed from host memory: the first run of
 // each launch site in a frame (a fork each: milliseconds), in small frames under two settings.
 TEST(StrictExec, NoLaunchReadsHostMemory) {
-    std::vector<std::pair<std::string, Scene>> scenes = {
-        {"glass", test::glass_mirror_scene()}, {"lights", test::lights_scene(false)},
-        {"csg", test::csg_scene()}, {"procedural", test::procedural_scene()}};
+    std::vector<std::pair<std::string, Scene>> scenes = {{"glass", test::glass_mirror_scene()},
+                                                         {"lights", test::lights_scene(false)},
+                                                         {"csg", test::csg_scene()},
+                                                         {"procedural", test::procedural_scene()},
+                                                         {"photons", test::photon_scene()}};
     for (const std::string& name : builtin_scene_names())
         scenes.emplace_back(name, make_builtin_scene(name));
     for (const auto& [name, s] : scenes) {

@@ -11,8 +11,7 @@
 namespace sheaf {
 
 /// Why the wavefront pipeline cannot render `scene` as the CPU renderer does (empty when it
-/// can): image textures are sampled through OpenImageIO on the host only, and photons are
-/// shot by the CPU renderer only.
+/// can): image textures are sampled through OpenImageIO on the host only.
 std::string wavefront_unsupported(const PreparedScene& scene);
 
 /// The wavefront pipeline under the CPU execution policy (oneTBB, host memory): the same

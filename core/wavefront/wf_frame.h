@@ -39,7 +39,11 @@ template <class Exec> class DeviceFrame {
         W_ = s_.width * aa, H_ = s_.height * aa;
         const size_t samples = size_t(W_) * H_;
         const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
-        DeviceScene<Exec> uploaded(ex_, host_, *units);
+        // Photons are shot on the host through the CPU renderer's pass (the same map, so the
+        // same picture) and gathered on the executing side.
+        MemoryTracker photon_memory;
+        const PhotonMap photons = shoot_photons(host_, *units, s_, st_, photon_memory);
+        DeviceScene<Exec> uploaded(ex_, host_, *units, &photons);
         scene_ = uploaded.view;
         radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
         tests_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);

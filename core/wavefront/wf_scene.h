@@ -7,6 +7,7 @@
 // the CPU backend.
 #pragma once
 
+#include "core/render/photon_pass.h"
 #include "core/rsh/cull_units.h"
 #include "core/scene/scene_view.h"
 #include "core/wavefront/buffer.h"
@@ -31,9 +32,16 @@ template <class Exec> class DeviceScene {
   public:
     static constexpr size_t kOwnCopy = size_t(1) << 20;
 
-    DeviceScene(Exec& exec, const PreparedScene& p, const CullUnits& units) : exec_(exec) {
+    /// `photons`: the frame's photon map (shot on the host, core/render/photon_pass.h), or none.
+    DeviceScene(Exec& exec, const PreparedScene& p, const CullUnits& units,
+                const PhotonMap* photons = nullptr)
+        : exec_(exec) {
         SceneView& v = view;
         v = SceneView(p); // counts and plain values; every pointer is replaced below
+        if (photons) {
+            v.photon_map = photons->view();
+            put(photons->photons, v.photon_map.photons);
+        }
         put(p.tris, v.tris);
         put(p.normals, v.normals);
         put(p.uvs, v.uvs);

@@ -1,6 +1,5 @@
 // POV-Ray's photons: the blocks read, their errors, and renders against povray 3.7's pixels.
 #include "core/render/renderer.h"
-#include "core/wavefront/wavefront.h"
 #include "io/pov/pov_test_util.h"
 
 #include <gtest/gtest.h>
@@ -190,12 +189,6 @@ sphere { <0, 1.5, 0>, 1 pigment { rgbf 1 } finish { ambient 0 diffuse 0 } interi
     EXPECT_GT(brightest(p), 1.5f);
     EXPECT_TRUE(std::isfinite(brightest(p)));
     EXPECT_GT(dark(p), dark(n) + 20);
-    // The wavefront pipeline leaves photons to the CPU renderer, and says so.
-    EXPECT_NE(
-        wavefront_unsupported(
-            prepare_scene(load_text(replaced(glass, "PHOTONS", "photons { spacing 1 }")).scene))
-            .find("photons"),
-        std::string::npos);
 }
 
 TEST(PovPhotons, TooFineASpacingIsRefused) {

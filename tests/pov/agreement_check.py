@@ -74,6 +74,7 @@ SCENES = [
     ("examples/interior/media/media2.pov", "media"),
     ("examples/interior/rainbow1.pov", "exact"),
     ("examples/lights/phot_met_glass.pov", "photons"),
+    ("scenes/photons.pov", "photons"),
     ("examples/lights/soft.pov", "area"),
     ("examples/interior/atten1.pov", "noise"),
     ("examples/interior/iortest.pov", "noise"),

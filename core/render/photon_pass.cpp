@@ -325,7 +325,9 @@ PhotonMap shoot_photons(const PreparedScene& scene, const CullUnits& units, cons
     plan_emitters(scene, spacing, emitters, rings, total);
     const uint32_t max_level =
         std::max(2u, ps.max_trace_level > 0 ? ps.max_trace_level : uint32_t(s.trace_depth + 1));
-    constexpr uint64_t kChunk = uint64_t(1) << 20; // photons shot and traced together
+    // Photons shot and traced together: each holds about 200 bytes while it is traced (its
+    // ray, state and landing), so a chunk holds about 50 MiB.
+    constexpr uint64_t kChunk = uint64_t(1) << 18;
     uint64_t shot = 0;
     size_t counted = 0; // photons the memory tracker counts
     for (uint64_t first = 0; first < total; first += kChunk) {

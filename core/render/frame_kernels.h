@@ -169,8 +169,8 @@ SHEAF_HD_INLINE PrimarySample primary_sample(const SceneView& scene, const Camer
 /// search finds lights h as a light from where it came, its power over the cosine between
 /// that way and the geometric normal (at least 0.1), all over the searched disc's area.
 /// Objects that collect no photons gather none; photons from behind the surface bring
-/// nothing. Not inlined: the search's stack stays out of the shading kernels' frames (the
-/// device never has photons: the wavefront leaves photon scenes to the CPU renderer).
+/// nothing. Not inlined: the search's stack (512 bytes) stays out of the shading kernels'
+/// frames.
 SHEAF_HD_NOINLINE Vec3 photon_light(const SceneView& scene, const Material& m,
                                     const SurfaceHit& h) {
     const PhotonMapView& pm = scene.photon_map;

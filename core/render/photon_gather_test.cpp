@@ -72,6 +72,19 @@ TEST(PhotonGather, ASearchKeepsAboutGatherMaxAndTheRadiusFollowsTheDensity) {
     }
     build_photon_tree(ball);
     EXPECT_NEAR(estimate_photon_radius(ball, 100), 1.0f, 0.05f);
+    // Fewer photons than gather_max: the density of all of them, not none (a caustic of a
+    // few photons must not vanish). 50 photons over a 0.9 x 0.9 grid: about 1.1 units.
+    std::vector<Photon> few;
+    for (int i = 0; i < 50; ++i) {
+        Photon ph;
+        ph.position = Vec3(0.1f * float(i % 10), 0.0f, 0.1f * float(i / 10));
+        few.push_back(ph);
+    }
+    build_photon_tree(few);
+    const float r = estimate_photon_radius(few, 100);
+    EXPECT_GT(r, 0.5f);
+    EXPECT_LT(r, 3.0f);
+    EXPECT_EQ(estimate_photon_radius({}, 100), 0.0f);
     // A point with no photons near: nothing, even after the wider search.
     m.radius = 0.5f, m.step = 1.0f, m.steps = 2;
     EXPECT_EQ(photon_gather(m, Vec3(50, 0, 50), Vec3(0, 1, 0), r2), 0u);

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <queue>
 #include <string>
 
@@ -84,6 +85,7 @@ void plan_emitters(const PreparedScene& scene, float spacing, std::vector<Emitte
                 const Vec3 to = s.center - l.position;
                 const float dist = length(to);
                 e.axis = dist > 0 ? to / dist : Vec3(0, 0, 1);
+                if (!(std::max(dist, s.radius) > 0)) continue; // a point target at the light
                 e.spread = po.target * spacing / std::max(dist, s.radius);
                 e.step = std::atan(e.spread);
                 max_step = dist > s.radius ? std::asin(s.radius / dist) : float(kPi);
@@ -163,11 +165,13 @@ Landing land(const PreparedScene& scene, const SceneView& view,
     if (ps.level >= 1 && !view.prim_flag(prim, kNoPhotonCollect)) {
         float k = e.spread * e.spread;
         if (!e.parallel) k *= depth * depth;
-        if (l.fade_distance > 0 && l.fade_power > 0)
+        // Parallel lights do not fade (their paths start far outside the scene).
+        if (!e.parallel && l.fade_distance > 0 && l.fade_power > 0)
             k *= 2.0f / (1.0f + std::pow(depth / l.fade_distance, l.fade_power));
-        out.keep = true;
+        const Vec3 power = w * k;
+        out.keep = is_finite(h.position) && std::isfinite(power.x + power.y + power.z);
         out.photon.position = h.position;
-        out.photon.power = w * k;
+        out.photon.power = power;
         out.photon.from = -ray.dir;
     }
     if (ps.level + 1 >= max_level) return out;
@@ -242,6 +246,8 @@ void build_tree(std::vector<Photon>& p, size_t lo, size_t hi) { // [lo, hi]
 /// distances, and how many that is.
 float kth_nearest2(const std::vector<Photon>& tree, Vec3 p, uint32_t k, float limit2,
                    uint32_t& found) {
+    found = 0;
+    if (k == 0 || tree.empty()) return limit2;
     std::priority_queue<float> best; // the k smallest so far, largest on top
     float r2 = limit2;
     std::vector<std::pair<size_t, size_t>> stack{{0, tree.size() - 1}};
@@ -262,7 +268,12 @@ float kth_nearest2(const std::vector<Photon>& tree, Vec3 p, uint32_t k, float li
         if (mid < hi && delta < r) stack.push_back({mid + 1, hi});
     }
     found = uint32_t(best.size());
-    return best.size() == k ? best.top() : limit2;
+    if (best.size() == k) return best.top();
+    // Fewer than k: within the limit, or, searching without one, within the farthest found.
+    if (std::isfinite(limit2) || best.empty()) return limit2;
+    float farthest = 0;
+    for (; !best.empty(); best.pop()) farthest = std::max(farthest, best.top());
+    return farthest;
 }
 
 } // namespace
@@ -289,7 +300,10 @@ float estimate_photon_radius(const std::vector<Photon>& tree, uint32_t gather_ma
     const double mean = sum / double(samples);
     if (!(mean > 0)) return 0.0f;
     double radius = std::sqrt(gather_max / (mean * kPi));
-    // Widened by the share of samples much sparser than the mean (POV-Ray's factor 20).
+    // Widened by the share of samples much sparser than the mean (POV-Ray's factor 20); not
+    // when the whole map holds no more than gather_max photons (every sample would then count
+    // as sparse against a radius sized for gather_max).
+    if (n <= gather_max) return float(radius);
     size_t sparse = 0;
     for (size_t i = 0; i < samples; ++i) {
         uint32_t found = 0;
@@ -315,7 +329,12 @@ PhotonMap shoot_photons(const PreparedScene& scene, const CullUnits& units, cons
     const PhotonSettings& ps = scene.photons;
     float spacing = ps.spacing;
     if (ps.count > 0) { // the spacing that shoots about `count`: photons go as 1 / spacing^2
-        spacing = 1.0f;
+        // A first guess of a tenth of the largest target, so the first plans stay small.
+        float largest = 0;
+        for (size_t o = 0; o < scene.object_photons.size(); ++o)
+            if (scene.object_photons[o].target > 0 && std::isfinite(scene.object_sphere[o].radius))
+                largest = std::max(largest, scene.object_sphere[o].radius);
+        spacing = largest > 0 ? 0.1f * largest : 1.0f;
         for (int i = 0; i < 4; ++i) {
             plan_emitters(scene, spacing, emitters, rings, total);
             if (total == 0) break;
@@ -325,11 +344,64 @@ PhotonMap shoot_photons(const PreparedScene& scene, const CullUnits& units, cons
     plan_emitters(scene, spacing, emitters, rings, total);
     const uint32_t max_level =
         std::max(2u, ps.max_trace_level > 0 ? ps.max_trace_level : uint32_t(s.trace_depth + 1));
-    // Photons shot and traced together: each holds about 200 bytes while it is traced (its
-    // ray, state and landing), so a chunk holds about 50 MiB.
+    // Photons are traced in pieces of at most kChunk rays, each piece's rays on to the next
+    // surface, then the pieces of what they send on, depth first: a path that splits at
+    // every surface never holds more than a few pieces per level at once (each ray with its
+    // state and landing about 200 bytes: 50 MiB a piece).
     constexpr uint64_t kChunk = uint64_t(1) << 18;
-    uint64_t shot = 0;
+    uint64_t shot = 0, traced = 0;
     size_t counted = 0; // photons the memory tracker counts
+    std::function<void(RayBatch&, std::vector<PathState>&)> trace_piece =
+        [&](RayBatch& batch, std::vector<PathState>& state) {
+            traced += batch.size();
+            if (traced > kMaxPhotonRays)
+                throw RenderError("photons: the photons' paths split into more than " +
+                                  std::to_string(kMaxPhotonRays / 1000000) +
+                                  " million rays; raise the spacing or lower max_trace_level");
+            TraceResult r;
+            trace_batch(scene, units, batch, s, st, memory, r);
+            RayBatch next(RayType::Photon, memory);
+            std::vector<PathState> next_state;
+            {
+                std::vector<Landing> landing(batch.size());
+                parallel_for("photons.land", batch.size(), [&](size_t i) {
+                    if (r.closest[i] == kNoHit) return;
+                    landing[i] = land(scene, view, emitters, batch.rays[i], r.closest[i],
+                                      batch.weight[i], state[i], max_level, params);
+                });
+                for (size_t i = 0; i < batch.size(); ++i) { // in ray order: the same map every run
+                    const Landing& g = landing[i];
+                    if (g.keep) map.photons.push_back(g.photon);
+                    for (uint32_t c = 0; c < g.children; ++c) {
+                        next.rays.push_back(g.ray[c]);
+                        next.pixel.push_back(0);
+                        next.weight.push_back(g.weight[c]);
+                        next_state.push_back({state[i].emitter, state[i].level + 1,
+                                              state[i].depth + hit_t(r.closest[i])});
+                    }
+                }
+            }
+            if (map.photons.size() > kMaxPhotonsShot)
+                throw RenderError("photons: more than " +
+                                  std::to_string(kMaxPhotonsShot / 1000000) +
+                                  " million photons kept; raise the spacing or lower "
+                                  "max_trace_level");
+            // Kept for the whole frame: counted as they come, refused when they would not fit.
+            memory.add(int64_t((map.photons.size() - counted) * sizeof(Photon)));
+            counted = map.photons.size();
+            batch = RayBatch(RayType::Photon, memory); // this piece is done with
+            state = {};
+            for (size_t first = 0; first < next.size(); first += kChunk) {
+                const size_t n = std::min<size_t>(kChunk, next.size() - first);
+                RayBatch piece(RayType::Photon, memory);
+                piece.rays.assign(next.rays.begin() + first, next.rays.begin() + first + n);
+                piece.pixel.assign(n, 0);
+                piece.weight.assign(next.weight.begin() + first, next.weight.begin() + first + n);
+                std::vector<PathState> piece_state(next_state.begin() + first,
+                                                   next_state.begin() + first + n);
+                trace_piece(piece, piece_state);
+            }
+        };
     for (uint64_t first = 0; first < total; first += kChunk) {
         const uint64_t n = std::min(kChunk, total - first);
         RayBatch batch(RayType::Photon, memory);
@@ -351,39 +423,7 @@ PhotonMap shoot_photons(const PreparedScene& scene, const CullUnits& units, cons
             }
             shot += batch.size();
         }
-        while (batch.size() > 0) {
-            TraceResult r;
-            trace_batch(scene, units, batch, s, st, memory, r);
-            std::vector<Landing> landing(batch.size());
-            parallel_for("photons.land", batch.size(), [&](size_t i) {
-                if (r.closest[i] == kNoHit) return;
-                landing[i] = land(scene, view, emitters, batch.rays[i], r.closest[i],
-                                  batch.weight[i], state[i], max_level, params);
-            });
-            RayBatch next(RayType::Photon, memory);
-            std::vector<PathState> next_state;
-            for (size_t i = 0; i < batch.size(); ++i) { // in ray order: the same map every run
-                const Landing& g = landing[i];
-                if (g.keep) map.photons.push_back(g.photon);
-                for (uint32_t c = 0; c < g.children; ++c) {
-                    next.rays.push_back(g.ray[c]);
-                    next.pixel.push_back(0);
-                    next.weight.push_back(g.weight[c]);
-                    next_state.push_back({state[i].emitter, state[i].level + 1,
-                                          state[i].depth + hit_t(r.closest[i])});
-                }
-            }
-            if (map.photons.size() > kMaxPhotonsShot)
-                throw RenderError("photons: more than " +
-                                  std::to_string(kMaxPhotonsShot / 1000000) +
-                                  " million photons kept; raise the spacing or lower "
-                                  "max_trace_level");
-            // Kept for the whole frame: counted as they come, refused when they would not fit.
-            memory.add(int64_t((map.photons.size() - counted) * sizeof(Photon)));
-            counted = map.photons.size();
-            batch = std::move(next);
-            state = std::move(next_state);
-        }
+        if (batch.size() > 0) trace_piece(batch, state);
     }
     build_photon_tree(map.photons);
     PhotonMapView& v = map.settings;

@@ -33,6 +33,9 @@ struct PhotonMap {
 /// Photons a frame may shoot at most: a spacing that would shoot more is refused with a
 /// message that names it (RenderError).
 constexpr uint64_t kMaxPhotonsShot = 20'000'000;
+/// Photon rays a frame may trace at most (paths split at every surface that both reflects and
+/// refracts): more is refused the same way.
+constexpr uint64_t kMaxPhotonRays = 100'000'000;
 
 /// Runs the photon pass of `scene` under `settings` (empty when the scene has no photons:
 /// PreparedScene::has_photons). Adds photons.shot, photons.stored, photons.radius, rays.photon,

@@ -312,19 +312,23 @@ PreparedScene prepare_scene(const Scene& scene) {
     std::vector<char> passes(scene.materials.size());
     for (size_t m = 0; m < passes.size(); ++m) passes[m] = material_may_pass(scene, uint32_t(m));
     // With photons on, a target they refract through casts a whole shadow, as in POV-Ray:
-    // the light through it comes as photons.
-    auto photon_shadow = [&](const PhotonObject& po) {
-        return scene.photons.enabled() && po.target > 0 && po.refraction != PhotonSwitch::Off;
+    // the light through it comes as photons. POV-Ray decides per light; here a target is
+    // whole for every light when some light's photons refract through it.
+    auto photon_shadow = [&](const PhotonObject& po, uint8_t flags) {
+        if (!scene.photons.enabled() || !(po.target > 0) || (flags & kPassPhotons)) return false;
+        for (const Light& l : scene.lights)
+            if (!l.shadowless && photon_switch_on(po.refraction, l.photon_refraction)) return true;
+        return false;
     };
     for (size_t o = 0; o < scene.objects.size(); ++o) {
-        const bool may_pass =
-            passes[scene.objects[o].material] && !photon_shadow(scene.objects[o].photons);
+        const bool may_pass = passes[scene.objects[o].material] &&
+                              !photon_shadow(scene.objects[o].photons, scene.objects[o].flags);
         const uint8_t f = uint8_t(scene.objects[o].flags | (may_pass ? kPrimMayPass : 0));
         for (uint32_t i = p.object_begin[o]; i < p.object_begin[o + 1]; ++i) p.prim_flags[i] = f;
     }
     for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
         uint8_t f = scene.shape_objects[so].flags;
-        if (!photon_shadow(scene.shape_objects[so].photons))
+        if (!photon_shadow(scene.shape_objects[so].photons, f))
             for (const CsgNode& n : scene.shape_objects[so].nodes)
                 if (n.op == CsgOp::Leaf && passes[n.material]) f |= kPrimMayPass;
         p.prim_flags[p.tris.size() + so] = f;

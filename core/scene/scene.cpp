@@ -593,8 +593,8 @@ void Scene::validate_photons() const {
     if (!std::isfinite(p.radius) || p.radius < 0)
         throw SceneError(
             "photons: the gather radius must be a finite number, 0 (estimated) or more");
-    if (p.gather_min > p.gather_max || p.gather_max == 0)
-        throw SceneError("photons: gather needs 0 <= min <= max and max >= 1");
+    if (p.gather_min > p.gather_max || p.gather_max == 0 || p.gather_max > 10000)
+        throw SceneError("photons: gather needs 0 <= min <= max and max from 1 to 10000");
     if (!std::isfinite(p.jitter) || p.jitter < 0 || p.jitter > 1)
         throw SceneError("photons: jitter must lie between 0 and 1");
     if (!std::isfinite(p.expand_tolerance) || p.expand_tolerance < 0 || p.steps < 1 || p.steps > 16)

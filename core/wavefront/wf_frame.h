@@ -41,7 +41,9 @@ template <class Exec> class DeviceFrame {
         const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
         // Photons are shot on the host through the CPU renderer's pass (the same map, so the
         // same picture) and gathered on the executing side.
-        MemoryTracker photon_memory;
+        MemoryTracker photon_memory; // host memory, refused as the CPU renderer refuses it
+        if (const int64_t available = available_memory_bytes(); available > 0)
+            photon_memory.set_limit(available / 10 * 9, available);
         const PhotonMap photons = shoot_photons(host_, *units, s_, st_, photon_memory);
         DeviceScene<Exec> uploaded(ex_, host_, *units, &photons);
         scene_ = uploaded.view;

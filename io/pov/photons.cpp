@@ -38,8 +38,8 @@ void Parser::parse_photon_settings() {
             const double lo = parse_float();
             expect_sym(",");
             const double hi = parse_float();
-            if (!(lo >= 0 && hi >= 1 && lo <= hi && hi <= 1e6))
-                error_at(at, "gather needs 0 <= min <= max, and max from 1 to a million");
+            if (!(lo >= 0 && hi >= 1 && lo <= hi && hi <= 10000))
+                error_at(at, "gather needs 0 <= min <= max, and max from 1 to 10000");
             ps.gather_min = uint32_t(lo), ps.gather_max = uint32_t(hi);
         } else if (k == "radius") {
             // radius GATHER [, MULTIPLIER [, MEDIA_GATHER [, MEDIA_MULTIPLIER]]]

@@ -101,7 +101,7 @@ TEST(PovPhotons, ErrorsNameTheirPlace) {
     EXPECT_EQ(error_of("global_settings { photons { spacing 0 } }"),
               "scene.pov:1:37: error: photons need a spacing above 0");
     EXPECT_EQ(error_of("global_settings { photons { gather 50, 10 } }"),
-              "scene.pov:1:36: error: gather needs 0 <= min <= max, and max from 1 to a million");
+              "scene.pov:1:36: error: gather needs 0 <= min <= max, and max from 1 to 10000");
     EXPECT_EQ(error_of("global_settings { photons { spread 1 } }"),
               "scene.pov:1:29: error: found 'spread', expected a photons setting (spacing, count, "
               "gather, radius, jitter ...)");

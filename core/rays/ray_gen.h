@@ -210,6 +210,24 @@ SHEAF_HD_INLINE void ao_ray_fill(const SceneView& scene, const SurfaceHit& h, ui
     }
 }
 
+/// The mirror direction at hit h: about the shading normal, or about the geometric one where
+/// the shading normal would send it below the surface.
+SHEAF_HD_INLINE Vec3 mirror_direction(const SurfaceHit& h) {
+    const Vec3 d = reflect(h.incoming, h.normal);
+    return dot(d, h.geo_normal) > 0 ? d : reflect(h.incoming, h.geo_normal);
+}
+
+/// A ray leaving hit h along `dir` from just off the surface on the side it leaves (`side`
+/// +1 above, -1 below), unbounded.
+SHEAF_HD_INLINE Ray bounce_ray(const SurfaceHit& h, Vec3 dir, float side, const RayGenParams& p) {
+    Ray r;
+    r.origin = h.position + h.geo_normal * (side * p.epsilon);
+    r.dir = dir;
+    r.tmin = 0.0f;
+    r.tmax = FLT_MAX;
+    return r;
+}
+
 /// How a hit splits what arrives into a reflection and a refraction ray.
 struct BounceSplit {
     Vec3 reflect_weight, refract_weight;
@@ -225,9 +243,7 @@ SHEAF_HD_INLINE BounceSplit bounce_split(const SceneView& scene, const SurfaceHi
     // Light passing through: tinted by the colour (filter) or not (transmit).
     const Vec3 pass = h.albedo * h.filter + Vec3(h.transmit);
     const Vec3 mirror = mirror_weight(m, h);
-    s.reflect_dir = reflect(h.incoming, h.normal);
-    // A shading normal can send a reflection below the surface; the geometric one cannot.
-    if (dot(s.reflect_dir, h.geo_normal) <= 0) s.reflect_dir = reflect(h.incoming, h.geo_normal);
+    s.reflect_dir = mirror_direction(h);
     // Iridescence tints what the mirror reflects, not what refraction turns back.
     Vec3 reflect_w = m.irid > 0 ? mirror * irid_factor(m, h, s.reflect_dir) : mirror;
     if (max_component(pass) > 0) {
@@ -263,12 +279,7 @@ SHEAF_HD_INLINE uint32_t refract_ray_count(const BounceSplit& s, const RayGenPar
 SHEAF_HD_INLINE void bounce_ray_fill(const SurfaceHit& h, Vec3 dir, Vec3 weight, float side,
                                      uint32_t slot, const RayGenParams& p, const RaySlots& out) {
     if (max_component(weight) <= p.min_weight) return;
-    Ray r;
-    r.origin = h.position + h.geo_normal * (side * p.epsilon);
-    r.dir = dir;
-    r.tmin = 0.0f;
-    r.tmax = FLT_MAX;
-    out.rays[slot] = r;
+    out.rays[slot] = bounce_ray(h, dir, side, p);
     out.pixel[slot] = h.pixel;
     out.weight[slot] = weight;
 }

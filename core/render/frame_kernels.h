@@ -194,7 +194,8 @@ SHEAF_HD_INLINE Vec3 unshadowed_terms(const SceneView& scene, const SurfaceHit& 
     const Material& m = scene.materials[h.material];
     Vec3 c = m.emission;
     if (!trace_ao) c += ambient_light(m, h);
-    c += photon_light(scene, m, h);
+    // photon_light is called, not inlined: only when the frame has photons.
+    if (scene.photon_map.count > 0) c += photon_light(scene, m, h);
     for (uint32_t li = 0; li < scene.light_count; ++li) {
         const Light& l = scene.lights[li];
         if (!l.shadowless || !lights_point(l, h, p)) continue;

@@ -3,6 +3,7 @@
 #include "core/base/error.h"
 #include "core/base/parallel.h"
 #include "core/base/timer.h"
+#include "core/rays/ray_gen.h"
 #include "core/render/frame_stats.h"
 #include "core/render/noise.h"
 #include "core/render/shade.h"
@@ -52,12 +53,6 @@ struct Landing {
     Vec3 weight[2];
 };
 
-void basis(Vec3 axis, Vec3& u, Vec3& v) {
-    const Vec3 up = std::fabs(axis.y) < 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
-    u = normalize(cross(axis, up));
-    v = cross(axis, u);
-}
-
 /// Every emitter of the scene and its rings; `total` receives the photons they shoot.
 void plan_emitters(const PreparedScene& scene, float spacing, std::vector<Emitter>& emitters,
                    std::vector<Ring>& rings, uint64_t& total) {
@@ -90,7 +85,7 @@ void plan_emitters(const PreparedScene& scene, float spacing, std::vector<Emitte
                 e.step = std::atan(e.spread);
                 max_step = dist > s.radius ? std::asin(s.radius / dist) : float(kPi);
             }
-            basis(e.axis, e.u, e.v);
+            raygen_detail::basis(e.axis, e.u, e.v);
             if (!(e.step > 0)) continue;
             const uint32_t ei = uint32_t(emitters.size());
             emitters.push_back(e);
@@ -194,33 +189,18 @@ Landing land(const PreparedScene& scene, const SceneView& view,
                 dir = ray.dir;
             } else if (!refract(h.incoming, h.normal, eta, dir)) {
                 total_internal = true; // the light turns back whole, unfiltered
-                dir = reflect(h.incoming, h.normal);
+                dir = mirror_direction(h);
                 pass = Vec3(1.0f);
             }
-            const float side = total_internal ? 1.0f : -1.0f;
-            if (total_internal && dot(dir, h.geo_normal) <= 0)
-                dir = reflect(h.incoming, h.geo_normal);
-            Ray r;
-            r.origin = h.position + h.geo_normal * (side * params.epsilon);
-            r.dir = dir, r.tmin = 0.0f, r.tmax = FLT_MAX;
-            out.ray[out.children] = r;
+            out.ray[out.children] = bounce_ray(h, dir, total_internal ? 1.0f : -1.0f, params);
             out.weight[out.children++] = w * pass;
         }
     }
     if (reflect_on && !total_internal && max_component(w * mirror) > bailout) {
-        Vec3 dir = reflect(h.incoming, h.normal);
-        if (dot(dir, h.geo_normal) <= 0) dir = reflect(h.incoming, h.geo_normal);
-        Ray r;
-        r.origin = h.position + h.geo_normal * params.epsilon;
-        r.dir = dir, r.tmin = 0.0f, r.tmax = FLT_MAX;
-        out.ray[out.children] = r;
+        out.ray[out.children] = bounce_ray(h, mirror_direction(h), 1.0f, params);
         out.weight[out.children++] = w * mirror;
     }
     return out;
-}
-
-float axis_value(Vec3 v, uint32_t a) {
-    return a == 0 ? v.x : a == 1 ? v.y : v.z;
 }
 
 void build_tree(std::vector<Photon>& p, size_t lo, size_t hi) { // [lo, hi]
@@ -233,10 +213,10 @@ void build_tree(std::vector<Photon>& p, size_t lo, size_t hi) { // [lo, hi]
     const Vec3 ext = mx - mn;
     const uint32_t a = ext.x >= ext.y && ext.x >= ext.z ? 0 : ext.y >= ext.z ? 1 : 2;
     const size_t mid = lo + (hi - lo) / 2;
-    std::nth_element(p.begin() + lo, p.begin() + mid, p.begin() + hi + 1,
-                     [a](const Photon& x, const Photon& y) {
-                         return axis_value(x.position, a) < axis_value(y.position, a);
-                     });
+    std::nth_element(
+        p.begin() + lo, p.begin() + mid, p.begin() + hi + 1, [a](const Photon& x, const Photon& y) {
+            return photon_detail::axis_of(x.position, a) < photon_detail::axis_of(y.position, a);
+        });
     p[mid].axis = a;
     if (mid > lo) build_tree(p, lo, mid - 1);
     build_tree(p, mid + 1, hi);
@@ -263,7 +243,7 @@ float kth_nearest2(const std::vector<Photon>& tree, Vec3 p, uint32_t k, float li
             if (best.size() > k) best.pop();
             if (best.size() == k) r2 = best.top();
         }
-        const float delta = axis_value(v, ph.axis), r = std::sqrt(r2);
+        const float delta = photon_detail::axis_of(v, ph.axis), r = std::sqrt(r2);
         if (mid > lo && delta > -r) stack.push_back({lo, mid - 1});
         if (mid < hi && delta < r) stack.push_back({mid + 1, hi});
     }

@@ -18,6 +18,7 @@ void CudaExec::sort_pairs(uint32_t* keys, int words, uint32_t* values, size_t n)
         ~CountOnce() { launches = before + 1; }
     } count_once{launches_, launches_};
     const int items = int(n);
+    const Span span(*this, words == 1 ? "sort (1 word)" : "sort (word pairs)");
     if (words == 1) {
         DeviceBuffer<uint32_t, CudaExec> k_alt(*this, n), v_alt(*this, n);
         cub::DoubleBuffer<uint32_t> dk(keys, k_alt.data()), dv(values, v_alt.data());

@@ -12,12 +12,15 @@
 #include <cub/device/device_reduce.cuh>
 #include <cub/device/device_scan.cuh>
 #include <cuda_runtime.h>
+#include <nvtx3/nvToolsExt.h>
 #include <thrust/execution_policy.h>
 #include <thrust/iterator/counting_iterator.h>
 #include <thrust/transform_reduce.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <mutex>
 #include <string>
@@ -51,23 +54,24 @@ class CudaExec {
 
     /// Renders on `device`; `stack_bytes`: the per-thread stack the recursive CSG and pigment
     /// code needs.
-    CudaExec(int device, size_t stack_bytes) {
+    CudaExec(int device, size_t stack_bytes) : born_(std::chrono::steady_clock::now()) {
         const char* sync = std::getenv("SHEAF_CUDA_SYNC");
         sync_launches_ = sync && *sync && *sync != '0';
+        const char* profile = std::getenv("SHEAF_CUDA_PROFILE");
+        profile_ = profile && *profile && *profile != '0';
         check(cudaSetDevice(device), "cudaSetDevice");
-        stack_.acquire(stack_bytes);
-        if (const cudaError_t e = cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking);
-            e != cudaSuccess) {
-            stack_.release();
-            check(e, "cudaStreamCreate");
-        }
+        raise_stack_limit(stack_bytes);
+        check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "cudaStreamCreate");
+        setup_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                              born_)
+                        .count();
     }
     ~CudaExec() {
+        if (profile_) print_profile();
         if (temp_) cudaFreeAsync(temp_, stream_);
         if (scan_ends_) cudaFreeAsync(scan_ends_, stream_);
         cudaStreamSynchronize(stream_);
         cudaStreamDestroy(stream_);
-        stack_.release();
     }
     CudaExec(const CudaExec&) = delete;
     CudaExec& operator=(const CudaExec&) = delete;
@@ -90,12 +94,14 @@ class CudaExec {
     // Host <-> device copies wait for the copy: the host side may be a temporary.
     void copy_to_device(void* dst, const void* src, size_t bytes) {
         ++waits_;
+        const Span span(*this, "copy to device");
         check(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyHostToDevice, stream_), "copy to device");
         check(cudaStreamSynchronize(stream_), "copy to device");
     }
     void copy_to_host(void* dst, const void* src, size_t bytes) {
         ++waits_;
         check_frees();
+        const Span span(*this, "copy to host");
         check(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyDeviceToHost, stream_), "copy to host");
         check(cudaStreamSynchronize(stream_), "copy to host");
     }
@@ -109,6 +115,7 @@ class CudaExec {
         ++launches_;
         check_frees();
         const size_t blocks = std::min<size_t>((n + 255) / 256, size_t(1) << 20);
+        const Span span(*this, name);
         launch_kernel<<<unsigned(blocks), 256, 0, stream_>>>(n, fn);
         check(cudaGetLastError(), name);
         // SHEAF_CUDA_SYNC=1: wait for every launch, so a fault names the launch that made it.
@@ -128,6 +135,7 @@ class CudaExec {
                   "cudaMallocAsync");
         }
         T* ends = reinterpret_cast<T*>(scan_ends_);
+        const Span span(*this, "scan (waited)");
         copy_on_device(ends, data + n - 1, sizeof(T));
         scan_on_stream(data, n);
         copy_on_device(ends + 1, data + n - 1, sizeof(T));
@@ -141,6 +149,7 @@ class CudaExec {
     T transform_reduce(const char* name, size_t n, T init, const Map& map, const Op& op) {
         if (n == 0) return init;
         ++launches_, ++waits_;
+        const Span span(*this, name);
         const T r = thrust::transform_reduce(thrust::cuda::par.on(stream_),
                                              thrust::counting_iterator<size_t>(0),
                                              thrust::counting_iterator<size_t>(n), map, init, op);
@@ -153,6 +162,7 @@ class CudaExec {
         if (n == 0) return;
         ++launches_;
         check_frees();
+        const Span span(*this, "scan");
         scan_on_stream(data, n);
     }
 
@@ -171,6 +181,7 @@ class CudaExec {
                                                  op, map, identity, stream_),
               name);
         const size_t at = (bytes + 255) / 256 * 256;
+        const Span span(*this, name);
         char* scratch = static_cast<char*>(temp(at + sizeof(T)));
         T* part = reinterpret_cast<T*>(scratch + at);
         check(cub::DeviceReduce::TransformReduce(scratch, bytes, first, part, n, op, map, identity,
@@ -237,6 +248,8 @@ class CudaExec {
     Stopwatch stopwatch() { return Stopwatch(stream_); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
+    /// Whether SHEAF_CUDA_PROFILE asked for the per-span table.
+    bool profiling() const { return profile_; }
     /// Device work started and host waits for the device, counted as the CPU policy does.
     uint64_t launches() const { return launches_; }
     uint64_t host_waits() const { return waits_; }
@@ -254,7 +267,81 @@ class CudaExec {
         return temp_;
     }
 
+    /// SHEAF_CUDA_PROFILE=1: device time per named piece of work, from events around each,
+    /// printed to stderr when the exec ends (a diagnostic; the events cost host time).
+    class Span {
+      public:
+        // Only the outermost span is timed (a sort's launches are the sort's).
+        // An NVTX range of the same name, for Nsight Compute's --nvtx-include.
+        Span(CudaExec& ex, const char* name) : ex_(ex.profile_ ? &ex : nullptr) {
+            if (ex_ && ex_->depth_++ == 0) {
+                nvtxRangePushA(name);
+                ex_->profile_mark(name);
+            }
+        }
+        ~Span() {
+            if (ex_ && --ex_->depth_ == 0) {
+                ex_->profile_mark(nullptr);
+                nvtxRangePop();
+            }
+        }
+        Span(const Span&) = delete;
+
+      private:
+        CudaExec* ex_;
+    };
+
   private:
+    void profile_mark(const char* name) {
+        cudaEvent_t e = nullptr;
+        if (cudaEventCreate(&e) != cudaSuccess) return;
+        cudaEventRecord(e, stream_);
+        marks_.push_back({name, e, std::chrono::steady_clock::now()});
+    }
+    void print_profile() {
+        if (cudaStreamSynchronize(stream_) != cudaSuccess) return;
+        struct Row {
+            std::string name;
+            double ms = 0, host_ms = 0;
+            int count = 0;
+        };
+        std::vector<Row> rows;
+        double total = 0;
+        for (size_t i = 0; i + 1 < marks_.size(); ++i) {
+            if (!marks_[i].name || marks_[i + 1].name) continue;
+            float ms = 0;
+            cudaEventElapsedTime(&ms, marks_[i].event, marks_[i + 1].event);
+            auto it = std::find_if(rows.begin(), rows.end(),
+                                   [&](const Row& r) { return r.name == marks_[i].name; });
+            if (it == rows.end()) it = rows.insert(rows.end(), Row{marks_[i].name});
+            it->ms += ms, ++it->count, total += ms;
+            it->host_ms +=
+                std::chrono::duration<double, std::milli>(marks_[i + 1].at - marks_[i].at).count();
+        }
+        for (const auto& m : marks_) cudaEventDestroy(m.event);
+        std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.ms > b.ms; });
+        const double wall =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - born_)
+                .count();
+        std::fprintf(stderr,
+                     "profile: %.3f ms of device work in %zu spans; %.3f ms on the host from "
+                     "the exec's start (%.3f ms to set it up)\n",
+                     total, marks_.size() / 2, wall, setup_ms_);
+        for (const Row& r : rows)
+            std::fprintf(stderr, "profile: %9.3f ms (host %9.3f ms) %5d x  %s\n", r.ms,
+                         r.host_ms, r.count, r.name.c_str());
+    }
+    struct Mark {
+        const char* name; // null: the end of the span before
+        cudaEvent_t event;
+        std::chrono::steady_clock::time_point at;
+    };
+    bool profile_ = false;
+    int depth_ = 0;
+    std::vector<Mark> marks_;
+    std::chrono::steady_clock::time_point born_;
+    double setup_ms_ = 0;
+
     template <class T> void scan_on_stream(T* data, size_t n) {
         size_t bytes = 0;
         check(cub::DeviceScan::ExclusiveSum(nullptr, bytes, data, data, n, stream_),
@@ -272,43 +359,18 @@ class CudaExec {
 
     /// The per-thread stack limit is the device's, shared by every render in the process, and
     /// the device reserves it for every resident thread (a 96 KiB limit is about 26 GiB on an
-    /// H100). While renders run it is only raised, so none loses the stack it was launched
-    /// with; when the last one ends, the limit the process had before is put back.
-    class StackLimit {
-      public:
-        void acquire(size_t bytes) {
-            std::lock_guard<std::mutex> lock(state().m);
-            State& st = state();
-            size_t current = 0;
-            check(cudaDeviceGetLimit(&current, cudaLimitStackSize), "cudaDeviceGetLimit(stack)");
-            if (st.active == 0) st.before = current;
-            if (bytes > current)
-                check(cudaDeviceSetLimit(cudaLimitStackSize, bytes), "cudaDeviceSetLimit(stack)");
-            ++st.active;
-            held_ = true;
-        }
-        void release() {
-            if (!held_) return;
-            held_ = false;
-            std::lock_guard<std::mutex> lock(state().m);
-            State& st = state();
-            if (--st.active == 0) cudaDeviceSetLimit(cudaLimitStackSize, st.before);
-        }
+    /// H100). It is only raised, so no render loses the stack it was launched with, and it
+    /// stays raised for the next frame: setting it reallocates that reservation, which cost
+    /// 2.3 ms of a 16 ms frame on an H200 when every frame raised it and put it back.
+    static void raise_stack_limit(size_t bytes) {
+        static std::mutex m;
+        std::lock_guard<std::mutex> lock(m);
+        size_t current = 0;
+        check(cudaDeviceGetLimit(&current, cudaLimitStackSize), "cudaDeviceGetLimit(stack)");
+        if (bytes > current)
+            check(cudaDeviceSetLimit(cudaLimitStackSize, bytes), "cudaDeviceSetLimit(stack)");
+    }
 
-      private:
-        struct State {
-            std::mutex m;
-            int active = 0;
-            size_t before = 0;
-        };
-        static State& state() {
-            static State s;
-            return s;
-        }
-        bool held_ = false;
-    };
-
-    StackLimit stack_;
     cudaStream_t stream_ = nullptr;
     bool sync_launches_ = false;
     void* temp_ = nullptr;

@@ -130,8 +130,15 @@ int render(const void* scene_p, const void* settings_p, const void* progress_p, 
             throw RenderError("CSG nested " + std::to_string(csg_nesting(scene)) +
                               " levels deep needs more device stack than the module allows");
         CudaExec exec(chosen_device(), stack);
-        wavefront::DeviceFrame<CudaExec>(exec, scene, s, progress, f).run();
+        wavefront::DeviceFrame<CudaExec> frame(exec, scene, s, progress, f);
+        frame.run();
         check(cudaStreamSynchronize(exec.stream()), "the end of the frame");
+        if (exec.profiling()) {
+            std::fprintf(stderr, "profile: host steps:");
+            for (const auto& [step, ms] : frame.host_steps())
+                std::fprintf(stderr, " %s %.3f ms;", step, ms);
+            std::fprintf(stderr, "\n");
+        }
         return SHEAF_CUDA_OK;
     } catch (const RenderError& e) {
         if (std::strcmp(e.what(), "cancelled") == 0) return SHEAF_CUDA_CANCELLED;

@@ -1,9 +1,9 @@
 // The frame pipeline of core/render/renderer.cpp as a wavefront of launches over arrays, written
-// once against the exec seam: raster (one thread per set-up triangle over its pixel bounds, a
-// 64-bit atomic minimum of depth | primitive), analytic primary rays, the G-buffer resolve,
-// then per bounce: ray generation (count, scan, fill), tracing (wf_trace.h), shading whose
-// sums go into each sample in the CPU renderer's order (accumulate_in_order), the next wave's
-// hits; finally the box filter and the passes. Same images, same statistics.
+// once against the exec seam: raster (each set-up triangle's pixel bounds cut into short runs
+// of a row, one thread each, a 64-bit atomic minimum of depth | primitive), analytic primary rays,
+// the G-buffer resolve, then per bounce: ray generation (count, scan, fill), tracing (wf_trace.h),
+// shading whose sums go into each sample in the CPU renderer's order (accumulate_in_order), the
+// next wave's hits; finally the box filter and the passes. Same images, same statistics.
 #pragma once
 
 #include "core/base/error.h"
@@ -16,6 +16,8 @@
 #include "core/wavefront/wf_trace.h"
 
 #include <chrono>
+#include <utility>
+#include <vector>
 
 namespace sheaf::wavefront {
 
@@ -25,6 +27,9 @@ template <class Exec> struct DeviceHits {
     size_t n = 0;
     size_t camera = 0; // the first hits, with gather 0; the rest are on gathered paths
 };
+
+/// Pixels of one row that one raster thread covers.
+constexpr int kCoverRun = 8;
 
 template <class Exec> class DeviceFrame {
   public:
@@ -38,15 +43,19 @@ template <class Exec> class DeviceFrame {
         const int aa = s_.aa_samples;
         W_ = s_.width * aa, H_ = s_.height * aa;
         const size_t samples = size_t(W_) * H_;
+        last_mark_ = start;
         const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
+        mark("cull units");
         // Photons are shot on the host through the CPU renderer's pass (the same map, so the
         // same picture) and gathered on the executing side.
         MemoryTracker photon_memory; // host memory, refused as the CPU renderer refuses it
         if (const int64_t available = available_memory_bytes(); available > 0)
             photon_memory.set_limit(available / 10 * 9, available);
         const PhotonMap photons = shoot_photons(host_, *units, s_, st_, photon_memory);
+        mark("photons");
         DeviceScene<Exec> uploaded(ex_, host_, *units, &photons);
         scene_ = uploaded.view;
+        mark("upload");
         radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
         tests_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);
         fill(ex_, radiance_.data(), samples, Vec3(0.0f));
@@ -54,9 +63,11 @@ template <class Exec> class DeviceFrame {
         params_ = frame_ray_params(host_, s_);
         DeviceTracer<Exec> tracer(ex_, host_, scene_, *units, uploaded.cull, s_, st_, clock_);
         tracer_ = &tracer;
+        mark("tracer");
 
         scatter_ = host_.media_scatter_light();
         DeviceHits<Exec> hits = primary();
+        mark("primary");
         scatter_light(segments_, samples);
         segments_ = DeviceBuffer<MediaSegment, Exec>();
         report(0.1f);
@@ -64,10 +75,14 @@ template <class Exec> class DeviceFrame {
             hits = shade_wave(hits, bounce);
             report(0.1f + 0.9f * float(bounce + 1) / float(s_.trace_depth + 1));
         }
+        mark("waves");
         tracer.flush();
+        mark("flush");
         resolve();
+        mark("resolve");
         tracer_ = nullptr;
         clock_.add_to(st_);
+        mark("phase times");
         st_.add("time_ms.frame",
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count());
@@ -75,6 +90,10 @@ template <class Exec> class DeviceFrame {
         st_.set("device.launches", double(ex_.launches()));
         st_.set("device.host_waits", double(ex_.host_waits()));
     }
+
+    /// Host time of the frame's steps in order (cull units, photons, upload, tracer, primary,
+    /// waves, flush, resolve, phase times): where a frame's wall time goes beyond the device's.
+    const std::vector<std::pair<const char*, double>>& host_steps() const { return steps_; }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private
     // member functions.
@@ -141,15 +160,39 @@ template <class Exec> class DeviceFrame {
                                    scene.prim_flag(uint32_t(p), kNoImage), cam, near,
                                    &screen[2 * p]);
                 });
-                ex_.launch("raster.cover", 2 * tris, [=] SHEAF_HD_LAMBDA(size_t k) {
+                // The pixel bounds cut into runs of kCoverRun pixels of a row, one thread
+                // each: a triangle as large as the screen is spread over many threads instead
+                // of looping over its pixels in one. first[k]: the first run of triangle k.
+                const size_t m = 2 * tris;
+                DeviceBuffer<uint64_t, Exec> first_buf(ex_, m);
+                uint64_t* first = first_buf.data();
+                ex_.launch("raster.runs", m, [=] SHEAF_HD_LAMBDA(size_t k) {
                     const ScreenTri& s = screen[k];
-                    if (s.x0 > s.x1) return; // covers nothing
-                    for (int y = s.y0; y <= s.y1; ++y)
-                        for (int x = s.x0; x <= s.x1; ++x) {
-                            uint64_t key;
-                            if (cover_pixel(s, x, y, cam.ortho, key))
-                                atomic_min_u64(&vis[size_t(y) * W + x], key);
-                        }
+                    first[k] = s.x0 > s.x1 || s.y0 > s.y1
+                                   ? 0
+                                   : uint64_t(s.y1 - s.y0 + 1) *
+                                         uint64_t((s.x1 - s.x0 + kCoverRun) / kCoverRun);
+                });
+                const uint64_t runs = ex_.exclusive_scan(first, m);
+                ex_.launch("raster.cover", size_t(runs), [=] SHEAF_HD_LAMBDA(size_t j) {
+                    // The last triangle whose runs start at or before j (never an empty one:
+                    // an empty triangle's successor starts where it does).
+                    size_t lo = 0, hi = m;
+                    while (hi - lo > 1) {
+                        const size_t mid = lo + (hi - lo) / 2;
+                        (first[mid] <= j ? lo : hi) = mid;
+                    }
+                    const ScreenTri& s = screen[lo];
+                    const uint64_t per_row = uint64_t((s.x1 - s.x0 + kCoverRun) / kCoverRun);
+                    const uint64_t local = j - first[lo];
+                    const int y = s.y0 + int(local / per_row);
+                    const int xa = s.x0 + int(local % per_row) * kCoverRun;
+                    const int xb = xa + kCoverRun - 1 < s.x1 ? xa + kCoverRun - 1 : s.x1;
+                    for (int x = xa; x <= xb; ++x) {
+                        uint64_t key;
+                        if (cover_pixel(s, x, y, cam.ortho, key))
+                            atomic_min_u64(&vis[size_t(y) * W + x], key);
+                    }
                 });
             }
             if (scene.analytic_count > 0)
@@ -503,6 +546,14 @@ template <class Exec> class DeviceFrame {
     DeviceBuffer<float, Exec> depth_;
     DeviceBuffer<Vec3, Exec> normal_, albedo_;
     DeviceBuffer<uint32_t, Exec> object_;
+    std::chrono::steady_clock::time_point last_mark_;
+    std::vector<std::pair<const char*, double>> steps_;
+    void mark(const char* step) {
+        const auto now = std::chrono::steady_clock::now();
+        steps_.emplace_back(step,
+                            std::chrono::duration<double, std::milli>(now - last_mark_).count());
+        last_mark_ = now;
+    }
     bool scatter_ = false;                      // media scatter the lights that cast shadows
     DeviceBuffer<MediaSegment, Exec> segments_; // the camera rays' ways, for scatter_light
 };

@@ -87,26 +87,49 @@ SHEAF_HD_INLINE TestCount brute_trace_ray(const SceneView& scene, const Ray& r, 
     return c;
 }
 
+/// Whether final_tests of this primitive is the plain triangle test (final_triangle_tests):
+/// a triangle that this query does not pass through (no surface to shade).
+SHEAF_HD_INLINE bool plain_final(const SceneView& scene, uint32_t prim, bool any, bool shadow) {
+    return scene.is_triangle(prim) && !(any && passes(scene, shadow, prim));
+}
+
+/// final_tests of a primitive for which plain_final holds: intersection and the hit recorded,
+/// nothing else, so a kernel of these alone needs few registers (on the GPU, a kernel that
+/// can also reach the analytic shapes or a shadow pass's texture takes all 255 and runs at an
+/// eighth of the occupancy).
+SHEAF_HD_INLINE uint64_t final_triangle_tests(const SceneView& scene, const Ray* rays,
+                                              const uint32_t* perm, size_t first, size_t last,
+                                              uint32_t prim, bool any, const HitSinks& out) {
+    uint64_t hits = 0;
+    const TriangleVerts& tri = scene.tris[prim];
+    for (size_t j = first; j < last; ++j) {
+        TriangleHit hit;
+        if (!intersect_triangle(rays[j], tri.a, tri.b, tri.c, hit)) continue;
+        ++hits;
+        record_hit(out, any, perm[j], hit.t, prim);
+    }
+    return hits;
+}
+
 /// The final tests of one (level-1 node, primitive) pair: every ray [first, last) of the
 /// node (in sorted order; perm gives each one's place in the batch) against the primitive.
 /// Returns the hits.
 SHEAF_HD_INLINE uint64_t final_tests(const SceneView& scene, const Ray* rays, const uint32_t* perm,
                                      size_t first, size_t last, uint32_t prim, bool any,
                                      bool shadow, const HitSinks& out) {
+    if (plain_final(scene, prim, any, shadow))
+        return final_triangle_tests(scene, rays, perm, first, last, prim, any, out);
     uint64_t hits = 0;
-    const bool pass = any && passes(scene, shadow, prim);
-    if (scene.is_triangle(prim)) { // the hot path, inline
+    if (scene.is_triangle(prim)) { // passed through: what the surface lets through
         const TriangleVerts& tri = scene.tris[prim];
         for (size_t j = first; j < last; ++j) {
             TriangleHit hit;
             if (!intersect_triangle(rays[j], tri.a, tri.b, tri.c, hit)) continue;
             ++hits;
-            if (pass)
-                record_pass(scene, out, perm[j], rays[j], hit.t, prim);
-            else
-                record_hit(out, any, perm[j], hit.t, prim);
+            record_pass(scene, out, perm[j], rays[j], hit.t, prim);
         }
     } else {
+        const bool pass = any && passes(scene, shadow, prim);
         for (size_t j = first; j < last; ++j) {
             float th;
             if (!intersect_prim(scene, prim, rays[j], th)) continue;

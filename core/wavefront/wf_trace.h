@@ -551,14 +551,26 @@ template <class Exec> class DeviceTracer {
         const HitSinks sinks = sinks_;
         DeviceBuffer<uint32_t, Exec> hits_buf(ex_, count);
         uint32_t* hits = hits_buf.data();
+        // Plain triangle pairs in one launch, the rest (analytic shapes, surfaces a shadow
+        // passes) in another where the scene has any: the first kernel then needs few registers.
         ex_.launch("rsh.final", count, [=] SHEAF_HD_LAMBDA(size_t j) {
             const NodePrim pr = pairs[j];
             atomic_add_u32(&leaf_pairs[pr.node], 1);
+            if (!plain_final(scene, pr.prim, any, shadow)) return;
             const size_t first = size_t(pr.node) * size_t(arity);
             const size_t last = node_last_child(pr.node, arity, rays_n);
             hits[j] =
-                uint32_t(final_tests(scene, rays, perm, first, last, pr.prim, any, shadow, sinks));
+                uint32_t(final_triangle_tests(scene, rays, perm, first, last, pr.prim, any, sinks));
         });
+        if (scene.analytic_count > 0 || (shadow && transparent_))
+            ex_.launch("rsh.final_shapes", count, [=] SHEAF_HD_LAMBDA(size_t j) {
+                const NodePrim pr = pairs[j];
+                if (plain_final(scene, pr.prim, any, shadow)) return;
+                const size_t first = size_t(pr.node) * size_t(arity);
+                const size_t last = node_last_child(pr.node, arity, rays_n);
+                hits[j] = uint32_t(
+                    final_tests(scene, rays, perm, first, last, pr.prim, any, shadow, sinks));
+            });
         ex_.reduce_into(
             "rsh.final_counts", count, final_count_, TestCount{},
             [=] SHEAF_HD_LAMBDA(size_t j) -> TestCount {

@@ -1,10 +1,16 @@
 #include "core/base/memory.h"
 
 #include "core/base/error.h"
+#include "core/base/parallel.h"
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <string>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 namespace sheaf {
 namespace {
@@ -51,6 +57,26 @@ void MemoryTracker::refuse(int64_t bytes, int64_t total) const {
                       "would reach " + mib(total) + " with the next " + mib(bytes) + " (" +
                       mib(available_) + " were available when it started); a smaller size, "
                       "fewer aa.samples or ao.samples, or a smaller traversal.batch need less");
+}
+
+void prefault_host_pages(void* p, size_t bytes) {
+    constexpr uintptr_t kHuge = uintptr_t(2) << 20;
+    if (!p || bytes < (size_t(1) << 20)) return;
+#ifdef __linux__
+    const uintptr_t begin = reinterpret_cast<uintptr_t>(p);
+    const uintptr_t a = (begin + kHuge - 1) & ~(kHuge - 1), e = (begin + bytes) & ~(kHuge - 1);
+    if (e > a) madvise(reinterpret_cast<void*>(a), e - a, MADV_HUGEPAGE); // a hint
+#endif
+    // Pieces of 256 KiB, zeroed where they lie: the faults are taken on every core.
+    constexpr size_t kPiece = size_t(256) << 10;
+    const size_t pieces = (bytes + kPiece - 1) / kPiece;
+    parallel_for(
+        "prefault", pieces,
+        [&](size_t i) {
+            const size_t at = i * kPiece;
+            std::memset(static_cast<char*>(p) + at, 0, std::min(kPiece, bytes - at));
+        },
+        1);
 }
 
 } // namespace sheaf

@@ -2,11 +2,25 @@
 // policy), owned: allocated through the exec, freed when it goes. Move-only.
 #pragma once
 
+#include "core/base/memory.h"
+
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace sheaf::wavefront {
+
+/// A vector of n values to download into, its pages readied on every core first
+/// (prefault_host_pages): a frame's passes are tens of MiB of fresh memory.
+template <class T> std::vector<T> host_vector(size_t n) {
+    static_assert(std::is_trivially_copyable_v<T>, "raw storage, zeroed before it holds values");
+    std::vector<T> v;
+    v.reserve(n);
+    prefault_host_pages(v.data(), n * sizeof(T));
+    v.resize(n);
+    return v;
+}
 
 template <class T, class Exec> class DeviceBuffer {
   public:
@@ -33,7 +47,7 @@ template <class T, class Exec> class DeviceBuffer {
         if (n) exec_->copy_to_device(p_ + offset, src, n * sizeof(T));
     }
     std::vector<T> download(size_t n) const {
-        std::vector<T> out(n);
+        std::vector<T> out = host_vector<T>(n);
         if (n) exec_->copy_to_host(out.data(), p_, n * sizeof(T));
         return out;
     }

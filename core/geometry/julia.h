@@ -12,6 +12,7 @@
 #pragma once
 
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 
 #include <cfloat>
 #include <cmath>
@@ -205,7 +206,7 @@ SHEAF_HD_INLINE double escape_distance(const JuliaFractal& j, const Orbit& o, co
         if (i > 0) pw /= p;
     }
     if (!(dd > 0)) return j.min_step;
-    const double est = pw * sqrt(norm / dd) * log(norm);
+    const double est = pw * sqrt(norm / dd) * hdm::log(norm);
     return est > 0 ? est : j.min_step;
 }
 

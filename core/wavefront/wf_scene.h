@@ -78,7 +78,6 @@ template <class Exec> class DeviceScene {
         put(p.normal_map_entries, v.normal_map_entries);
         put(p.material_switches, v.material_switches);
         put(p.warps, v.warps);
-        v.functions.warps = v.warps; // the same device copy
         put(p.material_entries, v.material_entries);
         put(p.media, v.media);
         put(p.medium_densities, v.medium_densities);
@@ -101,6 +100,9 @@ template <class Exec> class DeviceScene {
         packed_.upload(staging_.data(), staging_.size());
         for (const auto& point : pointers_) point(packed_.data());
         staging_ = {}, pointers_ = {};
+        // The same device copy; only now, after the packed arrays' pointers are set (a small
+        // warp table is packed, and its pointer was null until the line above).
+        v.functions.warps = v.warps;
     }
 
     SceneView view;

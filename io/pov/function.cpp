@@ -214,8 +214,9 @@ double PovFunction::eval(const double* args, int n, uint64_t& steps) const {
     if (internal >= 0 || pattern || pigment) {
         if (steps == 0) throw FnStepsExceeded{};
         --steps;
-        double a[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-        for (int i = 0; i < n && i < 8; ++i) a[i] = args[i];
+        // x, y, z and the most parameters an internal function takes (f_helix1: 7).
+        double a[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+        for (int i = 0; i < n && i < 10; ++i) a[i] = args[i];
         if (pigment) return pigment->at(int(FnComponent::Gray), a[0], a[1], a[2]);
         return pattern ? pattern->at(a[0], a[1], a[2])
                        : fn_internal(internal, a[0], a[1], a[2], a + 3);

@@ -11,7 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -560,11 +563,38 @@ inline void expect_same_frame(const Frame& a, const Frame& b, const std::string&
         return x.size() == y.size() &&
                (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
     };
+    // Where two float passes differ: how many values, the largest difference, the first
+    // pixel and its object (channels per pixel: `per`).
+    auto where = [&](const auto& xv, const auto& yv, size_t per) {
+        static_assert(sizeof(xv[0]) % sizeof(float) == 0, "passes of floats");
+        if (xv.size() != yv.size()) return std::string(" (sizes differ)");
+        const size_t n = xv.size() * (sizeof(xv[0]) / sizeof(float));
+        const float* x = reinterpret_cast<const float*>(xv.data());
+        const float* y = reinterpret_cast<const float*>(yv.data());
+        size_t count = 0, first = n;
+        double most = 0;
+        for (size_t i = 0; i < n; ++i) {
+            if (std::memcmp(&x[i], &y[i], sizeof(float)) == 0) continue;
+            if (count++ == 0) first = i;
+            most = std::max(most, double(std::fabs(x[i] - y[i])));
+        }
+        if (count == 0) return std::string();
+        const size_t px = first / per;
+        const size_t w = size_t(a.width > 0 ? a.width : 1);
+        std::ostringstream o;
+        o.precision(9);
+        o << " (" << count << " of " << n << " values, at most " << most
+          << " apart; first at pixel " << px % w << "," << px / w << " (object "
+          << (px < a.object_id.size() ? int64_t(a.object_id[px]) : -1) << "): " << x[first]
+          << " and " << y[first] << ")";
+        return o.str();
+    };
     EXPECT_EQ(a.width, b.width) << what;
     EXPECT_EQ(a.height, b.height) << what;
-    EXPECT_TRUE(same(a.rgba, b.rgba)) << what << ": the images differ";
-    EXPECT_TRUE(same(a.depth, b.depth)) << what << ": depth differs";
-    EXPECT_TRUE(same(a.normal, b.normal)) << what << ": normals differ";
+    EXPECT_TRUE(same(a.rgba, b.rgba)) << what << ": the images differ" << where(a.rgba, b.rgba, 4);
+    EXPECT_TRUE(same(a.depth, b.depth)) << what << ": depth differs" << where(a.depth, b.depth, 1);
+    EXPECT_TRUE(same(a.normal, b.normal))
+        << what << ": normals differ" << where(a.normal, b.normal, 3);
     EXPECT_TRUE(same(a.albedo, b.albedo)) << what << ": albedo differs";
     EXPECT_TRUE(same(a.object_id, b.object_id)) << what << ": object ids differ";
     EXPECT_TRUE(same(a.tests, b.tests)) << what << ": per-pixel tests differ";

@@ -27,7 +27,7 @@ for f in "${bins[@]}"; do
 done | sort -u | grep -v -E '/(libc|libm|libstdc\+\+|libgcc_s|libpthread|libdl|librt)\.so' |
   while read -r lib; do cp -L "$lib" "$kit/lib/"; done
 cp -r "$src/scenes/." "$kit/scenes/"
-if [ -d /usr/share/povray-3.7/include ]; then cp -r /usr/share/povray-3.7/include/. "$kit/pov-include/"; fi
+if [ -d /usr/share/povray-3.7/include ]; then cp -rL /usr/share/povray-3.7/include/. "$kit/pov-include/"; fi
 cp "$src/gpu/kit_run.sh" "$kit/run.sh"
 chmod +x "$kit/run.sh"
 du -sh "$kit"

@@ -14,7 +14,7 @@ namespace sheaf {
 int64_t available_memory_bytes();
 
 /// Readies fresh memory [p, p + bytes) that is about to be filled: asks for transparent huge
-/// pages where the system grants them on request, and touches the pages from all cores. A
+/// pages where the system grants them on request, and touches every page from all cores. A
 /// frame's passes are tens of MiB of fresh memory, and faulting it in 4 KiB pages on one
 /// core cost more than the copy that fills it. Ranges under 1 MiB are left alone.
 void prefault_host_pages(void* p, size_t bytes);

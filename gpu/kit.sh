@@ -1,9 +1,9 @@
 #!/bin/bash
 # Packs what the CUDA checks need into one folder that runs on a GPU machine without this
 # build's libraries installed (the lent device machine has CUDA but not Debian's OpenColorIO,
-# Assimp, oneTBB ...): the module, the CUDA test, both benchmarks, the sample scenes,
+# Assimp, oneTBB ...): the module, the CUDA tests, both benchmarks, the sample scenes,
 # POV-Ray's includes, and every shared library they need beyond the C/C++ runtime: about
-# 48 MiB, under the device tool's 64 MiB carry (the script fails past it). (Not libsheaf and
+# 55 MiB, under the device tool's 64 MiB carry (the script fails past it). (Not libsheaf and
 # the CLI: OpenImageIO brings some 350 MB of libraries with it, which is why the scene
 # readers take their image reader from the host; the test checks backend selection itself.)
 #
@@ -18,8 +18,8 @@ module=$build/plugin/capi/libsheaf_cuda.so.0
 rm -rf "$kit"
 mkdir -p "$kit/bin" "$kit/lib" "$kit/scenes" "$kit/pov-include"
 cp -L "$module" "$kit/lib/libsheaf_cuda.so.0"
-bins=("$build/gpu/sheaf_cuda_tests" "$build/tests/bench/sheaf_frame_bench"
-      "$build/tests/bench/sheaf_ao_study")
+bins=("$build/gpu/sheaf_cuda_tests" "$build/gpu/sheaf_cuda_bits_tests"
+      "$build/tests/bench/sheaf_frame_bench" "$build/tests/bench/sheaf_ao_study")
 cp "${bins[@]}" "$kit/bin/"
 # Shared libraries beyond glibc, libstdc++ and libgcc (newer on the GPU machine's image).
 for f in "${bins[@]}"; do

@@ -556,12 +556,28 @@ inline Scene procedural_scene() {
 
 /// Byte-for-byte equality of two frames: image, passes, and every statistic in the same
 /// order with the same value, except measurements (time_ms.*, memory.*), the wavefront
-/// pipeline's own counts (device.*) and `ignore`.
+/// pipeline's own counts (device.*) and `ignore`. With a `tolerance`, the shaded passes
+/// (image, normals, albedo) may differ by that much a value; depth, object ids, per-pixel
+/// tests and statistics stay exact.
 inline void expect_same_frame(const Frame& a, const Frame& b, const std::string& what,
-                              const std::vector<std::string>& ignore = {}) {
+                              const std::vector<std::string>& ignore = {}, float tolerance = 0) {
     auto same = [](const auto& x, const auto& y) {
         return x.size() == y.size() &&
                (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
+    };
+    // Float passes equal bit for bit, or within `tolerance`.
+    auto close = [&](const auto& xv, const auto& yv) {
+        static_assert(sizeof(xv[0]) % sizeof(float) == 0, "passes of floats");
+        if (same(xv, yv)) return true;
+        if (tolerance <= 0 || xv.size() != yv.size()) return false;
+        const size_t n = xv.size() * (sizeof(xv[0]) / sizeof(float));
+        const float* x = reinterpret_cast<const float*>(xv.data());
+        const float* y = reinterpret_cast<const float*>(yv.data());
+        for (size_t i = 0; i < n; ++i)
+            if (!(std::fabs(x[i] - y[i]) <= tolerance) &&
+                std::memcmp(&x[i], &y[i], sizeof(float)) != 0)
+                return false;
+        return true;
     };
     // Where two float passes differ: how many values, the largest difference, the first
     // pixel and its object (channels per pixel: `per`).
@@ -591,11 +607,12 @@ inline void expect_same_frame(const Frame& a, const Frame& b, const std::string&
     };
     EXPECT_EQ(a.width, b.width) << what;
     EXPECT_EQ(a.height, b.height) << what;
-    EXPECT_TRUE(same(a.rgba, b.rgba)) << what << ": the images differ" << where(a.rgba, b.rgba, 4);
+    EXPECT_TRUE(close(a.rgba, b.rgba)) << what << ": the images differ" << where(a.rgba, b.rgba, 4);
     EXPECT_TRUE(same(a.depth, b.depth)) << what << ": depth differs" << where(a.depth, b.depth, 1);
-    EXPECT_TRUE(same(a.normal, b.normal))
+    EXPECT_TRUE(close(a.normal, b.normal))
         << what << ": normals differ" << where(a.normal, b.normal, 3);
-    EXPECT_TRUE(same(a.albedo, b.albedo)) << what << ": albedo differs";
+    EXPECT_TRUE(close(a.albedo, b.albedo))
+        << what << ": albedo differs" << where(a.albedo, b.albedo, 3);
     EXPECT_TRUE(same(a.object_id, b.object_id)) << what << ": object ids differ";
     EXPECT_TRUE(same(a.tests, b.tests)) << what << ": per-pixel tests differ";
     auto measured = [&](const std::string& k) {

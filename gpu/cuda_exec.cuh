@@ -7,6 +7,7 @@
 
 #include "core/base/error.h"
 #include "core/base/memory.h"
+#include "gpu/pinned_staging.cuh"
 
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
@@ -91,10 +92,14 @@ class CudaExec {
             if (free_error_ == cudaSuccess) free_error_ = e;
         }
     }
-    // Host <-> device copies wait for the copy: the host side may be a temporary.
+    // Host <-> device copies wait for the copy: the host side may be a temporary. Large ones
+    // go through the process's page-locked staging (gpu/pinned_staging.cuh) when it is free.
     void copy_to_device(void* dst, const void* src, size_t bytes) {
         ++waits_;
         const Span span(*this, "copy to device");
+        cudaError_t e = cudaSuccess;
+        if (staged_copy(dst, src, bytes, cudaMemcpyHostToDevice, stream_, e))
+            return check(e, "copy to device");
         check(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyHostToDevice, stream_), "copy to device");
         check(cudaStreamSynchronize(stream_), "copy to device");
     }
@@ -102,6 +107,9 @@ class CudaExec {
         ++waits_;
         check_frees();
         const Span span(*this, "copy to host");
+        cudaError_t e = cudaSuccess;
+        if (staged_copy(dst, src, bytes, cudaMemcpyDeviceToHost, stream_, e))
+            return check(e, "copy to host");
         check(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyDeviceToHost, stream_), "copy to host");
         check(cudaStreamSynchronize(stream_), "copy to host");
     }

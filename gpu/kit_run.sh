@@ -1,11 +1,11 @@
 #!/bin/bash
 # The CUDA checks in one call, from a folder made by gpu/kit.sh: the device, the CPU<->CUDA
-# identity test (with backend selection), the analytic shapes host against device, then the benchmarks of the CUDA issue
-# (frames at 512² and 1024² on both backends; paper 003's AO study at 1024², 16 rays per
-# pixel, on the GPU, culling large meshes in runs, the default, and whole objects as the
-# paper does, cull.cluster=0). Logs go to OUT_DIR (default $OUT, else
-# ./kit-out); the tables last. The steps' time limits add up to 570 s, under the device
-# tool's 600 s per call.
+# identity test (with backend selection), the analytic shapes host against device, then the
+# benchmarks of the CUDA issue (frames at 512² and 1024² on both backends, and on the GPU
+# again with SHEAF_CUDA_PINNED=0; paper 003's AO study at 1024², 16 rays per pixel, on the
+# GPU, culling large meshes in runs, the default, and whole objects as the paper does,
+# cull.cluster=0). Logs go to OUT_DIR (default $OUT, else ./kit-out); the tables last. The
+# steps' time limits add up to 570 s, under the device tool's 600 s per call.
 # usage: run.sh [OUT_DIR]
 set -u
 kit=$(dirname "$(realpath "$0")")
@@ -18,19 +18,23 @@ export SHEAF_SCENES_DIR="$kit/scenes" SHEAF_POV_INCLUDE="$kit/pov-include"
 (nvidia-smi -L; nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv) \
   >"$out/device.txt" 2>&1
 cat "$out/device.txt"
-SHEAF_CUDA_SYNC=1 timeout 180 "$kit/bin/sheaf_cuda_tests" >"$out/cuda_tests.txt" 2>&1
+SHEAF_CUDA_SYNC=1 timeout 150 "$kit/bin/sheaf_cuda_tests" >"$out/cuda_tests.txt" 2>&1
 echo "cuda tests: exit $? ($(grep -c '^\[       OK' "$out/cuda_tests.txt") ok," \
      "$(grep -c '^\[  FAILED  \]' "$out/cuda_tests.txt") failed lines)"
 grep -E '^\[  (FAILED|SKIPPED) |^module ' "$out/cuda_tests.txt" | head -20
 # Analytic shapes ray by ray, and isosurfaces step by step: where host and device part.
-timeout 60 "$kit/bin/sheaf_cuda_bits_tests" >"$out/cuda_bits.txt" 2>&1
+timeout 50 "$kit/bin/sheaf_cuda_bits_tests" >"$out/cuda_bits.txt" 2>&1
 echo "cuda bits test: exit $?"
 grep -v -E '^\[ |^Running main|^Note: ' "$out/cuda_bits.txt" | head -40
 timeout 150 "$kit/bin/sheaf_frame_bench" --frames 5 >"$out/frame_bench.md" 2>&1
 echo "frame bench: exit $?"
+# The same frames on the GPU with the page-locked staging of large copies off, to compare.
+SHEAF_CUDA_PINNED=0 timeout 40 "$kit/bin/sheaf_frame_bench" --frames 5 --backends cuda \
+  >"$out/frame_bench_pageable.md" 2>&1
+echo "frame bench, pageable copies: exit $?"
 timeout 120 "$kit/bin/sheaf_ao_study" --backends cuda --frames 3 >"$out/ao_study.md" 2>&1
 echo "ao study: exit $?"
 timeout 60 "$kit/bin/sheaf_ao_study" --backends cuda --sorts radix --set cull.cluster=0 \
   >"$out/ao_study_whole_objects.md" 2>&1
 echo "ao study, whole objects: exit $?"
-cat "$out/frame_bench.md" "$out/ao_study.md" "$out/ao_study_whole_objects.md"
+cat "$out/frame_bench.md" "$out/frame_bench_pageable.md" "$out/ao_study.md" "$out/ao_study_whole_objects.md"

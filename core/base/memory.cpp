@@ -4,6 +4,7 @@
 #include "core/base/parallel.h"
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <string>
 
@@ -76,6 +77,23 @@ void prefault_host_pages(void* p, size_t bytes) {
         [&](size_t i) {
             const size_t end = std::min(bytes, (i + 1) * kPiece);
             for (size_t at = i * kPiece; at < end; at += kPage) base[at] = 0;
+        },
+        1);
+}
+
+void parallel_copy(void* dst, const void* src, size_t bytes) {
+    constexpr size_t kPiece = size_t(256) << 10;
+    if (bytes < (size_t(1) << 20)) {
+        if (bytes) std::memcpy(dst, src, bytes);
+        return;
+    }
+    char* const d = static_cast<char*>(dst);
+    const char* const s = static_cast<const char*>(src);
+    parallel_for(
+        "copy", (bytes + kPiece - 1) / kPiece,
+        [&](size_t i) {
+            const size_t at = i * kPiece;
+            std::memcpy(d + at, s + at, std::min(kPiece, bytes - at));
         },
         1);
 }

@@ -19,6 +19,10 @@ int64_t available_memory_bytes();
 /// core cost more than the copy that fills it. Ranges under 1 MiB are left alone.
 void prefault_host_pages(void* p, size_t bytes);
 
+/// memcpy of [src, src + bytes) to dst from all cores, in pieces of 256 KiB (one memcpy under
+/// 1 MiB): one core cannot fill host memory at the rate a device copy reaches it.
+void parallel_copy(void* dst, const void* src, size_t bytes);
+
 class MemoryTracker {
   public:
     /// Buffers beyond `bytes` in all are refused (OutOfMemory) before they are allocated;

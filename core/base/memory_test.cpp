@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace sheaf {
 namespace {
@@ -41,6 +43,19 @@ TEST(MemoryTracker, ALimitRefusesBeforeAllocating) {
 
 TEST(MemoryTracker, TheAvailableMemoryIsKnownOnLinux) {
     EXPECT_GT(available_memory_bytes(), 0);
+}
+
+TEST(ParallelCopy, CopiesEveryByteOfLargeAndSmallRanges) {
+    // 5 MiB + 3 bytes: pieces of 256 KiB and a short last one; then sizes below the 1 MiB
+    // threshold, and nothing.
+    for (size_t n : {(size_t(5) << 20) + 3, size_t(1) << 20, size_t(4097), size_t(1), size_t(0)}) {
+        std::vector<uint8_t> src(n), dst(n + 8, 0xAB);
+        for (size_t i = 0; i < n; ++i) src[i] = uint8_t(i * 131 + (i >> 12));
+        parallel_copy(dst.data() + 4, src.data(), n);
+        EXPECT_TRUE(std::equal(src.begin(), src.end(), dst.begin() + 4)) << n << " bytes";
+        for (size_t i : {size_t(0), size_t(3), n + 4, n + 7})
+            EXPECT_EQ(dst[i], 0xAB) << "byte " << i << " outside the range, " << n << " bytes";
+    }
 }
 
 } // namespace

@@ -156,50 +156,47 @@ inline std::vector<Ray> rays_at(const Sphere& bound, int n, std::mt19937& g) {
     return rays;
 }
 
+/// fn(in[i]) for every input on `ex`'s side: the inputs uploaded, one launch, the outputs
+/// read back.
+template <class Out, class In, class Exec, class Fn>
+std::vector<Out> on_side(Exec& ex, const char* name, const std::vector<In>& in, Fn fn) {
+    const size_t n = in.size();
+    wavefront::DeviceBuffer<In, Exec> inputs(ex, n);
+    wavefront::DeviceBuffer<Out, Exec> outputs(ex, n);
+    inputs.upload(in.data(), n);
+    const In* ip = inputs.data();
+    Out* op = outputs.data();
+    ex.launch(name, n, [=] SHEAF_HD_LAMBDA(size_t i) { op[i] = fn(ip[i]); });
+    return outputs.download();
+}
+
+/// A ray aimed at analytic object `index`.
+struct AimedRay {
+    uint32_t index;
+    Ray ray;
+};
+
 template <class Exec>
-std::vector<Hit> side_hits(Exec& ex, const SceneView& side, const std::vector<uint32_t>& index,
-                           const std::vector<Ray>& rays) {
-    const size_t n = rays.size();
-    wavefront::DeviceBuffer<Ray, Exec> r(ex, n);
-    wavefront::DeviceBuffer<uint32_t, Exec> idx(ex, n);
-    wavefront::DeviceBuffer<Hit, Exec> out(ex, n);
-    r.upload(rays.data(), n);
-    idx.upload(index.data(), n);
-    const Ray* rp = r.data();
-    const uint32_t* ip = idx.data();
-    Hit* op = out.data();
-    ex.launch("probe.analytic", n,
-              [=] SHEAF_HD_LAMBDA(size_t i) { op[i] = first_hit(side, ip[i], rp[i]); });
-    return out.download();
+std::vector<Hit> side_hits(Exec& ex, const SceneView& side, const std::vector<AimedRay>& rays) {
+    return on_side<Hit>(ex, "probe.analytic", rays, [=] SHEAF_HD_LAMBDA(const AimedRay& r) {
+        return first_hit(side, r.index, r.ray);
+    });
 }
 
 template <class Exec>
 std::vector<Pieces> side_pieces(Exec& ex, const SceneView& side, uint32_t iso,
                                 const std::vector<Ray>& rays) {
-    const size_t n = rays.size();
-    wavefront::DeviceBuffer<Ray, Exec> r(ex, n);
-    wavefront::DeviceBuffer<Pieces, Exec> out(ex, n);
-    r.upload(rays.data(), n);
-    const Ray* rp = r.data();
-    Pieces* op = out.data();
-    ex.launch("probe.iso", n, [=] SHEAF_HD_LAMBDA(size_t i) { op[i] = pieces(side, iso, rp[i]); });
-    return out.download();
+    return on_side<Pieces>(ex, "probe.iso", rays,
+                           [=] SHEAF_HD_LAMBDA(const Ray& r) { return pieces(side, iso, r); });
 }
 
 template <class Exec>
 std::vector<double> side_values(Exec& ex, const SceneView& side, uint32_t program,
                                 const std::vector<Point3d>& points) {
-    const size_t n = points.size();
-    wavefront::DeviceBuffer<Point3d, Exec> p(ex, n);
-    wavefront::DeviceBuffer<double, Exec> out(ex, n);
-    p.upload(points.data(), n);
-    const Point3d* pp = p.data();
-    double* op = out.data();
     const FnView fv = side.functions;
-    ex.launch("probe.function", n, [=] SHEAF_HD_LAMBDA(size_t i) {
-        op[i] = fn_eval3(fv, program, pp[i].x, pp[i].y, pp[i].z);
+    return on_side<double>(ex, "probe.function", points, [=] SHEAF_HD_LAMBDA(const Point3d& p) {
+        return fn_eval3(fv, program, p.x, p.y, p.z);
     });
-    return out.download();
 }
 
 /// The six values of the function that the gradient of host pieces `p` took at its first
@@ -300,27 +297,26 @@ void probe_scene(Exec& ex, const std::string& name, const PreparedScene& scene, 
     auto is_iso = [&](uint32_t leaf) {
         return leaf < scene.shapes.size() && scene.shapes[leaf].shape.kind == ShapeKind::Isosurface;
     };
-    std::vector<Ray> rays;
-    std::vector<uint32_t> index;
+    std::vector<AimedRay> rays;
     for (uint32_t a = 0; a < host.analytic_count; ++a) {
         const Sphere& b = scene.prim_sphere[host.tri_count + a];
         if (!(b.radius > 0) || !(b.radius < 1e6f)) continue; // unbounded (planes)
         ++tally.objects;
-        for (const Ray& r : rays_at(b, kRaysPerObject, g)) rays.push_back(r), index.push_back(a);
+        for (const Ray& r : rays_at(b, kRaysPerObject, g)) rays.push_back({a, r});
     }
     tally.rays += rays.size();
-    const std::vector<Hit> sh = side_hits(ex, side, index, rays);
+    const std::vector<Hit> sh = side_hits(ex, side, rays);
     size_t apart = 0, iso_apart = 0;
     for (size_t i = 0; i < rays.size(); ++i) {
-        const Hit hh = first_hit(host, index[i], rays[i]);
+        const Hit hh = first_hit(host, rays[i].index, rays[i].ray);
         if (same(hh, sh[i])) continue;
         const bool iso_normal_only = hh.hit && sh[i].hit && bits(hh.t) == bits(sh[i].t) &&
                                      hh.leaf == sh[i].leaf && is_iso(hh.leaf) &&
                                      most_apart(hh.normal, sh[i].normal) <= kIsoTolerance;
         if ((iso_normal_only ? iso_apart : apart)++ == 0)
-            std::printf("%s object %u (%s), ray %s\n  host: %s\n  %s: %s\n", name.c_str(), index[i],
-                        iso_normal_only ? "an isosurface's normal" : "differs",
-                        describe(rays[i]).c_str(), describe(hh).c_str(), Exec::kName,
+            std::printf("%s object %u (%s), ray %s\n  host: %s\n  %s: %s\n", name.c_str(),
+                        rays[i].index, iso_normal_only ? "an isosurface's normal" : "differs",
+                        describe(rays[i].ray).c_str(), describe(hh).c_str(), Exec::kName,
                         describe(sh[i]).c_str());
     }
     if (apart || iso_apart)

@@ -10,6 +10,13 @@ macro(sheaf_find name)
 endmacro()
 
 sheaf_find(TBB REQUIRED)
+# XXH3 digests of the arrays a frame copies to the device (core/base/content_hash.cpp), used
+# header-only (XXH_INLINE_ALL): nothing to link (Debian: libxxhash-dev).
+find_path(SHEAF_XXHASH_INCLUDE_DIR xxhash.h)
+if(NOT SHEAF_XXHASH_INCLUDE_DIR)
+  message(FATAL_ERROR "Sheaf: xxhash.h not found (Debian: libxxhash-dev)")
+endif()
+message(STATUS "Sheaf: found xxHash (${SHEAF_XXHASH_INCLUDE_DIR}/xxhash.h)")
 # Debian's OpenImageIO package config lists its command line tools (iconvert, ...) as imported
 # targets and refuses to load when they are missing: the README installs openimageio-tools.
 sheaf_find(OpenImageIO REQUIRED)

@@ -13,6 +13,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
+#include <thread>
 
 namespace sheaf {
 namespace {
@@ -121,6 +123,50 @@ TEST(Cuda, SceneFilesMatchTheCpu) {
             }
             expect_cuda_matches_cpu(scene, name, {});
         });
+}
+
+TEST(Cuda, TheSceneStaysOnTheDeviceBetweenFrames) {
+    SKIP_WITHOUT_DEVICE();
+    const PreparedScene office = prepare_scene(make_builtin_scene("office"));
+    const RenderSettings s = test::settings_for(office, {{"ao.samples", "2"}}, 64, 48);
+    const Frame cpu = render_frame_cpu(office, s);
+    render_frame_cuda(status(), office, s); // the module now keeps office
+    const Frame kept = render_frame_cuda(status(), office, s);
+    EXPECT_EQ(kept.stats.get("device.scene_kept"), 1.0);
+    test::expect_same_frame(cpu, kept, "office, kept");
+
+    PreparedScene recoloured = office;
+    recoloured.materials.at(0).color = Vec3(0.9f, 0.1f, 0.1f);
+    const Frame fresh = render_frame_cuda(status(), recoloured, s);
+    EXPECT_EQ(fresh.stats.get("device.scene_kept"), 0.0);
+    test::expect_same_frame(render_frame_cpu(recoloured, s), fresh, "office recoloured");
+}
+
+TEST(Cuda, FramesAtOnceEachGetTheirOwnAnswer) {
+    // Two threads render at once: one on the module's resident exec, the other (finding it
+    // busy) on an exec of its own; each frame is the CPU's.
+    SKIP_WITHOUT_DEVICE();
+    const PreparedScene office = prepare_scene(make_builtin_scene("office"));
+    const PreparedScene cornell = prepare_scene(make_builtin_scene("cornell"));
+    const RenderSettings so = test::settings_for(office, {}, 96, 72);
+    const RenderSettings sc = test::settings_for(cornell, {}, 96, 72);
+    Frame a, b;
+    std::string error_a, error_b;
+    auto run = [](const PreparedScene& scene, const RenderSettings& s, Frame& f,
+                  std::string& error) {
+        try {
+            for (int i = 0; i < 3; ++i) f = render_frame_cuda(status(), scene, s);
+        } catch (const std::exception& e) {
+            error = e.what();
+        }
+    };
+    std::thread ta(run, std::cref(office), std::cref(so), std::ref(a), std::ref(error_a));
+    std::thread tb(run, std::cref(cornell), std::cref(sc), std::ref(b), std::ref(error_b));
+    ta.join(), tb.join();
+    ASSERT_EQ(error_a, "");
+    ASSERT_EQ(error_b, "");
+    test::expect_same_frame(render_frame_cpu(office, so), a, "office, at once");
+    test::expect_same_frame(render_frame_cpu(cornell, sc), b, "cornell, at once");
 }
 
 TEST(Cuda, BackendAutoChoosesTheDevice) {

@@ -54,13 +54,15 @@ class CudaExec {
     static constexpr const char* kName = "cuda";
 
     /// Renders on `device`; `stack_bytes`: the per-thread stack the recursive CSG and pigment
-    /// code needs.
+    /// code needs. An exec may render many frames, one at a time (begin_frame).
     CudaExec(int device, size_t stack_bytes) : born_(std::chrono::steady_clock::now()) {
         const char* sync = std::getenv("SHEAF_CUDA_SYNC");
         sync_launches_ = sync && *sync && *sync != '0';
         const char* profile = std::getenv("SHEAF_CUDA_PROFILE");
         profile_ = profile && *profile && *profile != '0';
         check(cudaSetDevice(device), "cudaSetDevice");
+        device_ = device;
+        pool_ = device_pool(device);
         raise_stack_limit(stack_bytes);
         check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "cudaStreamCreate");
         setup_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
@@ -68,7 +70,7 @@ class CudaExec {
                         .count();
     }
     ~CudaExec() {
-        if (profile_) print_profile();
+        end_frame();
         if (temp_) cudaFreeAsync(temp_, stream_);
         if (scan_ends_) cudaFreeAsync(scan_ends_, stream_);
         cudaStreamSynchronize(stream_);
@@ -77,9 +79,30 @@ class CudaExec {
     CudaExec(const CudaExec&) = delete;
     CudaExec& operator=(const CudaExec&) = delete;
 
+    /// The start of a later frame on this exec: its counts and memory peak start again (from
+    /// what the exec still holds: a kept scene, CUB's scratch), its stack need is raised to.
+    void begin_frame(size_t stack_bytes) {
+        born_ = std::chrono::steady_clock::now();
+        check(cudaSetDevice(device_), "cudaSetDevice");
+        raise_stack_limit(stack_bytes);
+        launches_ = waits_ = 0;
+        memory_.restart_peak();
+        for (const Mark& m : marks_) cudaEventDestroy(m.event); // a failed frame's
+        marks_.clear();
+        depth_ = 0;
+        setup_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                              born_)
+                        .count();
+    }
+    /// The end of a frame: SHEAF_CUDA_PROFILE's table of it, when asked for.
+    void end_frame() {
+        if (profile_ && !marks_.empty()) print_profile();
+        marks_.clear();
+    }
+    int device() const { return device_; }
+
     void* allocate(size_t bytes) {
-        void* p = nullptr;
-        check(cudaMallocAsync(&p, bytes, stream_), "cudaMallocAsync");
+        void* p = pool_allocate(bytes);
         memory_.add(int64_t(bytes));
         return p;
     }
@@ -137,11 +160,7 @@ class CudaExec {
         static_assert(sizeof(T) <= sizeof(uint64_t), "a scanned element fits a scan end slot");
         if (n == 0) return 0;
         ++launches_;
-        if (!scan_ends_) {
-            check(cudaMallocAsync(reinterpret_cast<void**>(&scan_ends_), 2 * sizeof(uint64_t),
-                                  stream_),
-                  "cudaMallocAsync");
-        }
+        if (!scan_ends_) scan_ends_ = static_cast<uint64_t*>(pool_allocate(2 * sizeof(uint64_t)));
         T* ends = reinterpret_cast<T*>(scan_ends_);
         const Span span(*this, "scan (waited)");
         copy_on_device(ends, data + n - 1, sizeof(T));
@@ -268,7 +287,7 @@ class CudaExec {
         if (bytes > temp_bytes_) {
             if (temp_) check(cudaFreeAsync(temp_, stream_), "cudaFreeAsync");
             temp_ = nullptr;
-            check(cudaMallocAsync(&temp_, bytes, stream_), "cudaMallocAsync");
+            temp_ = pool_allocate(bytes);
             memory_.add(int64_t(bytes) - int64_t(temp_bytes_));
             temp_bytes_ = bytes;
         }
@@ -300,6 +319,50 @@ class CudaExec {
     };
 
   private:
+    /// Stream-ordered device memory from the module's pool on this device (device_pool). When
+    /// the device is full, the pool's unused reservation is given back and the allocation
+    /// tried once more.
+    void* pool_allocate(size_t bytes) {
+        void* p = nullptr;
+        cudaError_t e = cudaMallocFromPoolAsync(&p, bytes, pool_, stream_);
+        if (e == cudaErrorMemoryAllocation) {
+            cudaGetLastError();
+            check(cudaStreamSynchronize(stream_), "cudaMallocFromPoolAsync");
+            check(cudaMemPoolTrimTo(pool_, 0), "cudaMemPoolTrimTo");
+            e = cudaMallocFromPoolAsync(&p, bytes, pool_, stream_);
+        }
+        check(e, "cudaMallocFromPoolAsync");
+        return p;
+    }
+
+    /// The module's memory pool on `device`, made at its first use and kept for the process.
+    /// Its release threshold is an eighth of the device's memory: memory a frame frees stays
+    /// reserved for the next allocations and the next frame, instead of going back to the
+    /// driver at every host wait, as the default pool's threshold of 0 does (each later
+    /// allocation then maps fresh memory). A pool of its own, so the process's default pool,
+    /// which a host application may use, keeps its settings.
+    static cudaMemPool_t device_pool(int device) {
+        static std::mutex m;
+        static std::vector<std::pair<int, cudaMemPool_t>> pools;
+        std::lock_guard<std::mutex> lock(m);
+        for (const auto& [d, pool] : pools)
+            if (d == device) return pool;
+        cudaMemPoolProps props{};
+        props.allocType = cudaMemAllocationTypePinned;
+        props.handleTypes = cudaMemHandleTypeNone;
+        props.location.type = cudaMemLocationTypeDevice;
+        props.location.id = device;
+        cudaMemPool_t pool = nullptr;
+        check(cudaMemPoolCreate(&pool, &props), "cudaMemPoolCreate");
+        size_t free = 0, total = 0;
+        check(cudaMemGetInfo(&free, &total), "cudaMemGetInfo");
+        uint64_t threshold = total / 8;
+        check(cudaMemPoolSetAttribute(pool, cudaMemPoolAttrReleaseThreshold, &threshold),
+              "cudaMemPoolSetAttribute(release threshold)");
+        pools.emplace_back(device, pool);
+        return pool;
+    }
+
     void profile_mark(const char* name) {
         cudaEvent_t e = nullptr;
         if (cudaEventCreate(&e) != cudaSuccess) return;
@@ -380,6 +443,8 @@ class CudaExec {
     }
 
     cudaStream_t stream_ = nullptr;
+    int device_ = 0;
+    cudaMemPool_t pool_ = nullptr;
     bool sync_launches_ = false;
     void* temp_ = nullptr;
     size_t temp_bytes_ = 0;

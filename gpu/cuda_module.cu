@@ -13,6 +13,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <memory>
+#include <mutex>
 
 namespace sheaf::gpu {
 namespace {
@@ -107,6 +109,19 @@ int probe(SheafCudaProbe* out) {
     }
 }
 
+/// The exec frames run on one after another, made at the first frame and kept for the process
+/// with the scene copy it made last (wavefront::SceneKeep). Never destroyed: at the process's
+/// end the CUDA runtime may be gone before static destructors run, and the driver frees it all.
+struct Resident {
+    std::mutex m;
+    CudaExec* exec = nullptr;
+    wavefront::SceneKeep<CudaExec> keep;
+};
+Resident& resident() {
+    static Resident* r = new Resident;
+    return *r;
+}
+
 /// After a failed render: SHEAF_CUDA_BROKEN when the context is lost (a sticky error, which
 /// every call returns from then on), else `status`.
 int unless_broken(int status, char* error, size_t error_size) {
@@ -129,16 +144,39 @@ int render(const void* scene_p, const void* settings_p, const void* progress_p, 
         if (stack > kDeviceStackCap)
             throw RenderError("CSG nested " + std::to_string(csg_nesting(scene)) +
                               " levels deep needs more device stack than the module allows");
-        CudaExec exec(chosen_device(), stack);
-        wavefront::DeviceFrame<CudaExec> frame(exec, scene, s, progress, f);
+        // The resident exec when no other frame holds it (its stream, CUB's scratch and the
+        // scene copied last stay for the next frame); else one for this frame alone.
+        const int device = chosen_device();
+        Resident& r = resident();
+        std::unique_lock<std::mutex> lock(r.m, std::try_to_lock);
+        std::unique_ptr<CudaExec> own;
+        CudaExec* exec = nullptr;
+        wavefront::SceneKeep<CudaExec>* keep = nullptr;
+        if (lock.owns_lock()) {
+            if (r.exec && r.exec->device() != device) {
+                r.keep.clear();
+                delete r.exec;
+                r.exec = nullptr;
+            }
+            if (r.exec)
+                r.exec->begin_frame(stack);
+            else
+                r.exec = new CudaExec(device, stack);
+            exec = r.exec, keep = &r.keep;
+        } else {
+            own = std::make_unique<CudaExec>(device, stack);
+            exec = own.get();
+        }
+        wavefront::DeviceFrame<CudaExec> frame(*exec, scene, s, progress, f, keep);
         frame.run();
-        check(cudaStreamSynchronize(exec.stream()), "the end of the frame");
-        if (exec.profiling()) {
+        check(cudaStreamSynchronize(exec->stream()), "the end of the frame");
+        if (exec->profiling()) {
             std::fprintf(stderr, "profile: host steps:");
             for (const auto& [step, ms] : frame.host_steps())
                 std::fprintf(stderr, " %s %.3f ms;", step, ms);
             std::fprintf(stderr, "\n");
         }
+        exec->end_frame();
         return SHEAF_CUDA_OK;
     } catch (const RenderError& e) {
         if (std::strcmp(e.what(), "cancelled") == 0) return SHEAF_CUDA_CANCELLED;

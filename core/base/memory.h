@@ -42,6 +42,8 @@ class MemoryTracker {
     void sub(int64_t bytes) { current_.fetch_sub(bytes, std::memory_order_relaxed); }
     int64_t current() const { return current_.load(); }
     int64_t peak() const { return peak_.load(); }
+    /// The peak starts again from what is held now (a new frame on memory kept from the last).
+    void restart_peak() { peak_.store(current_.load()); }
 
   private:
     [[noreturn]] void refuse(int64_t bytes, int64_t total) const;

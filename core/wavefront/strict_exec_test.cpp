@@ -195,6 +195,27 @@ TEST(StrictExec, BuiltinScenesMatchTheCpuRenderer) {
     }
 }
 
+// A scene kept between frames (SceneKeep) stays in device memory, is bound by the next frame
+// without a host access to it (the second frame sealed), and is freed by clear().
+TEST(StrictExec, AKeptSceneServesTheNextFrame) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("office"));
+    const RenderSettings s = test::settings_for(scene, {{"ao.samples", "2"}}, 24, 18);
+    StrictExec ex;
+    wavefront::SceneKeep<StrictExec> keep;
+    const Frame cpu = render_frame_cpu(scene, s);
+    for (int frame = 0; frame < 2; ++frame) {
+        ex.seal_host(frame);
+        Frame f;
+        wavefront::DeviceFrame<StrictExec>(ex, scene, s, {}, f, &keep).run();
+        test::expect_same_frame(cpu, f, "frame " + std::to_string(frame));
+        EXPECT_EQ(f.stats.get("device.scene_kept"), frame == 0 ? 0.0 : 1.0);
+        EXPECT_TRUE(ex.violations().empty()) << ex.violations().front();
+        EXPECT_GT(ex.live_buffers(), 0u) << "the kept scene";
+    }
+    keep.clear();
+    EXPECT_EQ(ex.live_buffers(), 0u);
+}
+
 // Launches and reductions in a child process sealed from host memory: the first run of
 // each launch site in a frame (a fork each: milliseconds), in small frames under two settings.
 TEST(StrictExec, NoLaunchReadsHostMemory) {

@@ -16,6 +16,7 @@
 #include "core/wavefront/wf_trace.h"
 
 #include <chrono>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -33,9 +34,12 @@ constexpr int kCoverRun = 8;
 
 template <class Exec> class DeviceFrame {
   public:
+    /// `keep`: where an exec that outlives its frames keeps the scene's copy between them
+    /// (none: the frame copies the scene and frees it at its end).
     DeviceFrame(Exec& ex, const PreparedScene& scene, const RenderSettings& s,
-                const ProgressFn& progress, Frame& f)
-        : ex_(ex), host_(scene), s_(s), progress_(progress), f_(f), st_(f.stats), clock_(ex) {}
+                const ProgressFn& progress, Frame& f, SceneKeep<Exec>* keep = nullptr)
+        : ex_(ex), host_(scene), s_(s), progress_(progress), f_(f), st_(f.stats), clock_(ex),
+          keep_(keep) {}
 
     void run() {
         declare_frame_keys(st_);
@@ -53,9 +57,15 @@ template <class Exec> class DeviceFrame {
             photon_memory.set_limit(available / 10 * 9, available);
         const PhotonMap photons = shoot_photons(host_, *units, s_, st_, photon_memory);
         mark("photons");
-        DeviceScene<Exec> uploaded(ex_, host_, *units, &photons);
+        std::unique_ptr<DeviceScene<Exec>> own;
+        bool reused = false;
+        DeviceScene<Exec>& uploaded =
+            keep_ ? keep_->scene(ex_, host_, *units, &photons, reused)
+                  : *(own = std::make_unique<DeviceScene<Exec>>(ex_, host_, *units, &photons));
         scene_ = uploaded.view;
-        mark("upload");
+        st_.set("device.scene_kept", reused ? 1.0 : 0.0);
+        st_.set("device.scene_bytes", double(uploaded.bytes()));
+        mark(reused ? "upload (kept)" : "upload");
         radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
         tests_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);
         fill(ex_, radiance_.data(), samples, Vec3(0.0f));
@@ -537,6 +547,7 @@ template <class Exec> class DeviceFrame {
     Frame& f_;
     Stats& st_;
     PhaseClock<Exec> clock_;
+    SceneKeep<Exec>* keep_ = nullptr;
     SceneView scene_;
     DeviceTracer<Exec>* tracer_ = nullptr;
     RayGenParams params_;

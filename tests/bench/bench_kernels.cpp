@@ -3,8 +3,11 @@
 #include "core/geometry/cone_sphere.h"
 #include "core/geometry/ray_triangle.h"
 #include "core/render/renderer.h"
+#include "core/rsh/cull_units.h"
 #include "core/scenes/builtin.h"
 #include "core/sort/radix_sort.h"
+#include "core/wavefront/cpu_exec.h"
+#include "core/wavefront/wf_scene.h"
 
 #include <benchmark/benchmark.h>
 
@@ -96,3 +99,32 @@ BENCHMARK_CAPTURE(BM_Frame, office_crsh, "office", "crsh")->Unit(benchmark::kMil
 BENCHMARK_CAPTURE(BM_Frame, office_rah, "office", "rah")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Frame, colonnade_crsh, "colonnade", "crsh")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Frame, colonnade_rah, "colonnade", "rah")->Unit(benchmark::kMillisecond);
+
+// What keeping a scene's copy between frames (wavefront::SceneKeep) saves and costs on the
+// host: packing and copying the scene's arrays (here into host memory, the CPU policy's
+// "device"), against the digest of the same arrays that decides whether the kept copy serves.
+static void BM_SceneCopy(benchmark::State& state, const char* scene_name, bool digest_only) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene(scene_name));
+    Settings s;
+    const RenderSettings rs = RenderSettings::resolve(s, scene.settings);
+    const std::shared_ptr<const CullUnits> units = cull_units_for(scene, rs);
+    wavefront::CpuExec exec;
+    size_t bytes = 0;
+    for (auto _ : state) {
+        if (digest_only) {
+            benchmark::DoNotOptimize(
+                wavefront::DeviceScene<wavefront::CpuExec>::content(scene, *units, nullptr));
+        } else {
+            wavefront::DeviceScene<wavefront::CpuExec> copy(exec, scene, *units);
+            bytes = copy.bytes();
+            benchmark::DoNotOptimize(copy.view);
+        }
+    }
+    if (!digest_only) state.counters["bytes"] = double(bytes);
+}
+BENCHMARK_CAPTURE(BM_SceneCopy, cornell_copy, "cornell", false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SceneCopy, cornell_digest, "cornell", true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SceneCopy, office_copy, "office", false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SceneCopy, office_digest, "office", true)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SceneCopy, colonnade_copy, "colonnade", false)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_SceneCopy, colonnade_digest, "colonnade", true)->Unit(benchmark::kMicrosecond);

@@ -169,6 +169,13 @@ TEST(Cuda, FramesAtOnceEachGetTheirOwnAnswer) {
     test::expect_same_frame(render_frame_cpu(cornell, sc), b, "cornell, at once");
 }
 
+TEST(Cuda, PassSubsetsMatchTheCpu) {
+    SKIP_WITHOUT_DEVICE();
+    const PreparedScene office = prepare_scene(make_builtin_scene("office"));
+    for (const char* passes : {"combined", "combined,tests", "depth,normal,albedo,object_id"})
+        expect_cuda_matches_cpu(office, "office", {{"output.passes", passes}});
+}
+
 TEST(Cuda, BackendAutoChoosesTheDevice) {
     SKIP_WITHOUT_DEVICE();
     const PreparedScene scene = prepare_scene(test::glass_mirror_scene());

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sheaf {
@@ -26,5 +27,12 @@ struct Frame {
     /// The same in one line, with why: "backend: cpu (no CUDA device: cudaErrorNoDevice: ...)".
     std::string backend_line;
 };
+
+/// Whether `f` holds the pass named `pass` (combined, depth, normal, albedo, object_id, tests)
+/// for every pixel: a frame keeps only the passes output.passes names.
+bool frame_has_pass(const Frame& f, std::string_view pass);
+/// Why `f` lacks `pass`, in a sentence that names the setting: "the frame has no 'depth' pass
+/// (output.passes=combined)".
+std::string missing_pass(const Frame& f, std::string_view pass);
 
 } // namespace sheaf

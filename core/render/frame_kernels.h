@@ -230,7 +230,8 @@ struct SampleBuffers {
     const uint32_t* object;
 };
 
-/// The frame's per-pixel outputs (w x h).
+/// The frame's per-pixel outputs (w x h); a pass the frame does not keep (output.passes) is
+/// null.
 struct PixelBuffers {
     float* rgba;
     float* depth;
@@ -245,25 +246,30 @@ struct PixelBuffers {
 SHEAF_HD_INLINE void resolve_pixel(size_t p, int w, int aa, int W, float gamma,
                                    const SampleBuffers& in, const PixelBuffers& out) {
     const int x = int(p % size_t(w)), y = int(p / size_t(w));
-    const float inv = 1.0f / float(aa * aa);
-    Vec3 sum(0.0f);
-    uint64_t tests = 0;
-    for (int sy = 0; sy < aa; ++sy)
-        for (int sx = 0; sx < aa; ++sx) {
-            sum += in.radiance[size_t(y * aa + sy) * W + (x * aa + sx)];
-            tests += in.tests[size_t(y * aa + sy) * W + (x * aa + sx)];
-        }
-    out.tests[p] = uint32_t(tests < 0xFFFFFFFFu ? tests : 0xFFFFFFFFu);
-    sum = sum * inv;
-    if (gamma != 1)
-        for (int c = 0; c < 3; ++c) sum[c] = sum[c] > 0 ? hdm::powf(sum[c], gamma) : sum[c];
-    out.rgba[4 * p + 0] = sum.x, out.rgba[4 * p + 1] = sum.y, out.rgba[4 * p + 2] = sum.z,
-                     out.rgba[4 * p + 3] = 1;
+    if (out.tests) {
+        uint64_t tests = 0;
+        for (int sy = 0; sy < aa; ++sy)
+            for (int sx = 0; sx < aa; ++sx)
+                tests += in.tests[size_t(y * aa + sy) * W + (x * aa + sx)];
+        out.tests[p] = uint32_t(tests < 0xFFFFFFFFu ? tests : 0xFFFFFFFFu);
+    }
+    if (out.rgba) {
+        const float inv = 1.0f / float(aa * aa);
+        Vec3 sum(0.0f);
+        for (int sy = 0; sy < aa; ++sy)
+            for (int sx = 0; sx < aa; ++sx)
+                sum += in.radiance[size_t(y * aa + sy) * W + (x * aa + sx)];
+        sum = sum * inv;
+        if (gamma != 1)
+            for (int c = 0; c < 3; ++c) sum[c] = sum[c] > 0 ? hdm::powf(sum[c], gamma) : sum[c];
+        out.rgba[4 * p + 0] = sum.x, out.rgba[4 * p + 1] = sum.y, out.rgba[4 * p + 2] = sum.z,
+                         out.rgba[4 * p + 3] = 1;
+    }
     const size_t c = size_t(y * aa + aa / 2) * W + (x * aa + aa / 2);
-    out.depth[p] = in.depth[c];
-    out.normal[p] = in.normal[c];
-    out.albedo[p] = in.albedo[c];
-    out.object[p] = in.object[c];
+    if (out.depth) out.depth[p] = in.depth[c];
+    if (out.normal) out.normal[p] = in.normal[c];
+    if (out.albedo) out.albedo[p] = in.albedo[c];
+    if (out.object) out.object[p] = in.object[c];
 }
 
 } // namespace sheaf

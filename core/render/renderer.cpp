@@ -347,20 +347,22 @@ class FramePipeline {
         PhaseTimer t(st_, "time_ms.shading");
         const int aa = s_.aa_samples, w = s_.width, h = s_.height;
         f_.width = w, f_.height = h;
-        f_.rgba.assign(size_t(w) * h * 4, 0.0f);
-        f_.depth.resize(size_t(w) * h);
-        f_.normal.resize(size_t(w) * h);
-        f_.albedo.resize(size_t(w) * h);
-        f_.object_id.resize(size_t(w) * h);
-        f_.tests.resize(size_t(w) * h);
+        const size_t pixels = size_t(w) * h;
+        // Only the passes the frame keeps (output.passes); the others stay empty.
+        auto keep = [&](auto& pass, PassBit bit, size_t per_pixel) {
+            if (s_.keeps(bit)) pass.resize(pixels * per_pixel);
+            return s_.keeps(bit) ? pass.data() : nullptr;
+        };
         const SampleBuffers in{radiance_.data(), tests_.data(), depth_.data(),
                                normal_.data(),   albedo_.data(), object_.data()};
         const float gamma = scene_.working_gamma;
-        const PixelBuffers out{f_.rgba.data(),   f_.depth.data(),     f_.normal.data(),
-                               f_.albedo.data(), f_.object_id.data(), f_.tests.data()};
+        const PixelBuffers out{
+            keep(f_.rgba, kPassCombined, 4),      keep(f_.depth, kPassDepth, 1),
+            keep(f_.normal, kPassNormal, 1),      keep(f_.albedo, kPassAlbedo, 1),
+            keep(f_.object_id, kPassObjectId, 1), keep(f_.tests, kPassTests, 1)};
         parallel_for(
-            "resolve", size_t(w) * h,
-            [&](size_t p) { resolve_pixel(p, w, aa, W_, gamma, in, out); }, 1024);
+            "resolve", pixels, [&](size_t p) { resolve_pixel(p, w, aa, W_, gamma, in, out); },
+            1024);
     }
 
     const PreparedScene& scene_;

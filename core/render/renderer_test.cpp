@@ -121,6 +121,30 @@ TEST(Renderer, FramesAreDeterministic) {
             EXPECT_EQ(v, b.stats.get(k)) << k;
 }
 
+TEST(Renderer, AFrameKeepsOnlyThePassesAskedFor) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("office"));
+    const Frame all = render(scene, {{"width", "40"}, {"height", "30"}, {"ao.samples", "2"}});
+    const Frame some = render(scene, {{"width", "40"},
+                                      {"height", "30"},
+                                      {"ao.samples", "2"},
+                                      {"output.passes", "combined,tests"}});
+    EXPECT_EQ(some.rgba, all.rgba);
+    EXPECT_EQ(some.tests, all.tests);
+    EXPECT_TRUE(some.depth.empty() && some.normal.empty() && some.albedo.empty() &&
+                some.object_id.empty());
+    EXPECT_TRUE(frame_has_pass(some, "combined"));
+    EXPECT_FALSE(frame_has_pass(some, "depth"));
+    for (const auto& [k, v] : all.stats.entries()) // the same work: every count
+        if (k.rfind("time_ms.", 0) != 0 && k.rfind("memory.", 0) != 0)
+            EXPECT_EQ(v, some.stats.get(k)) << k;
+
+    const Frame depth =
+        render(scene, {{"width", "40"}, {"height", "30"}, {"output.passes", "depth,object_id"}});
+    EXPECT_TRUE(depth.rgba.empty() && depth.tests.empty());
+    EXPECT_EQ(depth.depth, all.depth);
+    EXPECT_EQ(depth.object_id, all.object_id);
+}
+
 TEST(Renderer, StatisticsAddUp) {
     const PreparedScene scene = prepare_scene(make_builtin_scene("cornell"));
     const Frame f = render(scene, {{"width", "32"}, {"height", "32"}});

@@ -165,6 +165,15 @@ const std::vector<SettingSpec>& setting_specs() {
          0,
          {},
          "OpenColorIO config file (empty: $OCIO, else the config Sheaf ships)"},
+        {"output.passes",
+         K::Subset,
+         "all",
+         0,
+         0,
+         {"combined", "depth", "normal", "albedo", "object_id", "tests"},
+         "the passes the frame keeps and hands back; the others are not read back from the "
+         "device nor kept in memory, and asking a frame for one is an error naming this "
+         "setting"},
         {"output.exr",
          K::Choice,
          "half",
@@ -218,6 +227,17 @@ const SettingSpec& spec_or_throw(std::string_view key) {
                         "' is not allowed; expected " + describe_allowed(s));
 }
 
+/// A Subset's value in canonical text: its items in the order of the choices, each once,
+/// separated by commas; "all" when every choice is there.
+std::string canonical_subset(const SettingSpec& s, std::string_view value) {
+    const uint32_t bits = subset_bits(s, value);
+    if (bits == (1u << s.choices.size()) - 1) return "all";
+    std::string out;
+    for (size_t i = 0; i < s.choices.size(); ++i)
+        if (bits & (1u << i)) out += (out.empty() ? "" : ",") + s.choices[i];
+    return out;
+}
+
 } // namespace
 
 std::string describe_allowed(const SettingSpec& s) {
@@ -235,6 +255,11 @@ std::string describe_allowed(const SettingSpec& s) {
         std::string out = "one of ";
         for (size_t i = 0; i < s.choices.size(); ++i) out += (i ? ", " : "") + s.choices[i];
         return out;
+    }
+    case SettingKind::Subset: {
+        std::string out = "a comma-separated list of ";
+        for (size_t i = 0; i < s.choices.size(); ++i) out += (i ? ", " : "") + s.choices[i];
+        return out + "; or all";
     }
     }
     return {};
@@ -269,8 +294,29 @@ std::string canonical_setting(std::string_view key, std::string_view value) {
         for (const std::string& c : s.choices)
             if (c == value) return c;
         bad_value(s, value);
+    case SettingKind::Subset:
+        return canonical_subset(s, value);
     }
     bad_value(s, value);
+}
+
+uint32_t subset_bits(const SettingSpec& s, std::string_view value) {
+    if (value == "all") return (1u << s.choices.size()) - 1;
+    uint32_t bits = 0;
+    size_t start = 0;
+    while (start <= value.size()) {
+        size_t end = value.find(',', start);
+        if (end == std::string_view::npos) end = value.size();
+        std::string_view item = value.substr(start, end - start);
+        while (!item.empty() && item.front() == ' ') item.remove_prefix(1);
+        while (!item.empty() && item.back() == ' ') item.remove_suffix(1);
+        size_t i = 0;
+        while (i < s.choices.size() && s.choices[i] != item) ++i;
+        if (i == s.choices.size()) bad_value(s, value);
+        bits |= 1u << i;
+        start = end + 1;
+    }
+    return bits;
 }
 
 void Settings::set(std::string_view key, std::string_view value) {
@@ -353,6 +399,7 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.radiosity_depth = i("radiosity.depth");
     r.radiosity_brightness = std::stof(v.at("radiosity.brightness"));
     r.batch_pairs = std::stoll(v.at("traversal.batch"));
+    r.passes = subset_bits(spec_or_throw("output.passes"), v.at("output.passes"));
     return r;
 }
 

@@ -3,6 +3,7 @@
 // that names the key and what is allowed.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
@@ -10,14 +11,15 @@
 
 namespace sheaf {
 
-enum class SettingKind { Int, Float, Bool, Choice, String };
+/// Subset: a comma-separated list of some of `choices`, each once, or "all".
+enum class SettingKind { Int, Float, Bool, Choice, String, Subset };
 
 struct SettingSpec {
     std::string key;
     SettingKind kind;
     std::string default_value;
     double min = 0, max = 0;          // Int and Float
-    std::vector<std::string> choices; // Choice
+    std::vector<std::string> choices; // Choice and Subset
     std::string help;
 };
 
@@ -32,6 +34,9 @@ std::string format_number(double v);
 /// Checks `value` against the key and returns its canonical text ("on" -> "true", "08" -> "8").
 /// Throws SettingsError naming the key and the allowed values.
 std::string canonical_setting(std::string_view key, std::string_view value);
+/// A Subset setting's value as bits, one per choice in order (bit i: choices[i]). Throws
+/// SettingsError when an item is not one of the choices.
+uint32_t subset_bits(const SettingSpec& spec, std::string_view value);
 
 /// The values a host set explicitly. Unset keys fall back to the scene's own settings, then
 /// to the defaults.
@@ -53,6 +58,17 @@ enum class HashMode { None, Crsh, Hash32, Hash192, Static1d, Static3d };
 enum class SortMode { None, Full, Csd };
 enum class SortAlgorithm { Radix, Bitonic };
 enum class Backend { Auto, Cpu, Cuda };
+
+/// The passes a frame keeps (output.passes), as bits in the order of the setting's choices.
+enum PassBit : uint32_t {
+    kPassCombined = 1u << 0,
+    kPassDepth = 1u << 1,
+    kPassNormal = 1u << 2,
+    kPassAlbedo = 1u << 3,
+    kPassObjectId = 1u << 4,
+    kPassTests = 1u << 5,
+    kAllPasses = (1u << 6) - 1,
+};
 
 /// The typed, resolved settings the pipeline runs with.
 struct RenderSettings {
@@ -76,6 +92,8 @@ struct RenderSettings {
     int radiosity_depth = 2;   // diffuse bounces of a gathered path
     float radiosity_brightness = 1.0f;
     long long batch_pairs = 1 << 22; // candidate pairs held at once per level
+    uint32_t passes = kAllPasses;    // PassBit: the passes the frame keeps
+    bool keeps(PassBit pass) const { return (passes & pass) != 0; }
 
     /// Explicit values win over the scene's, which win over the defaults.
     static RenderSettings resolve(const Settings& explicit_settings,

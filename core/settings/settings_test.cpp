@@ -108,6 +108,31 @@ TEST(Settings, UnknownChoicesListTheChoices) {
     EXPECT_THROW(canonical_setting("backend", "gpu"), SettingsError);
 }
 
+TEST(Settings, PassListsAreSubsetsInCanonicalOrder) {
+    EXPECT_EQ(canonical_setting("output.passes", "all"), "all");
+    EXPECT_EQ(canonical_setting("output.passes", "depth, combined"), "combined,depth");
+    EXPECT_EQ(canonical_setting("output.passes", "tests,tests"), "tests");
+    EXPECT_EQ(canonical_setting("output.passes", "tests,object_id,albedo,normal,depth,combined"),
+              "all");
+    for (const char* bad : {"", ",", "combined,", "colour", "combined,,depth", "Combined"})
+        EXPECT_THROW(canonical_setting("output.passes", bad), SettingsError) << "'" << bad << "'";
+    const std::string m = error_of("output.passes", "combined,zdepth");
+    EXPECT_TRUE(contains(m, "output.passes")) << m;
+    EXPECT_TRUE(contains(m, "a comma-separated list of combined, depth, normal, albedo, "
+                            "object_id, tests; or all"))
+        << m;
+
+    Settings s;
+    EXPECT_EQ(RenderSettings::resolve(s).passes, uint32_t(kAllPasses));
+    s.set("output.passes", "tests, combined");
+    const RenderSettings r = RenderSettings::resolve(s);
+    EXPECT_EQ(r.passes, uint32_t(kPassCombined | kPassTests));
+    EXPECT_TRUE(r.keeps(kPassTests));
+    EXPECT_FALSE(r.keeps(kPassDepth));
+    EXPECT_EQ(RenderSettings::resolve({}, {{"output.passes", "normal"}}).passes,
+              uint32_t(kPassNormal));
+}
+
 TEST(Settings, UnknownKeys) {
     const std::string m = error_of("hierarchy.arty", "8");
     EXPECT_TRUE(contains(m, "unknown setting")) << m;

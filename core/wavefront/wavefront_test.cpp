@@ -79,6 +79,16 @@ TEST(Wavefront, BuiltinScenesAreIdentical) {
     expect_identical(cornell, "cornell", {{"accel", "brute"}}, 24, 20);
 }
 
+TEST(Wavefront, PassSubsetsAreIdentical) {
+    // Passes left out are neither resolved nor read back, and the per-sample test counts are
+    // not gathered without the tests pass; what is kept is the CPU renderer's.
+    for (const char* name : {"office", "cornell"}) {
+        const PreparedScene scene = prepare_scene(make_builtin_scene(name));
+        for (const char* passes : {"combined", "combined,tests", "depth,normal,albedo,object_id"})
+            expect_identical(scene, name, {{"output.passes", passes}, {"ao.samples", "2"}}, 32, 24);
+    }
+}
+
 TEST(Wavefront, GlassMirrorsAndAmbientOcclusionAreIdentical) {
     const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
     for (SettingList kv : variants()) {

@@ -67,9 +67,9 @@ template <class Exec> class DeviceFrame {
         st_.set("device.scene_bytes", double(uploaded.bytes()));
         mark(reused ? "upload (kept)" : "upload");
         radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
-        tests_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);
+        tests_ = DeviceBuffer<uint32_t, Exec>(ex_, s_.keeps(kPassTests) ? samples : 0);
         fill(ex_, radiance_.data(), samples, Vec3(0.0f));
-        fill(ex_, tests_.data(), samples, 0u);
+        fill(ex_, tests_.data(), tests_.size(), 0u);
         params_ = frame_ray_params(host_, s_);
         DeviceTracer<Exec> tracer(ex_, host_, scene_, *units, uploaded.cull, s_, st_, clock_);
         tracer_ = &tracer;
@@ -446,6 +446,7 @@ template <class Exec> class DeviceFrame {
     }
 
     void count_tests(const DeviceBatch<Exec>& b, const DeviceTraceResult<Exec>& r) {
+        if (!s_.keeps(kPassTests)) return; // the samples' counts feed the tests pass only
         const uint32_t* pixel = b.pixel.data();
         const uint32_t* tests = r.tests.data();
         uint32_t* sample_tests = tests_.data();
@@ -520,9 +521,14 @@ template <class Exec> class DeviceFrame {
         const int aa = s_.aa_samples, w = s_.width, h = s_.height, W = W_;
         const float gamma = scene_.working_gamma;
         const size_t pixels = size_t(w) * h;
-        DeviceBuffer<float, Exec> rgba(ex_, 4 * pixels), depth(ex_, pixels);
-        DeviceBuffer<Vec3, Exec> normal(ex_, pixels), albedo(ex_, pixels);
-        DeviceBuffer<uint32_t, Exec> object(ex_, pixels), tests(ex_, pixels);
+        // Only the passes the frame keeps (output.passes) are resolved and read back.
+        auto kept = [&](PassBit bit, size_t n) { return s_.keeps(bit) ? n : size_t(0); };
+        DeviceBuffer<float, Exec> rgba(ex_, kept(kPassCombined, 4 * pixels)),
+            depth(ex_, kept(kPassDepth, pixels));
+        DeviceBuffer<Vec3, Exec> normal(ex_, kept(kPassNormal, pixels)),
+            albedo(ex_, kept(kPassAlbedo, pixels));
+        DeviceBuffer<uint32_t, Exec> object(ex_, kept(kPassObjectId, pixels)),
+            tests(ex_, kept(kPassTests, pixels));
         const SampleBuffers in{radiance_.data(), tests_.data(),  depth_.data(),
                                normal_.data(),   albedo_.data(), object_.data()};
         const PixelBuffers out{rgba.data(),   depth.data(),  normal.data(),

@@ -80,10 +80,13 @@ void finish(std::unique_ptr<OIIO::ImageOutput>& out, bool ok, const std::string&
     if (!out->close()) throw RenderError(path + ": cannot write image: " + out->geterror());
 }
 
-size_t pixel_count(const Frame& frame, const std::string& path) {
+/// The frame's pixels, when it holds `pass` to write.
+size_t pixel_count(const Frame& frame, const std::string& path,
+                   const std::string& pass = "combined") {
     const size_t pixels = size_t(std::max(frame.width, 0)) * size_t(std::max(frame.height, 0));
-    if (frame.width <= 0 || frame.height <= 0 || frame.rgba.size() < pixels * 4)
+    if (frame.width <= 0 || frame.height <= 0)
         throw RenderError(path + ": the frame holds no image to write");
+    if (!frame_has_pass(frame, pass)) throw RenderError(path + ": " + missing_pass(frame, pass));
     return pixels;
 }
 
@@ -132,7 +135,7 @@ void write_exr(const Frame& frame, const std::string& path) {
     spec.channelnames = names;
     spec.channelformats = formats;
     spec.alpha_channel = 3;
-    spec.z_channel = 4;
+    spec.z_channel = names.size() > 4 && names[4] == "Z" ? 4 : -1;
     spec.attribute("Software", "Sheaf");
     spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("compression", "zip");
@@ -246,7 +249,13 @@ const std::vector<std::string>& pass_names() {
 }
 
 void write_pass_image(const Frame& frame, const std::string& pass, const std::string& path) {
-    const size_t n = pixel_count(frame, path);
+    const auto& known = pass_names();
+    if (std::find(known.begin(), known.end(), pass) == known.end()) {
+        std::string names;
+        for (const auto& s : known) names += (names.empty() ? "" : ", ") + s;
+        throw RenderError("unknown pass '" + pass + "'; passes: " + names);
+    }
+    const size_t n = pixel_count(frame, path, pass);
     std::vector<float> rgb(n * 3);
     auto put = [&](size_t p, Vec3 c) {
         rgb[3 * p] = c.x, rgb[3 * p + 1] = c.y, rgb[3 * p + 2] = c.z;
@@ -268,9 +277,13 @@ void write_pass_image(const Frame& frame, const std::string& pass, const std::st
                                                     : (std::isfinite(d) ? 1.0f : 0.0f)));
         }
     } else if (pass == "normal") {
-        for (size_t p = 0; p < n; ++p)
-            put(p, frame.object_id[p] == 0xFFFFFFFFu ? Vec3(0.0f)
-                                                     : frame.normal[p] * 0.5f + Vec3(0.5f));
+        // Black where nothing was hit: no object, or (a frame without ids) no normal.
+        const bool ids = frame_has_pass(frame, "object_id");
+        for (size_t p = 0; p < n; ++p) {
+            const bool none =
+                ids ? frame.object_id[p] == 0xFFFFFFFFu : frame.normal[p] == Vec3(0.0f);
+            put(p, none ? Vec3(0.0f) : frame.normal[p] * 0.5f + Vec3(0.5f));
+        }
     } else if (pass == "object_id") {
         for (size_t p = 0; p < n; ++p) put(p, id_colour(frame.object_id[p]));
     } else if (pass == "tests") {
@@ -278,10 +291,6 @@ void write_pass_image(const Frame& frame, const std::string& pass, const std::st
         for (uint32_t t : frame.tests) most = std::max(most, t);
         const float scale = most > 0 ? 1.0f / std::log1p(float(most)) : 0.0f;
         for (size_t p = 0; p < n; ++p) put(p, heat(std::log1p(float(frame.tests[p])) * scale));
-    } else {
-        std::string known;
-        for (const auto& s : pass_names()) known += (known.empty() ? "" : ", ") + s;
-        throw RenderError("unknown pass '" + pass + "'; passes: " + known);
     }
     if (format_of(path).encoding != Encoding::Display8)
         throw RenderError(path +

@@ -16,10 +16,9 @@ const sheaf::Frame& frame_of(SheafFrame f) {
     return require(f, "frame")->frame;
 }
 
-/// Throws when a pass holds fewer than `count` elements (a pipeline that did not fill it).
-template <class T> void check_pass(const std::vector<T>& pass, size_t count, const char* name) {
-    if (pass.size() < count)
-        throw InvalidArgument(std::string("the frame has no '") + name + "' pass");
+/// Throws when the frame lacks the pass (output.passes left it out).
+void check_pass(const sheaf::Frame& f, const char* name) {
+    if (!sheaf::frame_has_pass(f, name)) throw InvalidArgument(sheaf::missing_pass(f, name));
 }
 
 } // namespace
@@ -67,21 +66,21 @@ SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float
                                   " floats; the buffer holds " + std::to_string(float_count));
         require(dst, "dst");
         if (name == "combined") {
-            check_pass(f.rgba, needed, "combined");
+            check_pass(f, "combined");
             std::memcpy(dst, f.rgba.data(), needed * sizeof(float));
         } else if (name == "depth") {
-            check_pass(f.depth, pixels, "depth");
+            check_pass(f, "depth");
             std::memcpy(dst, f.depth.data(), pixels * sizeof(float));
         } else if (name == "object_id") {
-            check_pass(f.object_id, pixels, "object_id");
+            check_pass(f, "object_id");
             for (size_t i = 0; i < pixels; ++i)
                 dst[i] = f.object_id[i] == 0xFFFFFFFFu ? -1.0f : float(f.object_id[i]);
         } else if (name == "tests") {
-            check_pass(f.tests, pixels, "tests");
+            check_pass(f, "tests");
             for (size_t i = 0; i < pixels; ++i) dst[i] = float(f.tests[i]);
         } else {
             const std::vector<sheaf::Vec3>& v = name == "normal" ? f.normal : f.albedo;
-            check_pass(v, pixels, name.c_str());
+            check_pass(f, name.c_str());
             for (size_t i = 0; i < pixels; ++i) {
                 dst[3 * i] = v[i].x;
                 dst[3 * i + 1] = v[i].y;
@@ -163,6 +162,7 @@ SHEAF_API SheafError sheafFrameSavePass(SheafFrame frame, const char* pass, cons
         if (std::find(known.begin(), known.end(), name) == known.end())
             throw InvalidArgument("unknown pass '" + name +
                                   "'; passes: combined, depth, normal, albedo, object_id, tests");
+        check_pass(f, name.c_str());
         try {
             sheaf::write_pass_image(f, name, p);
         } catch (const sheaf::RenderError& e) {

@@ -295,6 +295,24 @@ def test_registration():
         del os.environ["SHEAF_LIBRARY"]
 
 
+def test_layer_passes():
+    # The frame keeps the passes the view layer is filled from (output.passes), no more.
+    vl = bpy.data.scenes["Scene"].view_layers[0]
+    was = vl.use_pass_normal, vl.sheaf.use_pass_tests
+    try:
+        vl.use_pass_normal, vl.sheaf.use_pass_tests = False, False
+        got = ADDON.engine.layer_passes(vl)
+        check(got == ["combined", "depth"], "without normal and tests passes: %s" % got)
+        vl.use_pass_normal, vl.sheaf.use_pass_tests = True, True
+        got = ADDON.engine.layer_passes(vl)
+        check(got == ["combined", "depth", "normal", "tests"], "with every pass: %s" % got)
+        lib = ADDON.capi.library()
+        with lib.new_renderer() as renderer:  # the library takes the list as it is sent
+            renderer.set("output.passes", ",".join(got))
+    finally:
+        vl.use_pass_normal, vl.sheaf.use_pass_tests = was
+
+
 def test_default_cube():
     scene = bpy.data.scenes["Scene"]  # the factory startup scene: cube, light, camera
     setup_render(scene, 80, 60)
@@ -748,6 +766,7 @@ def test_cancel():
 
 TESTS = [
     test_registration,
+    test_layer_passes,
     test_default_cube,
     test_mirror_and_glass,
     test_camera_projection,

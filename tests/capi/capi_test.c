@@ -324,6 +324,28 @@ static void test_render_scene(void) {
                  "unknown pass", "bogus", NULL);
     expect_error(sheafFrameGetPass(frame, "combined", small, 4), SHEAF_ERROR_INVALID_ARGUMENT,
                  "too small buffer", "12288", NULL);
+    {
+        /* output.passes: the frame keeps the image only; the same image, the others refused
+         * with a message that names the setting. */
+        SheafFrame only = NULL;
+        float* again = (float*)malloc(sizeof(float) * 4 * W * H);
+        OK(sheafRendererSetString(r, "output.passes", "combined"));
+        OK(sheafRender(r, scene, &only));
+        OK(sheafFrameGetPass(only, "combined", again, (size_t)4 * W * H));
+        CHECK(memcmp(again, rgba, sizeof(float) * 4 * W * H) == 0,
+              "output.passes=combined changed the image");
+        expect_error(sheafFrameGetPass(only, "depth", again, (size_t)W * H),
+                     SHEAF_ERROR_INVALID_ARGUMENT, "a pass left out", "no 'depth' pass",
+                     "output.passes=combined");
+        expect_error(sheafFrameSavePass(only, "normal", "sheaf_capi_no_normal.png"),
+                     SHEAF_ERROR_INVALID_ARGUMENT, "saving a pass left out", "no 'normal' pass",
+                     "output.passes=combined");
+        expect_error(sheafRendererSetString(r, "output.passes", "combined,zdepth"),
+                     SHEAF_ERROR_INVALID_SETTING, "an unknown pass", "output.passes", "zdepth");
+        OK(sheafRendererUnset(r, "output.passes"));
+        sheafFrameRelease(only);
+        free(again);
+    }
 
     /* Statistics. */
     OK(sheafFrameGetStatCount(frame, &count));

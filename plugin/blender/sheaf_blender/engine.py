@@ -64,6 +64,19 @@ def summary_line(stats):
     )
 
 
+def layer_passes(view_layer):
+    """The Sheaf passes (output.passes) the view layer's result is filled from: the image and
+    the depth (the Depth pass, and the empty pixels of a transparent film) always, the normals
+    and the test counts when the layer shows them. The frame keeps only these."""
+    passes = ["combined", "depth"]
+    if view_layer.use_pass_normal:
+        passes.append("normal")
+    settings = getattr(view_layer, "sheaf", None)
+    if settings is None or settings.use_pass_tests:
+        passes.append(TESTS_PASS[4])
+    return passes
+
+
 def border_region(scene, width, height):
     """(x, y, w, h) of the region to fill, in Blender's pixels (y = 0 the bottom row)."""
     r = scene.render
@@ -175,6 +188,7 @@ class SheafRenderEngine(bpy.types.RenderEngine):
             properties.apply_settings(renderer, scene)
             renderer.set("width", width)
             renderer.set("height", height)
+            renderer.set("output.passes", ",".join(layer_passes(depsgraph.view_layer)))
             self.update_stats("", "Sheaf | preparing the scene")
             exported.scene.commit()
             if self.cancel_requested():

@@ -282,7 +282,9 @@ SHEAF_API SheafError sheafFrameGetSize(SheafFrame frame, int* width, int* height
 /* Copies a pass, top row first: "combined" (4 floats per pixel, scene-linear RGBA), "depth" (1,
  * +inf where nothing was hit), "normal" (3), "albedo" (3), "object_id" (1, -1 where nothing was
  * hit), "tests" (1, the exact ray-primitive tests of the pixel's secondary rays: where the
- * hierarchy works hardest). float_count is the capacity of dst in floats. */
+ * hierarchy works hardest). float_count is the capacity of dst in floats. A frame keeps the
+ * passes the setting output.passes names (all by default); asking for another is
+ * SHEAF_ERROR_INVALID_ARGUMENT, its message naming the setting. */
 SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float* dst,
                                        size_t float_count);
 /* Statistics (docs/statistics.md). *key stays valid as long as the frame. */
@@ -297,7 +299,7 @@ SHEAF_API SheafError sheafFrameGetText(SheafFrame frame, const char* what, char*
                                        size_t* needed);
 /* Writes the frame; the format follows the extension. 8-bit files (.png .jpg .tif) are
  * display-referred through OpenColorIO (settings output.display, output.view, output.look,
- * output.ocio_config); .exr is scene-linear with every pass as named channels (R G B A, Z,
+ * output.ocio_config); .exr is scene-linear with every pass kept as named channels (R G B A, Z,
  * N.X N.Y N.Z, albedo.R/G/B, object_id, tests; output.exr = half or float colour); .hdr is
  * scene-linear RGB. Settings and statistics go into the file's metadata. */
 SHEAF_API SheafError sheafFrameSaveImage(SheafFrame frame, const char* path);

@@ -1,17 +1,20 @@
 #include "core/render/frame.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace sheaf {
 
 bool frame_has_pass(const Frame& f, std::string_view pass) {
     const size_t pixels = size_t(f.width > 0 ? f.width : 0) * size_t(f.height > 0 ? f.height : 0);
-    if (pixels == 0) return false;
-    if (pass == "combined") return f.rgba.size() >= 4 * pixels;
-    if (pass == "depth") return f.depth.size() >= pixels;
-    if (pass == "normal") return f.normal.size() >= pixels;
-    if (pass == "albedo") return f.albedo.size() >= pixels;
-    if (pass == "object_id") return f.object_id.size() >= pixels;
-    if (pass == "tests") return f.tests.size() >= pixels;
-    return false;
+    const std::vector<std::string>& names = pass_names();
+    const auto it = std::find(names.begin(), names.end(), pass);
+    if (pixels == 0 || it == names.end()) return false;
+    // Elements held, in pass_names() order (combined: 4 floats a pixel).
+    const size_t held[] = {f.rgba.size() / 4, f.depth.size(),     f.normal.size(),
+                           f.albedo.size(),   f.object_id.size(), f.tests.size()};
+    static_assert(std::size(held) == 6, "one entry per pass");
+    return held[it - names.begin()] >= pixels;
 }
 
 std::string missing_pass(const Frame& f, std::string_view pass) {

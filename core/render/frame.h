@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/math/vec3.h"
+#include "core/settings/settings.h"
 #include "core/stats/stats.h"
 
 #include <cstdint>
@@ -28,8 +29,8 @@ struct Frame {
     std::string backend_line;
 };
 
-/// Whether `f` holds the pass named `pass` (combined, depth, normal, albedo, object_id, tests)
-/// for every pixel: a frame keeps only the passes output.passes names.
+/// Whether `f` holds the pass named `pass` (one of pass_names()) for every pixel: a frame
+/// keeps only the passes output.passes names.
 bool frame_has_pass(const Frame& f, std::string_view pass);
 /// Why `f` lacks `pass`, in a sentence that names the setting: "the frame has no 'depth' pass
 /// (output.passes=combined)".

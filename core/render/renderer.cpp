@@ -350,8 +350,9 @@ class FramePipeline {
         const size_t pixels = size_t(w) * h;
         // Only the passes the frame keeps (output.passes); the others stay empty.
         auto keep = [&](auto& pass, PassBit bit, size_t per_pixel) {
-            if (s_.keeps(bit)) pass.resize(pixels * per_pixel);
-            return s_.keeps(bit) ? pass.data() : nullptr;
+            if (!s_.keeps(bit)) return decltype(pass.data())(nullptr);
+            pass.resize(pixels * per_pixel);
+            return pass.data();
         };
         const SampleBuffers in{radiance_.data(), tests_.data(), depth_.data(),
                                normal_.data(),   albedo_.data(), object_.data()};

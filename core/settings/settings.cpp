@@ -8,6 +8,12 @@
 
 namespace sheaf {
 
+const std::vector<std::string>& pass_names() {
+    static const std::vector<std::string> names = {"combined", "depth",     "normal",
+                                                   "albedo",   "object_id", "tests"};
+    return names;
+}
+
 const std::vector<SettingSpec>& setting_specs() {
     using K = SettingKind;
     static const std::vector<SettingSpec> specs = {
@@ -165,12 +171,7 @@ const std::vector<SettingSpec>& setting_specs() {
          0,
          {},
          "OpenColorIO config file (empty: $OCIO, else the config Sheaf ships)"},
-        {"output.passes",
-         K::Subset,
-         "all",
-         0,
-         0,
-         {"combined", "depth", "normal", "albedo", "object_id", "tests"},
+        {"output.passes", K::Subset, "all", 0, 0, pass_names(),
          "the passes the frame keeps and hands back; the others are not read back from the "
          "device nor kept in memory, and asking a frame for one is an error naming this "
          "setting"},

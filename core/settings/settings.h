@@ -59,7 +59,11 @@ enum class SortMode { None, Full, Csd };
 enum class SortAlgorithm { Radix, Bitonic };
 enum class Backend { Auto, Cpu, Cuda };
 
-/// The passes a frame keeps (output.passes), as bits in the order of the setting's choices.
+/// A frame's passes by name, in PassBit order: combined, depth, normal, albedo, object_id,
+/// tests (the choices of output.passes).
+const std::vector<std::string>& pass_names();
+
+/// The passes a frame keeps (output.passes), as bits in the order of pass_names().
 enum PassBit : uint32_t {
     kPassCombined = 1u << 0,
     kPassDepth = 1u << 1,

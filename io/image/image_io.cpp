@@ -242,12 +242,6 @@ void write_image(const Frame& frame, const std::string& path) {
                  frame_metadata(frame));
 }
 
-const std::vector<std::string>& pass_names() {
-    static const std::vector<std::string> names = {"combined", "depth",     "normal",
-                                                   "albedo",   "object_id", "tests"};
-    return names;
-}
-
 void write_pass_image(const Frame& frame, const std::string& pass, const std::string& path) {
     const auto& known = pass_names();
     if (std::find(known.begin(), known.end(), pass) == known.end()) {

@@ -26,9 +26,6 @@ void write_image(const Frame& frame, const std::string& path);
 /// counts as a heat map (log scale). "combined" is the display-referred image.
 void write_pass_image(const Frame& frame, const std::string& pass, const std::string& path);
 
-/// The passes write_pass_image knows.
-const std::vector<std::string>& pass_names();
-
 /// Writes `channels` floats per pixel (1: grey, 2: grey+alpha, 3: RGB, 4: RGBA) to `path`.
 /// 8-bit formats get the display transform when `display_referred`, else are clamped as they
 /// are; float formats are written as given. `metadata` becomes string attributes.

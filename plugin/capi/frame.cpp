@@ -65,22 +65,18 @@ SHEAF_API SheafError sheafFrameGetPass(SheafFrame frame, const char* pass, float
             throw InvalidArgument("pass '" + name + "' needs " + std::to_string(needed) +
                                   " floats; the buffer holds " + std::to_string(float_count));
         require(dst, "dst");
+        check_pass(f, name.c_str());
         if (name == "combined") {
-            check_pass(f, "combined");
             std::memcpy(dst, f.rgba.data(), needed * sizeof(float));
         } else if (name == "depth") {
-            check_pass(f, "depth");
             std::memcpy(dst, f.depth.data(), pixels * sizeof(float));
         } else if (name == "object_id") {
-            check_pass(f, "object_id");
             for (size_t i = 0; i < pixels; ++i)
                 dst[i] = f.object_id[i] == 0xFFFFFFFFu ? -1.0f : float(f.object_id[i]);
         } else if (name == "tests") {
-            check_pass(f, "tests");
             for (size_t i = 0; i < pixels; ++i) dst[i] = float(f.tests[i]);
         } else {
             const std::vector<sheaf::Vec3>& v = name == "normal" ? f.normal : f.albedo;
-            check_pass(f, name.c_str());
             for (size_t i = 0; i < pixels; ++i) {
                 dst[3 * i] = v[i].x;
                 dst[3 * i + 1] = v[i].y;

@@ -7,9 +7,10 @@
 // A backend is a value of the setting `backend`, or `wavefront-cpu`: the CUDA module's pipeline
 // (core/wavefront) compiled for the CPU policy, to weigh it against the CPU renderer.
 // Times are the median of K frames (default 3), and the first frame's apart: on the CUDA
-// backend the frames after the first find the scene on the device (device.scene_kept), so the
-// first frame adds the scene's copy. Rays per second counts every ray the frame traced:
-// primary (one per sample) and secondary (shadow, reflection, refraction, AO).
+// backend the frames after the first find the scene on the device (device.scene_kept), so a
+// first frame marked "copied" adds the scene's copy ("kept": an earlier size left it there). Rays
+// per second counts every ray the frame traced: primary (one per sample) and secondary (shadow,
+// reflection, refraction, AO).
 #include "bench_args.h"
 #include "core/render/renderer.h"
 #include "core/scenes/builtin.h"
@@ -89,14 +90,20 @@ int main(int argc, char** argv) {
                                 backend.c_str(), e.what());
                     continue;
                 }
-                const double first_ms = runs.front().stats.get("time_ms.frame");
+                // Whether the first frame copied the scene or found it kept (an earlier size).
+                const Stats& first = runs.front().stats;
+                char first_ms[64];
+                std::snprintf(first_ms, sizeof first_ms, "%.2f%s", first.get("time_ms.frame"),
+                              !first.has("device.scene_kept")  ? ""
+                              : first.get("device.scene_kept") ? " (kept)"
+                                                               : " (copied)");
                 std::sort(runs.begin(), runs.end(), [](const Frame& a, const Frame& b) {
                     return a.stats.get("time_ms.frame") < b.stats.get("time_ms.frame");
                 });
                 const Stats& st = runs[runs.size() / 2].stats;
                 const double ms = st.get("time_ms.frame");
                 const double rays = st.get("rays.primary") + st.get("rays.secondary");
-                std::printf("| %s | %d | %s | %.2f | %.2f | %.0f | %.2f |", name.c_str(), size,
+                std::printf("| %s | %d | %s | %.2f | %s | %.0f | %.2f |", name.c_str(), size,
                             backend.c_str(), ms, first_ms, rays, rays / (ms * 1e3));
                 for (const char* p : kPhases) {
                     const double t = st.get(std::string("time_ms.") + p);

@@ -7,8 +7,13 @@
 
 #include "core/base/error.h"
 #include "core/base/memory.h"
+#include "core/rsh/test_count.h"
+#include "core/settings/settings.h"
+#include "core/wavefront/compact.h"
 #include "gpu/pinned_staging.cuh"
 
+#include <cub/block/block_reduce.cuh>
+#include <cub/block/block_scan.cuh>
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
 #include <cub/device/device_scan.cuh>
@@ -41,6 +46,65 @@ template <class Fn> __global__ void launch_kernel(size_t n, Fn fn) {
         fn(i);
 }
 
+/// Adds each thread's tests and hits over the block (CUB), then into *sums: one atomic each
+/// a block.
+template <class Reduce>
+__device__ void block_add(typename Reduce::TempStorage& tmp, unsigned long long tests,
+                          unsigned long long hits, TestCount* sums) {
+    const unsigned long long t = Reduce(tmp).Sum(tests);
+    __syncthreads();
+    const unsigned long long h = Reduce(tmp).Sum(hits);
+    if (threadIdx.x != 0) return;
+    if (t) atomicAdd(reinterpret_cast<unsigned long long*>(&sums->tests), t);
+    if (h) atomicAdd(reinterpret_cast<unsigned long long*>(&sums->hits), h);
+}
+
+/// launch_compact's kernel: the blocks stride over the elements, 256 at a time; per round, a
+/// block scan of the elements' outputs places them after one atomic on the counter for the
+/// whole block. The count is read on the device.
+template <class Count, class Fn, class Emit>
+__global__ void compact_kernel(size_t max, Count count, uint32_t* counter, TestCount* sums,
+                               Fn fn, Emit emit) {
+    using Scan = cub::BlockScan<uint32_t, 256>;
+    using Reduce = cub::BlockReduce<unsigned long long, 256>;
+    __shared__ union {
+        typename Scan::TempStorage scan;
+        typename Reduce::TempStorage reduce;
+    } tmp;
+    __shared__ uint32_t base;
+    const size_t c = count(), n = c < max ? c : max;
+    unsigned long long tests = 0, hits = 0;
+    for (size_t b = size_t(blockIdx.x) * blockDim.x; b < n; b += size_t(blockDim.x) * gridDim.x) {
+        const size_t i = b + threadIdx.x;
+        Compacted e;
+        if (i < n) e = fn(i);
+        tests += e.tests, hits += e.hits;
+        uint32_t slot = 0, outputs = 0;
+        Scan(tmp.scan).ExclusiveSum(e.outputs, slot, outputs);
+        if (threadIdx.x == 0 && outputs) base = atomicAdd(counter, outputs);
+        __syncthreads();
+        if (e.outputs) emit(i, e.what, base + slot);
+        __syncthreads(); // base and the scan's storage serve the next round
+    }
+    block_add<Reduce>(tmp.reduce, tests, hits, sums);
+}
+
+/// launch_tally's kernel: each thread adds its elements' counts, then the block's go into
+/// *sums at once.
+template <class Count, class Fn>
+__global__ void tally_kernel(size_t max, Count count, TestCount* sums, Fn fn) {
+    using Reduce = cub::BlockReduce<unsigned long long, 256>;
+    __shared__ typename Reduce::TempStorage tmp;
+    const size_t c = count(), n = c < max ? c : max;
+    unsigned long long tests = 0, hits = 0;
+    for (size_t i = size_t(blockIdx.x) * blockDim.x + threadIdx.x; i < n;
+         i += size_t(blockDim.x) * gridDim.x) {
+        const TestCount e = fn(i);
+        tests += e.tests, hits += e.hits;
+    }
+    block_add<Reduce>(tmp, tests, hits, sums);
+}
+
 /// One thread's step of reduce_into: *acc = op(*acc, *part).
 template <class T, class Op> struct AddInto {
     T* acc;
@@ -63,6 +127,12 @@ class CudaExec {
         check(cudaSetDevice(device), "cudaSetDevice");
         device_ = device;
         pool_ = device_pool(device);
+        size_t free = 0;
+        check(cudaMemGetInfo(&free, &device_bytes_), "cudaMemGetInfo");
+        int sms = 0;
+        check(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device),
+              "cudaDeviceGetAttribute(multiprocessors)");
+        resident_blocks_ = size_t(std::max(sms, 1)) * 8; // 2,048 threads a multiprocessor
         raise_stack_limit(stack_bytes);
         check(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking), "cudaStreamCreate");
         setup_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
@@ -150,6 +220,34 @@ class CudaExec {
         launch_kernel<<<unsigned(blocks), 256, 0, stream_>>>(n, fn);
         check(cudaGetLastError(), name);
         // SHEAF_CUDA_SYNC=1: wait for every launch, so a fault names the launch that made it.
+        if (sync_launches_) check(cudaStreamSynchronize(stream_), name);
+    }
+
+    /// Compaction without a scan or a wait (core/wavefront/cpu_exec.h): 256-thread blocks, at
+    /// most one resident wave of them whatever max is, the count read on the device; one
+    /// atomic on the counter per block and round, one per block for each sum.
+    template <class Count, class Fn, class Emit>
+    void launch_compact(const char* name, size_t max, const Count& count, uint32_t* counter,
+                        TestCount* sums, const Fn& fn, const Emit& emit) {
+        if (max == 0) return;
+        ++launches_;
+        check_frees();
+        const Span span(*this, name);
+        compact_kernel<<<unsigned(counted_blocks(max)), 256, 0, stream_>>>(max, count, counter,
+                                                                           sums, fn, emit);
+        check(cudaGetLastError(), name);
+        if (sync_launches_) check(cudaStreamSynchronize(stream_), name);
+    }
+    /// fn(i) for every i in [0, min(count(), max)) added into *sums, sized as launch_compact.
+    template <class Count, class Fn>
+    void launch_tally(const char* name, size_t max, const Count& count, TestCount* sums,
+                      const Fn& fn) {
+        if (max == 0) return;
+        ++launches_;
+        check_frees();
+        const Span span(*this, name);
+        tally_kernel<<<unsigned(counted_blocks(max)), 256, 0, stream_>>>(max, count, sums, fn);
+        check(cudaGetLastError(), name);
         if (sync_launches_) check(cudaStreamSynchronize(stream_), name);
     }
 
@@ -275,12 +373,20 @@ class CudaExec {
     Stopwatch stopwatch() { return Stopwatch(stream_); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
+    /// traversal.batch when the setting is 0: sized to the device's memory.
+    size_t auto_batch_pairs() const { return device_batch_pairs(device_bytes_); }
     /// Whether SHEAF_CUDA_PROFILE asked for the per-span table.
     bool profiling() const { return profile_; }
     /// Device work started and host waits for the device, counted as the CPU policy does.
     uint64_t launches() const { return launches_; }
     uint64_t host_waits() const { return waits_; }
     cudaStream_t stream() const { return stream_; }
+
+    /// Blocks of a launch of at most max elements whose count is read on the device: enough
+    /// for max, at most what the device holds at once (the blocks then stride).
+    size_t counted_blocks(size_t max) const {
+        return std::min<size_t>((max + 255) / 256, resident_blocks_);
+    }
 
     /// Scratch space for CUB, grown as needed (ordered on the stream).
     void* temp(size_t bytes) {
@@ -444,6 +550,8 @@ class CudaExec {
 
     cudaStream_t stream_ = nullptr;
     int device_ = 0;
+    size_t device_bytes_ = 0; // the device's memory, free or not
+    size_t resident_blocks_ = 1024; // 256-thread blocks the device holds at once
     cudaMemPool_t pool_ = nullptr;
     bool sync_launches_ = false;
     void* temp_ = nullptr;

@@ -367,7 +367,7 @@ void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBa
 
     const auto t0 = std::chrono::steady_clock::now();
     Traversal trav(scene, units, h, sorted, order.perm, any, batch.type == RayType::Shadow, skip,
-                   size_t(s.batch_pairs), memory, out);
+                   s.batch_or(kCpuBatchPairs), memory, out);
     trav.run(s.cull_objects);
     const double total_ms = ms_since(t0);
     parallel_for(
@@ -399,21 +399,24 @@ void add_test_counts(Stats& stats, const std::string& p, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final) {
     if (cull_objects) add_row(stats, p + "objects.", TestCount{});
-    uint64_t total = 0;
+    for (size_t k = levels.size(); k-- > 1;)
+        add_row(stats, p + "level" + std::to_string(k) + ".", TestCount{});
+    add_row(stats, p + "final.", TestCount{});
+    stats.add(p + "total", 0.0);
+    add_late_counts(stats, p, cull_objects, objects, levels, final);
+}
+
+void add_late_counts(Stats& stats, const std::string& p, bool cull_objects,
+                     const TestCount& objects, const std::vector<TestCount>& levels,
+                     const TestCount& final) {
+    if (cull_objects) add_row(stats, p + "objects.", objects);
+    uint64_t total = final.tests;
     for (size_t k = levels.size(); k-- > 1;) {
         add_row(stats, p + "level" + std::to_string(k) + ".", levels[k]);
         total += levels[k].tests;
     }
-    add_row(stats, p + "final.", TestCount{});
-    stats.add(p + "total", double(total));
-    add_late_counts(stats, p, cull_objects, objects, final);
-}
-
-void add_late_counts(Stats& stats, const std::string& p, bool cull_objects,
-                     const TestCount& objects, const TestCount& final) {
-    if (cull_objects) add_row(stats, p + "objects.", objects);
     add_row(stats, p + "final.", final);
-    stats.add(p + "total", double(final.tests));
+    stats.add(p + "total", double(total));
 }
 
 } // namespace sheaf

@@ -11,6 +11,7 @@
 #include "core/base/memory.h"
 #include "core/rays/ray_batch.h"
 #include "core/rsh/cull_units.h"
+#include "core/rsh/test_count.h"
 #include "core/scene/prepared_scene.h"
 #include "core/settings/settings.h"
 #include "core/stats/stats.h"
@@ -52,11 +53,6 @@ struct TraceResult {
     std::vector<uint32_t> tests;   // exact ray-primitive tests each ray took part in
 };
 
-/// Tests and hits of one kind of test (objects, a level, the final tests).
-struct TestCount {
-    uint64_t tests = 0, hits = 0;
-};
-
 /// The statistics rows of one traced batch from its counts: `prefix` ("tests.shadow.")
 /// objects.* (when culling objects; not in the total, as in the paper), level<k>.* for k from
 /// the top (levels[k]) down to 1, final.*, and total.
@@ -64,11 +60,12 @@ void add_test_counts(Stats& stats, const std::string& prefix, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final);
 
-/// Adds a batch's object and final-test counts to the rows add_test_counts wrote (objects.*
-/// when culling objects, final.* and total): for counts read after the batch, the rows
-/// written first with those counts zero, so the keys keep their order.
+/// Adds a batch's counts to the rows add_test_counts wrote (objects.* when culling objects,
+/// level<k>.* for each levels[k], k >= 1, final.* and total): for counts read after the batch,
+/// the rows written first with the counts zero, so the keys keep their order.
 void add_late_counts(Stats& stats, const std::string& prefix, bool cull_objects,
-                     const TestCount& objects, const TestCount& final);
+                     const TestCount& objects, const std::vector<TestCount>& levels,
+                     const TestCount& final);
 
 /// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
 /// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`. `units`: the scene's

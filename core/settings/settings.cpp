@@ -28,7 +28,13 @@ const std::vector<SettingSpec>& setting_specs() {
          "rays in generation order (rah, Roger et al.) or over rays hashed and sorted by hash.mode "
          "and sort.mode "
          "(crsh, paper 000)"},
-        {"hierarchy.depth", K::Int, "2", 1, 8, {}, "levels of ray-hierarchy nodes above the rays"},
+        {"hierarchy.depth",
+         K::Int,
+         "2",
+         1,
+         kMaxHierarchyDepth,
+         {},
+         "levels of ray-hierarchy nodes above the rays"},
         {"hierarchy.arity", K::Int, "8", 2, 64, {}, "children per hierarchy node"},
         {"hash.mode",
          K::Choice,
@@ -185,11 +191,13 @@ const std::vector<SettingSpec>& setting_specs() {
          "float)"},
         {"traversal.batch",
          K::Int,
-         "4194304",
-         1024,
+         "0",
+         0,
          1 << 30,
          {},
-         "candidate (node, primitive) pairs held at once per level; bounds traversal memory"},
+         "candidate (node, primitive) pairs held at once per level; bounds traversal memory; 0 "
+         "sizes it to the backend: 4194304 on the CPU, on a GPU 1/1024 of its memory as a power "
+         "of two, 4194304..67108864"},
     };
     return specs;
 }
@@ -402,6 +410,13 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.batch_pairs = std::stoll(v.at("traversal.batch"));
     r.passes = subset_bits(spec_or_throw("output.passes"), v.at("output.passes"));
     return r;
+}
+
+size_t device_batch_pairs(uint64_t device_bytes) {
+    const uint64_t want = device_bytes / 1024;
+    size_t pairs = kCpuBatchPairs;
+    while (pairs < (size_t(1) << 26) && uint64_t(pairs) * 2 <= want) pairs *= 2;
+    return pairs;
 }
 
 const char* to_string(Accel a) {

@@ -95,9 +95,13 @@ struct RenderSettings {
     int radiosity_samples = 0; // gather rays per camera-path point; 0: no radiosity
     int radiosity_depth = 2;   // diffuse bounces of a gathered path
     float radiosity_brightness = 1.0f;
-    long long batch_pairs = 1 << 22; // candidate pairs held at once per level
+    long long batch_pairs = 0;       // candidate pairs held at once per level; 0: the backend's
     uint32_t passes = kAllPasses;    // PassBit: the passes the frame keeps
     bool keeps(PassBit pass) const { return (passes & pass) != 0; }
+    /// traversal.batch, or `auto_pairs` when it is 0 (the backend's choice).
+    size_t batch_or(size_t auto_pairs) const {
+        return batch_pairs > 0 ? size_t(batch_pairs) : auto_pairs;
+    }
 
     /// Explicit values win over the scene's, which win over the defaults.
     static RenderSettings resolve(const Settings& explicit_settings,
@@ -107,6 +111,18 @@ struct RenderSettings {
     effective(const Settings& explicit_settings,
               const std::map<std::string, std::string>& scene_settings = {});
 };
+
+/// The deepest ray hierarchy (hierarchy.depth).
+constexpr int kMaxHierarchyDepth = 8;
+
+/// traversal.batch = 0 on the CPU: 4M candidate pairs a level holds at once.
+constexpr size_t kCpuBatchPairs = size_t(1) << 22;
+/// traversal.batch = 0 on a device of `device_bytes` memory: 1/1024 of it, rounded down to a
+/// power of two, within 4M..64M pairs. On an H200 (141 GB) 64M, where paper 003's AO frames
+/// took a quarter less time than with 4M (fewer chunks, so fewer host waits; docs/
+/// performance.md). The wavefront traversal's buffers take at most about 35 bytes a pair at
+/// hierarchy.depth 2 (10 more a level deeper): at most some 3% of a device of 4 GiB or more.
+size_t device_batch_pairs(uint64_t device_bytes);
 
 const char* to_string(Accel a);
 const char* to_string(HashMode h);

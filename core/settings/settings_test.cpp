@@ -82,9 +82,9 @@ TEST(Settings, OutOfRangeIntegersNameKeyAndRange) {
 // The allowed range is printed exactly, also for bounds with more than 9 digits.
 TEST(Settings, DescribeAllowedPrintsExactBounds) {
     EXPECT_EQ(describe_allowed(*find_setting("hierarchy.arity")), "an integer in 2..64");
-    EXPECT_EQ(describe_allowed(*find_setting("traversal.batch")), "an integer in 1024..1073741824");
-    const std::string m = error_of("traversal.batch", "5");
-    EXPECT_TRUE(contains(m, "1024..1073741824")) << m;
+    EXPECT_EQ(describe_allowed(*find_setting("traversal.batch")), "an integer in 0..1073741824");
+    const std::string m = error_of("traversal.batch", "-5");
+    EXPECT_TRUE(contains(m, "0..1073741824")) << m;
     EXPECT_EQ(describe_allowed(*find_setting("hash.mode")), "one of none, crsh, hash32, hash192, static1d, static3d");
 }
 
@@ -180,7 +180,7 @@ TEST(RenderSettings, Defaults) {
     EXPECT_EQ(r.threads, 0);
     EXPECT_EQ(r.ao_samples, 0);
     EXPECT_EQ(r.ao_distance, 1.0f);
-    EXPECT_EQ(r.batch_pairs, 4194304);
+    EXPECT_EQ(r.batch_pairs, 0); // the backend's choice
     // The struct's own defaults agree with the dictionary's.
     EXPECT_EQ(r.accel, d.accel);
     EXPECT_EQ(r.hierarchy_depth, d.hierarchy_depth);
@@ -197,6 +197,22 @@ TEST(RenderSettings, Defaults) {
     EXPECT_EQ(r.ao_samples, d.ao_samples);
     EXPECT_EQ(r.ao_distance, d.ao_distance);
     EXPECT_EQ(r.batch_pairs, d.batch_pairs);
+}
+
+// traversal.batch 0 is the backend's choice: the CPU's 4M pairs, or sized to a device's memory.
+TEST(RenderSettings, BatchPairsFollowTheBackendWhenZero) {
+    RenderSettings r;
+    EXPECT_EQ(r.batch_or(kCpuBatchPairs), size_t(4194304));
+    r.batch_pairs = 65536;
+    EXPECT_EQ(r.batch_or(kCpuBatchPairs), size_t(65536));
+    const uint64_t GiB = uint64_t(1) << 30;
+    EXPECT_EQ(device_batch_pairs(141 * GiB), size_t(1) << 26); // H200: 64M, the cap
+    EXPECT_EQ(device_batch_pairs(80 * GiB), size_t(1) << 26);  // H100
+    EXPECT_EQ(device_batch_pairs(24 * GiB), size_t(1) << 24);  // 24 GiB / 1024 = 24M: 16M
+    EXPECT_EQ(device_batch_pairs(8 * GiB), size_t(1) << 23);
+    EXPECT_EQ(device_batch_pairs(4 * GiB), size_t(1) << 22);
+    EXPECT_EQ(device_batch_pairs(1 * GiB), size_t(1) << 22); // never below the CPU's
+    EXPECT_EQ(device_batch_pairs(0), size_t(1) << 22);
 }
 
 TEST(RenderSettings, ExplicitBeatsSceneBeatsDefault) {

@@ -6,11 +6,18 @@
 
 #include "core/base/memory.h"
 #include "core/base/parallel.h"
+#include "core/rsh/test_count.h"
+#include "core/settings/settings.h"
 #include "core/sort/radix_sort.h"
+#include "core/wavefront/compact.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/parallel_scan.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
@@ -45,6 +52,54 @@ class CpuExec {
         if (n == 0) return;
         ++launches_;
         parallel_for(name, n, fn, 1024);
+    }
+
+    /// Compaction without a scan or a wait: for every i in [0, min(count(), max)), e = fn(i)
+    /// (a Compacted); e.tests and e.hits are added into *sums, and emit(i, e.what, slot) is
+    /// called with the first of e.outputs consecutive slots taken from *counter. count() runs
+    /// on the executing side and reads what earlier work left there, so the host needs no wait
+    /// to size the launch; max bounds it. Slots go to elements in no particular order.
+    template <class Count, class Fn, class Emit>
+    void launch_compact(const char* name, size_t max, const Count& count, uint32_t* counter,
+                        TestCount* sums, const Fn& fn, const Emit& emit) {
+        (void)name;
+        if (max == 0) return;
+        ++launches_;
+        const size_t n = std::min(max, size_t(count()));
+        std::atomic_ref<uint32_t> next(*counter);
+        tally_ranges(n, sums, [&](size_t b, size_t e, TestCount& sum) {
+            // Pieces of a range: counted, then one reservation for the piece's outputs.
+            constexpr size_t kPiece = 256;
+            Compacted c[kPiece];
+            for (size_t p = b; p < e; p += kPiece) {
+                const size_t m = std::min(kPiece, e - p);
+                uint32_t outputs = 0;
+                for (size_t k = 0; k < m; ++k) {
+                    c[k] = fn(p + k);
+                    sum.tests += c[k].tests, sum.hits += c[k].hits, outputs += c[k].outputs;
+                }
+                if (!outputs) continue;
+                uint32_t slot = next.fetch_add(outputs, std::memory_order_relaxed);
+                for (size_t k = 0; k < m; ++k)
+                    if (c[k].outputs) emit(p + k, c[k].what, slot), slot += c[k].outputs;
+            }
+        });
+    }
+
+    /// For every i in [0, min(count(), max)), fn(i) (a TestCount) added into *sums: a launch
+    /// whose counts the host reads later, sized without a wait as launch_compact is.
+    template <class Count, class Fn>
+    void launch_tally(const char* name, size_t max, const Count& count, TestCount* sums,
+                      const Fn& fn) {
+        (void)name;
+        if (max == 0) return;
+        ++launches_;
+        tally_ranges(std::min(max, size_t(count())), sums, [&](size_t b, size_t e, TestCount& sum) {
+            for (size_t i = b; i < e; ++i) {
+                const TestCount c = fn(i);
+                sum.tests += c.tests, sum.hits += c.hits;
+            }
+        });
     }
 
     /// data[i] = sum of data[0..i) in place; returns the total (T: uint32_t or uint64_t).
@@ -109,6 +164,8 @@ class CpuExec {
     Stopwatch stopwatch() { return Stopwatch(); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
+    /// traversal.batch when the setting is 0: the CPU's.
+    size_t auto_batch_pairs() const { return kCpuBatchPairs; }
     /// Device work started (launches, scans, reductions, sorts) and host waits for the device
     /// (copies, scan totals, reductions read at once, synchronize): what a frame costs a GPU
     /// beyond its kernels.
@@ -117,6 +174,20 @@ class CpuExec {
     uint64_t host_waits() const { return waits_; }
 
   private:
+    // body(b, e, sum) over ranges [b, e) of [0, n) on every core, each adding into its own
+    // sum; the sums go into *sums once per range.
+    template <class Body> static void tally_ranges(size_t n, TestCount* sums, const Body& body) {
+        if (n == 0) return;
+        std::atomic_ref<uint64_t> tests(sums->tests), hits(sums->hits);
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              TestCount sum;
+                              body(r.begin(), r.end(), sum);
+                              tests.fetch_add(sum.tests, std::memory_order_relaxed);
+                              hits.fetch_add(sum.hits, std::memory_order_relaxed);
+                          });
+    }
+
     template <class T> T scan(T* data, size_t n) {
         ++launches_;
         return tbb::parallel_scan(

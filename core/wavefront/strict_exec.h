@@ -192,6 +192,42 @@ class StrictExec {
         run();
     }
 
+    // Elements last to first, one at a time: each takes the counter's next slots.
+    template <class Count, class Fn, class Emit>
+    void launch_compact(const char* name, size_t max, const Count& count, uint32_t* counter,
+                        TestCount* sums, const Fn& fn, const Emit& emit) {
+        if (max == 0) return;
+        ++launches_;
+        const auto run = [&] {
+            for (size_t i = std::min(max, size_t(count())); i-- > 0;) {
+                const Compacted c = fn(i);
+                sums->tests += c.tests, sums->hits += c.hits;
+                if (!c.outputs) continue;
+                const uint32_t slot = *counter;
+                *counter += c.outputs;
+                emit(i, c.what, slot);
+            }
+        };
+        if (seal_next<Fn>()) return sealed(name, run);
+        Open o(*this, name);
+        run();
+    }
+    template <class Count, class Fn>
+    void launch_tally(const char* name, size_t max, const Count& count, TestCount* sums,
+                      const Fn& fn) {
+        if (max == 0) return;
+        ++launches_;
+        const auto run = [&] {
+            for (size_t i = std::min(max, size_t(count())); i-- > 0;) {
+                const TestCount c = fn(i);
+                sums->tests += c.tests, sums->hits += c.hits;
+            }
+        };
+        if (seal_next<Fn>()) return sealed(name, run);
+        Open o(*this, name);
+        run();
+    }
+
     template <class T> T exclusive_scan(T* data, size_t n) {
         Open o(*this, "exclusive_scan");
         return cpu_.exclusive_scan(data, n);
@@ -232,6 +268,7 @@ class StrictExec {
     Stopwatch stopwatch() { return cpu_.stopwatch(); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
+    size_t auto_batch_pairs() const { return cpu_.auto_batch_pairs(); }
     uint64_t launches() const { return cpu_.launches() + launches_; }
     uint64_t host_waits() const { return cpu_.host_waits() + waits_; }
 

@@ -11,6 +11,7 @@
 #include "core/sort/ray_order.h"
 #include "core/wavefront/cpu_exec.h"
 #include "core/wavefront/wf_order.h"
+#include "core/wavefront/wf_trace.h"
 
 #include <gtest/gtest.h>
 
@@ -77,6 +78,27 @@ TEST(Wavefront, BuiltinScenesAreIdentical) {
     }
     const PreparedScene cornell = prepare_scene(make_builtin_scene("cornell"));
     expect_identical(cornell, "cornell", {{"accel", "brute"}}, 24, 20);
+}
+
+// Each level's hit pairs are compacted on the executing side and the next level is launched
+// for the count found there: cutting a group's candidates into more chunks adds launches, not
+// host waits (at hierarchy.depth 2 a chunk costs the host none), and changes no count.
+TEST(Wavefront, TraversalChunksCostTheHostNoWait) {
+    const PreparedScene scene = prepare_scene(make_builtin_scene("office"));
+    const auto run = [&](size_t batch) {
+        const RenderSettings s =
+            settings_for(scene, {{"traversal.batch", std::to_string(batch)}}, 192, 144);
+        return render_frame_wavefront_cpu(scene, s);
+    };
+    // Top chunks of 2^27 candidates (one a group), and of the fewest a chunk takes.
+    const Frame whole = run(size_t(1) << 30);
+    const Frame cut = run(wavefront::kMinTopChunk * 8);
+    test::expect_same_frame(whole, cut, "office, chunks of 2^27 and 2^16 candidates");
+    const double top_tests = whole.stats.get("tests.shadow.level2.tests");
+    ASSERT_GT(top_tests, 4.0 * double(wavefront::kMinTopChunk)) << "too few chunks to compare";
+    EXPECT_GT(cut.stats.get("device.launches"), whole.stats.get("device.launches") + 8);
+    EXPECT_EQ(cut.stats.get("device.host_waits"), whole.stats.get("device.host_waits"));
+    EXPECT_EQ(whole.stats.get("device.batch_pairs"), double(size_t(1) << 30));
 }
 
 TEST(Wavefront, PassSubsetsAreIdentical) {

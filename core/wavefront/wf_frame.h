@@ -73,6 +73,7 @@ template <class Exec> class DeviceFrame {
         params_ = frame_ray_params(host_, s_);
         DeviceTracer<Exec> tracer(ex_, host_, scene_, *units, uploaded.cull, s_, st_, clock_);
         tracer_ = &tracer;
+        st_.set("device.batch_pairs", double(tracer.batch_pairs()));
         mark("tracer");
 
         scatter_ = host_.media_scatter_light();

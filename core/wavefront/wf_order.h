@@ -92,7 +92,7 @@ DeviceOrder<Exec> order_rays(Exec& ex, const uint32_t* keys, int words, size_t n
     uint32_t* offset = offset_buf.data();
     ex.launch("csd.sorted_sizes", chunks,
               [=] SHEAF_HD_LAMBDA(size_t j) { offset[j] = chunk_size[chunk_ids[j]]; });
-    ex.exclusive_scan(offset, chunks);
+    ex.exclusive_scan_async(offset, chunks); // the total is n: no wait for it
     ex.launch("csd.expand", chunks, [=] SHEAF_HD_LAMBDA(size_t j) {
         const uint32_t c = chunk_ids[j], base = chunk_base[c], size = chunk_size[c];
         for (uint32_t k = 0; k < size; ++k) perm[offset[j] + k] = base + k;

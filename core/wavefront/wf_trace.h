@@ -1,14 +1,16 @@
 // Tracing one batch of secondary rays on the executing side, as core/rsh/trace.cpp does on the
 // CPU: brute (every ray against every primitive), or hash, order, the ray hierarchy built level
-// by level, and the top-down traversal with compaction (count, scan, fill) of candidate
-// (node, primitive) pairs, then the final tests. The same per-element functions, the same
-// counts in the same statistics keys, the same hits.
+// by level, and the top-down traversal with compaction of candidate (node, primitive) pairs
+// (counters on the executing side: the next level launched for the count found there), then
+// the final tests. The same per-element functions, the same counts in the same statistics
+// keys, the same hits.
 #pragma once
 
 #include "core/hash/ray_hash.h"
 #include "core/rays/ray_gen.h"
 #include "core/rsh/hierarchy.h"
 #include "core/rsh/trace_kernels.h"
+#include "core/wavefront/compact.h"
 #include "core/wavefront/wf_order.h"
 #include "core/wavefront/wf_scene.h"
 
@@ -77,23 +79,23 @@ struct TopCandidates {
     }
 };
 
-/// Test and hit counts packed for one scan: hits in the low 32 bits, tests in the high 32. A
-/// scanned array's totals are below 2^32 each (at most traversal.batch <= 2^30), so neither
-/// carries.
-SHEAF_HD inline uint64_t pack_counts(uint64_t tests, uint64_t hits) {
-    return tests << 32 | hits;
-}
-SHEAF_HD inline uint32_t packed_hits(uint64_t p) {
-    return uint32_t(p);
-}
-inline TestCount unpack_counts(uint64_t p) {
-    return {p >> 32, p & 0xFFFFFFFFu};
-}
-
 /// A traced batch's counts kept on the executing side until the frame reads them (at
 /// namespace scope: nvcc's extended lambdas may not capture a class's private types).
 struct BatchCounts {
     TestCount objects, final;
+    TestCount levels[kMaxHierarchyDepth + 1]; // index k: level k
+};
+
+/// The fewest top candidates a chunk takes (DeviceTracer::top_chunk_size): below this, a
+/// deep hierarchy's chunk reads its count once rather than being cut smaller.
+constexpr size_t kMinTopChunk = size_t(1) << 16;
+
+/// How many elements a counted launch (Exec::launch_compact, launch_tally) runs: *p, a counter
+/// that earlier launches filled on the executing side, or a number the host knows (p null).
+struct LaunchCount {
+    const uint32_t* p;
+    size_t known;
+    SHEAF_HD size_t operator()() const { return p ? size_t(*p) : known; }
 };
 
 struct SumCounts {
@@ -115,11 +117,14 @@ template <class Exec> class DeviceTracer {
                  const CullUnits& units, const CullView& cull, const RenderSettings& s,
                  Stats& stats, PhaseClock<Exec>& clock)
         : ex_(ex), scene_(scene), cull_(cull), s_(s), st_(stats), clock_(clock),
-          light_count_(uint32_t(host.lights.size())) {
+          light_count_(uint32_t(host.lights.size())), batch_(s.batch_or(ex.auto_batch_pairs())) {
         for (uint8_t f : host.prim_flags) transparent_ = transparent_ || (f & kPrimMayPass);
         for (size_t u = 0; u < units.count(); ++u)
             units_with_prims_ += units.begin[u + 1] > units.begin[u] ? 1 : 0;
     }
+
+    /// Candidate pairs a level holds at once: traversal.batch, or the exec's choice.
+    size_t batch_pairs() const { return batch_; }
 
     void trace(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
         const size_t n = batch.n;
@@ -149,9 +154,11 @@ template <class Exec> class DeviceTracer {
         // Object and final tests count into this batch's slot, read with the others' by
         // flush().
         const bool cull = s_.accel != Accel::Brute && s_.cull_objects;
-        BatchCounts* slot = take_slot(p, cull);
+        const int depth = s_.accel == Accel::Brute ? 0 : s_.hierarchy_depth;
+        BatchCounts* slot = take_slot(p, cull, depth);
         objects_count_ = &slot->objects;
         final_count_ = &slot->final;
+        level_counts_ = slot->levels;
         if (s_.accel == Accel::Brute) {
             brute(batch, out);
             add_test_counts(st_, p, false, {}, {}, {}); // final tests only
@@ -185,30 +192,35 @@ template <class Exec> class DeviceTracer {
                 double(node_count(s_.hierarchy_depth)));
 
         clock_.start("traversal");
-        counts_ = Counts();
-        counts_.levels.assign(size_t(s_.hierarchy_depth) + 1, TestCount());
         sinks_ = out.sinks();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>(ex_, node_count(1));
         fill(ex_, leaf_pairs_.data(), node_count(1), 0u);
+        counters_ = DeviceBuffer<uint32_t, Exec>(ex_, size_t(depth) + 1);
+        pair_bufs_.resize(size_t(depth) + 1);
         traverse();
+        pair_bufs_.clear();
+        counters_ = DeviceBuffer<uint32_t, Exec>();
         spread_ray_tests(out.tests.data(), n);
         clock_.stop("traversal");
 
-        add_test_counts(st_, p, cull, {}, counts_.levels, {});
+        add_test_counts(st_, p, cull, {}, std::vector<TestCount>(size_t(depth) + 1), {});
         levels_.clear();
         sorted_ = DeviceBuffer<Ray, Exec>();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();
     }
 
-    /// Adds the object and final tests of every batch traced since the last flush to the
-    /// statistics: one read for them all, at the end of the frame, so tracing a batch costs
-    /// the host no wait for its counts.
+    /// Adds the counts of every batch traced since the last flush to the statistics: one read
+    /// for them all, at the end of the frame, so tracing a batch costs the host no wait for
+    /// its counts.
     void flush() {
         if (pending_.empty()) return;
         const std::vector<BatchCounts> counts = slots_.download(pending_.size());
-        for (size_t i = 0; i < pending_.size(); ++i)
-            add_late_counts(st_, pending_[i].prefix, pending_[i].cull, counts[i].objects,
-                            counts[i].final);
+        for (size_t i = 0; i < pending_.size(); ++i) {
+            const BatchCounts& c = counts[i];
+            const std::vector<TestCount> levels(c.levels, c.levels + pending_[i].depth + 1);
+            add_late_counts(st_, pending_[i].prefix, pending_[i].cull, c.objects,
+                            pending_[i].depth ? levels : std::vector<TestCount>(), c.final);
+        }
         pending_.clear();
         // A batch traced after this takes a new buffer, zeroed when allocated: no launch to
         // clear slots that the frame, which flushes once at its end, would never use again.
@@ -344,40 +356,40 @@ template <class Exec> class DeviceTracer {
 
     // Top nodes against the object spheres and, within split objects, the unit spheres
     // (cull.objects, cull.cluster: core/rsh/cull_units.h), then against the primitive spheres
-    // of the units they reach. Top nodes go in groups of at most traversal.batch (node, unit)
-    // pairs with culling, (node, primitive) pairs without, and a group's candidates at most
-    // traversal.batch at a time. With culling only the primitives of hit units are expanded
-    // (unit u's primitives are cull_.begin[u] .. cull_.begin[u + 1]), so the work is the
-    // tests the statistics count, in few launches; where every node hit every unit, the
-    // candidates are all the primitives, with no expansion. The level counts come with the
-    // scan totals the host needs anyway (pack_counts), the object counts stay on the
-    // executing side (reduce_into), so the host waits once per compaction.
+    // of the units they reach, then down the levels to the final tests. Top nodes go in groups
+    // of at most traversal.batch (node, unit) pairs with culling, (node, primitive) pairs
+    // without. With culling only the primitives of hit units are candidates (unit u's
+    // primitives are cull_.begin[u] .. cull_.begin[u + 1]), so the work is the tests the
+    // statistics count; where every node hit every unit, the candidates are all the
+    // primitives, with no expansion. A group's candidates go down in chunks small enough that
+    // each level's pairs fit traversal.batch (top_chunk_size): every level's hits are then
+    // compacted by counters on the executing side (Exec::launch_compact; the order of the pairs
+    // changes no result: hits are minima, flags and sums), and the next level is launched for
+    // the count it finds there, so the host waits once per group, for the number of
+    // candidates. Every count stays on the executing side until flush().
     void traverse() {
         const int top = s_.hierarchy_depth;
         const size_t top_nodes = node_count(top);
         const uint32_t prims = scene_.prim_count();
         const uint32_t units = cull_.count;
         const bool cull = s_.cull_objects;
-        const size_t batch = std::max<size_t>(1, size_t(s_.batch_pairs));
+        const size_t batch = batch_;
         // A group's candidate indices fit 32 bits.
         const size_t group =
             std::max<size_t>(1, std::min(batch / std::max<size_t>(1, cull ? units : prims),
                                          size_t(UINT32_MAX) / std::max<size_t>(1, prims)));
         const size_t most = std::min(group, top_nodes);
-        const size_t most_chunk = std::min(batch, most * size_t(prims));
+        const size_t chunk = top_chunk_size();
+        const size_t most_chunk = std::min(chunk, most * size_t(prims));
         DeviceBuffer<uint8_t, Exec> objhit_buf(ex_, cull ? most * units : 0);
-        DeviceBuffer<uint32_t, Exec> objoff_buf(ex_, cull ? most * units : 0);
-        DeviceBuffer<uint8_t, Exec> hit_flag_buf(ex_, most_chunk);
-        DeviceBuffer<uint64_t, Exec> offset_buf(ex_, most_chunk);
+        DeviceBuffer<uint64_t, Exec> objoff_buf(ex_, cull ? most * units : 0);
         DeviceBuffer<uint32_t, Exec> owner_buf(ex_, cull ? most_chunk : 0);
         DeviceBuffer<uint32_t, Exec> j0_buf(ex_, cull ? 1 : 0);
         const RayNode* nodes = levels_[size_t(top) - 1].data();
         const CullView cv = cull_;
         uint8_t* objhit = objhit_buf.data();
-        uint32_t* objoff = objoff_buf.data();
+        uint64_t* objoff = objoff_buf.data();
         const Sphere* object_sphere = scene_.object_sphere;
-        uint8_t* hit_flag = hit_flag_buf.data();
-        uint64_t* offset = offset_buf.data();
         uint32_t* own = owner_buf.data();
         uint32_t* j0 = j0_buf.data();
         for (size_t g0 = 0; g0 < top_nodes; g0 += group) {
@@ -393,7 +405,9 @@ template <class Exec> class DeviceTracer {
                 // Every (node, unit) pair: the unit's object's sphere, then, where that is hit
                 // and the object split, the unit's; counted as the CPU counts them (the
                 // object's test with its first unit). The pairs that pass and have primitives
-                // are compacted. objhit: bit 0 passes, bits 1-2 tests, bits 3-4 hits.
+                // are compacted, in order: one scan gives each its place (low 32 bits) and its
+                // first candidate (high 32 bits). objhit: bit 0 passes, bits 1-2 tests, bits
+                // 3-4 hits.
                 ex_.launch("rsh.objects", gn * units, [=] SHEAF_HD_LAMBDA(size_t x) {
                     const uint32_t u = uint32_t(x % units);
                     const RayNode& node = nodes[g0 + x / units];
@@ -403,9 +417,10 @@ template <class Exec> class DeviceTracer {
                     const bool hu = ho && split && node_hits_sphere(node, cv.sphere[u]);
                     const uint32_t t = (u == u0 ? 1u : 0u) + (ho && split ? 1u : 0u);
                     const uint32_t h = (u == u0 && ho ? 1u : 0u) + (hu ? 1u : 0u);
-                    const bool pass = ho && (!split || hu) && cv.begin[u + 1] > cv.begin[u];
+                    const uint32_t size = cv.begin[u + 1] - cv.begin[u];
+                    const bool pass = ho && (!split || hu) && size > 0;
                     objhit[x] = uint8_t((pass ? 1u : 0u) | t << 1 | h << 3);
-                    objoff[x] = pass ? 1u : 0u;
+                    objoff[x] = pass ? uint64_t(size) << 32 | 1u : 0u;
                 });
                 ex_.reduce_into(
                     "rsh.object_counts", gn * units, objects_count_, TestCount{},
@@ -413,7 +428,9 @@ template <class Exec> class DeviceTracer {
                         return {uint32_t(objhit[x] >> 1 & 3u), uint32_t(objhit[x] >> 3 & 3u)};
                     },
                     SumCounts{});
-                hits = ex_.exclusive_scan(objoff, gn * units);
+                // Totals below 2^32 each: at most gn * units pairs, gn * prims candidates.
+                const uint64_t total = ex_.exclusive_scan(objoff, gn * units);
+                hits = uint32_t(total);
                 // Unless every node hit every unit with primitives (one small object, say),
                 // when the candidates are all the primitives in the plain order: the hit
                 // pairs' primitive ranges.
@@ -424,12 +441,11 @@ template <class Exec> class DeviceTracer {
                     uint32_t* sp = start_buf.data();
                     ex_.launch("rsh.object_fill", gn * units, [=] SHEAF_HD_LAMBDA(size_t x) {
                         if (!(objhit[x] & 1u)) return;
-                        const uint32_t u = uint32_t(x % units);
-                        const uint32_t j = objoff[x];
-                        h[j] = {uint32_t(g0 + x / units), u};
-                        sp[j] = cv.begin[u + 1] - cv.begin[u];
+                        const uint32_t j = uint32_t(objoff[x]);
+                        h[j] = {uint32_t(g0 + x / units), uint32_t(x % units)};
+                        sp[j] = uint32_t(objoff[x] >> 32);
                     });
-                    candidates = ex_.exclusive_scan(sp, hits);
+                    candidates = size_t(total >> 32);
                     candidate.sparse = true;
                     candidate.hit = h;
                     candidate.start = sp;
@@ -437,8 +453,8 @@ template <class Exec> class DeviceTracer {
                     candidate.j0 = j0;
                 }
             }
-            for (size_t c0 = 0; c0 < candidates; c0 += batch) {
-                const size_t cn = std::min(candidates, c0 + batch) - c0;
+            for (size_t c0 = 0; c0 < candidates; c0 += chunk) {
+                const size_t cn = std::min(candidates, c0 + chunk) - c0;
                 if (candidate.sparse) {
                     // The chunk's first pair, *j0: the last whose first candidate is at most
                     // c0 (start increases strictly, every span being at least one); then a 1
@@ -455,55 +471,94 @@ template <class Exec> class DeviceTracer {
                     });
                     ex_.exclusive_scan_async(own, cn);
                 }
-                top_chunk(candidate, c0, cn, nodes, hit_flag, offset);
+                top_chunk(candidate, c0, cn, nodes);
             }
         }
     }
 
-    // Candidates [c0, c0 + n) of a group: tested, counted, the hits compacted and descended.
-    void top_chunk(const TopCandidates candidate, size_t c0, size_t n, const RayNode* nodes,
-                   uint8_t* hit_flag, uint64_t* offset) {
+    // Top candidates a chunk: as many as keep every level's pairs within traversal.batch while
+    // the host waits for no count (each level expands a pair into at most arity), so at depth
+    // 2 a chunk costs the host no wait; deeper, the chunk's count is read where a level would
+    // pass the batch (descend).
+    size_t top_chunk_size() const {
+        const size_t arity = size_t(s_.hierarchy_arity);
+        size_t chunk = batch_;
+        for (int level = s_.hierarchy_depth; level > 1 && chunk / arity >= kMinTopChunk; --level)
+            chunk /= arity;
+        return std::max<size_t>(1, chunk);
+    }
+
+    // Room for n pairs of nodes at `level`, kept for the batch's later chunks: a chunk's pairs
+    // are used up, in the executing side's order, before the next chunk's overwrite them.
+    NodePrim* level_pairs(int level, size_t n) {
+        DeviceBuffer<NodePrim, Exec>& b = pair_bufs_[size_t(level)];
+        if (b.size() < n) b = DeviceBuffer<NodePrim, Exec>(ex_, n);
+        return b.data();
+    }
+
+    // Candidates [c0, c0 + n) of a group, each tested against its primitive's sphere: the hit
+    // (node, primitive) pairs are compacted and go down.
+    void top_chunk(const TopCandidates candidate, size_t c0, size_t n, const RayNode* nodes) {
         const int top = s_.hierarchy_depth;
         const SceneView scene = scene_;
         const uint8_t skip = skip_;
-        ex_.launch("rsh.top", n, [=] SHEAF_HD_LAMBDA(size_t x) {
-            const NodePrim np = candidate(c0 + x);
-            const bool tested = !(skip && scene.prim_flag(np.prim, skip));
-            const bool hit = tested && node_hits_sphere(nodes[np.node], scene.prim_sphere[np.prim]);
-            hit_flag[x] = hit ? 1 : 0;
-            offset[x] = pack_counts(tested ? 1 : 0, hit ? 1 : 0);
-        });
-        const TestCount c = unpack_counts(ex_.exclusive_scan(offset, n));
-        counts_.levels[size_t(top)].tests += c.tests;
-        counts_.levels[size_t(top)].hits += c.hits;
-        DeviceBuffer<NodePrim, Exec> pairs_buf(ex_, c.hits);
-        NodePrim* pairs = pairs_buf.data();
-        ex_.launch("rsh.top_fill", n, [=] SHEAF_HD_LAMBDA(size_t x) {
-            if (hit_flag[x]) pairs[packed_hits(offset[x])] = candidate(c0 + x);
-        });
-        descend(top, pairs, c.hits);
+        // The chunk's counters of pairs, one a level, zeroed at once.
+        fill(ex_, counters_.data(), counters_.size(), 0u);
+        NodePrim* pairs = level_pairs(top, n);
+        uint32_t* found = counters_.data() + top;
+        ex_.launch_compact(
+            "rsh.top", n, LaunchCount{nullptr, n}, found, level_counts_ + top,
+            [=] SHEAF_HD_LAMBDA(size_t x) -> Compacted {
+                const NodePrim np = candidate(c0 + x);
+                const bool tested = !(skip && scene.prim_flag(np.prim, skip));
+                const bool hit =
+                    tested && node_hits_sphere(nodes[np.node], scene.prim_sphere[np.prim]);
+                return {tested ? 1u : 0u, hit ? 1u : 0u, hit ? 1u : 0u, 0};
+            },
+            [=] SHEAF_HD_LAMBDA(size_t x, uint64_t, uint32_t slot) {
+                pairs[slot] = candidate(c0 + x);
+            });
+        descend(top, pairs, n, LaunchCount{found, 0});
     }
 
-    // Candidate pairs of nodes at `level`, expanded to level - 1 in chunks of
-    // traversal.batch / arity pairs; at level 1, the final tests.
-    void descend(int level, const NodePrim* pairs, size_t count) {
+    // At most `most` pairs of nodes at `level`, count() of them: expanded to level - 1 at once
+    // when that fits traversal.batch, else the host reads the count and expands them in chunks
+    // of traversal.batch / arity; at level 1, the final tests. The counters of the levels
+    // below are zero.
+    void descend(int level, const NodePrim* pairs, size_t most, LaunchCount count) {
         if (level == 1) {
-            finals(pairs, count);
+            finals(pairs, most, count);
             return;
         }
+        const size_t arity = size_t(s_.hierarchy_arity);
+        if (most * arity <= batch_) {
+            expand(level, pairs, most, count);
+            return;
+        }
+        uint32_t counted = 0;
+        if (count.p) ex_.copy_to_host(&counted, count.p, sizeof counted); // the one wait
+        const size_t n = count.p ? size_t(counted) : count.known;
+        const size_t chunk = std::max<size_t>(1, batch_ / arity);
+        for (size_t c0 = 0; c0 < n; c0 += chunk) {
+            const size_t cn = std::min(n, c0 + chunk) - c0;
+            fill(ex_, counters_.data(), size_t(level), 0u); // the levels below, again
+            expand(level, pairs + c0, cn, LaunchCount{nullptr, cn});
+        }
+    }
+
+    // The count() pairs (at most `most`) of nodes at `level` against the primitive spheres of
+    // their nodes' children: the hit (child, primitive) pairs compacted, counted at
+    // counters_[level - 1], then down.
+    void expand(int level, const NodePrim* in, size_t most, LaunchCount count) {
         const int arity = s_.hierarchy_arity;
         const size_t below = node_count(level - 1);
         const RayNode* children = levels_[size_t(level) - 2].data();
         const Sphere* spheres = scene_.prim_sphere;
-        const size_t chunk = std::max<size_t>(1, size_t(s_.batch_pairs) / size_t(arity));
-        for (size_t c0 = 0; c0 < count; c0 += chunk) {
-            const size_t cn = std::min(count, c0 + chunk) - c0;
-            DeviceBuffer<uint64_t, Exec> mask_buf(ex_, cn);
-            DeviceBuffer<uint64_t, Exec> offset_buf(ex_, cn);
-            uint64_t* mask = mask_buf.data();
-            uint64_t* offset = offset_buf.data();
-            const NodePrim* in = pairs + c0;
-            ex_.launch("rsh.level", cn, [=] SHEAF_HD_LAMBDA(size_t j) {
+        NodePrim* next = level_pairs(level - 1, most * size_t(arity));
+        uint32_t* found = counters_.data() + (level - 1);
+        ex_.launch_compact(
+            "rsh.level", most, count, found, level_counts_ + (level - 1),
+            [=] SHEAF_HD_LAMBDA(size_t j) -> Compacted {
                 const NodePrim pr = in[j];
                 const Sphere s = spheres[pr.prim];
                 const size_t first = size_t(pr.node) * size_t(arity);
@@ -512,33 +567,24 @@ template <class Exec> class DeviceTracer {
                 uint32_t c = 0;
                 for (size_t ch = first; ch < last; ++ch)
                     if (node_hits_sphere(children[ch], s)) m |= uint64_t(1) << (ch - first), ++c;
-                mask[j] = m;
-                offset[j] = pack_counts(last - first, c);
-            });
-            const TestCount counted = unpack_counts(ex_.exclusive_scan(offset, cn));
-            counts_.levels[size_t(level) - 1].tests += counted.tests;
-            counts_.levels[size_t(level) - 1].hits += counted.hits;
-            const uint32_t found = uint32_t(counted.hits);
-            DeviceBuffer<NodePrim, Exec> next_buf(ex_, found);
-            NodePrim* next = next_buf.data();
-            ex_.launch("rsh.level_fill", cn, [=] SHEAF_HD_LAMBDA(size_t j) {
+                return {uint32_t(last - first), c, c, m};
+            },
+            [=] SHEAF_HD_LAMBDA(size_t j, uint64_t m, uint32_t slot) {
                 const uint32_t first = in[j].node * uint32_t(arity);
-                uint32_t o = packed_hits(offset[j]);
-                for (uint64_t m = mask[j]; m; m &= m - 1) {
+                for (; m; m &= m - 1) {
                     int bit = 0;
                     while (!((m >> bit) & 1u)) ++bit;
-                    next[o++] = {first + uint32_t(bit), in[j].prim};
+                    next[slot++] = {first + uint32_t(bit), in[j].prim};
                 }
             });
-            descend(level - 1, next, found);
-        }
+        descend(level - 1, next, most * size_t(arity), LaunchCount{found, 0});
     }
 
-    // Each level-1 pair: every ray of the node against the primitive, exactly: the phase
-    // final_tests within traversal. The counts go to the batch's slot on the executing side,
-    // so the host does not wait here.
-    void finals(const NodePrim* pairs, size_t count) {
-        if (count == 0) return;
+    // Each level-1 pair (count() of them, at most `most`): every ray of the node against the
+    // primitive, exactly: the phase final_tests within traversal. The counts go to the batch's
+    // slot on the executing side, so the host does not wait here.
+    void finals(const NodePrim* pairs, size_t most, LaunchCount count) {
+        if (most == 0) return;
         clock_.stop("traversal");
         clock_.start("final_tests");
         const int arity = s_.hierarchy_arity;
@@ -549,35 +595,29 @@ template <class Exec> class DeviceTracer {
         uint32_t* leaf_pairs = leaf_pairs_.data();
         const bool any = any_, shadow = shadow_;
         const HitSinks sinks = sinks_;
-        DeviceBuffer<uint32_t, Exec> hits_buf(ex_, count);
-        uint32_t* hits = hits_buf.data();
+        TestCount* counts = final_count_;
         // Plain triangle pairs in one launch, the rest (analytic shapes, surfaces a shadow
         // passes) in another where the scene has any: the first kernel then needs few registers.
-        ex_.launch("rsh.final", count, [=] SHEAF_HD_LAMBDA(size_t j) {
-            const NodePrim pr = pairs[j];
-            atomic_add_u32(&leaf_pairs[pr.node], 1);
-            if (!plain_final(scene, pr.prim, any, shadow)) return;
-            const size_t first = size_t(pr.node) * size_t(arity);
-            const size_t last = node_last_child(pr.node, arity, rays_n);
-            hits[j] =
-                uint32_t(final_triangle_tests(scene, rays, perm, first, last, pr.prim, any, sinks));
-        });
-        if (scene.analytic_count > 0 || (shadow && transparent_))
-            ex_.launch("rsh.final_shapes", count, [=] SHEAF_HD_LAMBDA(size_t j) {
+        ex_.launch_tally(
+            "rsh.final", most, count, counts, [=] SHEAF_HD_LAMBDA(size_t j) -> TestCount {
                 const NodePrim pr = pairs[j];
-                if (plain_final(scene, pr.prim, any, shadow)) return;
+                atomic_add_u32(&leaf_pairs[pr.node], 1);
+                if (!plain_final(scene, pr.prim, any, shadow)) return {};
                 const size_t first = size_t(pr.node) * size_t(arity);
                 const size_t last = node_last_child(pr.node, arity, rays_n);
-                hits[j] = uint32_t(
-                    final_tests(scene, rays, perm, first, last, pr.prim, any, shadow, sinks));
+                return {last - first,
+                        final_triangle_tests(scene, rays, perm, first, last, pr.prim, any, sinks)};
             });
-        ex_.reduce_into(
-            "rsh.final_counts", count, final_count_, TestCount{},
-            [=] SHEAF_HD_LAMBDA(size_t j) -> TestCount {
-                const size_t first = size_t(pairs[j].node) * size_t(arity);
-                return {node_last_child(pairs[j].node, arity, rays_n) - first, hits[j]};
-            },
-            SumCounts{});
+        if (scene.analytic_count > 0 || (shadow && transparent_))
+            ex_.launch_tally("rsh.final_shapes", most, count, counts,
+                             [=] SHEAF_HD_LAMBDA(size_t j) -> TestCount {
+                                 const NodePrim pr = pairs[j];
+                                 if (plain_final(scene, pr.prim, any, shadow)) return {};
+                                 const size_t first = size_t(pr.node) * size_t(arity);
+                                 const size_t last = node_last_child(pr.node, arity, rays_n);
+                                 return {last - first, final_tests(scene, rays, perm, first, last,
+                                                                   pr.prim, any, shadow, sinks)};
+                             });
         clock_.stop("final_tests");
         clock_.start("traversal");
     }
@@ -595,10 +635,11 @@ template <class Exec> class DeviceTracer {
     struct Pending {
         std::string prefix; // of the batch's statistics keys
         bool cull;          // whether it has objects.* rows
+        int depth;          // its level<k>.* rows: k in 1..depth
     };
 
     // A zeroed slot for the next batch; the slots grow by doubling.
-    BatchCounts* take_slot(const std::string& prefix, bool cull) {
+    BatchCounts* take_slot(const std::string& prefix, bool cull, int depth) {
         if (pending_.size() == slots_.size()) {
             DeviceBuffer<BatchCounts, Exec> grown(ex_, std::max<size_t>(16, 2 * slots_.size()));
             fill(ex_, grown.data(), grown.size(), BatchCounts{});
@@ -606,13 +647,9 @@ template <class Exec> class DeviceTracer {
                 ex_.copy_on_device(grown.data(), slots_.data(), slots_.size() * sizeof(BatchCounts));
             slots_ = std::move(grown);
         }
-        pending_.push_back({prefix, cull});
+        pending_.push_back({prefix, cull, depth});
         return slots_.data() + (pending_.size() - 1);
     }
-
-    struct Counts {
-        std::vector<TestCount> levels; // index k: level k
-    };
 
     Exec& ex_;
     SceneView scene_;
@@ -621,6 +658,7 @@ template <class Exec> class DeviceTracer {
     Stats& st_;
     PhaseClock<Exec>& clock_;
     uint32_t light_count_;
+    size_t batch_; // traversal.batch, or the exec's choice when it is 0
     uint32_t units_with_prims_ = 0;
     bool transparent_ = false; // some primitive may let light through (shadow pass logs)
     // The batch being traced.
@@ -630,11 +668,14 @@ template <class Exec> class DeviceTracer {
     const uint32_t* perm_ = nullptr;
     std::vector<DeviceBuffer<RayNode, Exec>> levels_;
     DeviceBuffer<uint32_t, Exec> leaf_pairs_;
+    // The traversal's pairs of nodes and primitives (index k: level k) and their counters.
+    std::vector<DeviceBuffer<NodePrim, Exec>> pair_bufs_;
+    DeviceBuffer<uint32_t, Exec> counters_;
     HitSinks sinks_;
-    Counts counts_;
     // The batch's counts on the executing side, in its slot of slots_.
     TestCount* objects_count_ = nullptr;
     TestCount* final_count_ = nullptr;
+    TestCount* level_counts_ = nullptr; // index k: level k
     // Object and final-test counts of the batches traced since the last flush.
     DeviceBuffer<BatchCounts, Exec> slots_;
     std::vector<Pending> pending_;

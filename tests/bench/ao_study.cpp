@@ -11,7 +11,9 @@
 // the scene's bounding radius. "reorder" is hashing + compression + sorting + decompression;
 // "render" is the rest of the frame. Counts are exact; times are one run (or the median of K).
 // --set gives other settings (hierarchy.depth=4, say); the study sets the size, accel, order,
-// sort, AO, trace.depth and backend itself.
+// sort, AO, trace.depth and backend itself, and keeps only the image (output.passes=combined:
+// the depth, normal, albedo, id and test passes are neither resolved nor read back) unless
+// --set names the passes.
 #include "bench_args.h"
 #include "core/base/error.h"
 #include "core/render/renderer.h"
@@ -73,6 +75,8 @@ Result run(const PreparedScene& scene, const Order& o, const std::string& sort_a
     s.set("ao.distance", std::to_string(0.1f * bounding_radius(scene)));
     s.set("trace.depth", "0");
     s.set("backend", backend);
+    // The study renders the AO image: the other passes are not read back (unless --set asks).
+    if (!sets.has("output.passes")) s.set("output.passes", "combined");
     Result r;
     try {
         const RenderSettings rs = RenderSettings::resolve(s, scene.settings);
@@ -134,8 +138,9 @@ int main(int argc, char** argv) {
 
     std::printf("## Paper 003, Table 1: AO at %dx%d, %d rays per pixel\n\n", size, size, samples);
     std::printf("Reorder = hashing + compression + sorting + decompression; render = the rest "
-                "of the frame (primary visibility and the AO rays). Tests: AO ray-primitive "
-                "tests as a share of brute force.\n");
+                "of the frame (primary visibility, the AO rays and the image read back; other "
+                "passes only when output.passes is set). Tests: AO ray-primitive tests as a "
+                "share of brute force.\n");
     if (!set_text.empty()) std::printf("\nSettings given:%s\n", set_text.c_str());
     for (const std::string& backend : backends) {
         std::vector<PreparedScene> prepared;

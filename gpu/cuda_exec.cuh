@@ -76,7 +76,7 @@ __global__ void compact_kernel(size_t max, Count count, uint32_t* counter, TestC
     unsigned long long tests = 0, hits = 0;
     for (size_t b = size_t(blockIdx.x) * blockDim.x; b < n; b += size_t(blockDim.x) * gridDim.x) {
         const size_t i = b + threadIdx.x;
-        Compacted e;
+        wavefront::Compacted e;
         if (i < n) e = fn(i);
         tests += e.tests, hits += e.hits;
         uint32_t slot = 0, outputs = 0;

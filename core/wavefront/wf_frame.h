@@ -53,7 +53,9 @@ template <class Exec> class DeviceFrame {
         // Photons are shot on the host through the CPU renderer's pass (the same map, so the
         // same picture) and gathered on the executing side.
         MemoryTracker photon_memory; // host memory, refused as the CPU renderer refuses it
-        if (const int64_t available = available_memory_bytes(); available > 0)
+        // Reading the system's free memory takes a tenth of a millisecond: only with photons.
+        if (const int64_t available = host_.has_photons() ? available_memory_bytes() : 0;
+            available > 0)
             photon_memory.set_limit(available / 10 * 9, available);
         const PhotonMap photons = shoot_photons(host_, *units, s_, st_, photon_memory);
         mark("photons");

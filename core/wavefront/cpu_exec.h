@@ -11,8 +11,6 @@
 #include "core/sort/radix_sort.h"
 #include "core/wavefront/compact.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/parallel_scan.h>
 
@@ -62,12 +60,11 @@ class CpuExec {
     template <class Count, class Fn, class Emit>
     void launch_compact(const char* name, size_t max, const Count& count, uint32_t* counter,
                         TestCount* sums, const Fn& fn, const Emit& emit) {
-        (void)name;
         if (max == 0) return;
         ++launches_;
         const size_t n = std::min(max, size_t(count()));
         std::atomic_ref<uint32_t> next(*counter);
-        tally_ranges(n, sums, [&](size_t b, size_t e, TestCount& sum) {
+        tally_ranges(name, n, sums, [&](size_t b, size_t e, TestCount& sum) {
             // Pieces of a range: counted, then one reservation for the piece's outputs.
             constexpr size_t kPiece = 256;
             Compacted c[kPiece];
@@ -91,15 +88,15 @@ class CpuExec {
     template <class Count, class Fn>
     void launch_tally(const char* name, size_t max, const Count& count, TestCount* sums,
                       const Fn& fn) {
-        (void)name;
         if (max == 0) return;
         ++launches_;
-        tally_ranges(std::min(max, size_t(count())), sums, [&](size_t b, size_t e, TestCount& sum) {
-            for (size_t i = b; i < e; ++i) {
-                const TestCount c = fn(i);
-                sum.tests += c.tests, sum.hits += c.hits;
-            }
-        });
+        tally_ranges(name, std::min(max, size_t(count())), sums,
+                     [&](size_t b, size_t e, TestCount& sum) {
+                         for (size_t i = b; i < e; ++i) {
+                             const TestCount c = fn(i);
+                             sum.tests += c.tests, sum.hits += c.hits;
+                         }
+                     });
     }
 
     /// data[i] = sum of data[0..i) in place; returns the total (T: uint32_t or uint64_t).
@@ -176,16 +173,18 @@ class CpuExec {
   private:
     // body(b, e, sum) over ranges [b, e) of [0, n) on every core, each adding into its own
     // sum; the sums go into *sums once per range.
-    template <class Body> static void tally_ranges(size_t n, TestCount* sums, const Body& body) {
-        if (n == 0) return;
+    template <class Body>
+    static void tally_ranges(const char* name, size_t n, TestCount* sums, const Body& body) {
         std::atomic_ref<uint64_t> tests(sums->tests), hits(sums->hits);
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1024),
-                          [&](const tbb::blocked_range<size_t>& r) {
-                              TestCount sum;
-                              body(r.begin(), r.end(), sum);
-                              tests.fetch_add(sum.tests, std::memory_order_relaxed);
-                              hits.fetch_add(sum.hits, std::memory_order_relaxed);
-                          });
+        parallel_for_range(
+            name, n,
+            [&](size_t b, size_t e) {
+                TestCount sum;
+                body(b, e, sum);
+                tests.fetch_add(sum.tests, std::memory_order_relaxed);
+                hits.fetch_add(sum.hits, std::memory_order_relaxed);
+            },
+            1024);
     }
 
     template <class T> T scan(T* data, size_t n) {

@@ -183,13 +183,9 @@ class StrictExec {
     /// fn(i) for every i in [0, n), last to first, one at a time.
     template <class Fn> void launch(const char* name, size_t n, const Fn& fn) {
         if (n == 0) return;
-        ++launches_;
-        const auto run = [&] {
+        device_launch<Fn>(name, [&] {
             for (size_t i = n; i-- > 0;) fn(i);
-        };
-        if (seal_next<Fn>()) return sealed(name, run);
-        Open o(*this, name);
-        run();
+        });
     }
 
     // Elements last to first, one at a time: each takes the counter's next slots.
@@ -197,8 +193,7 @@ class StrictExec {
     void launch_compact(const char* name, size_t max, const Count& count, uint32_t* counter,
                         TestCount* sums, const Fn& fn, const Emit& emit) {
         if (max == 0) return;
-        ++launches_;
-        const auto run = [&] {
+        device_launch<Fn>(name, [&] {
             for (size_t i = std::min(max, size_t(count())); i-- > 0;) {
                 const Compacted c = fn(i);
                 sums->tests += c.tests, sums->hits += c.hits;
@@ -207,25 +202,18 @@ class StrictExec {
                 *counter += c.outputs;
                 emit(i, c.what, slot);
             }
-        };
-        if (seal_next<Fn>()) return sealed(name, run);
-        Open o(*this, name);
-        run();
+        });
     }
     template <class Count, class Fn>
     void launch_tally(const char* name, size_t max, const Count& count, TestCount* sums,
                       const Fn& fn) {
         if (max == 0) return;
-        ++launches_;
-        const auto run = [&] {
+        device_launch<Fn>(name, [&] {
             for (size_t i = std::min(max, size_t(count())); i-- > 0;) {
                 const TestCount c = fn(i);
                 sums->tests += c.tests, sums->hits += c.hits;
             }
-        };
-        if (seal_next<Fn>()) return sealed(name, run);
-        Open o(*this, name);
-        run();
+        });
     }
 
     template <class T> T exclusive_scan(T* data, size_t n) {
@@ -304,6 +292,15 @@ class StrictExec {
         StrictExec& x_;
         const char* outer_;
     };
+
+    /// One launch of the site whose element lambda is Fn: run() sealed from host memory when
+    /// seal_host asks for it, else with the device buffers open.
+    template <class Fn, class Run> void device_launch(const char* name, const Run& run) {
+        ++launches_;
+        if (seal_next<Fn>()) return sealed(name, run);
+        Open o(*this, name);
+        run();
+    }
 
     /// Whether this run of the site whose lambda type is Fn runs sealed.
     template <class Fn> bool seal_next() {

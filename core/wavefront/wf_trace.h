@@ -218,8 +218,7 @@ template <class Exec> class DeviceTracer {
         for (size_t i = 0; i < pending_.size(); ++i) {
             const BatchCounts& c = counts[i];
             const std::vector<TestCount> levels(c.levels, c.levels + pending_[i].depth + 1);
-            add_late_counts(st_, pending_[i].prefix, pending_[i].cull, c.objects,
-                            pending_[i].depth ? levels : std::vector<TestCount>(), c.final);
+            add_late_counts(st_, pending_[i].prefix, pending_[i].cull, c.objects, levels, c.final);
         }
         pending_.clear();
         // A batch traced after this takes a new buffer, zeroed when allocated: no launch to

@@ -124,6 +124,7 @@ enum class TextureMapping {
     Planar,      // (x, y) of the point in texture space, repeated every unit
     Spherical,   // longitude and latitude around the texture-space origin
     Cylindrical, // angle around texture-space y, and y
+    Torus,       // angle around texture-space y, and angle around the unit circle in the xz plane
 };
 
 /// An image texture. The image is read by the IO layer (OpenImageIO); the core only asks for

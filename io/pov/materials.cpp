@@ -242,8 +242,17 @@ int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern,
     // A uv-mapped image is read at (u, v, 0) (Pattern::uv), planar like any other.
     t.mapping = img.map_type == 1   ? TextureMapping::Spherical
                 : img.map_type == 2 ? TextureMapping::Cylindrical
+                : img.map_type == 5 ? TextureMapping::Torus
                                     : TextureMapping::Planar;
     t.transform = to_pattern;
+    if (t.mapping != TextureMapping::Planar) {
+        // POV-Ray's longitude starts at +x and turns toward +z; the core's starts at -z and
+        // turns toward +x: (x, y, z) -> (-z, y, -x) takes one to the other.
+        Affine swap;
+        swap.m[0][0] = swap.m[2][2] = 0;
+        swap.m[0][2] = swap.m[2][0] = -1;
+        t.transform = swap * to_pattern;
+    }
     t.once = img.once;
     t.colorspace = colorspace;
     t.origin = p_.where(img.where);

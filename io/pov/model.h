@@ -43,7 +43,7 @@ struct PovFinish {
 /// An image for image_map (and the image pattern): the file and how it is wrapped.
 struct PovImage {
     std::string path;        // resolved against the scene's folder and the include paths
-    int map_type = 0;        // 0 planar, 1 spherical, 2 cylindrical
+    int map_type = 0;        // 0 planar, 1 spherical, 2 cylindrical, 5 torus
     double filter_all = 0, transmit_all = 0;
     bool once = false;       // bump_map once: no change outside the image
     Token where;             // where the scene asked for it, for errors

@@ -249,7 +249,7 @@ bool Parser::parse_image_item(PovImage& img) {
     const Token t = peek();
     if (accept_kw("map_type")) {
         img.map_type = int(parse_float());
-        if (img.map_type < 0 || img.map_type > 2) {
+        if (img.map_type != 0 && img.map_type != 1 && img.map_type != 2 && img.map_type != 5) {
             unsupported(t, "image map_type " + std::to_string(img.map_type) + " (planar is used)");
             img.map_type = 0;
         }

@@ -403,6 +403,56 @@ TEST(PovTextures, ImageMapsAreTextures) {
     EXPECT_EQ(off.transmit, 1);
 }
 
+// map_type 1, 2 and 5 read the image where POV-Ray does: u is the longitude from +x turning
+// toward +z (a cylinder seen from -z shows the image's right half, not mirrored), v the
+// latitude, the height, or the angle around the torus's unit ring (3/4 on its top).
+TEST(PovTextures, ImageMapTypesReadPovRaysLongitude) {
+    test::TempDir d;
+    const std::string png = d.path() + "/grey.png";
+    auto out = OIIO::ImageOutput::create(png);
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 1, OIIO::TypeDesc::UINT8)));
+    const float px[] = {0, 1, 1, 0};
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
+    out->close();
+    struct Case {
+        int map_type;
+        TextureMapping mapping;
+        Vec3 p;
+        float u, v;
+    };
+    for (const Case& c : {Case{2, TextureMapping::Cylindrical, {0, 0.3f, -1}, 0.75f, 0.3f},
+                          Case{2, TextureMapping::Cylindrical, {0, 0.6f, 2}, 0.25f, 0.6f},
+                          Case{2, TextureMapping::Cylindrical, {-1, 0, 0}, 0.5f, 0},
+                          Case{1, TextureMapping::Spherical, {0, 0, -1}, 0.75f, 0.5f},
+                          Case{1, TextureMapping::Spherical, {1, 1, 0}, 0, 0.75f},
+                          Case{5, TextureMapping::Torus, {0, 0, -2}, 0.75f, 0.5f},
+                          Case{5, TextureMapping::Torus, {1, 0.5f, 0}, 0, 0.75f},
+                          Case{5, TextureMapping::Torus, {0, -0.5f, 1}, 0.25f, 0.25f}}) {
+        const std::string scene =
+            d.write("scene.pov", "sphere { 0, 1 pigment { image_map { png \"grey.png\" map_type " +
+                                     std::to_string(c.map_type) + " } } }\n");
+        const PovResult r = load_pov_scene(scene);
+        SCOPED_TRACE(c.map_type);
+        EXPECT_TRUE(r.warnings.empty());
+        ASSERT_EQ(r.scene.textures.size(), 1u);
+        EXPECT_EQ(r.scene.textures[0].mapping, c.mapping);
+        float s = 0, t = 0;
+        // c.p is POV-Ray's point; Sheaf's world is POV-Ray's mirrored in z.
+        texture_coordinates(r.scene.textures[0], Vec3(c.p.x, c.p.y, -c.p.z), 0, 0, s, t);
+        EXPECT_NEAR(s - std::floor(s), c.u, 1e-5f) << c.p.x << ' ' << c.p.y << ' ' << c.p.z;
+        EXPECT_NEAR(t, c.v, 1e-5f) << c.p.x << ' ' << c.p.y << ' ' << c.p.z;
+    }
+    // The parabolic and hyperbolic mappings POV-Ray never implemented: warned, planar.
+    const PovResult para = load_pov_scene(d.write(
+        "para.pov", "sphere { 0, 1 pigment { image_map { png \"grey.png\" map_type 3 } } }\n"));
+    ASSERT_EQ(para.warnings.size(), 1u);
+    EXPECT_NE(para.warnings[0].find("para.pov:1:52: warning: unsupported image map_type 3"),
+              std::string::npos)
+        << para.warnings[0];
+    EXPECT_EQ(para.scene.textures.at(0).mapping, TextureMapping::Planar);
+}
+
 // uv_mapping: the pattern reads the mesh's (u, v, 0), placed by the transforms at and inside
 // the level that says uv_mapping (texture, pigment or object); the object's transforms, and
 // a texture's around a uv-mapped pigment, do not move it (as povray renders them).

@@ -138,7 +138,7 @@ void SceneReader::read_texture(const pugi::xml_node& node) {
     int mapping = 0, colorspace = -1;
     a.get("name", name);
     a.get("file", file);
-    a.get("mapping", mapping, {"uv", "planar", "spherical", "cylindrical"});
+    a.get("mapping", mapping, {"uv", "planar", "spherical", "cylindrical", "torus"});
     a.get("colorspace", colorspace, {"srgb", "linear"});
     a.finish();
     a.require("name");
@@ -156,7 +156,8 @@ void SceneReader::read_texture(const pugi::xml_node& node) {
     if (!std::filesystem::is_regular_file(t.path, ec))
         ctx_.fail(node, node.attribute("file"), "texture file '" + t.path + "' does not exist");
     constexpr TextureMapping kMappings[] = {TextureMapping::Uv, TextureMapping::Planar,
-                                            TextureMapping::Spherical, TextureMapping::Cylindrical};
+                                            TextureMapping::Spherical, TextureMapping::Cylindrical,
+                                            TextureMapping::Torus};
     t.mapping = kMappings[mapping];
     t.transform = placement.inverse();
     t.colorspace = colorspace == 0 ? "srgb" : colorspace == 1 ? "linear" : "";

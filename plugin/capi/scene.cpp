@@ -381,6 +381,9 @@ SHEAF_API SheafError sheafSceneAddTexture(SheafScene scene, const char* path,
         case SHEAF_MAPPING_CYLINDRICAL:
             t.mapping = sheaf::TextureMapping::Cylindrical;
             break;
+        case SHEAF_MAPPING_TORUS:
+            t.mapping = sheaf::TextureMapping::Torus;
+            break;
         default:
             throw InvalidArgument("texture mapping " + std::to_string(int(mapping)) +
                                   " is not a SheafTextureMapping");

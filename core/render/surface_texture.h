@@ -91,6 +91,14 @@ SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt,
             pt, depth < kMaxDepth ? pigment_grey(scene, uint32_t(pt.pigment), q, depth + 1) : 0);
     if (pt.kind == PatternKind::Slope)
         return pattern_detail::shape_value(pt, slope_raw(pt, q, world, n));
+    if (pt.kind == PatternKind::ImagePattern) { // POV-Ray's image_pattern: 0 off an image seen once
+        float s, t;
+        if (!scene.sampler || !texture_detail::image_point(scene, pt.image, q, 0, 0, s, t))
+            return pattern_detail::shape_value(pt, 0.0f);
+        const Vec3 c = texture_detail::sample_at(scene, pt.image, s, t);
+        return pattern_detail::shape_value(
+            pt, pattern_detail::clamp01(0.297f * c.x + 0.589f * c.y + 0.114f * c.z));
+    }
     if (pt.kind != PatternKind::Function) return pattern_value_at(pt, q);
     if (!scene.functions.programs || pt.program < 0) return 0.0f;
     const double args[3] = {q.x, q.y, q.z};

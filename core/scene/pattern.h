@@ -42,6 +42,7 @@ enum class PatternKind : uint8_t {
     Function,       // a user function's value (core/scene/function.h): Pattern::program
     Image,          // an image's colour (Pigment only): `image` in Scene::textures
     PigmentPattern, // the grey of a pigment (`pigment`) evaluated at the pattern-space point
+    ImagePattern,   // the grey of an image (`image`, mapped from pattern space; host only)
     // Discrete patterns: an index into the list of their entries.
     Checker,    // 2 entries
     Hexagon,    // 3 entries, tiles in the x-z plane
@@ -173,7 +174,9 @@ struct Pattern {
     float wave_exponent = 1.0f; // Wave::Poly
     Vec3 vector{0, 1, 0};       // Gradient: the direction
     float param[4] = {0, 0, 0, 0};
-    int32_t image = -1;   // Image: index into Scene::textures
+    // Image, ImagePattern: index into Scene::textures (an ImagePattern's texture transform
+    // maps from pattern space, so warps bend it)
+    int32_t image = -1;
     // PigmentPattern: index into Scene::pigments of a pigment placed in this pattern's space
     // (its transforms map from there, not from the world), whose grey 0.297 red + 0.589
     // green + 0.114 blue is the value.

@@ -381,7 +381,8 @@ void check_pattern(const Pattern& p, size_t textures, const std::vector<Warp>& w
         throw SceneError(name + ": a pattern parameter is out of range");
     if (p.kind == PatternKind::Function && p.program < 0)
         throw SceneError(name + ": a function pattern without a function");
-    if (p.kind == PatternKind::Image && (p.image < 0 || size_t(p.image) >= textures))
+    if ((p.kind == PatternKind::Image || p.kind == PatternKind::ImagePattern) &&
+        (p.image < 0 || size_t(p.image) >= textures))
         throw SceneError(name + " names texture " + std::to_string(p.image) +
                          ", which does not exist");
 }
@@ -396,7 +397,8 @@ void Scene::validate_functions() const {
         const Pattern& p = fn_patterns[i];
         check_pattern(p, textures.size(), warps, pigments.size(),
                       "function pattern " + std::to_string(i));
-        if (p.kind == PatternKind::Function || p.kind == PatternKind::Image)
+        if (p.kind == PatternKind::Function || p.kind == PatternKind::Image ||
+            p.kind == PatternKind::ImagePattern)
             throw SceneError("function pattern " + std::to_string(i) +
                              ": a function's pattern is no function or image");
     }

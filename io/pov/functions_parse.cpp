@@ -107,7 +107,8 @@ void Parser::parse_pattern_function(PovFunction& f) {
     if (!parse_pattern_name(pt, list, supported)) error_expected(name, "a pattern");
     while (!accept_sym("}"))
         if (!parse_pattern_modifier(pt, local)) error_expected(peek(), "a pattern modifier or '}'");
-    if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::Function) {
+    if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::ImagePattern ||
+        pt.kind == PatternKind::Function) {
         f.unsupported = f.scene_unsupported = "pattern function '" + name.text + "'";
         return;
     }
@@ -133,8 +134,8 @@ void Parser::parse_pigment_function(PovFunction& f) {
     for (int i = 0; i < 5; ++i) pf->pigment.color[i] = float(pg->color[i]);
     if (pg->patterned) {
         const PatternKind k = pg->pattern.kind;
-        if (pg->average || k == PatternKind::Image || k == PatternKind::Function ||
-            k == PatternKind::PigmentPattern || pg->entries.empty()) {
+        if (pg->average || k == PatternKind::Image || k == PatternKind::ImagePattern ||
+            k == PatternKind::Function || k == PatternKind::PigmentPattern || pg->entries.empty()) {
             f.unsupported =
                 "pigment function (of an average, image, function or pigment_pattern pigment)";
             return;

@@ -135,6 +135,9 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     p.warp_count = uint32_t(warps.size());
     scene_.warps.insert(scene_.warps.end(), warps.begin(), warps.end());
     if (pt.kind == PatternKind::Function && pt.function) p.program = function(*pt.function);
+    // image_pattern: the image is mapped from this pattern's space (after its warps).
+    if (pt.kind == PatternKind::ImagePattern && pt.image)
+        p.image = image(*pt.image, Affine(), "data");
     if (pt.kind == PatternKind::PigmentPattern && pt.pigment) {
         // Evaluated at this pattern's point: placed by its own transforms, inheriting nothing.
         const ScopedValue<bool> uv(uv_, false);

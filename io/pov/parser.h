@@ -300,6 +300,8 @@ class Parser {
     /// The items image_map and bump_map share (map_type, once, interpolate, use_color), read
     /// into img; false (nothing read) for any other.
     bool parse_image_item(PovImage& img);
+    /// image_pattern's block, after the keyword kw: { [type] "file" image items }.
+    std::shared_ptr<const PovImage> parse_image_pattern(const Token& kw);
     /// bump_map { [type] "file" map_type once interpolate use_color use_index bump_size }.
     void parse_bump_map(const Token& kw, PovNormal& n);
     /// After 'normal': { ... } on top of `base` (may be null); null when it changes nothing.

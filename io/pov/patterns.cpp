@@ -19,24 +19,42 @@ struct PatternInfo {
 
 const std::map<std::string, PatternInfo>& supported_patterns() {
     static const std::map<std::string, PatternInfo> m = {
-        {"agate", {PatternKind::Agate}},       {"boxed", {PatternKind::Boxed}},
-        {"bozo", {PatternKind::Bozo}},         {"spotted", {PatternKind::Bozo}},
-        {"bumps", {PatternKind::Bozo}},        {"brick", {PatternKind::Brick, 2}},
-        {"cells", {PatternKind::Cells}},       {"checker", {PatternKind::Checker, 2}},
-        {"crackle", {PatternKind::Crackle}},   {"cylindrical", {PatternKind::Cylindrical}},
-        {"dents", {PatternKind::Dents}},       {"gradient", {PatternKind::Gradient}},
-        {"granite", {PatternKind::Granite}},   {"hexagon", {PatternKind::Hexagon, 3}},
-        {"leopard", {PatternKind::Leopard}},   {"marble", {PatternKind::Marble}},
-        {"onion", {PatternKind::Onion}},       {"planar", {PatternKind::Planar}},
-        {"quilted", {PatternKind::Quilted}},   {"radial", {PatternKind::Radial}},
-        {"ripples", {PatternKind::Ripples}},   {"spherical", {PatternKind::Spherical}},
-        {"spiral1", {PatternKind::Spiral1}},   {"spiral2", {PatternKind::Spiral2}},
-        {"square", {PatternKind::Square, 4}},  {"triangular", {PatternKind::Triangular, 6}},
-        {"waves", {PatternKind::Waves}},       {"wood", {PatternKind::Wood}},
-        {"wrinkles", {PatternKind::Wrinkles}}, {"function", {PatternKind::Function}},
-        {"mandel", {PatternKind::Mandel}},     {"julia", {PatternKind::Julia}},
+        {"agate", {PatternKind::Agate}},
+        {"boxed", {PatternKind::Boxed}},
+        {"bozo", {PatternKind::Bozo}},
+        {"spotted", {PatternKind::Bozo}},
+        {"bumps", {PatternKind::Bozo}},
+        {"brick", {PatternKind::Brick, 2}},
+        {"cells", {PatternKind::Cells}},
+        {"checker", {PatternKind::Checker, 2}},
+        {"crackle", {PatternKind::Crackle}},
+        {"cylindrical", {PatternKind::Cylindrical}},
+        {"dents", {PatternKind::Dents}},
+        {"gradient", {PatternKind::Gradient}},
+        {"granite", {PatternKind::Granite}},
+        {"hexagon", {PatternKind::Hexagon, 3}},
+        {"leopard", {PatternKind::Leopard}},
+        {"marble", {PatternKind::Marble}},
+        {"onion", {PatternKind::Onion}},
+        {"planar", {PatternKind::Planar}},
+        {"quilted", {PatternKind::Quilted}},
+        {"radial", {PatternKind::Radial}},
+        {"ripples", {PatternKind::Ripples}},
+        {"spherical", {PatternKind::Spherical}},
+        {"spiral1", {PatternKind::Spiral1}},
+        {"spiral2", {PatternKind::Spiral2}},
+        {"square", {PatternKind::Square, 4}},
+        {"triangular", {PatternKind::Triangular, 6}},
+        {"waves", {PatternKind::Waves}},
+        {"wood", {PatternKind::Wood}},
+        {"wrinkles", {PatternKind::Wrinkles}},
+        {"function", {PatternKind::Function}},
+        {"mandel", {PatternKind::Mandel}},
+        {"julia", {PatternKind::Julia}},
         {"magnet", {PatternKind::Mandel}}, // magnet 1 mandel 50, magnet 2 julia <c>, 50
-        {"slope", {PatternKind::Slope}},       {"pigment_pattern", {PatternKind::PigmentPattern}},
+        {"slope", {PatternKind::Slope}},
+        {"pigment_pattern", {PatternKind::PigmentPattern}},
+        {"image_pattern", {PatternKind::ImagePattern}},
     };
     return m;
 }
@@ -44,7 +62,7 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},    {"cubic", 6},    {"density_file", 0}, {"facets", 0},  {"image_pattern", 0},
+        {"aoi", 0},    {"cubic", 6},    {"density_file", 0}, {"facets", 0},
         {"object", 2}, {"pavement", 0}, {"tiling", 0},       {"fractal", 0},
     };
     return m;
@@ -82,6 +100,7 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         }
         if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
         if (k == "pigment_pattern") pt.pigment = parse_pigment(PovPigment{});
+        if (k == "image_pattern") pt.image = parse_image_pattern(t);
         if (k == "mandel" || k == "julia" || k == "magnet") parse_fractal(pt, k);
         if (k == "slope") parse_slope(pt, t);
         if (k == "quilted") { // control0 and control1 follow as modifiers

@@ -263,6 +263,27 @@ bool Parser::parse_image_item(PovImage& img) {
     return true;
 }
 
+std::shared_ptr<const PovImage> Parser::parse_image_pattern(const Token& kw) {
+    expect_sym("{");
+    const std::shared_ptr<PovImage> img = parse_image_file(kw);
+    for (;;) {
+        const Token t = peek();
+        if (accept_sym("}")) break;
+        if (parse_image_item(*img) || accept_kw("use_index")) {
+        } else if (accept_kw("use_alpha")) {
+            unsupported(t, "image_pattern use_alpha (the grey is used)");
+        } else if (accept_kw("gamma")) {
+            parse_float();
+        } else if (accept_kw("premultiplied")) {
+            parse_bool_opt(true);
+        } else {
+            error_expected(t, "an image_pattern item (map_type, once, interpolate, use_alpha "
+                              "...) or '}'");
+        }
+    }
+    return img;
+}
+
 void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
     expect_sym("{");
     const std::shared_ptr<PovImage> img = parse_image_file(kw);

@@ -403,6 +403,51 @@ TEST(PovTextures, ImageMapsAreTextures) {
     EXPECT_EQ(off.transmit, 1);
 }
 
+// image_pattern: the grey of the image (0.297 red + 0.589 green + 0.114 blue, its values as
+// stored) is the pattern's value, mapped from pattern space, so transforms and warps move it.
+TEST(PovTextures, ImagePatternIsTheImagesGrey) {
+    test::TempDir d;
+    // A 2 x 2 image: red, green / blue, white.
+    const std::string png = d.path() + "/tiles.png";
+    const float px[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    auto out = OIIO::ImageOutput::create(png);
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
+    out->close();
+    const PovResult r = load_pov_scene(
+        d.write("scene.pov", "plane { z, 0 pigment { image_pattern { png \"tiles.png\" once }\n"
+                             "  color_map { [0 rgb 0] [1 rgb <1, 0, 0>] } translate <2, 0, 0> }\n"
+                             "  normal { image_pattern { png \"tiles.png\" } 0.5 } }\n"));
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.at(0);
+    ASSERT_EQ(r.scene.textures.size(), 2u); // pigment and normal each map it once
+    EXPECT_EQ(r.scene.textures[0].colorspace, "data");
+    const Pigment& pg = r.scene.pigments[size_t(shape_material(r).pigment)];
+    EXPECT_EQ(pg.pattern.kind, PatternKind::ImagePattern);
+    EXPECT_EQ(r.scene.normal_patterns.at(0).pattern.kind, PatternKind::ImagePattern);
+    PreparedScene p = prepare_scene(r.scene);
+    io::attach_texture_sampler(p);
+    const SceneView v(p);
+    const uint32_t pigment = uint32_t(shape_material(r).pigment);
+    auto red = [&](float x, float y) {
+        return evaluate_pigment(v, pigment, Vec3(x, y, 0), 0, 0, Vec3(0, 0, -1)).rgb.x;
+    };
+    EXPECT_NEAR(red(2.25f, 0.75f), 0.297f, 0.01f); // red, top left (moved by the translate)
+    EXPECT_NEAR(red(2.75f, 0.75f), 0.589f, 0.01f); // green
+    EXPECT_NEAR(red(2.25f, 0.25f), 0.114f, 0.01f); // blue
+    EXPECT_NEAR(red(2.75f, 0.25f), 1.0f, 0.01f);   // white
+    EXPECT_NEAR(red(3.25f, 0.75f), 0.0f, 0.01f);   // off an image seen once: 0
+    // Not in a function: programs run without the image.
+    EXPECT_NE(load_text("#declare F = function { pattern { image_pattern { png \"" + png +
+                        "\" } } }\nsphere { 0, 1 pigment { function { F(x, y, z) } } }\n")
+                  .warnings.at(0)
+                  .find("unsupported pigment pattern 'function'"),
+              std::string::npos);
+    EXPECT_NE(error_of("plane { z, 0 pigment { image_pattern { png \"" + png + "\" tile } } }")
+                  .find("expected an image_pattern item"),
+              std::string::npos);
+}
+
 // map_type 1, 2 and 5 read the image where POV-Ray does: u is the longitude from +x turning
 // toward +z (a cylinder seen from -z shows the image's right half, not mirrored), v the
 // latitude, the height, or the angle around the torus's unit ring (3/4 on its top).
@@ -917,16 +962,15 @@ TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
 TEST(PovTextures, NormalsComeFromArraysAndMayBeDeclaredFlat) {
     // The portfolio's allnormals.pov: normal { normalArr[i] }, of normals whose pattern Sheaf
     // does not have (declared flat, warned where used).
-    const PovResult r =
-        load_text("#declare Flat = normal { image_pattern { png \"none.png\" } 1 }\n"
-                  "#declare N = normal { ripples 0.7 }\n"
-                  "#declare A = array[2] { Flat, N }\n"
-                  "#declare B = array[2] { N, N }\n"
-                  "sphere { 0, 1 pigment { rgb 1 } normal { B[1] } }\n"
-                  "sphere { 0, 1 pigment { rgb 1 } normal { A[0] } }\n"
-                  "sphere { 0, 1 pigment { rgb 1 } normal { A[1] } }\n"
-                  "#declare C = array[2] { N, Flat }\n" // a flat one after a normal
-                  "sphere { 0, 1 pigment { rgb 1 } normal { C[1] } }\n");
+    const PovResult r = load_text("#declare Flat = normal { facets size 0.1 1 }\n"
+                                  "#declare N = normal { ripples 0.7 }\n"
+                                  "#declare A = array[2] { Flat, N }\n"
+                                  "#declare B = array[2] { N, N }\n"
+                                  "sphere { 0, 1 pigment { rgb 1 } normal { B[1] } }\n"
+                                  "sphere { 0, 1 pigment { rgb 1 } normal { A[0] } }\n"
+                                  "sphere { 0, 1 pigment { rgb 1 } normal { A[1] } }\n"
+                                  "#declare C = array[2] { N, Flat }\n" // a flat one after a normal
+                                  "sphere { 0, 1 pigment { rgb 1 } normal { C[1] } }\n");
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("scene.pov:1:"), std::string::npos) << r.warnings[0];
     EXPECT_EQ(r.scene.normal_patterns[size_t(shape_material(r, 0).normal)].pattern.kind,

@@ -147,10 +147,11 @@ struct Evaluator {
         }
         const Pattern& pt = pg.pattern;
         const Vec3 at = pt.uv ? Vec3(uv_s, uv_t, 0.0f) : p; // where the pattern is evaluated
-        if (pt.kind == PatternKind::Image) {
+        if (pt.kind == PatternKind::Image) { // mapped from pattern space: warps bend it
             if (!scene.sampler) return {Vec3(0.5f), 0, 0};
             float s, t;
-            if (!texture_detail::image_point(scene, pt.image, at, uv_s, uv_t, s, t))
+            const Vec3 q = pattern_point(pt, at, scene.warps);
+            if (!texture_detail::image_point(scene, pt.image, q, uv_s, uv_t, s, t))
                 return {Vec3(1.0f), 0, 1}; // off an image seen once: clear, as POV-Ray's
             const Vec3 c = texture_detail::sample_at(scene, pt.image, s, t);
             const SurfaceColor tint = entry_color(entries[0]); // filter and transmit of the map

@@ -373,8 +373,6 @@ void check_pattern(const Pattern& p, size_t textures, const std::vector<Warp>& w
     if (!p.to_pattern.finite()) throw SceneError(name + ": its transform is not finite");
     if (size_t(p.warp_first) + p.warp_count > warps.size())
         throw SceneError(name + ": its warps lie outside the scene's warps");
-    if (p.warp_count > 0 && p.kind == PatternKind::Image)
-        throw SceneError(name + ": an image's pattern cannot be warped");
     for (uint32_t i = 0; i < p.warp_count; ++i) check_warp(warps[p.warp_first + i], name);
     if (!is_finite(p.turbulence) || !std::isfinite(p.frequency) || !std::isfinite(p.phase) ||
         !is_finite(p.vector) || p.octaves < 1 || p.octaves > 16)

@@ -119,7 +119,7 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     } else if (!pattern_space_) { // Sheaf world -> POV-Ray world (the z mirror) -> its space
         p.to_pattern = p.to_pattern * pov_to_sheaf();
     }
-    if (!chain_.warps.empty() && chain_.uv == p.uv && pt.kind != PatternKind::Image) {
+    if (!chain_.warps.empty() && chain_.uv == p.uv && !pt.bump_map) {
         // In a warped pigment's map: through its chain into its pattern space, then from
         // there into this pattern's (to_pattern relative to the warped pigment's space).
         const bool mirrored = !p.uv && !pattern_space_; // as to_pattern was made above
@@ -310,7 +310,7 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
         for (const PovMapEntry& e : pg.entries) entries.push_back(entry(e, eff));
     }
     if (pg.pattern.kind == PatternKind::Image && pg.pattern.image)
-        out.pattern.image = image(*pg.pattern.image, out.pattern.to_pattern);
+        out.pattern.image = image(*pg.pattern.image, Affine()); // from the pattern's space
     out.first = uint32_t(scene_.pigment_entries.size());
     out.count = uint32_t(entries.size());
     scene_.pigment_entries.insert(scene_.pigment_entries.end(), entries.begin(), entries.end());

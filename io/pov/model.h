@@ -65,6 +65,7 @@ struct PovPattern {
     Vec3 vector{0, 1, 0}; // gradient
     double param[4] = {0, 0, 0, 0};
     std::shared_ptr<const PovImage> image;
+    bool bump_map = false; // kind Image in a normal: its image's heights tilt the normal
     std::shared_ptr<const PovFunction> function; // kind Function
     FractalParams fractal;                       // kinds Mandel and Julia
     // Slope: `vector` is its direction (or point, point_at) in POV-Ray's world, param[0..3]

@@ -137,6 +137,7 @@ void Parser::parse_bump_map(const Token& kw, PovNormal& n) {
         }
     }
     n.pattern.kind = PatternKind::Image;
+    n.pattern.bump_map = true;
     n.pattern.image = img;
     n.slope_scale = 1; // the image's heights tilt the normal as POV-Ray's do
     n.own_normal = true;

@@ -323,8 +323,8 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
                           "toroidal, cubic or black_hole)");
     }
     expect_sym("}");
-    if (pt.kind == PatternKind::Image) {
-        unsupported(w, "warp of an image (ignored)");
+    if (pt.bump_map) {
+        unsupported(w, "warp of a bump_map (ignored)");
         return;
     }
     pt.warps.push_back({out, local});

@@ -448,6 +448,42 @@ TEST(PovTextures, ImagePatternIsTheImagesGrey) {
               std::string::npos);
 }
 
+// An image_map is mapped from its pigment's pattern space, so warps and turbulence bend it
+// as they bend any pattern (textures/pigments/warp1.pov).
+TEST(PovTextures, WarpsBendImageMaps) {
+    test::TempDir d;
+    const std::string png = d.path() + "/tiles.png"; // red, green / blue, white
+    const float px[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    auto out = OIIO::ImageOutput::create(png);
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
+    out->close();
+    const PovResult r = load_pov_scene(
+        d.write("scene.pov",
+                "plane { z, 0 pigment { image_map { png \"tiles.png\" } warp { repeat 0.5 * x }"
+                " translate 1 * x } }\n"));
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.at(0);
+    PreparedScene p = prepare_scene(r.scene);
+    io::attach_texture_sampler(p);
+    const SceneView v(p);
+    const uint32_t pigment = uint32_t(shape_material(r).pigment);
+    auto at = [&](float x, float y) {
+        return evaluate_pigment(v, pigment, Vec3(x, y, 0), 0, 0, Vec3(0, 0, -1)).rgb;
+    };
+    // The left half of the image repeats: red where green was, blue where white was.
+    EXPECT_GT(at(1.75f, 0.75f).x, 0.9f);
+    EXPECT_LT(at(1.75f, 0.75f).y, 0.1f);
+    EXPECT_GT(at(1.75f, 0.25f).z, 0.9f);
+    EXPECT_LT(at(1.75f, 0.25f).x, 0.1f);
+    // A bump_map's image is not warped (warned).
+    const PovResult bump = load_pov_scene(
+        d.write("bump.pov", "plane { z, 0 normal { bump_map { png \"tiles.png\" } warp { repeat "
+                            "0.5 * x } } }\n"));
+    ASSERT_EQ(bump.warnings.size(), 1u);
+    EXPECT_NE(bump.warnings[0].find("unsupported warp of a bump_map"), std::string::npos);
+}
+
 // map_type 1, 2 and 5 read the image where POV-Ray does: u is the longitude from +x turning
 // toward +z (a cylinder seen from -z shows the image's right half, not mirrored), v the
 // latitude, the height, or the angle around the torus's unit ring (3/4 on its top).
@@ -483,8 +519,11 @@ TEST(PovTextures, ImageMapTypesReadPovRaysLongitude) {
         ASSERT_EQ(r.scene.textures.size(), 1u);
         EXPECT_EQ(r.scene.textures[0].mapping, c.mapping);
         float s = 0, t = 0;
-        // c.p is POV-Ray's point; Sheaf's world is POV-Ray's mirrored in z.
-        texture_coordinates(r.scene.textures[0], Vec3(c.p.x, c.p.y, -c.p.z), 0, 0, s, t);
+        // c.p is POV-Ray's point; Sheaf's world is POV-Ray's mirrored in z. The image is
+        // mapped from the pigment's pattern space.
+        const Pattern& pt = r.scene.pigments[size_t(shape_material(r).pigment)].pattern;
+        const Vec3 q = pattern_point(pt, Vec3(c.p.x, c.p.y, -c.p.z), r.scene.warps.data());
+        texture_coordinates(r.scene.textures[0], q, 0, 0, s, t);
         EXPECT_NEAR(s - std::floor(s), c.u, 1e-5f) << c.p.x << ' ' << c.p.y << ' ' << c.p.z;
         EXPECT_NEAR(t, c.v, 1e-5f) << c.p.x << ' ' << c.p.y << ' ' << c.p.z;
     }

@@ -166,7 +166,9 @@ TEST(XmlPatterns, EveryElementLoadsIntoTheSceneArrays) {
     ASSERT_EQ(picture.count, 1u);
     EXPECT_FLOAT_EQ(s.pigment_entries[picture.first].color[0], 1.0f);
     EXPECT_FLOAT_EQ(s.pigment_entries[picture.first].color[4], 0.3f);
-    expect_near(picture.pattern.to_pattern.point(Vec3(2, 4, 6)), Vec3(1, 2, 3));
+    // Placed by the texture's transform, from the pattern's space (here the world's).
+    expect_near(s.textures[0].transform.point(Vec3(2, 4, 6)), Vec3(1, 2, 3));
+    expect_near(picture.pattern.to_pattern.point(Vec3(2, 4, 6)), Vec3(2, 4, 6));
 
     // The patterns' own parameters.
     EXPECT_EQ(wall.pattern.kind, PatternKind::Brick);

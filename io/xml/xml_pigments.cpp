@@ -121,7 +121,7 @@ void SceneReader::read_pigment(const pugi::xml_node& node) {
         pg.solid = false;
         pg.pattern.kind = PatternKind::Image;
         pg.pattern.image = int32_t(image);
-        pg.pattern.to_pattern = scene_.textures[image].transform;
+        pg.pattern.to_pattern = Affine(); // the texture's own transform places the image
         entries.push_back(tint);
     } else {
         if (patterned) pg.pattern = read_pattern(a, kind);

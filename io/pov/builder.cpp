@@ -22,6 +22,21 @@ Affine pov_to_sheaf() {
 
 namespace {
 
+/// Whether transform a squeezes space to a segment or a point (its linear part's rank at
+/// most 1: every 2 x 2 minor negligible against its largest entry squared).
+bool squeezed_to_a_line(const Affine& a) {
+    double big = 0, minor = 0;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) big = std::max(big, std::fabs(double(a.m[r][c])));
+    for (int r1 = 0; r1 < 3; ++r1)
+        for (int r2 = r1 + 1; r2 < 3; ++r2)
+            for (int c1 = 0; c1 < 3; ++c1)
+                for (int c2 = c1 + 1; c2 < 3; ++c2)
+                    minor = std::max(minor, std::fabs(double(a.m[r1][c1]) * a.m[r2][c2] -
+                                                      double(a.m[r1][c2]) * a.m[r2][c1]));
+    return minor <= 1e-10 * big * big;
+}
+
 /// The aa.samples value that gives a pixel `samples` samples or more: n x n of them, n within
 /// the setting's range (an explicit aa.samples, +A or -A, overrides the scene's).
 std::string aa_samples_for(int samples) {
@@ -242,6 +257,9 @@ struct Builder {
                 p.error_at(o.where, "the shape's size or placement is not a finite number "
                                     "(a division by zero, or a scale beyond 1e38?)");
             if (!(std::fabs(o.local.determinant()) >= 1e-20f)) { // as Scene::validate
+                // Squeezed to a segment or a point, a solid has no surface to show: among
+                // unions, leaving it out is exact.
+                if (in_union && !o.inverse && squeezed_to_a_line(o.local)) return -1;
                 p.unsupported(o.where, "degenerate shape (a zero scale; left out)");
                 return -1;
             }
@@ -274,6 +292,15 @@ struct Builder {
                     p.unsupported(c.where, "mesh inside merge (rendered as in a union)");
                     break;
                 }
+        // An intersection with, or a difference from, a solid squeezed to a segment or a
+        // point is empty: among unions, leaving it out is exact.
+        if (in_union && !o.inverse && (o.op == CsgOp::Intersection || o.op == CsgOp::Difference))
+            for (size_t i = 0; i < (o.op == CsgOp::Difference ? 1 : o.children.size()); ++i) {
+                const PovObject& c = o.children[i];
+                if (c.kind == PovKind::Shape && !c.inverse &&
+                    !(std::fabs(c.local.determinant()) >= 1e-20f) && squeezed_to_a_line(c.local))
+                    return -1;
+            }
         std::vector<uint32_t> kids;
         for (size_t i = 0; i < o.children.size(); ++i) {
             const int k = node(o.children[i], tex, in, inside, flags, so, uni && in_union);

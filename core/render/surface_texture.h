@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/math/hd_math.h"
+#include "core/render/density_grid.h"
 #include "core/render/pattern_eval.h"
 #include "core/render/texture.h"
 #include "core/scene/function.h"
@@ -91,6 +92,11 @@ SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt,
             pt, depth < kMaxDepth ? pigment_grey(scene, uint32_t(pt.pigment), q, depth + 1) : 0);
     if (pt.kind == PatternKind::Slope)
         return pattern_detail::shape_value(pt, slope_raw(pt, q, world, n));
+    if (pt.kind == PatternKind::DensityFile)
+        return pattern_detail::shape_value(
+            pt, pt.grid >= 0 && scene.density_grids
+                    ? density_value(scene.density_grids[pt.grid], scene.density_voxels, q)
+                    : 0.0f);
     if (pt.kind == PatternKind::ImagePattern) { // POV-Ray's image_pattern: 0 off an image seen once
         float s, t;
         if (!scene.sampler || !texture_detail::image_point(scene, pt.image, q, 0, 0, s, t))

@@ -43,6 +43,7 @@ enum class PatternKind : uint8_t {
     Image,          // an image's colour (Pigment only): `image` in Scene::textures
     PigmentPattern, // the grey of a pigment (`pigment`) evaluated at the pattern-space point
     ImagePattern,   // the grey of an image (`image`, mapped from pattern space; host only)
+    DensityFile,    // a voxel grid's value in the unit cube (`grid` in Scene::density_grids)
     // Discrete patterns: an index into the list of their entries.
     Checker,    // 2 entries
     Hexagon,    // 3 entries, tiles in the x-z plane
@@ -154,6 +155,14 @@ struct Warp {
     float f[3] = {0, 0, 0}; // see WarpKind
 };
 
+/// A voxel grid over the unit cube (POV-Ray's density_file): nx x ny x nz values in [0, 1] at
+/// Scene::density_voxels[first ...], x fastest, then y, then z; 0 outside the cube.
+struct DensityGrid {
+    uint32_t first = 0;
+    uint32_t nx = 0, ny = 0, nz = 0;
+    uint32_t interpolation = 0; // 0 the nearest voxel, 1 trilinear, 2 tricubic
+};
+
 struct Pattern {
     PatternKind kind = PatternKind::Gradient;
     Wave wave = Wave::Ramp;
@@ -182,6 +191,7 @@ struct Pattern {
     // green + 0.114 blue is the value.
     int32_t pigment = -1;
     int32_t program = -1; // Function: index into Scene::fn_programs
+    int32_t grid = -1;    // DensityFile: index into Scene::density_grids
     FractalParams fractal; // Mandel, Julia
     SlopeParams slope;     // Slope
 };

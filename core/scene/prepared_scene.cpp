@@ -163,6 +163,8 @@ void copy_texture_tables(const Scene& scene, PreparedScene& p) {
     p.material_entries = scene.material_entries;
     p.media = scene.media;
     p.medium_densities = scene.medium_densities;
+    p.density_grids = scene.density_grids;
+    p.density_voxels = scene.density_voxels;
     p.fn_programs = scene.fn_programs;
     p.fn_code = scene.fn_code;
     p.fn_patterns = scene.fn_patterns;

@@ -88,6 +88,8 @@ struct PreparedScene {
     std::vector<MaterialEntry> material_entries;
     std::vector<Medium> media;
     std::vector<uint32_t> medium_densities;
+    std::vector<DensityGrid> density_grids;
+    std::vector<float> density_voxels;
     // The analytic primitives some of whose shapes hold media (0-based among the analytic
     // ones; core/render/media.h), and the solid ones (kSolid) that media leave out: all of
     // them with an atmosphere, else those whose bounds meet a container's.

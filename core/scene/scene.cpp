@@ -366,7 +366,10 @@ void check_warp(const Warp& w, const std::string& name) {
 // `pigments`: how many pigments a pigment pattern may name (a pigment's pattern only earlier
 // ones, so pigments cannot hold themselves).
 void check_pattern(const Pattern& p, size_t textures, const std::vector<Warp>& warps,
-                   size_t pigments, const std::string& name) {
+                   size_t pigments, const std::string& name, size_t grids) {
+    if (p.kind == PatternKind::DensityFile && (p.grid < 0 || size_t(p.grid) >= grids))
+        throw SceneError(name + ": its density_file names grid " + std::to_string(p.grid) +
+                         ", which does not exist");
     if (p.kind == PatternKind::PigmentPattern && (p.pigment < 0 || size_t(p.pigment) >= pigments))
         throw SceneError(name + ": its pigment pattern names pigment " + std::to_string(p.pigment) +
                          ", which is not an earlier pigment");
@@ -394,7 +397,7 @@ void Scene::validate_functions() const {
         // renderer's depth limit (kMaxDepth) bounds pigments and functions that name each other.
         const Pattern& p = fn_patterns[i];
         check_pattern(p, textures.size(), warps, pigments.size(),
-                      "function pattern " + std::to_string(i));
+                      "function pattern " + std::to_string(i), density_grids.size());
         if (p.kind == PatternKind::Function || p.kind == PatternKind::Image ||
             p.kind == PatternKind::ImagePattern)
             throw SceneError("function pattern " + std::to_string(i) +
@@ -448,7 +451,7 @@ void Scene::validate_patterns() const {
         const Pigment& pg = pigments[i];
         const std::string name = "pigment " + std::to_string(i);
         if (pg.solid) continue;
-        check_pattern(pg.pattern, textures.size(), warps, i, name);
+        check_pattern(pg.pattern, textures.size(), warps, i, name, density_grids.size());
         if (!range(pg.first, pg.count, pigment_entries.size()))
             throw SceneError(name + ": its entries lie outside the pigment entries");
         for (uint32_t e = pg.first; e < pg.first + pg.count; ++e) {
@@ -463,7 +466,8 @@ void Scene::validate_patterns() const {
     for (size_t i = 0; i < normal_patterns.size(); ++i) {
         const NormalPattern& np = normal_patterns[i];
         const std::string name = "normal pattern " + std::to_string(i);
-        check_pattern(np.pattern, textures.size(), warps, pigments.size(), name);
+        check_pattern(np.pattern, textures.size(), warps, pigments.size(), name,
+                      density_grids.size());
         if (!range(np.slope_first, np.slope_count, slope_entries.size()))
             throw SceneError(name + " names slope map entries that do not exist");
         for (uint32_t k = 0; k < np.slope_count; ++k) {
@@ -495,7 +499,8 @@ void Scene::validate_patterns() const {
     for (size_t i = 0; i < material_switches.size(); ++i) {
         const MaterialSwitch& ms = material_switches[i];
         const std::string name = "material switch " + std::to_string(i);
-        check_pattern(ms.pattern, textures.size(), warps, pigments.size(), name);
+        check_pattern(ms.pattern, textures.size(), warps, pigments.size(), name,
+                      density_grids.size());
         if (ms.count == 0 || !range(ms.first, ms.count, material_entries.size()))
             throw SceneError(name + ": its entries lie outside the material entries");
         for (uint32_t e = ms.first; e < ms.first + ms.count; ++e)
@@ -541,6 +546,19 @@ void Scene::validate_patterns() const {
         for (uint32_t d = md.density_first; d < md.density_first + md.density_count; ++d)
             if (medium_densities[d] >= pigments.size())
                 throw SceneError(name + ": a density names a pigment that does not exist");
+    }
+    for (size_t i = 0; i < density_grids.size(); ++i) {
+        const DensityGrid& g = density_grids[i];
+        const std::string name = "density grid " + std::to_string(i);
+        if (g.nx == 0 || g.ny == 0 || g.nz == 0 || g.interpolation > 2)
+            throw SceneError(name + ": it needs a size of at least 1 x 1 x 1 and an "
+                                    "interpolation of 0, 1 or 2");
+        const uint64_t n = uint64_t(g.nx) * g.ny * g.nz;
+        if (g.first > density_voxels.size() || n > density_voxels.size() - g.first)
+            throw SceneError(name + ": its voxels lie outside the density voxels");
+        for (uint64_t k = 0; k < n; ++k)
+            if (!(density_voxels[g.first + k] >= 0 && density_voxels[g.first + k] <= 1))
+                throw SceneError(name + ": a voxel's value is not in [0, 1]");
     }
     // A switch may lead to materials with switches of their own, but never back to itself:
     // depth-first, 1 = on the current path, 2 = done.

@@ -353,6 +353,8 @@ class Scene {
     std::vector<Warp> warps;                // the patterns' warps (Pattern::warp_first)
     std::vector<Medium> media;              // indexed by Material::media_first
     std::vector<uint32_t> medium_densities; // pigments, indexed by Medium::density_first
+    std::vector<DensityGrid> density_grids; // the density_file patterns' grids (Pattern::grid)
+    std::vector<float> density_voxels;      // and their values
     // User functions (core/scene/function.h), run by function patterns and isosurfaces:
     // programs, their code, and the patterns and pigments their instructions read.
     std::vector<FnProgram> fn_programs;

@@ -203,5 +203,34 @@ TEST(SceneValidate, ScatteringMediaAreChecked) {
     EXPECT_EQ(error_of(with(md)), "medium 0: samples and light_samples must lie in 1..1024");
 }
 
+TEST(SceneValidate, DensityGridsAreChecked) {
+    Scene s = one_sphere({});
+    s.density_voxels = {0, 0.5f, 1, 0.25f};
+    DensityGrid g;
+    g.nx = 2, g.ny = 2, g.nz = 1, g.interpolation = 2;
+    s.density_grids.push_back(g);
+    Pigment pg;
+    pg.solid = false;
+    pg.pattern.kind = PatternKind::DensityFile;
+    pg.pattern.grid = 0;
+    pg.first = uint32_t(s.pigment_entries.size());
+    pg.count = 1;
+    s.pigment_entries.emplace_back();
+    s.pigments.push_back(pg);
+    EXPECT_EQ(error_of(s), "");
+    s.pigments.back().pattern.grid = 1;
+    EXPECT_EQ(error_of(s), "pigment " + std::to_string(s.pigments.size() - 1) +
+                               ": its density_file names grid 1, which does not exist");
+    s.pigments.back().pattern.grid = 0;
+    s.density_grids[0].first = 1; // four voxels from 1 pass the end
+    EXPECT_EQ(error_of(s), "density grid 0: its voxels lie outside the density voxels");
+    s.density_grids[0].first = 0;
+    s.density_voxels[2] = 1.5f;
+    EXPECT_EQ(error_of(s), "density grid 0: a voxel's value is not in [0, 1]");
+    s.density_voxels[2] = 1;
+    s.density_grids[0].interpolation = 3;
+    EXPECT_NE(error_of(s).find("an interpolation of 0, 1 or 2"), std::string::npos);
+}
+
 } // namespace
 } // namespace sheaf

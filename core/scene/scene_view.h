@@ -54,6 +54,8 @@ struct SceneView {
     const MaterialEntry* material_entries = nullptr;
     const Medium* media = nullptr;
     const uint32_t* medium_densities = nullptr;
+    const DensityGrid* density_grids = nullptr;
+    const float* density_voxels = nullptr;
     const uint32_t* media_containers = nullptr; // PreparedScene::media_containers
     uint32_t media_container_count = 0;
     const uint32_t* media_solids = nullptr; // PreparedScene::media_solids
@@ -104,7 +106,8 @@ struct SceneView {
           slope_entries(p.slope_entries.data()), normal_map_entries(p.normal_map_entries.data()),
           material_switches(p.material_switches.data()), warps(p.warps.data()),
           material_entries(p.material_entries.data()), media(p.media.data()),
-          medium_densities(p.medium_densities.data()), media_containers(p.media_containers.data()),
+          medium_densities(p.medium_densities.data()), density_grids(p.density_grids.data()),
+          density_voxels(p.density_voxels.data()), media_containers(p.media_containers.data()),
           media_container_count(uint32_t(p.media_containers.size())),
           media_solids(p.media_solids.data()), media_solid_count(uint32_t(p.media_solids.size())),
           atmosphere(p.atmosphere), functions{p.fn_programs.data(),        p.fn_code.data(),

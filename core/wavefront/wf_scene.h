@@ -137,6 +137,8 @@ template <class Exec> class DeviceScene {
         f(p.material_entries, v.material_entries);
         f(p.media, v.media);
         f(p.medium_densities, v.medium_densities);
+        f(p.density_grids, v.density_grids);
+        f(p.density_voxels, v.density_voxels);
         f(p.media_containers, v.media_containers);
         f(p.media_solids, v.media_solids);
         f(p.lights, v.lights);

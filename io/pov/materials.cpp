@@ -135,6 +135,7 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     p.warp_count = uint32_t(warps.size());
     scene_.warps.insert(scene_.warps.end(), warps.begin(), warps.end());
     if (pt.kind == PatternKind::Function && pt.function) p.program = function(*pt.function);
+    if (pt.kind == PatternKind::DensityFile && pt.density) p.grid = density_grid(*pt.density);
     // image_pattern: the image is mapped from this pattern's space (after its warps).
     if (pt.kind == PatternKind::ImagePattern && pt.image)
         p.image = image(*pt.image, Affine(), "data");
@@ -230,6 +231,19 @@ Pattern lower_pattern(const PovPattern& pt, const Affine& eff, std::vector<Warp>
         warps->push_back(w);
     }
     return p;
+}
+
+int32_t MaterialBuilder::density_grid(const PovDensity& d) {
+    auto [it, added] = voxels_.emplace(d.values.get(), uint32_t(scene_.density_voxels.size()));
+    if (added)
+        scene_.density_voxels.insert(scene_.density_voxels.end(), d.values->begin(),
+                                     d.values->end());
+    DensityGrid g;
+    g.first = it->second;
+    g.nx = d.nx, g.ny = d.ny, g.nz = d.nz;
+    g.interpolation = uint32_t(d.interpolation);
+    scene_.density_grids.push_back(g);
+    return int32_t(scene_.density_grids.size() - 1);
 }
 
 int32_t MaterialBuilder::image(const PovImage& img, const Affine& to_pattern,

@@ -79,6 +79,8 @@ class MaterialBuilder {
     /// A pigment composing `layers` (bottom first) by their filter and transmit.
     int32_t layer_pigment(const std::vector<PigmentEntry>& layers);
     Pattern pattern(const PovPattern& pt, const Affine& eff);
+    /// The scene's grid for a density_file (its voxels copied once per file).
+    int32_t density_grid(const PovDensity& d);
     int32_t image(const PovImage& img, const Affine& to_pattern,
                   const std::string& colorspace = "");
 
@@ -87,6 +89,7 @@ class MaterialBuilder {
     std::map<std::string, uint32_t> plain_; // materials without patterns, by their values
     std::map<std::pair<uint32_t, int32_t>, uint32_t> insides_; // (front, inside) -> material
     std::map<std::string, int32_t> images_; // image textures by file and transform
+    std::map<const void*, uint32_t> voxels_; // density_file voxels by file: their first
     FnCompiler functions_;
     // While set, the patterns made are uv-mapped (Pattern::uv): inside a uv_mapping texture or
     // pigment. uv_patterns_ counts them, so material() can tell which materials have them.

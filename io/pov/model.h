@@ -40,6 +40,15 @@ struct PovFinish {
     bool operator==(const PovFinish&) const = default;
 };
 
+/// A density_file's voxels (io/pov/density_file.cpp): nx x ny x nz values in [0, 1], x
+/// fastest, and how the pattern reads between them (`interpolate`: 0 none, 1 trilinear,
+/// 2 tricubic).
+struct PovDensity {
+    uint32_t nx = 0, ny = 0, nz = 0;
+    std::shared_ptr<const std::vector<float>> values; // shared by the patterns of one file
+    int interpolation = 0;
+};
+
 /// An image for image_map (and the image pattern): the file and how it is wrapped.
 struct PovImage {
     std::string path;        // resolved against the scene's folder and the include paths
@@ -80,6 +89,7 @@ struct PovPattern {
     };
     std::vector<DeclaredWarp> warps;
     std::shared_ptr<const PovPigment> pigment; // kind PigmentPattern
+    std::shared_ptr<const PovDensity> density; // kind DensityFile
 };
 
 /// An entry of a colour map, pigment map or list: a colour, or a pigment.

@@ -326,6 +326,9 @@ class Parser {
     /// The slope pattern's direction (or point_at point), ranges and altitude after its
     /// `keyword` (io/pov/slope_pattern.cpp).
     void parse_slope(PovPattern& pt, const Token& keyword);
+    /// density_file's `df3 "file"` after its keyword: the voxels read
+    /// (io/pov/density_file.cpp).
+    std::shared_ptr<const PovDensity> parse_density_file(const Token& keyword);
     bool parse_pattern_modifier(PovPattern& pt, Affine& local);
     void parse_warp(PovPattern& pt, const Affine& local); // after `warp`
     void skip_to_block_end(); // after '{' was read: up to and including its '}'
@@ -408,6 +411,7 @@ class Parser {
     std::map<std::string, bool> warned_; // de-duplication of identical warnings
     int macro_depth_ = 0;
     std::map<std::string, std::shared_ptr<const TokenFile>> file_cache_;
+    std::map<std::string, std::shared_ptr<const PovDensity>> densities_; // density files read
     void pop_frame();
     void skip_raw_to_end(int levels, const Token& from);
     void switch_scan(const Token& from);

@@ -55,6 +55,7 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
         {"slope", {PatternKind::Slope}},
         {"pigment_pattern", {PatternKind::PigmentPattern}},
         {"image_pattern", {PatternKind::ImagePattern}},
+        {"density_file", {PatternKind::DensityFile}},
     };
     return m;
 }
@@ -62,8 +63,8 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},    {"cubic", 6},    {"density_file", 0}, {"facets", 0},
-        {"object", 2}, {"pavement", 0}, {"tiling", 0},       {"fractal", 0},
+        {"aoi", 0},      {"cubic", 6},  {"facets", 0},  {"object", 2},
+        {"pavement", 0}, {"tiling", 0}, {"fractal", 0},
     };
     return m;
 }
@@ -101,6 +102,7 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (k == "spiral1" || k == "spiral2") pt.param[0] = parse_float();
         if (k == "pigment_pattern") pt.pigment = parse_pigment(PovPigment{});
         if (k == "image_pattern") pt.image = parse_image_pattern(t);
+        if (k == "density_file") pt.density = parse_density_file(t);
         if (k == "mandel" || k == "julia" || k == "magnet") parse_fractal(pt, k);
         if (k == "slope") parse_slope(pt, t);
         if (k == "quilted") { // control0 and control1 follow as modifiers
@@ -118,9 +120,6 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (starts_expression(peek())) parse_expr();
     } else if (k == "facets") {
         while (accept_kw("coords") || accept_kw("size")) parse_float();
-    } else if (k == "density_file") {
-        accept_kw("df3");
-        parse_string();
     }
     if (k == "object" && is_sym_tok(peek(), "{")) skip_block();
     return true;
@@ -154,6 +153,15 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
     } else if (k == "lambda") {
         advance();
         pt.lambda = parse_float();
+    } else if (k == "interpolate" && pt.kind == PatternKind::DensityFile && pt.density) {
+        advance();
+        const double v = parse_float();
+        if (v != 0 && v != 1 && v != 2)
+            error_at(t, "a density_file's interpolate is 0 (none), 1 (trilinear) or 2 "
+                        "(tricubic)");
+        auto d = std::make_shared<PovDensity>(*pt.density);
+        d->interpolation = int(v);
+        pt.density = std::move(d);
     } else if (k == "frequency") {
         advance();
         pt.frequency = parse_float();

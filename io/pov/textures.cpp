@@ -334,11 +334,6 @@ PovPigment Parser::parse_density() {
     PovPigment d;
     d.color = {1, 1, 1, 0, 0}; // white: the medium as it is
     expect_sym("{");
-    if (const Token f = peek(); f.kind == TokKind::Ident && f.text == "density_file") {
-        unsupported(f, "density_file (the density is 1)");
-        skip_rest_of_block();
-        return d;
-    }
     parse_pigment_body(d, "}");
     return d;
 }

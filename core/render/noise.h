@@ -98,24 +98,31 @@ SHEAF_HD_INLINE Vec3 vector_turbulence(Vec3 p, int octaves, float omega, float l
     return sum;
 }
 
+/// The random point of unit cell (cx, cy, cz), and in `h` the cell's hash.
+SHEAF_HD_INLINE Vec3 cell_point(int cx, int cy, int cz, uint32_t& h) {
+    h = lattice_hash(cx, cy, cz, 7);
+    return {float(cx) + hash_unit(h), float(cy) + hash_unit(h * 0x2545f491u + 1),
+            float(cz) + hash_unit(h * 0x9e3779b9u + 2)};
+}
+
 /// Distances to the nearest and second nearest of one random point per unit cell (Worley).
-/// `id` receives a hash of the nearest point's cell.
-SHEAF_HD_INLINE void cell_distances(Vec3 p, float& f1, float& f2, uint32_t& id) {
+/// `id` receives a hash of the nearest point's cell; `nearest` (when given) that point.
+SHEAF_HD_INLINE void cell_distances(Vec3 p, float& f1, float& f2, uint32_t& id,
+                                    Vec3* nearest = nullptr) {
     const int ix = hdm::floor_int(p.x), iy = hdm::floor_int(p.y), iz = hdm::floor_int(p.z);
     f1 = f2 = 1e30f;
     id = 0;
     for (int dz = -1; dz <= 1; ++dz)
         for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
-                const int cx = ix + dx, cy = iy + dy, cz = iz + dz;
-                const uint32_t h = lattice_hash(cx, cy, cz, 7);
-                const Vec3 q(float(cx) + hash_unit(h), float(cy) + hash_unit(h * 0x2545f491u + 1),
-                             float(cz) + hash_unit(h * 0x9e3779b9u + 2));
+                uint32_t h;
+                const Vec3 q = cell_point(ix + dx, iy + dy, iz + dz, h);
                 const float d = length(q - p);
                 if (d < f1) {
                     f2 = f1;
                     f1 = d;
                     id = h;
+                    if (nearest) *nearest = q;
                 } else if (d < f2) {
                     f2 = d;
                 }

@@ -304,10 +304,29 @@ SHEAF_HD_INLINE Vec3 bump_map_normal(const SceneView& scene, const NormalPattern
 #endif
 }
 
+/// POV-Ray's facets: cells of size param[0] over the unit normal n itself (the normal turned
+/// to the nearest cell point: flat facets on a curved surface), or with `coords` (param[1])
+/// over the pattern-space point q, each cell tilting n by that much of a noise vector taken
+/// at its point.
+SHEAF_HD_INLINE Vec3 facets_normal(const Pattern& pt, Vec3 q, Vec3 n) {
+    const float size = hdm::fmaxf(pt.param[0], 1e-6f), coords = pt.param[1];
+    float f1, f2;
+    uint32_t id;
+    Vec3 cell(0.0f);
+    cell_distances((coords != 0 ? q : n) / size, f1, f2, id, &cell);
+    if (coords == 0) return length_squared(cell) > 0 ? normalize(cell) : n;
+    Vec3 pert = vector_noise(cell);
+    pert = pert - n * dot(pert, n);
+    const Vec3 out = n + pert * coords;
+    return length_squared(out) > 0 ? normalize(out) : n;
+}
+
 /// The unit shading normal n tilted by the slope of normal pattern np (its map aside).
 SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p, Vec3 n) {
     const Pattern& pt = np.pattern;
     if (pt.kind == PatternKind::Image) return bump_map_normal(scene, np, p, n);
+    if (pt.kind == PatternKind::Facets)
+        return facets_normal(pt, pattern_point(pt, p, scene.warps), n);
     const Vec3 q = pattern_point(pt, p, scene.warps);
     // The height: the pattern's value, through the slope map when there is one.
     auto height = [&](Vec3 at) {

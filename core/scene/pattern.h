@@ -44,6 +44,9 @@ enum class PatternKind : uint8_t {
     PigmentPattern, // the grey of a pigment (`pigment`) evaluated at the pattern-space point
     ImagePattern,   // the grey of an image (`image`, mapped from pattern space; host only)
     DensityFile,    // a voxel grid's value in the unit cube (`grid` in Scene::density_grids)
+    Facets,         // normals only: the normal turned to the nearest of random cell points
+                    // (param[0] the cells' size, param[1] `coords`: 0 cells over the normal,
+                    // else cells over the point, tilting by noise that much)
     // Discrete patterns: an index into the list of their entries.
     Checker,    // 2 entries
     Hexagon,    // 3 entries, tiles in the x-z plane

@@ -56,6 +56,7 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
         {"pigment_pattern", {PatternKind::PigmentPattern}},
         {"image_pattern", {PatternKind::ImagePattern}},
         {"density_file", {PatternKind::DensityFile}},
+        {"facets", {PatternKind::Facets}},
     };
     return m;
 }
@@ -63,8 +64,7 @@ const std::map<std::string, PatternInfo>& supported_patterns() {
 // Patterns Sheaf reads but cannot show; the number of list entries they take.
 const std::map<std::string, int>& unsupported_patterns() {
     static const std::map<std::string, int> m = {
-        {"aoi", 0},      {"cubic", 6},  {"facets", 0},  {"object", 2},
-        {"pavement", 0}, {"tiling", 0}, {"fractal", 0},
+        {"aoi", 0}, {"cubic", 6}, {"object", 2}, {"pavement", 0}, {"tiling", 0}, {"fractal", 0},
     };
     return m;
 }
@@ -103,6 +103,20 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (k == "pigment_pattern") pt.pigment = parse_pigment(PovPigment{});
         if (k == "image_pattern") pt.image = parse_image_pattern(t);
         if (k == "density_file") pt.density = parse_density_file(t);
+        if (k == "facets") { // POV-Ray's defaults: size 0.1, over the normal
+            pt.param[0] = 0.1;
+            for (;;) {
+                const Token m = peek();
+                if (accept_kw("coords")) {
+                    pt.param[1] = parse_float();
+                } else if (accept_kw("size")) {
+                    pt.param[0] = parse_float();
+                    if (!(pt.param[0] > 0)) error_at(m, "a facets size must be above 0");
+                } else {
+                    break;
+                }
+            }
+        }
         if (k == "mandel" || k == "julia" || k == "magnet") parse_fractal(pt, k);
         if (k == "slope") parse_slope(pt, t);
         if (k == "quilted") { // control0 and control1 follow as modifiers
@@ -118,8 +132,6 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (starts_expression(peek())) parse_float();
     } else if (k == "aoi") {
         if (starts_expression(peek())) parse_expr();
-    } else if (k == "facets") {
-        while (accept_kw("coords") || accept_kw("size")) parse_float();
     }
     if (k == "object" && is_sym_tok(peek(), "{")) skip_block();
     return true;

@@ -484,6 +484,22 @@ TEST(PovTextures, WarpsBendImageMaps) {
     EXPECT_NE(bump.warnings[0].find("unsupported warp of a bump_map"), std::string::npos);
 }
 
+TEST(PovTextures, FacetsAreANormalPattern) {
+    const PovResult r = load_text("sphere { 0, 1 normal { facets coords 0.4 } }\n"
+                                  "sphere { 0, 1 normal { facets size 0.3 } }\n"
+                                  "sphere { 0, 1 normal { facets } }\n");
+    EXPECT_TRUE(r.warnings.empty());
+    ASSERT_EQ(r.scene.normal_patterns.size(), 3u);
+    const Pattern& c = r.scene.normal_patterns[0].pattern;
+    EXPECT_EQ(c.kind, PatternKind::Facets);
+    EXPECT_FLOAT_EQ(c.param[0], 0.1f); // POV-Ray's default size
+    EXPECT_FLOAT_EQ(c.param[1], 0.4f);
+    EXPECT_FLOAT_EQ(r.scene.normal_patterns[1].pattern.param[0], 0.3f);
+    EXPECT_FLOAT_EQ(r.scene.normal_patterns[1].pattern.param[1], 0);
+    EXPECT_EQ(error_of("sphere { 0, 1 normal { facets size 0 } }"),
+              "scene.pov:1:31: error: a facets size must be above 0");
+}
+
 // map_type 1, 2 and 5 read the image where POV-Ray does: u is the longitude from +x turning
 // toward +z (a cylinder seen from -z shows the image's right half, not mirrored), v the
 // latitude, the height, or the angle around the torus's unit ring (3/4 on its top).
@@ -1001,7 +1017,7 @@ TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
 TEST(PovTextures, NormalsComeFromArraysAndMayBeDeclaredFlat) {
     // The portfolio's allnormals.pov: normal { normalArr[i] }, of normals whose pattern Sheaf
     // does not have (declared flat, warned where used).
-    const PovResult r = load_text("#declare Flat = normal { facets size 0.1 1 }\n"
+    const PovResult r = load_text("#declare Flat = normal { tiling 3 1 }\n"
                                   "#declare N = normal { ripples 0.7 }\n"
                                   "#declare A = array[2] { Flat, N }\n"
                                   "#declare B = array[2] { N, N }\n"

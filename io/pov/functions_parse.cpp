@@ -105,6 +105,7 @@ void Parser::parse_pattern_function(PovFunction& f) {
     bool supported = false;
     const Token name = peek();
     if (!parse_pattern_name(pt, list, supported)) error_expected(name, "a pattern");
+    only_in_normals(name, pt);
     while (!accept_sym("}"))
         if (!parse_pattern_modifier(pt, local)) error_expected(peek(), "a pattern modifier or '}'");
     if (!supported || pt.kind == PatternKind::Image || pt.kind == PatternKind::ImagePattern ||

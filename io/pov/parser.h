@@ -330,6 +330,8 @@ class Parser {
     /// (io/pov/density_file.cpp).
     std::shared_ptr<const PovDensity> parse_density_file(const Token& keyword);
     bool parse_pattern_modifier(PovPattern& pt, Affine& local);
+    /// An error at `t` when pattern `pt` is one only normals take (facets), met elsewhere.
+    void only_in_normals(const Token& t, const PovPattern& pt) const;
     void parse_warp(PovPattern& pt, const Affine& local); // after `warp`
     void skip_to_block_end(); // after '{' was read: up to and including its '}'
     bool is_color_start(const Token& t);

@@ -137,6 +137,12 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
     return true;
 }
 
+void Parser::only_in_normals(const Token& t, const PovPattern& pt) const {
+    if (pt.kind == PatternKind::Facets)
+        error_at(t, "facets is a normal pattern; a pigment, texture, density or function "
+                    "cannot take it (nor can POV-Ray's)");
+}
+
 bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
     Affine m;
     if (parse_transform_item(m)) {

@@ -103,6 +103,7 @@ void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
         const std::string& k = t.text;
         bool supported = true;
         if (parse_pattern_name(pg.pattern, list, supported)) {
+            only_in_normals(t, pg.pattern);
             pattern_at = t;
             pg.patterned = true;
             pg.average = false;

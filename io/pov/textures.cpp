@@ -137,6 +137,7 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
         PovPattern pt;
         bool supported = true;
         if (parse_pattern_name(pt, list, supported)) { // a texture pattern
+            only_in_normals(t, pt);
             pattern_at = t;
             tx = PovTexture{};
             tx.is_map = true;

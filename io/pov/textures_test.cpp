@@ -498,6 +498,12 @@ TEST(PovTextures, FacetsAreANormalPattern) {
     EXPECT_FLOAT_EQ(r.scene.normal_patterns[1].pattern.param[1], 0);
     EXPECT_EQ(error_of("sphere { 0, 1 normal { facets size 0 } }"),
               "scene.pov:1:31: error: a facets size must be above 0");
+    for (const std::string& elsewhere : {"sphere { 0, 1 pigment { facets } }",
+                                         "sphere { 0, 1 texture { facets texture_map { "
+                                         "[0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }"})
+        EXPECT_NE(error_of(elsewhere).find(":1:25: error: facets is a normal pattern"),
+                  std::string::npos)
+            << error_of(elsewhere);
 }
 
 // map_type 1, 2 and 5 read the image where POV-Ray does: u is the longitude from +x turning

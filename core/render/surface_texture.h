@@ -27,6 +27,11 @@ namespace texture_detail {
 // scene's validation forbids cycles, so this only bounds the work.
 constexpr int kMaxDepth = 16;
 
+/// POV-Ray's grey of a colour (pigment_pattern, image_pattern, bump maps).
+SHEAF_HD_INLINE float pov_grey(Vec3 c) {
+    return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z;
+}
+
 SHEAF_HD_INLINE SurfaceColor entry_color(const PigmentEntry& e) {
     return {Vec3(e.color[0], e.color[1], e.color[2]), e.color[3], e.color[4]};
 }
@@ -102,8 +107,7 @@ SHEAF_HD_NOINLINE float pattern_value(const SceneView& scene, const Pattern& pt,
         if (!scene.sampler || !texture_detail::image_point(scene, pt.image, q, 0, 0, s, t))
             return pattern_detail::shape_value(pt, 0.0f);
         const Vec3 c = texture_detail::sample_at(scene, pt.image, s, t);
-        return pattern_detail::shape_value(
-            pt, pattern_detail::clamp01(0.297f * c.x + 0.589f * c.y + 0.114f * c.z));
+        return pattern_detail::shape_value(pt, pattern_detail::clamp01(pov_grey(c)));
     }
     if (pt.kind != PatternKind::Function) return pattern_value_at(pt, q);
     if (!scene.functions.programs || pt.program < 0) return 0.0f;
@@ -178,8 +182,7 @@ struct Evaluator {
 /// The grey of pigment `pigment` (placed in a pattern's space) at that space's point q, as
 /// POV-Ray's pigment_pattern weighs it.
 SHEAF_HD_NOINLINE float pigment_grey(const SceneView& scene, uint32_t pigment, Vec3 q, int depth) {
-    const Vec3 c = Evaluator{scene, 0, 0, Vec3(0.0f)}.pigment(pigment, q, depth).rgb;
-    return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z;
+    return pov_grey(Evaluator{scene, 0, 0, Vec3(0.0f)}.pigment(pigment, q, depth).rgb);
 }
 
 /// A function pattern's value: a list pattern's entry 0 or not (0 or 1), as fn_pattern.
@@ -282,7 +285,7 @@ SHEAF_HD_INLINE Vec3 bump_map_normal(const SceneView& scene, const NormalPattern
     if (w <= 0 || h <= 0) return n;
     auto grey = [&](float ss, float tt) {
         const Vec3 c = scene.sampler->sample(uint32_t(image), ss, tt);
-        return 0.297f * c.x + 0.589f * c.y + 0.114f * c.z; // POV-Ray's greyscale
+        return pov_grey(c);
     };
     const float a = np.amount, h1 = grey(s, t);
     const float h2 = grey(s - 1.0f / float(w), t - 1.0f / float(h));

@@ -186,8 +186,8 @@ struct Pattern {
     float wave_exponent = 1.0f; // Wave::Poly
     Vec3 vector{0, 1, 0};       // Gradient: the direction
     float param[4] = {0, 0, 0, 0};
-    // Image, ImagePattern: index into Scene::textures (an ImagePattern's texture transform
-    // maps from pattern space, so warps bend it)
+    // Image, ImagePattern: index into Scene::textures, whose transform maps from pattern
+    // space (after to_pattern and the warps, so warps bend images too)
     int32_t image = -1;
     // PigmentPattern: index into Scene::pigments of a pigment placed in this pattern's space
     // (its transforms map from there, not from the world), whose grey 0.297 red + 0.589

@@ -556,10 +556,11 @@ void Scene::validate_patterns() const {
         const uint64_t n = uint64_t(g.nx) * g.ny * g.nz;
         if (g.first > density_voxels.size() || n > density_voxels.size() - g.first)
             throw SceneError(name + ": its voxels lie outside the density voxels");
-        for (uint64_t k = 0; k < n; ++k)
-            if (!(density_voxels[g.first + k] >= 0 && density_voxels[g.first + k] <= 1))
-                throw SceneError(name + ": a voxel's value is not in [0, 1]");
     }
+    // Each value once, however many grids share it.
+    for (size_t k = 0; k < density_voxels.size(); ++k)
+        if (!(density_voxels[k] >= 0 && density_voxels[k] <= 1))
+            throw SceneError("density voxel " + std::to_string(k) + ": its value is not in [0, 1]");
     // A switch may lead to materials with switches of their own, but never back to itself:
     // depth-first, 1 = on the current path, 2 = done.
     std::vector<char> state(materials.size(), 0);

@@ -226,7 +226,7 @@ TEST(SceneValidate, DensityGridsAreChecked) {
     EXPECT_EQ(error_of(s), "density grid 0: its voxels lie outside the density voxels");
     s.density_grids[0].first = 0;
     s.density_voxels[2] = 1.5f;
-    EXPECT_EQ(error_of(s), "density grid 0: a voxel's value is not in [0, 1]");
+    EXPECT_EQ(error_of(s), "density voxel 2: its value is not in [0, 1]");
     s.density_voxels[2] = 1;
     s.density_grids[0].interpolation = 3;
     EXPECT_NE(error_of(s).find("an interpolation of 0, 1 or 2"), std::string::npos);

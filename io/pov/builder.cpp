@@ -37,6 +37,13 @@ bool squeezed_to_a_line(const Affine& a) {
     return minor <= 1e-10 * big * big;
 }
 
+/// Whether `o` is a solid squeezed to a segment or a point (a degenerate shape, not inverse,
+/// of rank at most 1): it has no surface to show, in POV-Ray either.
+bool vanishing_solid(const PovObject& o) {
+    return o.kind == PovKind::Shape && !o.inverse &&
+           !(std::fabs(o.local.determinant()) >= 1e-20f) && squeezed_to_a_line(o.local);
+}
+
 /// The aa.samples value that gives a pixel `samples` samples or more: n x n of them, n within
 /// the setting's range (an explicit aa.samples, +A or -A, overrides the scene's).
 std::string aa_samples_for(int samples) {
@@ -257,9 +264,8 @@ struct Builder {
                 p.error_at(o.where, "the shape's size or placement is not a finite number "
                                     "(a division by zero, or a scale beyond 1e38?)");
             if (!(std::fabs(o.local.determinant()) >= 1e-20f)) { // as Scene::validate
-                // Squeezed to a segment or a point, a solid has no surface to show: among
-                // unions, leaving it out is exact.
-                if (in_union && !o.inverse && squeezed_to_a_line(o.local)) return -1;
+                if (in_union && vanishing_solid(o)) return -1;   // among unions: exact
+
                 p.unsupported(o.where, "degenerate shape (a zero scale; left out)");
                 return -1;
             }
@@ -295,12 +301,8 @@ struct Builder {
         // An intersection with, or a difference from, a solid squeezed to a segment or a
         // point is empty: among unions, leaving it out is exact.
         if (in_union && !o.inverse && (o.op == CsgOp::Intersection || o.op == CsgOp::Difference))
-            for (size_t i = 0; i < (o.op == CsgOp::Difference ? 1 : o.children.size()); ++i) {
-                const PovObject& c = o.children[i];
-                if (c.kind == PovKind::Shape && !c.inverse &&
-                    !(std::fabs(c.local.determinant()) >= 1e-20f) && squeezed_to_a_line(c.local))
-                    return -1;
-            }
+            for (size_t i = 0; i < (o.op == CsgOp::Difference ? 1 : o.children.size()); ++i)
+                if (vanishing_solid(o.children[i])) return -1;
         std::vector<uint32_t> kids;
         for (size_t i = 0; i < o.children.size(); ++i) {
             const int k = node(o.children[i], tex, in, inside, flags, so, uni && in_union);

@@ -22,6 +22,24 @@ const Material& shape_material(const PovResult& r, size_t object = 0) {
     return r.scene.materials[r.scene.shape_objects[object].nodes[0].material];
 }
 
+// Writes `name` in d: a w x h image of `channels` float values per pixel, stored as `type`.
+std::string write_image(test::TempDir& d, const std::string& name, int w, int h, int channels,
+                        const float* px, OIIO::TypeDesc type = OIIO::TypeDesc::UINT8) {
+    const std::string path = d.path() + "/" + name;
+    auto out = OIIO::ImageOutput::create(path);
+    EXPECT_TRUE(out && out->open(path, OIIO::ImageSpec(w, h, channels, type)) &&
+                out->write_image(OIIO::TypeDesc::FLOAT, px))
+        << path;
+    if (out) out->close();
+    return path;
+}
+
+// A 2 x 2 image: red, green / blue, white.
+std::string write_tiles(test::TempDir& d) {
+    const float px[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    return write_image(d, "tiles.png", 2, 2, 3, px);
+}
+
 TEST(PovTextures, PatternsBecomePigmentsInTheirOwnSpace) {
     const PovResult r = load_text(
         "sphere { 0, 1 pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] }\n"
@@ -353,15 +371,7 @@ TEST(PovTextures, SkySphereFogAndFlags) {
 
 TEST(PovTextures, ImageMapsAreTextures) {
     test::TempDir d;
-    // A 2 x 2 image: red, green / blue, white.
-    const std::string png = d.path() + "/tiles.png";
-    const float px[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
-    auto out = OIIO::ImageOutput::create(png);
-    ASSERT_TRUE(out);
-    OIIO::ImageSpec spec(2, 2, 3, OIIO::TypeDesc::UINT8);
-    ASSERT_TRUE(out->open(png, spec));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
-    out->close();
+    const std::string png = write_tiles(d); // red, green / blue, white
     const std::string scene = d.write(
         "scene.pov", "plane { z, 0 pigment { image_map { png \"tiles.png\" map_type 0 "
                      "interpolate 2 transmit all 0.25 } scale 2 } }\n");
@@ -407,14 +417,7 @@ TEST(PovTextures, ImageMapsAreTextures) {
 // stored) is the pattern's value, mapped from pattern space, so transforms and warps move it.
 TEST(PovTextures, ImagePatternIsTheImagesGrey) {
     test::TempDir d;
-    // A 2 x 2 image: red, green / blue, white.
-    const std::string png = d.path() + "/tiles.png";
-    const float px[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
-    auto out = OIIO::ImageOutput::create(png);
-    ASSERT_TRUE(out);
-    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
-    out->close();
+    const std::string png = write_tiles(d); // red, green / blue, white
     const PovResult r = load_pov_scene(
         d.write("scene.pov", "plane { z, 0 pigment { image_pattern { png \"tiles.png\" once }\n"
                              "  color_map { [0 rgb 0] [1 rgb <1, 0, 0>] } translate <2, 0, 0> }\n"
@@ -452,13 +455,7 @@ TEST(PovTextures, ImagePatternIsTheImagesGrey) {
 // as they bend any pattern (textures/pigments/warp1.pov).
 TEST(PovTextures, WarpsBendImageMaps) {
     test::TempDir d;
-    const std::string png = d.path() + "/tiles.png"; // red, green / blue, white
-    const float px[] = {1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
-    auto out = OIIO::ImageOutput::create(png);
-    ASSERT_TRUE(out);
-    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8)));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
-    out->close();
+    const std::string png = write_tiles(d); // red, green / blue, white
     const PovResult r = load_pov_scene(
         d.write("scene.pov",
                 "plane { z, 0 pigment { image_map { png \"tiles.png\" } warp { repeat 0.5 * x }"
@@ -511,13 +508,8 @@ TEST(PovTextures, FacetsAreANormalPattern) {
 // latitude, the height, or the angle around the torus's unit ring (3/4 on its top).
 TEST(PovTextures, ImageMapTypesReadPovRaysLongitude) {
     test::TempDir d;
-    const std::string png = d.path() + "/grey.png";
-    auto out = OIIO::ImageOutput::create(png);
-    ASSERT_TRUE(out);
-    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(2, 2, 1, OIIO::TypeDesc::UINT8)));
     const float px[] = {0, 1, 1, 0};
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px));
-    out->close();
+    write_image(d, "grey.png", 2, 2, 1, px);
     struct Case {
         int map_type;
         TextureMapping mapping;
@@ -619,11 +611,7 @@ TEST(PovTextures, BumpMapsTiltTheNormalByTheImage) {
     std::vector<float> px;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) px.push_back(float(x) / (kW - 1));
-    auto out = OIIO::ImageOutput::create(png);
-    ASSERT_TRUE(out);
-    ASSERT_TRUE(out->open(png, OIIO::ImageSpec(kW, kH, 1, OIIO::TypeDesc::UINT16)));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, px.data()));
-    out->close();
+    write_image(d, "ramp.png", kW, kH, 1, px.data(), OIIO::TypeDesc::UINT16);
     const std::string scene = d.write(
         "scene.pov", "plane { z, 0 normal { bump_map { png \"ramp.png\" bump_size 2 } } }\n"
                      "plane { z, 0 normal { bump_map { \"ramp\" once interpolate 2 } } }\n");

@@ -154,8 +154,7 @@ typedef enum SheafTextureMapping {
     SHEAF_MAPPING_PLANAR = 1,      /* (x, y) in texture space, repeating every unit */
     SHEAF_MAPPING_SPHERICAL = 2,   /* longitude and latitude around the texture-space origin */
     SHEAF_MAPPING_CYLINDRICAL = 3, /* angle around texture-space y, and y */
-    SHEAF_MAPPING_TORUS =
-        4 /* angle around texture-space y, and around the xz plane's unit circle */
+    SHEAF_MAPPING_TORUS = 4        /* angle around y, and around the xz plane's unit circle */
 } SheafTextureMapping;
 
 /* An image texture read through OpenImageIO (png, jpeg, tga, tiff, exr, hdr, ...).

@@ -116,6 +116,7 @@ template <class T, class Op> struct AddInto {
 class CudaExec {
   public:
     static constexpr const char* kName = "cuda";
+    static constexpr bool kHostMemory = false;
 
     /// Renders on `device`; `stack_bytes`: the per-thread stack the recursive CSG and pigment
     /// code needs. An exec may render many frames, one at a time (begin_frame).

@@ -23,8 +23,13 @@ double raster_near(const PreparedScene& scene, const CameraFrame& cam) {
 }
 
 void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<uint64_t>& vis) {
+    vis.resize(size_t(cam.width) * size_t(cam.height));
+    rasterize(scene, cam, vis.data());
+}
+
+void rasterize(const PreparedScene& scene, const CameraFrame& cam, uint64_t* vis) {
     const int W = cam.width, H = cam.height;
-    vis.assign(size_t(W) * H, kEmptyPixel);
+    std::fill_n(vis, size_t(W) * H, kEmptyPixel);
     const size_t n = scene.triangle_count(); // analytic primitives are ray-cast by the caller
     if (n == 0) return;
 

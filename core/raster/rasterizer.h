@@ -25,5 +25,7 @@ double raster_near(const PreparedScene& scene, const CameraFrame& camera);
 /// plane, covered at pixel centres with the top-left fill rule, and depth-tested on the
 /// perspective-correct camera-space depth. Multithreaded over screen tiles.
 void rasterize(const PreparedScene& scene, const CameraFrame& camera, std::vector<uint64_t>& vis);
+/// The same into host memory the caller holds (width * height entries).
+void rasterize(const PreparedScene& scene, const CameraFrame& camera, uint64_t* vis);
 
 } // namespace sheaf

@@ -1,9 +1,9 @@
 // Secondary ray generation from a wave of surface hits: shadow rays (one per light per lit
 // point, origin moved to the light as in paper 000 section 3.3.2), ambient-occlusion rays
 // (cosine-weighted, Halton, paper 003) and reflection/refraction rays (Fresnel, Snell).
-// Every generator counts, scans and fills, so the ray order is the same on every run.
-// The per-element count and fill functions are host-and-device: the CPU renderer and the
-// wavefront pipeline emit the same rays in the same order.
+// The frame pipeline (core/wavefront/wf_frame.h) counts, scans and fills with these
+// host-and-device per-element functions, so the ray order is the same on every run and every
+// backend.
 #pragma once
 
 #include "core/math/hd_math.h"
@@ -361,20 +361,5 @@ SHEAF_HD_INLINE void diffuse_ray_fill(const SceneView& scene, const SurfaceHit& 
 /// rays (`most`, an upper bound known before any is made) is refused with OutOfMemory naming
 /// the ray type, before its counts would wrap.
 void check_batch_bound(uint64_t most, RayType type);
-
-/// The shadow layout of a wave: its leading hits with gather 0 take every light.
-ShadowLayout shadow_layout(const SceneView& scene, const std::vector<SurfaceHit>& hits);
-/// Shadow rays for the (hit, light) pairs of the layout, lights that cast shadows.
-void generate_shadow_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
-                          const RayGenParams& p, RayBatch& out);
-/// `ao_samples` rays per hit; each hit's Halton points start at its pixel index times the count.
-void generate_ao_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
-                      const RayGenParams& p, RayBatch& out);
-/// Reflection rays go to `refl`, refraction rays to `refr`.
-void generate_bounce_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
-                          const RayGenParams& p, RayBatch& refl, RayBatch& refr);
-/// Radiosity's gather rays (diffuse_ray_count per hit), in hit order.
-void generate_diffuse_rays(const SceneView& scene, const std::vector<SurfaceHit>& hits,
-                           const RayGenParams& p, RayBatch& out);
 
 } // namespace sheaf

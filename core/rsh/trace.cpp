@@ -31,8 +31,8 @@ struct Counter {
     TestCount count() const { return {tests.load(), hits.load()}; }
 };
 
-HitSinks sinks(TraceResult& out) {
-    return {out.closest.data(), out.occluded.data(), out.pass_log.empty() ? nullptr : out.pass_log.data()};
+HitSinks sinks(const HitSpan& out) {
+    return {out.closest, out.occluded, out.pass_log};
 }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -41,11 +41,11 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 // ---------------------------------------------------------------------------------------------
 // brute: every ray against every primitive. Any-hit queries stop at the first hit.
-void trace_brute(const SceneView& scene, const RayBatch& batch, bool any, bool shadow,
-                 uint8_t skip, Counter& final, TraceResult& out) {
+void trace_brute(const SceneView& scene, const RaySpan& batch, bool any, bool shadow,
+                 uint8_t skip, Counter& final, const HitSpan& out) {
     const HitSinks sink = sinks(out);
     parallel_for_range(
-        "brute.trace", batch.size(),
+        "brute.trace", batch.n,
         [&](size_t b, size_t e) {
             uint64_t tests = 0, hits = 0;
             for (size_t i = b; i < e; ++i) {
@@ -65,9 +65,10 @@ class Traversal {
   public:
     Traversal(const PreparedScene& scene, const CullUnits& units, const RayHierarchy& h,
               const TrackedVector<Ray>& rays, const std::vector<uint32_t>& perm, bool any,
-              bool shadow, uint8_t skip, size_t batch, MemoryTracker& memory, TraceResult& out)
-        : levels_(size_t(h.depth) + 1), scene_(scene), units_(units), view_(scene), sinks_(sinks(out)), h_(h), rays_(rays), perm_(perm), any_(any),
-          shadow_(shadow), skip_(skip), batch_(batch), out_(out),
+              bool shadow, uint8_t skip, size_t batch, MemoryTracker& memory, const HitSpan& out)
+        : levels_(size_t(h.depth) + 1), scene_(scene), units_(units), view_(scene),
+          sinks_(sinks(out)), h_(h), rays_(rays), perm_(perm), any_(any), shadow_(shadow),
+          skip_(skip), batch_(batch),
           local_(TrackedVector<Pair>(TrackedAllocator<Pair>(&memory))) {
         for (int k = 0; k <= h.depth; ++k) buffers_.push_back(tracked_vector<Pair>(memory));
         leaf_pairs_.assign(h.node_count(1), 0);
@@ -217,7 +218,6 @@ class Traversal {
     bool shadow_; // shadow rays pass transparent primitives (record_pass)
     uint8_t skip_; // primitives whose objects have these flags are not candidates
     size_t batch_;
-    TraceResult& out_;
     tbb::enumerable_thread_specific<TrackedVector<Pair>> local_;
     std::vector<TrackedVector<Pair>> buffers_;
 };
@@ -225,8 +225,8 @@ class Traversal {
 // Keys of the batch under hash.mode (rah: none). Returns the number of 32-bit words per key.
 // Paper 003's static 3D order: 8 x 16-pixel tiles of the sample grid, one sample index (AO) or
 // light (shadow rays) at a time; a 64-bit key as two words.
-int static3d_keys(const RayBatch& batch, const RenderSettings& s, std::vector<uint32_t>& keys) {
-    const size_t n = batch.size();
+int static3d_keys(const RaySpan& batch, const RenderSettings& s, std::vector<uint32_t>& keys) {
+    const size_t n = batch.n;
     const uint64_t grid_w = uint64_t(s.width) * uint64_t(s.aa_samples);
     const uint64_t grid_h = uint64_t(s.height) * uint64_t(s.aa_samples);
     const uint64_t tiles_x = (grid_w + 7) / 8, tiles = tiles_x * ((grid_h + 15) / 16);
@@ -247,15 +247,15 @@ int static3d_keys(const RayBatch& batch, const RenderSettings& s, std::vector<ui
     return 2;
 }
 
-int hash_rays(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
+int hash_rays(const PreparedScene& scene, const RaySpan& batch, const RenderSettings& s,
               HashMode mode, std::vector<uint32_t>& keys) {
-    const size_t n = batch.size();
+    const size_t n = batch.n;
     // static1d is the generation order: a pixel's rays together (paper 003's 1D work groups).
     if (mode == HashMode::None || mode == HashMode::Static1d) return 0;
     if (mode == HashMode::Static3d) return static3d_keys(batch, s, keys);
     Aabb box{Vec3(FLT_MAX), Vec3(-FLT_MAX)};
-    for (const Ray& r : batch.rays)
-        box.lo = vmin(box.lo, r.origin), box.hi = vmax(box.hi, r.origin);
+    for (size_t i = 0; i < n; ++i)
+        box.lo = vmin(box.lo, batch.rays[i].origin), box.hi = vmax(box.hi, batch.rays[i].origin);
     if (mode == HashMode::Hash192) {
         keys.resize(n * 6);
         parallel_for(
@@ -301,9 +301,31 @@ void trace_batch(const PreparedScene& scene, const RayBatch& batch, const Render
     trace_batch(scene, *cull_units_for(scene, s), batch, s, stats, memory, out);
 }
 
+bool shadows_pass_surfaces(const PreparedScene& scene) {
+    for (uint8_t f : scene.prim_flags)
+        if (f & kPrimMayPass) return true;
+    return false;
+}
+
 void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
                  const RenderSettings& s, Stats& stats, MemoryTracker& memory, TraceResult& out) {
     const size_t n = batch.size();
+    const bool any = any_hit_query(batch.type);
+    out.closest.assign(any ? 0 : n, kNoHit);
+    out.occluded.assign(any ? n : 0, 0);
+    out.pass_log.assign(batch.type == RayType::Shadow && shadows_pass_surfaces(scene) ? 3 * n : 0,
+                        0);
+    out.tests.assign(n, 0);
+    const RaySpan rays{batch.type, n, batch.rays.data(), batch.pixel.data(),
+                       batch.light.empty() ? nullptr : batch.light.data()};
+    trace_rays(scene, units, rays, s, stats, memory,
+               {out.closest.data(), out.occluded.data(),
+                out.pass_log.empty() ? nullptr : out.pass_log.data(), out.tests.data()});
+}
+
+void trace_rays(const PreparedScene& scene, const CullUnits& units, const RaySpan& batch,
+                const RenderSettings& s, Stats& stats, MemoryTracker& memory, const HitSpan& out) {
+    const size_t n = batch.n;
     const bool any = any_hit_query(batch.type);
     // Objects without shadows let shadow and AO rays pass; objects without reflections are
     // not seen by reflection rays.
@@ -312,16 +334,11 @@ void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBa
     stats.add(std::string("rays.") + ray_type_name(batch.type), double(n));
     stats.add(p + "brute_force", double(n) * double(scene.prim_count()));
     if (any)
-        out.occluded.assign(n, 0);
+        std::fill_n(out.occluded, n, uint8_t(0));
     else
-        out.closest.assign(n, kNoHit);
-    out.pass_log.clear();
-    if (batch.type == RayType::Shadow) {
-        bool transparent = false;
-        for (uint8_t f : scene.prim_flags) transparent = transparent || (f & kPrimMayPass);
-        if (transparent) out.pass_log.assign(3 * n, 0);
-    }
-    out.tests.assign(n, 0);
+        std::fill_n(out.closest, n, kNoHit);
+    if (out.pass_log) std::fill_n(out.pass_log, 3 * n, uint64_t(0));
+    std::fill_n(out.tests, n, 0u);
     if (n == 0 || scene.prim_count() == 0) return;
 
     if (s.accel == Accel::Brute) {

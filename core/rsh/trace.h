@@ -67,6 +67,35 @@ void add_late_counts(Stats& stats, const std::string& prefix, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final);
 
+/// A batch of rays to trace, as pointers into arrays that outlive the call (light: shadow rays'
+/// lights, which the crsh key uses; otherwise may be null).
+struct RaySpan {
+    RayType type = RayType::Shadow;
+    size_t n = 0;
+    const Ray* rays = nullptr;
+    const uint32_t* pixel = nullptr;
+    const uint32_t* light = nullptr;
+};
+
+/// Where a traced span's results go, each indexed like the span: closest (n, closest-hit
+/// types) or occluded (n, any-hit types), pass_log (3n, shadow rays, when
+/// shadows_pass_surfaces) and tests (n). Filled whole by trace_rays.
+struct HitSpan {
+    uint64_t* closest = nullptr;
+    uint8_t* occluded = nullptr;
+    uint64_t* pass_log = nullptr;
+    uint32_t* tests = nullptr;
+};
+
+/// Whether some primitive of `scene` may let a shadow ray through (its pass log is kept).
+bool shadows_pass_surfaces(const PreparedScene& scene);
+
+/// The CPU's traversal of one span: trace_batch's work on arrays the caller owns (the frame
+/// pipeline's buffers), with the same statistics.
+void trace_rays(const PreparedScene& scene, const CullUnits& units, const RaySpan& rays,
+                const RenderSettings& settings, Stats& stats, MemoryTracker& memory,
+                const HitSpan& out);
+
 /// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
 /// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`. `units`: the scene's
 /// culling units under the settings (cull_units_for).

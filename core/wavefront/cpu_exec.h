@@ -26,6 +26,8 @@ namespace sheaf::wavefront {
 class CpuExec {
   public:
     static constexpr const char* kName = "cpu";
+    /// Launches run on this machine's cores over host memory.
+    static constexpr bool kHostMemory = true;
 
     void* allocate(size_t bytes) {
         memory_.add(int64_t(bytes));
@@ -161,6 +163,8 @@ class CpuExec {
     Stopwatch stopwatch() { return Stopwatch(); }
 
     int64_t peak_bytes() const { return memory_.peak(); }
+    /// What the buffers hold, counted (and, with a limit, refused) as they are allocated.
+    MemoryTracker& memory() { return memory_; }
     /// traversal.batch when the setting is 0: the CPU's.
     size_t auto_batch_pairs() const { return kCpuBatchPairs; }
     /// Device work started (launches, scans, reductions, sorts) and host waits for the device

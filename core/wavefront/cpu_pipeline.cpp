@@ -1,7 +1,10 @@
-// The wavefront pipeline compiled for the CPU execution policy.
+// The frame pipeline compiled for the CPU execution policy: the CPU backend (with the CPU's
+// tracer), and the same frame with the CUDA module's wavefront tracer, which the tests hold
+// against it.
 #include "core/wavefront/wavefront.h"
 
 #include "core/wavefront/cpu_exec.h"
+#include "core/wavefront/host_tracer.h"
 #include "core/wavefront/wf_frame.h"
 
 #include <tbb/task_arena.h>
@@ -14,17 +17,30 @@ std::string wavefront_unsupported(const PreparedScene& scene) {
     return {};
 }
 
-Frame render_frame_wavefront_cpu(const PreparedScene& scene, const RenderSettings& s,
-                                 const ProgressFn& progress) {
-    const std::string why = wavefront_unsupported(scene);
-    if (!why.empty()) throw RenderError("wavefront pipeline: " + why);
+namespace {
+
+template <class Tracer>
+Frame render_on_cpu(const PreparedScene& scene, const RenderSettings& s,
+                    const ProgressFn& progress) {
     Frame f;
     tbb::task_arena arena(s.threads > 0 ? s.threads : tbb::task_arena::automatic);
     arena.execute([&] {
         wavefront::CpuExec exec;
-        wavefront::DeviceFrame<wavefront::CpuExec>(exec, scene, s, progress, f).run();
+        wavefront::DeviceFrame<wavefront::CpuExec, Tracer>(exec, scene, s, progress, f).run();
     });
     return f;
+}
+
+} // namespace
+
+Frame render_frame_cpu(const PreparedScene& scene, const RenderSettings& s,
+                       const ProgressFn& progress) {
+    return render_on_cpu<wavefront::HostTracer>(scene, s, progress);
+}
+
+Frame render_frame_wavefront_cpu(const PreparedScene& scene, const RenderSettings& s,
+                                 const ProgressFn& progress) {
+    return render_on_cpu<wavefront::DeviceTracer<wavefront::CpuExec>>(scene, s, progress);
 }
 
 } // namespace sheaf

@@ -1,10 +1,11 @@
-// SceneKeep under the CPU policy: an exec that renders several frames copies a scene once and
+// SceneKeep under the strict policy (device memory, as a GPU's: the CPU policy binds host
+// memory and copies nothing): an exec that renders several frames copies a scene once and
 // binds the kept copy while the arrays are the same, copies anew when they change, and every
-// frame is the CPU renderer's.
+// frame is the CPU backend's.
 #include "core/render/renderer.h"
 #include "core/scenes/builtin.h"
 #include "core/scenes/test_scenes.h"
-#include "core/wavefront/cpu_exec.h"
+#include "core/wavefront/strict_exec.h"
 #include "core/wavefront/wf_frame.h"
 
 #include <gtest/gtest.h>
@@ -13,12 +14,12 @@ namespace sheaf {
 namespace {
 
 struct KeptFrames {
-    wavefront::CpuExec exec;
-    wavefront::SceneKeep<wavefront::CpuExec> keep;
+    wavefront::StrictExec exec;
+    wavefront::SceneKeep<wavefront::StrictExec> keep;
 
     Frame render(const PreparedScene& scene, const RenderSettings& s) {
         Frame f;
-        wavefront::DeviceFrame<wavefront::CpuExec>(exec, scene, s, {}, f, &keep).run();
+        wavefront::DeviceFrame<wavefront::StrictExec>(exec, scene, s, {}, f, &keep).run();
         return f;
     }
 };

@@ -109,6 +109,8 @@ inline void install_fault_handler() {
 class StrictExec {
   public:
     static constexpr const char* kName = "strict";
+    /// Its memory behaves as a device's: the scene is copied over, never bound.
+    static constexpr bool kHostMemory = false;
     /// What fresh buffers and their padding hold.
     static constexpr unsigned char kFill = 0xA5;
 

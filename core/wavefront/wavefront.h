@@ -14,8 +14,9 @@ namespace sheaf {
 /// can): image textures are sampled through OpenImageIO on the host only.
 std::string wavefront_unsupported(const PreparedScene& scene);
 
-/// The wavefront pipeline under the CPU execution policy (oneTBB, host memory): the same
-/// image and statistics as render_frame with backend=cpu (except time_ms.* and memory.*).
+/// The frame pipeline under the CPU execution policy with the CUDA module's tracer (the
+/// wavefront of launches, wf_trace.h) in place of the CPU's: the same image and statistics
+/// as render_frame_cpu (except time_ms.*, memory.* and device.*), which the tests check.
 Frame render_frame_wavefront_cpu(const PreparedScene& scene, const RenderSettings& settings,
                                  const ProgressFn& progress = {});
 

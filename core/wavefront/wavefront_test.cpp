@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 #include <random>
 
@@ -319,16 +320,33 @@ TEST(Wavefront, AccumulationKeepsItemOrderPerSample) {
     EXPECT_EQ(0, std::memcmp(got.data(), expected.data(), samples * sizeof(Vec3)));
 }
 
-TEST(Wavefront, ImageTexturesAreNotForTheDevice) {
-    PreparedScene scene = prepare_scene(test::glass_mirror_scene());
-    EXPECT_EQ(wavefront_unsupported(scene), "");
-    struct Grey : TextureSampler {
-        Vec3 sample(uint32_t, float, float) const override { return Vec3(0.5f); }
+// Image textures are sampled through OpenImageIO on the host: the device cannot take them
+// (wavefront_unsupported says why), the CPU policy binds the scene, sampler included, and
+// both tracers give the same frame of it.
+TEST(Wavefront, ImageTexturesRenderOnTheCpuPolicyOnly) {
+    Scene built = test::glass_mirror_scene();
+    Pigment image;
+    image.solid = false;
+    image.pattern.kind = PatternKind::Image;
+    image.pattern.image = 0;
+    Texture file;
+    file.path = "stripes.png"; // never opened: the sampler below stands in for OpenImageIO
+    built.textures.push_back(file);
+    built.pigments.push_back(image);
+    for (Material& m : built.materials) m.pigment = 0;
+    PreparedScene scene = prepare_scene(built);
+    EXPECT_EQ(wavefront_unsupported(prepare_scene(test::glass_mirror_scene())), "");
+    struct Stripes : TextureSampler {
+        Vec3 sample(uint32_t, float u, float v) const override {
+            return Vec3(u, v, 0.5f) * (std::fmod(u * 8.0f, 1.0f) < 0.5f ? 1.0f : 0.25f);
+        }
     };
-    scene.textures.push_back(Texture{});
-    scene.sampler = std::make_shared<Grey>();
+    scene.sampler = std::make_shared<Stripes>();
     EXPECT_NE(wavefront_unsupported(scene).find("image textures"), std::string::npos);
-    EXPECT_THROW(render_frame_wavefront_cpu(scene, settings_for(scene, {})), RenderError);
+    const Frame textured = expect_identical(scene, "image textures", {});
+    const Frame plain = render_frame_cpu(prepare_scene(test::glass_mirror_scene()),
+                                         settings_for(scene, {}));
+    EXPECT_NE(textured.rgba, plain.rgba) << "the texture shows";
 }
 
 } // namespace

@@ -7,11 +7,14 @@
 #pragma once
 
 #include "core/base/error.h"
+#include "core/base/memory.h"
 #include "core/raster/raster_tri.h"
+#include "core/raster/rasterizer.h"
 #include "core/render/frame.h"
 #include "core/render/frame_kernels.h"
 #include "core/render/frame_stats.h"
 #include "core/render/renderer.h"
+#include "core/wavefront/seam.h"
 #include "core/wavefront/wf_scene.h"
 #include "core/wavefront/wf_trace.h"
 
@@ -32,7 +35,13 @@ template <class Exec> struct DeviceHits {
 /// Pixels of one row that one raster thread covers.
 constexpr int kCoverRun = 8;
 
-template <class Exec> class DeviceFrame {
+/// The frame, written once: `Exec` runs it (seam.h: the CPU policy, the CUDA policy, the
+/// strict test policy), `Tracer` is its intersection stage (HostTracer on the CPU backend,
+/// DeviceTracer, the wavefront of launches, elsewhere).
+template <class Exec, class Tracer = DeviceTracer<Exec>> class DeviceFrame {
+    static_assert(FrameExec<Exec>, "Exec must provide what core/wavefront/seam.h lists");
+    static_assert(FrameTracer<Tracer, Exec>, "Tracer must provide what core/wavefront/seam.h lists");
+
   public:
     /// `keep`: where an exec that outlives its frames keeps the scene's copy between them
     /// (none: the frame copies the scene and frees it at its end).
@@ -50,32 +59,52 @@ template <class Exec> class DeviceFrame {
         last_mark_ = start;
         const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
         mark("cull units");
-        // Photons are shot on the host through the CPU renderer's pass (the same map, so the
-        // same picture) and gathered on the executing side.
-        MemoryTracker photon_memory; // host memory, refused as the CPU renderer refuses it
-        // Reading the system's free memory takes a tenth of a millisecond: only with photons.
-        if (const int64_t available = host_.has_photons() ? available_memory_bytes() : 0;
-            available > 0)
-            photon_memory.set_limit(available / 10 * 9, available);
-        const PhotonMap photons = shoot_photons(host_, *units, s_, st_, photon_memory);
+        // Photons are shot on the host (the same map on every backend, so the same picture)
+        // and gathered on the executing side.
+        MemoryTracker device_photon_memory; // host memory beside a device's
+        MemoryTracker* photon_memory = &device_photon_memory;
+        if constexpr (Exec::kHostMemory) {
+            // Host memory: the frame's buffers and its photons under one limit.
+            limit_memory();
+            photon_memory = &ex_.memory();
+        } else if (const int64_t available =
+                       // Reading the system's free memory takes a tenth of a millisecond:
+                       // only with photons.
+                       host_.has_photons() ? available_memory_bytes() : 0;
+                   available > 0) {
+            device_photon_memory.set_limit(available / 10 * 9, available);
+        }
+        const PhotonMap photons = shoot_photons(host_, *units, s_, st_, *photon_memory);
         mark("photons");
         std::unique_ptr<DeviceScene<Exec>> own;
-        bool reused = false;
-        DeviceScene<Exec>& uploaded =
-            keep_ ? keep_->scene(ex_, host_, *units, &photons, reused)
-                  : *(own = std::make_unique<DeviceScene<Exec>>(ex_, host_, *units, &photons));
-        scene_ = uploaded.view;
-        st_.set("device.scene_kept", reused ? 1.0 : 0.0);
-        st_.set("device.scene_bytes", double(uploaded.bytes()));
-        mark(reused ? "upload (kept)" : "upload");
+        CullView cull;
+        if constexpr (Exec::kHostMemory) {
+            // The executing side reads host memory: the scene is bound, not copied, image
+            // textures and their sampler included.
+            scene_ = SceneView(host_);
+            scene_.photon_map = photons.view();
+            cull = host_cull_view(*units);
+            mark("bind");
+        } else {
+            bool reused = false;
+            DeviceScene<Exec>& uploaded =
+                keep_ ? keep_->scene(ex_, host_, *units, &photons, reused)
+                      : *(own = std::make_unique<DeviceScene<Exec>>(ex_, host_, *units, &photons));
+            scene_ = uploaded.view;
+            cull = uploaded.cull;
+            st_.set("device.scene_kept", reused ? 1.0 : 0.0);
+            st_.set("device.scene_bytes", double(uploaded.bytes()));
+            mark(reused ? "upload (kept)" : "upload");
+        }
         radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
         tests_ = DeviceBuffer<uint32_t, Exec>(ex_, s_.keeps(kPassTests) ? samples : 0);
         fill(ex_, radiance_.data(), samples, Vec3(0.0f));
         fill(ex_, tests_.data(), tests_.size(), 0u);
         params_ = frame_ray_params(host_, s_);
-        DeviceTracer<Exec> tracer(ex_, host_, scene_, *units, uploaded.cull, s_, st_, clock_);
+        Tracer tracer(ex_, host_, scene_, *units, cull, s_, st_, clock_);
         tracer_ = &tracer;
-        st_.set("device.batch_pairs", double(tracer.batch_pairs()));
+        if constexpr (Tracer::kDeviceWork)
+            st_.set("device.batch_pairs", double(tracer.batch_pairs()));
         mark("tracer");
 
         scatter_ = host_.media_scatter_light();
@@ -100,8 +129,10 @@ template <class Exec> class DeviceFrame {
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count());
         frame_totals(st_, host_, s_, ex_.peak_bytes());
-        st_.set("device.launches", double(ex_.launches()));
-        st_.set("device.host_waits", double(ex_.host_waits()));
+        if constexpr (Tracer::kDeviceWork) {
+            st_.set("device.launches", double(ex_.launches()));
+            st_.set("device.host_waits", double(ex_.host_waits()));
+        }
     }
 
     /// Host time of the frame's steps in order (cull units, photons, upload, tracer, primary,
@@ -113,6 +144,31 @@ template <class Exec> class DeviceFrame {
 
     void report(float done) {
         if (progress_ && !progress_(done)) throw RenderError("cancelled");
+    }
+
+    // Host memory: a frame too large for the machine is refused before its memory is taken,
+    // at once when the per-sample arrays alone would not fit, else when the exec's buffers
+    // (rays, keys, hierarchy levels, candidates) would pass what is left. The system would
+    // otherwise stop the process (or swap) part way through the frame.
+    void limit_memory() {
+        const int64_t available = available_memory_bytes();
+        if (available <= 0) return; // unknown: no limit
+        const int64_t samples = int64_t(W_) * H_;
+        // What lives together at the primary stage: radiance, tests, depth, normal, albedo,
+        // object id, the visibility buffer and its slots, the hits (as if every sample hit);
+        // the frame's passes per pixel.
+        const int64_t per_sample = sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t) * 3 +
+                                   sizeof(uint64_t) + sizeof(SurfaceHit);
+        const int64_t per_pixel = sizeof(float) * (4 + 1 + 3 + 3 + 1 + 1);
+        const int64_t fixed = samples * per_sample + int64_t(s_.width) * s_.height * per_pixel;
+        const int64_t usable = available / 10 * 9; // the rest for what is not counted
+        if (fixed > usable)
+            throw OutOfMemory("a " + std::to_string(s_.width) + "x" + std::to_string(s_.height) +
+                              " frame with " + std::to_string(s_.aa_samples) + "x" +
+                              std::to_string(s_.aa_samples) + " samples per pixel needs at least " +
+                              std::to_string(fixed >> 20) + " MiB; this machine has " +
+                              std::to_string(available >> 20) + " MiB available");
+        ex_.memory().set_limit(usable, available);
     }
 
     // Projections no plane holds: every sample's camera ray is traced through the ray
@@ -162,9 +218,12 @@ template <class Exec> class DeviceFrame {
             trace_camera(cam, vis);
         } else {
             clock_.start("raster");
-            fill(ex_, vis, samples, kEmptyPixel);
             const size_t tris = host_.triangle_count();
-            if (tris > 0) {
+            if constexpr (Exec::kHostMemory) {
+                // Binned into screen tiles, one task a tile, no atomics: faster on CPU cores
+                // (core/raster/rasterizer.cpp); the same minimum keys.
+                rasterize(host_, cam, vis);
+            } else if (fill(ex_, vis, samples, kEmptyPixel); tris > 0) {
                 const double near = raster_near(host_, cam);
                 DeviceBuffer<ScreenTri, Exec> screen_buf(ex_, 2 * tris);
                 ScreenTri* screen = screen_buf.data();
@@ -558,7 +617,7 @@ template <class Exec> class DeviceFrame {
     PhaseClock<Exec> clock_;
     SceneKeep<Exec>* keep_ = nullptr;
     SceneView scene_;
-    DeviceTracer<Exec>* tracer_ = nullptr;
+    Tracer* tracer_ = nullptr;
     RayGenParams params_;
     int W_ = 0, H_ = 0;
     DeviceBuffer<Vec3, Exec> radiance_;

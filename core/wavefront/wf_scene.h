@@ -31,6 +31,12 @@ struct CullView {
     uint32_t count = 0;
 };
 
+/// The units in host memory, for an exec that reads it (no copy).
+inline CullView host_cull_view(const CullUnits& u) {
+    return {u.begin.data(), u.sphere.data(), u.object.data(), u.object_units.data(),
+            uint32_t(u.count())};
+}
+
 template <class Exec> class DeviceScene {
   public:
     static constexpr size_t kOwnCopy = size_t(1) << 20;

@@ -30,13 +30,27 @@ uint32_t count_and_scan(Exec& ex, const char* name, size_t n, uint32_t* offsets,
 }
 
 /// Adds items [0, n) to samples: item i goes to sample `sample(i)` when `value(i, v)` gives
-/// it a contribution v. Per sample, items add in item order, so the sums are bitwise those of
-/// the CPU renderer's sequential loop: a stable sort of the items by sample, one thread per
-/// sample adding its run in order. The number of runs stays on the executing side (threads
+/// it a contribution v. Per sample, items add in item order, so the sums are bitwise the same
+/// on every policy: on a device, a stable sort of the items by sample, one thread per sample
+/// adding its run in order; on host memory, one thread adding them all in order. The number of runs stays on the executing side (threads
 /// past it return), so the host does not wait.
 template <class Exec, class Sample, class Value>
 void accumulate_in_order(Exec& ex, size_t n, Vec3* radiance, Sample sample, Value value) {
     if (n == 0) return;
+    if constexpr (Exec::kHostMemory) {
+        // On host memory, the contributions in parallel, then added on one thread in item
+        // order: the same sums, without sorting the items.
+        constexpr uint32_t kNone = ~0u;
+        DeviceBuffer<Vec3, Exec> values(ex, n);
+        DeviceBuffer<uint32_t, Exec> to(ex, n);
+        Vec3* v = values.data();
+        uint32_t* t = to.data();
+        ex.launch("accumulate.values", n,
+                  [=](size_t i) { t[i] = value(i, v[i]) ? uint32_t(sample(i)) : kNone; });
+        for (size_t i = 0; i < n; ++i)
+            if (t[i] != kNone) radiance[t[i]] += v[i];
+        return;
+    }
     DeviceBuffer<uint32_t, Exec> keys(ex, n), items(ex, n), heads(ex, n), starts(ex, n + 2);
     uint32_t* k = keys.data();
     uint32_t* it = items.data();

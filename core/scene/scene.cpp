@@ -71,36 +71,39 @@ int csg_nesting(const ShapeObject& o) {
     return o.root < height.size() ? height[o.root] : 0;
 }
 
-namespace {
-
-/// Throws SceneError naming `what` (e.g. "mesh 3") where `mesh` is not a valid mesh.
 void validate_mesh(const Mesh& mesh, const std::string& what) {
-    if (mesh.indices.empty()) throw SceneError(what + " has no faces");
+    if (mesh.indices.empty()) throw SceneError(what + ": the mesh has no faces");
     if (mesh.indices.size() % 3 != 0)
-        throw SceneError(what + ": the index count " + std::to_string(mesh.indices.size()) +
-                         " is not a multiple of 3");
-    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-        throw SceneError(what + ": " + std::to_string(mesh.normals.size()) + " normals for " +
-                         std::to_string(mesh.positions.size()) + " vertices");
+        throw SceneError(what + ": " + std::to_string(mesh.indices.size()) +
+                         " triangle indices are not a multiple of 3");
     for (size_t i = 0; i < mesh.positions.size(); ++i)
         if (!is_finite(mesh.positions[i]))
             throw SceneError(what + ": vertex " + std::to_string(i) +
+                             " is not finite (NaN or infinity)");
+    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
+        throw SceneError(what + ": " + std::to_string(mesh.normals.size()) + " normals for " +
+                         std::to_string(mesh.positions.size()) + " vertices");
+    for (size_t i = 0; i < mesh.normals.size(); ++i)
+        if (!is_finite(mesh.normals[i]))
+            throw SceneError(what + ": normal " + std::to_string(i) +
                              " is not finite (NaN or infinity)");
     if (!mesh.uvs.empty() && mesh.uvs.size() != 2 * mesh.positions.size())
         throw SceneError(what + ": " + std::to_string(mesh.uvs.size() / 2) +
                          " texture coordinates for " + std::to_string(mesh.positions.size()) +
                          " vertices");
-    for (float f : mesh.uvs)
-        if (!std::isfinite(f)) throw SceneError(what + ": a texture coordinate is not finite");
-    for (size_t i = 0; i < mesh.normals.size(); ++i)
-        if (!is_finite(mesh.normals[i]))
-            throw SceneError(what + ": normal " + std::to_string(i) + " is not finite");
+    for (size_t i = 0; i < mesh.uvs.size(); ++i)
+        if (!std::isfinite(mesh.uvs[i]))
+            throw SceneError(what + ": the texture coordinate of vertex " + std::to_string(i / 2) +
+                             " is not finite");
     for (size_t i = 0; i < mesh.indices.size(); ++i)
         if (mesh.indices[i] >= mesh.positions.size())
-            throw SceneError(what + ": index " + std::to_string(i) + " = " +
-                             std::to_string(mesh.indices[i]) + " is out of range (" +
+            throw SceneError(what + ": triangle " + std::to_string(i / 3) + " names vertex " +
+                             std::to_string(mesh.indices[i]) + ", out of range (" +
                              std::to_string(mesh.positions.size()) + " vertices)");
 }
+
+
+namespace {
 
 /// Throws SceneError where the mesh camera's meshes and settings do not fit together.
 void validate_mesh_camera(const Camera& c, const std::vector<CameraMesh>& meshes) {

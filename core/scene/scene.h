@@ -24,6 +24,11 @@ struct Mesh {
     size_t triangle_count() const { return indices.size() / 3; }
 };
 
+/// Throws SceneError "WHAT: ..." naming the first vertex, normal, texture coordinate or index
+/// of `mesh` that is wrong, or that it has no faces: Scene::validate's check of each mesh, and
+/// the readers' of a mesh from a file or a cage, where `what` names the file or the element.
+void validate_mesh(const Mesh& mesh, const std::string& what);
+
 struct Material {
     Vec3 color{0.8f, 0.8f, 0.8f};
     Vec3 emission{0.0f, 0.0f, 0.0f}; // radiance the surface gives off by itself

@@ -3,7 +3,7 @@
 #include "io/mesh/mesh_file.h"
 
 #include "core/base/error.h"
-#include "io/mesh/mesh_check.h"
+#include "core/scene/scene.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
@@ -230,7 +230,7 @@ MeshPart convert(const std::string& path, const aiScene* scene, const aiNode& no
                        c = face.mIndices[nm.flips ? 1 : 2];
         mesh.indices.insert(mesh.indices.end(), {a, b, c});
     }
-    check_mesh(mesh, label);
+    validate_mesh(mesh, label);
     return part;
 }
 

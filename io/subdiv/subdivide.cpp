@@ -3,7 +3,7 @@
 #include "io/subdiv/subdivide.h"
 
 #include "core/base/error.h"
-#include "io/mesh/mesh_check.h"
+#include "core/scene/scene.h"
 #include "io/subdiv/cage_check.h"
 
 #include <opensubdiv/far/error.h>
@@ -207,7 +207,7 @@ Mesh subdivide(const SubdivCage& cage, const SubdivOptions& options, const std::
         normals[i] = is_finite(n) && length(n) > 0 ? n : Vec3(0, 0, 1);
     }
     mesh.normals = std::move(normals);
-    check_mesh(mesh, what);
+    validate_mesh(mesh, what);
     return mesh;
 }
 

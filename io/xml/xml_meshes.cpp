@@ -4,7 +4,7 @@
 #include "io/xml/xml_reader.h"
 
 #include "core/base/error.h"
-#include "io/mesh/mesh_check.h"
+#include "core/scene/scene.h"
 #include "io/mesh/mesh_file.h"
 #include "io/subdiv/subdivide.h"
 
@@ -92,7 +92,7 @@ uint32_t SceneReader::read_mesh(const pugi::xml_node& node, bool top_level) {
         if (!has_positions)
             ctx_.fail(node, "a <mesh> needs a file attribute or a <positions> element");
         try {
-            check_mesh(mesh, label(node, name));
+            validate_mesh(mesh, label(node, name));
         } catch (const SceneError& e) {
             ctx_.fail(node, e.what());
         }

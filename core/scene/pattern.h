@@ -64,9 +64,26 @@ SHEAF_HD_INLINE bool bends_by_own_turbulence(PatternKind k) {
            k == PatternKind::Spiral1 || k == PatternKind::Spiral2;
 }
 
+/// The entries a list pattern picks from by tile (checker and brick 2, hexagon 3, square 4,
+/// triangular 6); 0 for continuous patterns. Every reader checks a list's length by it.
+SHEAF_HD_INLINE int pattern_list_size(PatternKind k) {
+    switch (k) {
+    case PatternKind::Checker:
+    case PatternKind::Brick:
+        return 2;
+    case PatternKind::Hexagon:
+        return 3;
+    case PatternKind::Square:
+        return 4;
+    case PatternKind::Triangular:
+        return 6;
+    default:
+        return 0;
+    }
+}
+
 SHEAF_HD_INLINE bool pattern_is_list(PatternKind k) {
-    return k == PatternKind::Checker || k == PatternKind::Hexagon || k == PatternKind::Brick ||
-           k == PatternKind::Square || k == PatternKind::Triangular;
+    return pattern_list_size(k) > 0;
 }
 
 enum class Wave : uint8_t { Ramp, Triangle, Sine, Scallop, Cubic, Poly };

@@ -11,7 +11,9 @@
 
 namespace sheaf {
 
-struct SceneView {
+/// The arrays the exact tests of analytic shapes read (ShapeTables: polys, glyphs, profiles,
+/// blobs, isosurfaces and their functions, julias) are its base, held once.
+struct SceneView : ShapeTables {
     // Primitives: triangles [0, tri_count), then one per analytic object.
     const TriangleVerts* tris = nullptr;
     const TriangleNormals* normals = nullptr;
@@ -29,15 +31,6 @@ struct SceneView {
     uint32_t object_count = 0;
 
     const PlacedShape* shapes = nullptr;
-    const PolyCoeffs* polys = nullptr;
-    const GlyphRef* glyphs = nullptr;
-    const GlyphSegment* glyph_segments = nullptr;
-    const RevolutionRef* revolutions = nullptr;
-    const RevolutionSegment* revolution_segments = nullptr;
-    const BlobRef* blobs = nullptr;
-    const BlobElement* blob_elements = nullptr;
-    const IsoRef* isosurfaces = nullptr;
-    const JuliaFractal* julias = nullptr;
     const uint32_t* shape_material = nullptr;
     const PreparedCsgNode* csg = nullptr;
     const uint32_t* csg_children = nullptr;
@@ -61,7 +54,6 @@ struct SceneView {
     const uint32_t* media_solids = nullptr; // PreparedScene::media_solids
     uint32_t media_solid_count = 0;
     int32_t atmosphere = -1; // PreparedScene::atmosphere
-    FnView functions; // user functions: function patterns, isosurfaces
     int32_t sky = -1;
     Fog fog;
     const Rainbow* rainbows = nullptr;
@@ -89,17 +81,24 @@ struct SceneView {
     /// A view of `p` (host pointers). Implicit, so host code may pass a PreparedScene where a
     /// view is expected; hot loops build one view and pass it on.
     SceneView(const PreparedScene& p) // NOLINT(google-explicit-constructor)
-        : tris(p.tris.data()), normals(p.normals.data()), uvs(p.uvs.data()),
+        : ShapeTables{p.polys.data(),
+                      p.glyphs.data(),
+                      p.glyph_segments.data(),
+                      p.revolutions.data(),
+                      p.revolution_segments.data(),
+                      p.blobs.data(),
+                      p.blob_elements.data(),
+                      p.isosurfaces.data(),
+                      {p.fn_programs.data(), p.fn_code.data(), p.fn_patterns.data(),
+                       p.fn_pigments.data(), p.fn_pigment_entries.data(), p.warps.data()},
+                      p.julias.data()},
+          tris(p.tris.data()), normals(p.normals.data()), uvs(p.uvs.data()),
           tri_count(uint32_t(p.tris.size())), analytic_count(uint32_t(p.analytic_root.size())),
           prim_object(p.prim_object.data()), prim_sphere(p.prim_sphere.data()),
           prim_flags(p.prim_flags.data()), prim_flag_count(uint32_t(p.prim_flags.size())),
           object_begin(p.object_begin.data()), object_sphere(p.object_sphere.data()),
           object_material(p.object_material.data()), object_count(uint32_t(p.object_sphere.size())),
-          shapes(p.shapes.data()), polys(p.polys.data()), glyphs(p.glyphs.data()),
-          glyph_segments(p.glyph_segments.data()), revolutions(p.revolutions.data()),
-          revolution_segments(p.revolution_segments.data()), blobs(p.blobs.data()),
-          blob_elements(p.blob_elements.data()), isosurfaces(p.isosurfaces.data()),
-          julias(p.julias.data()), shape_material(p.shape_material.data()), csg(p.csg.data()),
+          shapes(p.shapes.data()), shape_material(p.shape_material.data()), csg(p.csg.data()),
           csg_children(p.csg_children.data()), analytic_root(p.analytic_root.data()),
           materials(p.materials.data()), pigments(p.pigments.data()),
           pigment_entries(p.pigment_entries.data()), normal_patterns(p.normal_patterns.data()),
@@ -110,10 +109,7 @@ struct SceneView {
           density_voxels(p.density_voxels.data()), media_containers(p.media_containers.data()),
           media_container_count(uint32_t(p.media_containers.size())),
           media_solids(p.media_solids.data()), media_solid_count(uint32_t(p.media_solids.size())),
-          atmosphere(p.atmosphere), functions{p.fn_programs.data(),        p.fn_code.data(),
-                                              p.fn_patterns.data(),        p.fn_pigments.data(),
-                                              p.fn_pigment_entries.data(), p.warps.data()},
-          sky(p.sky), fog(p.fog), rainbows(p.rainbows.data()),
+          atmosphere(p.atmosphere), sky(p.sky), fog(p.fog), rainbows(p.rainbows.data()),
           rainbow_count(uint32_t(p.rainbows.size())), lights(p.lights.data()),
           light_count(uint32_t(p.lights.size())), camera_faces(p.camera_faces.data()),
           camera_face_count(uint32_t(p.camera_faces.size())), camera_meshes(p.camera_meshes.data()),
@@ -124,10 +120,7 @@ struct SceneView {
 
     /// What poly, glyph, revolution, blob, isosurface and julia shapes read beside their
     /// Shape.
-    SHEAF_HD ShapeTables shape_tables() const {
-        return {polys, glyphs,        glyph_segments, revolutions, revolution_segments,
-                blobs, blob_elements, isosurfaces,    functions,   julias};
-    }
+    SHEAF_HD const ShapeTables& shape_tables() const { return *this; }
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
     /// Whether rays cross media: containers' or the atmosphere's (core/render/media.h).
     SHEAF_HD bool has_media() const { return media_container_count > 0 || atmosphere >= 0; }

@@ -12,51 +12,47 @@ namespace sheaf::io::pov {
 
 namespace {
 
-struct PatternInfo {
-    PatternKind kind;
-    int list = 0; // entries a list pattern takes (checker 2, hexagon 3 ...); 0: continuous
-};
-
-const std::map<std::string, PatternInfo>& supported_patterns() {
-    static const std::map<std::string, PatternInfo> m = {
-        {"agate", {PatternKind::Agate}},
-        {"boxed", {PatternKind::Boxed}},
-        {"bozo", {PatternKind::Bozo}},
-        {"spotted", {PatternKind::Bozo}},
-        {"bumps", {PatternKind::Bozo}},
-        {"brick", {PatternKind::Brick, 2}},
-        {"cells", {PatternKind::Cells}},
-        {"checker", {PatternKind::Checker, 2}},
-        {"crackle", {PatternKind::Crackle}},
-        {"cylindrical", {PatternKind::Cylindrical}},
-        {"dents", {PatternKind::Dents}},
-        {"gradient", {PatternKind::Gradient}},
-        {"granite", {PatternKind::Granite}},
-        {"hexagon", {PatternKind::Hexagon, 3}},
-        {"leopard", {PatternKind::Leopard}},
-        {"marble", {PatternKind::Marble}},
-        {"onion", {PatternKind::Onion}},
-        {"planar", {PatternKind::Planar}},
-        {"quilted", {PatternKind::Quilted}},
-        {"radial", {PatternKind::Radial}},
-        {"ripples", {PatternKind::Ripples}},
-        {"spherical", {PatternKind::Spherical}},
-        {"spiral1", {PatternKind::Spiral1}},
-        {"spiral2", {PatternKind::Spiral2}},
-        {"square", {PatternKind::Square, 4}},
-        {"triangular", {PatternKind::Triangular, 6}},
-        {"waves", {PatternKind::Waves}},
-        {"wood", {PatternKind::Wood}},
-        {"wrinkles", {PatternKind::Wrinkles}},
-        {"function", {PatternKind::Function}},
-        {"mandel", {PatternKind::Mandel}},
-        {"julia", {PatternKind::Julia}},
-        {"magnet", {PatternKind::Mandel}}, // magnet 1 mandel 50, magnet 2 julia <c>, 50
-        {"slope", {PatternKind::Slope}},
-        {"pigment_pattern", {PatternKind::PigmentPattern}},
-        {"image_pattern", {PatternKind::ImagePattern}},
-        {"density_file", {PatternKind::DensityFile}},
-        {"facets", {PatternKind::Facets}},
+// The kinds Sheaf shows; a list pattern's entries: pattern_list_size (core/scene/pattern.h).
+const std::map<std::string, PatternKind>& supported_patterns() {
+    static const std::map<std::string, PatternKind> m = {
+        {"agate", PatternKind::Agate},
+        {"boxed", PatternKind::Boxed},
+        {"bozo", PatternKind::Bozo},
+        {"spotted", PatternKind::Bozo},
+        {"bumps", PatternKind::Bozo},
+        {"brick", PatternKind::Brick},
+        {"cells", PatternKind::Cells},
+        {"checker", PatternKind::Checker},
+        {"crackle", PatternKind::Crackle},
+        {"cylindrical", PatternKind::Cylindrical},
+        {"dents", PatternKind::Dents},
+        {"gradient", PatternKind::Gradient},
+        {"granite", PatternKind::Granite},
+        {"hexagon", PatternKind::Hexagon},
+        {"leopard", PatternKind::Leopard},
+        {"marble", PatternKind::Marble},
+        {"onion", PatternKind::Onion},
+        {"planar", PatternKind::Planar},
+        {"quilted", PatternKind::Quilted},
+        {"radial", PatternKind::Radial},
+        {"ripples", PatternKind::Ripples},
+        {"spherical", PatternKind::Spherical},
+        {"spiral1", PatternKind::Spiral1},
+        {"spiral2", PatternKind::Spiral2},
+        {"square", PatternKind::Square},
+        {"triangular", PatternKind::Triangular},
+        {"waves", PatternKind::Waves},
+        {"wood", PatternKind::Wood},
+        {"wrinkles", PatternKind::Wrinkles},
+        {"function", PatternKind::Function},
+        {"mandel", PatternKind::Mandel},
+        {"julia", PatternKind::Julia},
+        {"magnet", PatternKind::Mandel}, // magnet 1 mandel 50, magnet 2 julia <c>, 50
+        {"slope", PatternKind::Slope},
+        {"pigment_pattern", PatternKind::PigmentPattern},
+        {"image_pattern", PatternKind::ImagePattern},
+        {"density_file", PatternKind::DensityFile},
+        {"facets", PatternKind::Facets},
     };
     return m;
 }
@@ -83,8 +79,8 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
     const std::string& k = t.text;
     if (auto it = supported_patterns().find(k); it != supported_patterns().end()) {
         supported = true;
-        pt.kind = it->second.kind;
-        list = it->second.list;
+        pt.kind = it->second;
+        list = pattern_list_size(pt.kind);
         // Marble, wood and the spirals are triangle-waved unless the scene says otherwise.
         if (!pt.wave_given)
             pt.wave = (pt.kind == PatternKind::Marble || pt.kind == PatternKind::Wood ||

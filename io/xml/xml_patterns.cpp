@@ -56,23 +56,6 @@ const char* name_of(PatternKind k) {
     return "?";
 }
 
-// The entries a list pattern picks from; 0 for continuous patterns.
-size_t list_size(PatternKind k) {
-    switch (k) {
-    case PatternKind::Checker:
-    case PatternKind::Brick:
-        return 2;
-    case PatternKind::Hexagon:
-        return 3;
-    case PatternKind::Square:
-        return 4;
-    case PatternKind::Triangular:
-        return 6;
-    default:
-        return 0;
-    }
-}
-
 std::string quote(const std::string& s) {
     return "'" + s + "'";
 }
@@ -306,7 +289,7 @@ float SceneReader::entry_value(Attributes& e, const char* ordered_by, float& pre
 
 void SceneReader::check_entry_count(const pugi::xml_node& node, PatternKind kind,
                                     size_t count) const {
-    const size_t list = list_size(kind);
+    const size_t list = size_t(pattern_list_size(kind));
     if (list > 0 && count != list)
         ctx_.fail(node, "the " + std::string(name_of(kind)) + " pattern picks from " +
                             std::to_string(list) + " entries; " + tag(node) + " has " +

@@ -7,39 +7,6 @@
 
 namespace sheaf::io::pov {
 
-namespace {
-
-FnOp binary(FnNode::Op op) {
-    switch (op) {
-    case FnNode::Add:
-        return FnOp::Add;
-    case FnNode::Sub:
-        return FnOp::Sub;
-    case FnNode::Mul:
-        return FnOp::Mul;
-    case FnNode::Div:
-        return FnOp::Div;
-    case FnNode::Lt:
-        return FnOp::Lt;
-    case FnNode::Le:
-        return FnOp::Le;
-    case FnNode::Gt:
-        return FnOp::Gt;
-    case FnNode::Ge:
-        return FnOp::Ge;
-    case FnNode::Eq:
-        return FnOp::Eq;
-    case FnNode::Ne:
-        return FnOp::Ne;
-    case FnNode::And:
-        return FnOp::And;
-    default:
-        return FnOp::Or;
-    }
-}
-
-} // namespace
-
 void FnCompiler::push(FnOp op, uint16_t arg, double value, uint8_t count) {
     if (code_.size() >= kMaxFnCode)
         throw FnCompileError("a function of more than " + std::to_string(kMaxFnCode) +
@@ -106,24 +73,16 @@ void FnCompiler::call(const PovFunction& f, size_t nargs, int component) {
 }
 
 void FnCompiler::emit(const FnNode& n, uint32_t base) {
-    switch (n.op) {
+    switch (n.kind) {
     case FnNode::Const:
         push(FnOp::Const, 0, n.value);
         return;
     case FnNode::Param:
         push(FnOp::Load, uint16_t(base + uint32_t(n.param)));
         return;
-    case FnNode::Neg:
-        emit(n.args[0], base);
-        push(FnOp::Neg);
-        return;
-    case FnNode::Not:
-        emit(n.args[0], base);
-        push(FnOp::Not);
-        return;
-    case FnNode::Cond:
+    case FnNode::Operator: // the operands in order, then the operator
         for (const FnNode& a : n.args) emit(a, base);
-        push(FnOp::Cond);
+        push(n.op);
         return;
     case FnNode::Call: {
         if (!n.fn) throw FnCompileError("a call without its function");
@@ -161,11 +120,6 @@ void FnCompiler::emit(const FnNode& n, uint32_t base) {
         }
         return;
     }
-    default:
-        emit(n.args[0], base);
-        emit(n.args[1], base);
-        push(binary(n.op));
-        return;
     }
 }
 

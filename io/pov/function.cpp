@@ -136,18 +136,11 @@ namespace {
 double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
     if (steps == 0) throw FnStepsExceeded{};
     --steps;
-    switch (n.op) {
+    switch (n.kind) {
     case FnNode::Const:
         return n.value;
     case FnNode::Param:
         return n.param < np ? p[n.param] : 0.0;
-    case FnNode::Neg:
-        return -eval_node(n.args[0], p, np, steps);
-    case FnNode::Not:
-        return truth(eval_node(n.args[0], p, np, steps)) ? 0.0 : 1.0;
-    case FnNode::Cond:
-        return truth(eval_node(n.args[0], p, np, steps)) ? eval_node(n.args[1], p, np, steps)
-                                                         : eval_node(n.args[2], p, np, steps);
     case FnNode::Builtin: {
         std::vector<double> a;
         for (const FnNode& c : n.args) a.push_back(eval_node(c, p, np, steps));
@@ -165,34 +158,45 @@ double eval_node(const FnNode& n, const double* p, int np, uint64_t& steps) {
         }
         return n.fn->eval(a.data(), int(a.size()), steps);
     }
+    case FnNode::Operator:
+        break;
+    }
+    switch (n.op) {
+    case FnOp::Neg:
+        return -eval_node(n.args[0], p, np, steps);
+    case FnOp::Not:
+        return truth(eval_node(n.args[0], p, np, steps)) ? 0.0 : 1.0;
+    case FnOp::Cond:
+        return truth(eval_node(n.args[0], p, np, steps)) ? eval_node(n.args[1], p, np, steps)
+                                                         : eval_node(n.args[2], p, np, steps);
     default:
         break;
     }
     const double a = eval_node(n.args[0], p, np, steps), b = eval_node(n.args[1], p, np, steps);
     switch (n.op) {
-    case FnNode::Add:
+    case FnOp::Add:
         return a + b;
-    case FnNode::Sub:
+    case FnOp::Sub:
         return a - b;
-    case FnNode::Mul:
+    case FnOp::Mul:
         return a * b;
-    case FnNode::Div:
+    case FnOp::Div:
         return a / b;
-    case FnNode::Lt:
+    case FnOp::Lt:
         return a < b;
-    case FnNode::Le:
+    case FnOp::Le:
         return a <= b;
-    case FnNode::Gt:
+    case FnOp::Gt:
         return a > b;
-    case FnNode::Ge:
+    case FnOp::Ge:
         return a >= b;
-    case FnNode::Eq:
+    case FnOp::Eq:
         return std::fabs(a - b) <= 1e-10;
-    case FnNode::Ne:
+    case FnOp::Ne:
         return std::fabs(a - b) > 1e-10;
-    case FnNode::And:
+    case FnOp::And:
         return truth(a) && truth(b);
-    case FnNode::Or:
+    case FnOp::Or:
         return truth(a) || truth(b);
     default:
         return 0;

@@ -16,29 +16,16 @@
 namespace sheaf::io::pov {
 
 struct FnNode {
-    enum Op {
+    enum Kind : uint8_t {
         Const,
         Param,
-        Neg,
-        Not,
-        Add,
-        Sub,
-        Mul,
-        Div,
-        Lt,
-        Le,
-        Gt,
-        Ge,
-        Eq,
-        Ne,
-        And,
-        Or,
-        Cond,    // a ? b : c
-        Builtin, // name(args)
-        Call,    // a user function (args)
+        Operator, // `op` over the arguments: the programs' own operators (FnOp)
+        Builtin,  // name(args)
+        Call,     // a user function (args)
     };
-    Op op = Const;
-    double value = 0; // Const
+    Kind kind = Const;
+    FnOp op = FnOp::Const; // Operator: Neg, Not, Add ... Or, Cond (a ? b : c)
+    double value = 0;      // Const
     int param = 0;    // Param
     std::string name; // Builtin
     std::shared_ptr<const struct PovFunction> fn;

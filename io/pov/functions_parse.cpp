@@ -190,8 +190,9 @@ void set_height(FnNode& n) {
 
 /// An operation over its operands, moved in (a long chain would otherwise be copied at each
 /// operator: quadratic in its length).
-template <class... Kids> FnNode node(FnNode::Op op, Kids&&... kids) {
+template <class... Kids> FnNode node(FnOp op, Kids&&... kids) {
     FnNode n;
+    n.kind = FnNode::Operator;
     n.op = op;
     n.args.reserve(sizeof...(kids));
     (n.args.push_back(std::forward<Kids>(kids)), ...);
@@ -208,7 +209,7 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
         const Nest nest(*this, t); // every nested term of the body comes through here
         if (is_sym_tok(t, "-")) {
             advance();
-            return node(FnNode::Neg, parse_fn(params, 6));
+            return node(FnOp::Neg, parse_fn(params, 6));
         }
         if (is_sym_tok(t, "+")) {
             advance();
@@ -216,7 +217,7 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
         }
         if (is_sym_tok(t, "!")) {
             advance();
-            return node(FnNode::Not, parse_fn(params, 6));
+            return node(FnOp::Not, parse_fn(params, 6));
         }
         return parse_fn_primary(params);
     }
@@ -225,37 +226,37 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
         const Token t = peek();
         if (t.kind != TokKind::Symbol) return a;
         const std::string& o = t.text;
-        FnNode::Op op;
+        FnOp op;
         if (level == 0 && o == "?") {
             advance();
             FnNode b = parse_fn(params, 0);
             expect_sym(":");
             FnNode c = parse_fn(params, 0);
-            return node(FnNode::Cond, std::move(a), std::move(b), std::move(c));
+            return node(FnOp::Cond, std::move(a), std::move(b), std::move(c));
         } else if (level == 1 && o == "|")
-            op = FnNode::Or;
+            op = FnOp::Or;
         else if (level == 2 && o == "&")
-            op = FnNode::And;
+            op = FnOp::And;
         else if (level == 3 && o == "<")
-            op = FnNode::Lt;
+            op = FnOp::Lt;
         else if (level == 3 && o == "<=")
-            op = FnNode::Le;
+            op = FnOp::Le;
         else if (level == 3 && o == ">")
-            op = FnNode::Gt;
+            op = FnOp::Gt;
         else if (level == 3 && o == ">=")
-            op = FnNode::Ge;
+            op = FnOp::Ge;
         else if (level == 3 && o == "=")
-            op = FnNode::Eq;
+            op = FnOp::Eq;
         else if (level == 3 && o == "!=")
-            op = FnNode::Ne;
+            op = FnOp::Ne;
         else if (level == 4 && o == "+")
-            op = FnNode::Add;
+            op = FnOp::Add;
         else if (level == 4 && o == "-")
-            op = FnNode::Sub;
+            op = FnOp::Sub;
         else if (level == 5 && o == "*")
-            op = FnNode::Mul;
+            op = FnOp::Mul;
         else if (level == 5 && o == "/")
-            op = FnNode::Div;
+            op = FnOp::Div;
         else
             return a;
         advance();
@@ -273,7 +274,7 @@ FnNode Parser::parse_fn_primary(const std::vector<std::string>& params) {
         advance();
         const Token c = peek();
         const std::string name = expect_ident("a component");
-        if (n.op != FnNode::Call || !n.fn || !n.fn->pigment) continue; // of a vector: unsupported
+        if (n.kind != FnNode::Call || !n.fn || !n.fn->pigment) continue; // of a vector: unsupported
         static const std::map<std::string, FnComponent> components = {
             {"x", FnComponent::Red},
             {"u", FnComponent::Red},
@@ -326,7 +327,7 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
         }
     };
     if (auto it = std::find(params.begin(), params.end(), t.text); it != params.end()) {
-        n.op = FnNode::Param;
+        n.kind = FnNode::Param;
         n.param = int(it - params.begin());
         return n;
     }
@@ -339,7 +340,7 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
             // What its declaration met that is unsupported (a pigment function's pigment of
             // an unsupported pattern) is warned where it is used, as in expressions.
             raise_pending(*v);
-            n.op = FnNode::Call;
+            n.kind = FnNode::Call;
             n.fn = std::static_pointer_cast<const PovFunction>(v->ptr);
             if (!n.fn->unsupported.empty() && fn_unsupported_.empty()) // warned when called
                 fn_unsupported_ = n.fn->unsupported + " ('" + t.text + "')";
@@ -383,7 +384,7 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
         return n;
     }
     if (is_float_builtin(t.text)) {
-        n.op = FnNode::Builtin;
+        n.kind = FnNode::Builtin;
         n.name = t.text;
         n.args = args();
         set_height(n);

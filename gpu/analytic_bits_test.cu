@@ -1,13 +1,13 @@
 // The analytic shapes' exact tests on the device against the host, ray by ray (CTest
-// `cuda_bits`, label cuda; skips without a device): core/wavefront/analytic_probe.h over every
+// `cuda_bits`, label cuda; skips without a device): tests/support/analytic_probe.h over every
 // sample scene. Isosurfaces are also taken apart (their function, their march), because their
 // frames are the one known exception to bit-for-bit equality (gpu/cuda_backend_test.cpp); where
 // a ray parts, the first such is printed whole, so one run on a GPU says where the sides part.
 // The same probe runs on the CPU exec in the unit tests (io/scene/scene_files_probe_test.cpp).
 #include "core/backend/device_stack.h"
-#include "core/wavefront/analytic_probe.h"
 #include "gpu/cuda_exec.cuh"
-#include "io/scene/sample_scenes.h"
+#include "tests/support/analytic_probe.h"
+#include "tests/support/sample_scenes.h"
 
 #include <gtest/gtest.h>
 

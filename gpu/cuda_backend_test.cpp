@@ -1,4 +1,4 @@
-// The CUDA backend against the CPU renderer (CTest `cuda`, label cuda): the module loads and
+// The CUDA backend against the CPU backend (CTest `cuda`, label cuda): the module loads and
 // probes; on a machine with a device, every built-in scene, every scenes/*.pov and *.xml and
 // the pipeline test scenes render to the same image, passes and statistics as on the CPU.
 // Without a device the comparisons skip, never fail. Run alone: ctest -L cuda
@@ -6,8 +6,8 @@
 #include "core/backend/backend.h"
 #include "core/base/error.h"
 #include "core/scenes/builtin.h"
-#include "core/scenes/test_scenes.h"
-#include "io/scene/sample_scenes.h"
+#include "tests/support/sample_scenes.h"
+#include "tests/support/test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -35,7 +35,7 @@ const CudaBackendStatus& status() {
 // on the torus of isosurfaces.pov) and so does their shading (at most 2.9e-5), while depth,
 // object ids and every count are equal. Where the device's march first parts from the host's
 // is not yet found: the math both call (hd_math, the internal functions) gives the same bits
-// on 65,536 random points, and the host's wavefront pipeline equals the CPU renderer on these
+// on 65,536 random points, and the host's wavefront pipeline equals the CPU backend on these
 // scenes; gpu/analytic_bits_test.cu takes the isosurfaces apart ray by ray to find it. So the
 // shaded passes of frames with isosurfaces (image, normals, albedo) must agree within
 // kIsoTolerance, the rest exactly.

@@ -2,8 +2,8 @@
 #include "gpu/cuda_exec.cuh"
 
 #include "core/base/device.h"
-#include "core/wavefront/buffer.h"
-#include "core/wavefront/wf_steps.h"
+#include "core/frame/buffer.h"
+#include "core/frame/steps.h"
 
 namespace sheaf::gpu {
 
@@ -31,7 +31,7 @@ void CudaExec::sort_pairs(uint32_t* keys, int words, uint32_t* values, size_t n)
         if (dv.Current() != values) copy_on_device(values, dv.Current(), n * sizeof(uint32_t));
         return;
     }
-    // More words: positions sorted by each pair of words as 64-bit keys (core/wavefront).
+    // More words: positions sorted by each pair of words as 64-bit keys (core/frame/steps.h).
     wavefront::sort_pairs_by_word_pairs(*this, keys, words, values, n, RadixPass64{this});
 }
 

@@ -1,4 +1,4 @@
-// The CUDA execution policy of the wavefront pipeline (core/wavefront): launches are
+// The CUDA execution policy of the frame pipeline (core/frame): launches are
 // grid-stride kernels over the pipeline's __host__ __device__ lambdas, memory is stream-ordered
 // device memory, scans, radix sorts and reductions kept on the device are CUB's, reductions
 // read at once Thrust's, phase times CUDA events.
@@ -7,9 +7,9 @@
 
 #include "core/base/error.h"
 #include "core/base/memory.h"
+#include "core/frame/compact.h"
 #include "core/rsh/test_count.h"
 #include "core/settings/settings.h"
-#include "core/wavefront/compact.h"
 #include "gpu/pinned_staging.cuh"
 
 #include <cub/block/block_reduce.cuh>
@@ -224,7 +224,7 @@ class CudaExec {
         if (sync_launches_) check(cudaStreamSynchronize(stream_), name);
     }
 
-    /// Compaction without a scan or a wait (core/wavefront/cpu_exec.h): 256-thread blocks, at
+    /// Compaction without a scan or a wait (core/frame/cpu_exec.h): 256-thread blocks, at
     /// most one resident wave of them whatever max is, the count read on the device; one
     /// atomic on the counter per block and round, one per block for each sum.
     template <class Count, class Fn, class Emit>

@@ -1,10 +1,10 @@
 // libsheaf_cuda.so.0: the CUDA backend. One export, sheaf_cuda_module(), gives libsheaf the
 // table of core/backend/cuda_module_abi.h: probe (is there a usable device?) and render (the
-// wavefront pipeline of core/wavefront under the CUDA execution policy). libsheaf dlopen()s
+// frame pipeline of core/frame under the CUDA execution policy). libsheaf dlopen()s
 // this module at first use; nothing of CUDA is linked into libsheaf itself.
 #include "core/backend/cuda_module_abi.h"
 #include "core/backend/device_stack.h"
-#include "core/wavefront/wf_frame.h"
+#include "core/frame/frame_pipeline.h"
 #include "gpu/cuda_exec.cuh"
 
 #include <algorithm>
@@ -167,7 +167,7 @@ int render(const void* scene_p, const void* settings_p, const void* progress_p, 
             own = std::make_unique<CudaExec>(device, stack);
             exec = own.get();
         }
-        wavefront::DeviceFrame<CudaExec> frame(*exec, scene, s, progress, f, keep);
+        wavefront::FramePipeline<CudaExec> frame(*exec, scene, s, progress, f, keep);
         frame.run();
         check(cudaStreamSynchronize(exec->stream()), "the end of the frame");
         if (exec->profiling()) {

@@ -7,9 +7,9 @@
 #include "core/geometry/shape.h"
 #include "core/hash/ray_hash.h"
 #include "core/raster/camera.h"
-#include "core/render/pattern_eval.h"
-#include "core/render/shade.h"
 #include "core/rsh/trace.h"
+#include "core/shading/shade.h"
+#include "core/texture/pattern_eval.h"
 
 namespace sheaf {
 

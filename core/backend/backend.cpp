@@ -2,7 +2,7 @@
 
 #include "core/backend/device_stack.h"
 #include "core/base/error.h"
-#include "core/wavefront/wavefront.h"
+#include "core/frame/render_frame.h"
 
 #include <map>
 #include <mutex>

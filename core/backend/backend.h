@@ -1,14 +1,22 @@
-// Where a frame is computed (setting `backend`): the CPU renderer, or the wavefront pipeline
-// in the CUDA module. `auto` takes CUDA when the module loads, a device is usable and the
-// scene has nothing the device cannot do; otherwise the CPU, and the frame says why.
+// Where a frame is computed (setting `backend`): the CPU backend (core/frame/render_frame.h),
+// or the CUDA module's frame pipeline. `auto` takes CUDA when the module loads, a device is
+// usable and the scene has nothing the device cannot do; otherwise the CPU, and the frame
+// says why.
 #pragma once
 
 #include "core/backend/cuda_loader.h"
-#include "core/render/renderer.h"
+#include "core/frame/render_frame.h"
 
 #include <string>
 
 namespace sheaf {
+
+/// Renders one frame on the backend the settings ask for: the CPU backend, or the CUDA
+/// module; the frame says which (Frame::backend, Frame::backend_line, statistic backend.cuda).
+/// Throws RenderError (backend=cuda without a usable device, cancelled, a failed render), or
+/// SceneError for scene settings that do not parse.
+Frame render_frame(const PreparedScene& scene, const RenderSettings& settings,
+                   const ProgressFn& progress = {});
 
 struct BackendChoice {
     bool cuda = false;

@@ -5,7 +5,7 @@
 #include "core/backend/device_stack.h"
 
 #include "core/base/error.h"
-#include "core/scenes/test_scenes.h"
+#include "tests/support/test_scenes.h"
 
 #include <gtest/gtest.h>
 

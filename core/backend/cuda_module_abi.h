@@ -5,11 +5,11 @@
 // against a module from another build.
 #pragma once
 
-#include "core/render/frame.h"
-#include "core/render/renderer.h"
-#include "core/render/surface.h"
+#include "core/frame/frame.h"
+#include "core/frame/render_frame.h"
 #include "core/scene/prepared_scene.h"
 #include "core/settings/settings.h"
+#include "core/shading/surface.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -8,13 +8,13 @@
 // with the media segment it writes), so the base is 16 KiB. The pattern, pigment and normal
 // code is called, not inlined (pigments nest at 128 bytes a level), far below that.
 // A scene whose media (a container's or the atmosphere's) scatter the light of a light that
-// casts shadows also runs the media light kernel (core/render/media_light.h: a media walk
+// casts shadows also runs the media light kernel (core/shading/media_light.h: a media walk
 // whose steps walk the media again towards each light): its frame is 7,192 bytes on sm_90
 // with the atmosphere and rainbows (6,944 before), so its chain is 17,312 bytes, and such
 // scenes (PreparedScene::media_scatter_light) get 2 KiB more. The G-buffer kernel's frame is
 // 5,000 bytes with them (the atmosphere's part of the media walk shares the containers' loop
 // and span list: a second list took it to 6,608).
-// A function pattern whose program reads a scene pigment (core/render/surface_texture.h's
+// A function pattern whose program reads a scene pigment (core/shading/surface_texture.h's
 // FnSceneContext) evaluates that pigment, which may hold another such pattern: each nested
 // level is the program's frame (728 bytes), the context's (160), the pigment's and an entry's
 // (112 + 16) and pattern_value's (96), 1,112 bytes, so a level gets 2 KiB
@@ -80,7 +80,7 @@ inline int csg_nesting(const PreparedScene& s) {
 }
 
 /// How many times, nested, a pigment's evaluation may pass through a function program that
-/// reads a scene pigment (a pigment function, core/render/surface_texture.h's FnSceneContext)
+/// reads a scene pigment (a pigment function, core/shading/surface_texture.h's FnSceneContext)
 /// or a pigment pattern: 0 when no program does. At most kFnNestingLimit (the evaluator's
 /// depth limit stops deeper chains, and tables that name each other).
 constexpr int kFnNestingLimit = 16;

@@ -2,8 +2,8 @@
 // (Welzl's algorithm with Gaertner's move-to-front order).
 #pragma once
 
-#include "core/math/hd_math.h"
 #include "core/geometry/sphere.h"
+#include "core/math/hd_math.h"
 
 #include <span>
 

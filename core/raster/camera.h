@@ -23,14 +23,14 @@ struct CameraFrame {
     // and direction (Camera).
     Projection projection = Projection::Perspective;
     bool traced = false;
-    int32_t normal = -1; // Camera::normal: primary rays tilted (core/render/frame_kernels.h)
+    int32_t normal = -1; // Camera::normal: primary rays tilted (core/shading/frame_kernels.h)
     float angle = 0, v_angle = 0;
     float right_length = 1, up_length = 1, direction_length = 1;
     // Depth of field (Camera::lens_radius): the lens, the distance to the sharp plane, and the
     // anti-aliasing samples per axis, so that (x, y) tells the pixel and its sample apart.
     float lens_radius = 0, focal_distance = 0;
     int samples = 1;
-    // Projection::Mesh: Camera's mesh_* (the faces are the scene's: core/render/mesh_camera.h).
+    // Projection::Mesh: Camera's mesh_* (the faces are the scene's: core/shading/mesh_camera.h).
     uint32_t mesh_rays = 1;
     uint8_t mesh_distribution = 0;
     bool mesh_smooth = false, mesh_reverse = false;
@@ -73,7 +73,7 @@ struct CameraFrame {
     /// The primary ray through the centre of pixel (x, y); false where the projection has none
     /// (outside a fisheye's circle, below an omnimax dome's edge): the pixel stays black. A
     /// camera normal, and a mesh camera's rays, need the scene: see camera_ray and primary_ray
-    /// (core/render/frame_kernels.h); here a mesh camera has none.
+    /// (core/shading/frame_kernels.h); here a mesh camera has none.
     SHEAF_HD bool camera_ray(int x, int y, Ray& r) const {
         r.tmin = 0.0f;
         r.tmax = FLT_MAX;

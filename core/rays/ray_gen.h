@@ -1,17 +1,17 @@
 // Secondary ray generation from a wave of surface hits: shadow rays (one per light per lit
 // point, origin moved to the light as in paper 000 section 3.3.2), ambient-occlusion rays
 // (cosine-weighted, Halton, paper 003) and reflection/refraction rays (Fresnel, Snell).
-// The frame pipeline (core/wavefront/wf_frame.h) counts, scans and fills with these
+// The frame pipeline (core/frame/frame_pipeline.h) counts, scans and fills with these
 // host-and-device per-element functions, so the ray order is the same on every run and every
 // backend.
 #pragma once
 
 #include "core/math/hd_math.h"
 #include "core/rays/ray_batch.h"
-#include "core/render/media.h"
-#include "core/render/shade.h"
-#include "core/render/surface.h"
 #include "core/scene/scene_view.h"
+#include "core/shading/media.h"
+#include "core/shading/shade.h"
+#include "core/shading/surface.h"
 
 #include <cfloat>
 #include <vector>

@@ -2,7 +2,7 @@
 // traversal with them finds the same hits with fewer primitive tests.
 #include "core/rsh/cull_units.h"
 
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 #include "core/scenes/builtin.h"
 
 #include <gtest/gtest.h>

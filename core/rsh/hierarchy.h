@@ -4,10 +4,10 @@
 // ray of a node lies inside its sphere and cone.
 #pragma once
 
-#include "core/math/hd_math.h"
 #include "core/base/memory.h"
 #include "core/geometry/cone_sphere.h"
 #include "core/geometry/ray.h"
+#include "core/math/hd_math.h"
 
 #include <vector>
 

@@ -46,7 +46,7 @@ struct TraceResult {
     std::vector<uint64_t> closest; // reflection and refraction rays: packed hit or kNoHit
     std::vector<uint8_t> occluded; // shadow and AO rays: 1 when something opaque is in the way
     /// Shadow rays: per ray and channel, the light kept through transparent surfaces as
-    /// -log2 in fixed point (core/render/shadow_pass.h); empty when none was crossed.
+    /// -log2 in fixed point (core/shading/shadow_pass.h); empty when none was crossed.
     std::vector<uint64_t> pass_log;
     /// The light shadow ray i keeps, per channel (1 when nothing transparent was crossed).
     Vec3 pass(size_t i) const;

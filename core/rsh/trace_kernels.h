@@ -6,9 +6,9 @@
 #pragma once
 
 #include "core/base/atomics.h"
-#include "core/render/shadow_pass.h"
 #include "core/rsh/trace.h"
 #include "core/scene/prim_intersect.h"
+#include "core/shading/shadow_pass.h"
 
 namespace sheaf {
 

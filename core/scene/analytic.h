@@ -1,5 +1,5 @@
 // Exact ray tests of analytic primitives (a shape or a CSG tree) of a prepared scene.
-// Host-and-device: the CPU renderer and the wavefront pipeline share them.
+// Host-and-device: both backends share them.
 #pragma once
 
 #include "core/geometry/csg.h"

@@ -3,7 +3,7 @@
 // shapes, CSG and an unbounded plane in the scene.
 #include "core/scene/analytic.h"
 
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 #include "core/scenes/shapes.h"
 
 #include <gtest/gtest.h>

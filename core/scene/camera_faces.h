@@ -1,5 +1,5 @@
 // A mesh camera's meshes (Scene::camera_meshes, Projection::Mesh) flattened for the ray kernel
-// (core/render/mesh_camera.h): every face in its mesh's space with what a ray leaving it
+// (core/shading/mesh_camera.h): every face in its mesh's space with what a ray leaving it
 // needs, each mesh's transforms, and for distribution 3 a grid over uv space listing the first
 // mesh's faces by cell, so a sample finds the face holding its (u, v) without a search.
 #pragma once

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "core/math/hd_math.h"
-#include "core/render/noise.h"
+#include "core/texture/noise.h"
 
 #include <cstdint>
 

@@ -10,10 +10,10 @@
 #pragma once
 
 #include "core/math/hd_math.h"
-#include "core/render/noise.h"
-#include "core/render/pattern_eval.h"
 #include "core/scene/fn_internal.h"
 #include "core/scene/pattern.h"
+#include "core/texture/noise.h"
+#include "core/texture/pattern_eval.h"
 
 #include <cstdint>
 #include <string>
@@ -93,7 +93,7 @@ struct FnInstr {
 /// (count 0), or function pattern `pattern` choosing among the function pigment entries
 /// [first, first + count): blended by value, or by index when `list`.
 /// `scene_pigment`: the same pigment in Scene::pigments (-1: none), which a program run on a
-/// scene reads instead (FnSceneContext, core/render/surface_texture.h), so that any pigment
+/// scene reads instead (FnSceneContext, core/shading/surface_texture.h), so that any pigment
 /// works there; a pigment this small form cannot hold is black in it (the POV reader warns
 /// isosurfaces of such functions, the only programs run without a scene).
 struct FnPigment {

@@ -2,7 +2,7 @@
 // space), pigments (a pattern with a colour map, a pigment map or a list, layered or solid),
 // normal perturbations, material selection by pattern (texture maps), sky and fog. Plain data
 // in flat arrays that index each other, so both backends can evaluate them
-// (core/render/pattern_eval.h, core/render/pigment_eval.h).
+// (core/texture/pattern_eval.h, core/shading/surface_texture.h).
 #pragma once
 
 #include "core/math/affine.h"
@@ -344,7 +344,7 @@ struct Fog {
 };
 
 /// POV-Ray's rainbow: a band of colour around the antisolar direction, added to each ray as a
-/// fog of its own (core/render/rainbow.h). A ray at angle a from `antisolar` takes the colour
+/// fog of its own (core/shading/rainbow.h). A ray at angle a from `antisolar` takes the colour
 /// of pigment `colors` at ((a - start) / width, 0, 0) while that lies in [0, 1); the ray's
 /// angle around `antisolar`, from `up`, must not pass `arc` (radians), and beyond `falloff`
 /// the band fades out towards it.

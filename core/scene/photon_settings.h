@@ -1,6 +1,6 @@
 // Photon mapping's scene data (POV-Ray's photons): the scene's settings, what each object does
-// with photons, and what each light sends. The photon pass is core/render/photon_pass.h; the
-// gather at shaded points is core/render/photon_gather.h.
+// with photons, and what each light sends. The photon pass is core/shading/photon_pass.h; the
+// gather at shaded points is core/scene/photon_gather.h.
 #pragma once
 
 #include <cstdint>

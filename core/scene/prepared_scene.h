@@ -3,9 +3,9 @@
 #pragma once
 
 #include "core/geometry/sphere.h"
-#include "core/render/texture.h"
 #include "core/scene/camera_faces.h"
 #include "core/scene/scene.h"
+#include "core/texture/texture.h"
 
 #include <cstdint>
 #include <memory>
@@ -91,7 +91,7 @@ struct PreparedScene {
     std::vector<DensityGrid> density_grids;
     std::vector<float> density_voxels;
     // The analytic primitives some of whose shapes hold media (0-based among the analytic
-    // ones; core/render/media.h), and the solid ones (kSolid) that media leave out: all of
+    // ones; core/shading/media.h), and the solid ones (kSolid) that media leave out: all of
     // them with an atmosphere, else those whose bounds meet a container's.
     std::vector<uint32_t> media_containers, media_solids;
     int32_t atmosphere = -1;            // Scene::atmosphere
@@ -140,7 +140,7 @@ struct PreparedScene {
     /// Whether rays that meet surfaces bring light of their own from the way: fog, media,
     /// rainbows (summed in ray order, so that every accel gives the same sums).
     bool lights_the_way() const { return fog.distance > 0 || has_media() || !rainbows.empty(); }
-    /// Whether frames send media shadow rays (core/render/media_light.h): a medium of a
+    /// Whether frames send media shadow rays (core/shading/media_light.h): a medium of a
     /// container or of the atmosphere scatters and a light that casts shadows interacts with
     /// media.
     bool media_scatter_light() const {

@@ -73,7 +73,7 @@ struct Material {
     float caustics = 0.0f;
     // Iridescence (POV-Ray's irid): light from each light and from the mirror is scaled per
     // channel by 1 + irid cos(2 pi thickness (|n.l| + |n.v|) / wavelength), the thickness
-    // varied by `irid_turbulence` times noise (core/render/shade.h).
+    // varied by `irid_turbulence` times noise (core/shading/shade.h).
     float irid = 0, irid_thickness = 0, irid_turbulence = 0;
     Vec3 irid_wavelength{0.25f, 0.18f, 0.14f};
 };
@@ -92,7 +92,7 @@ enum class ScatterType : uint8_t {
 /// (emission) and takes away (absorption) per unit length, each times the product of its
 /// densities' colours at the point (Scene::medium_densities: pigment indices), integrated
 /// along the part of a ray inside the object at `samples` evenly spaced points
-/// (core/render/media.h).
+/// (core/shading/media.h).
 struct Medium {
     Vec3 emission{0.0f, 0.0f, 0.0f}, absorption{0.0f, 0.0f, 0.0f};
     /// Light scattered towards the ray per unit length; it also takes `extinction` times
@@ -371,12 +371,12 @@ class Scene {
     Vec3 background{0, 0, 0};
     int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene
     Fog fog;
-    std::vector<Rainbow> rainbows; // core/render/rainbow.h
+    std::vector<Rainbow> rainbows; // core/shading/rainbow.h
     /// >= 0: the material whose media fill the space outside solid objects (POV-Ray's
     /// atmospheric `media`; only its media are read). Rays that leave the scene cross
-    /// kAtmosphereFar units of it (core/render/media.h).
+    /// kAtmosphereFar units of it (core/shading/media.h).
     int32_t atmosphere = -1;
-    /// Photon mapping (caustics): on when photons.spacing > 0 (core/render/photon_pass.h).
+    /// Photon mapping (caustics): on when photons.spacing > 0 (core/shading/photon_pass.h).
     PhotonSettings photons;
     /// The gamma of the space colours are given and computed in (POV-Ray's assumed_gamma): the
     /// frame's value v is light v^working_gamma, and image textures are read into that space.

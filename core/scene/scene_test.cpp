@@ -79,7 +79,7 @@ TEST(SceneValidate, LensesConicGlyphsAndCausticsAreChecked) {
 }
 
 // CSG is evaluated recursively on both backends: deeper than kMaxCsgNesting is an error (5,000
-// nested differences overflowed the CPU renderer's stack).
+// nested differences overflowed the CPU backend's stack).
 TEST(SceneValidate, CsgDeeperThanTheLimitIsAnError) {
     auto nested = [](int levels) {
         Scene s;

@@ -4,7 +4,7 @@
 // copyable: kernels take it by value.
 #pragma once
 
-#include "core/render/photon_gather.h"
+#include "core/scene/photon_gather.h"
 #include "core/scene/prepared_scene.h"
 
 #include <cstdint>
@@ -58,7 +58,7 @@ struct SceneView : ShapeTables {
     Fog fog;
     const Rainbow* rainbows = nullptr;
     uint32_t rainbow_count = 0;
-    // The frame's photon map (core/render/photon_pass.h); empty unless the frame shot photons.
+    // The frame's photon map (core/shading/photon_pass.h); empty unless the frame shot photons.
     PhotonMapView photon_map;
     const Light* lights = nullptr;
     uint32_t light_count = 0;
@@ -122,7 +122,7 @@ struct SceneView : ShapeTables {
     /// Shape.
     SHEAF_HD const ShapeTables& shape_tables() const { return *this; }
     SHEAF_HD uint32_t prim_count() const { return tri_count + analytic_count; }
-    /// Whether rays cross media: containers' or the atmosphere's (core/render/media.h).
+    /// Whether rays cross media: containers' or the atmosphere's (core/shading/media.h).
     SHEAF_HD bool has_media() const { return media_container_count > 0 || atmosphere >= 0; }
     SHEAF_HD bool is_triangle(uint32_t prim) const { return prim < tri_count; }
     /// Whether primitive `prim`'s object has ObjectFlag `flag` (or kPrimMayPass).

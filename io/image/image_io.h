@@ -8,7 +8,7 @@
 // the file's metadata where the format can hold them.
 #pragma once
 
-#include "core/render/frame.h"
+#include "core/frame/frame.h"
 #include "io/color/color.h"
 
 #include <string>

@@ -3,8 +3,8 @@
 // files.
 #include "io/image/image_io.h"
 
+#include "core/backend/backend.h"
 #include "core/base/error.h"
-#include "core/render/renderer.h"
 #include "core/scenes/builtin.h"
 
 #include <OpenImageIO/imageio.h>

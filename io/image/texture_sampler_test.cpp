@@ -3,8 +3,8 @@
 // scene asked for it.
 #include "io/image/texture_sampler.h"
 
+#include "core/backend/backend.h"
 #include "core/base/error.h"
-#include "core/render/renderer.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 #include "io/mesh/mesh_file.h"
 
 #include "core/base/error.h"
-#include "io/mesh/mesh_test_files.h"
+#include "tests/support/mesh_test_files.h"
 
 #include <gtest/gtest.h>
 

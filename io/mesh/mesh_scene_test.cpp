@@ -2,9 +2,9 @@
 // default camera framing it and a default light, so it renders with the mesh in the middle.
 #include "io/mesh/mesh_scene.h"
 
-#include "core/render/renderer.h"
-#include "io/mesh/mesh_test_files.h"
+#include "core/backend/backend.h"
 #include "io/scene/scene_file.h"
+#include "tests/support/mesh_test_files.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // POV-Ray's animation clock: the values POV-Ray 3.7 gives each frame (measured with povray
 // +KFI +KFF +KI +KF +KC +K), and the scene seeing them, in expressions and in functions.
 #include "io/pov/animation.h"
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // The atmosphere's media (POV-Ray's `media { … }` outside any object): read into
 // Scene::atmosphere with lights' media_attenuation, densities placed in the world, errors at
 // their place, and a render against the numbers povray gives; rainbows likewise.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
-#include "core/render/media.h"
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
+#include "core/shading/media.h"
 
 namespace sheaf::io::pov {
 namespace {

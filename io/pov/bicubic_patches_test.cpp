@@ -1,6 +1,6 @@
 // bicubic_patch: the mesh passes through the patch's corners and follows the Bezier surface
 // between them, its normals are the surface's, and bad patches are errors or warnings.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include <cmath>
 

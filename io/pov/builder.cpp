@@ -198,7 +198,7 @@ struct Builder {
 
     void mesh(const PovObject& o, const PovTexture& tex, const PovInterior* in,
               const PovTexture* inside, uint8_t flags) {
-        // Media fill the analytic objects that hold them (core/render/media.h).
+        // Media fill the analytic objects that hold them (core/shading/media.h).
         if (in && !in->media.empty()) p.unsupported(o.where, "media in a mesh (ignored)");
         const Affine t = flip * o.local;
         for (const Vec3& v : o.mesh->positions)

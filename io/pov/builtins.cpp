@@ -4,7 +4,7 @@
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
-#include "core/render/noise.h"
+#include "core/texture/noise.h"
 #include "io/pov/probe.h"
 
 #include <algorithm>

@@ -1,10 +1,10 @@
 // Tests of the camera (perspective and orthographic), the lights (point, spot, parallel,
 // fading, shadowless, area lights as samples), background and global_settings.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
+#include "core/backend/backend.h"
 #include "core/raster/camera.h"
-#include "core/render/frame_kernels.h"
-#include "core/render/renderer.h"
+#include "core/shading/frame_kernels.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // density_file df3 "file": the voxels read from POV-Ray's df3 files, as a pattern of pigments,
 // normals and media densities; bad files are errors at the file's name.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include <fstream>
 

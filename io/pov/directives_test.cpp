@@ -1,7 +1,7 @@
 // Tests of the directives: declarations and scopes, macros, loops, conditionals, #switch,
 // #include search, file I/O, #error/#warning, and the limits (loops, recursion, arrays,
 // self-includes) that must end in an error with a position, never a hang.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include <chrono>
 #include <filesystem>

@@ -1,6 +1,6 @@
 // Tests of expressions: precedence, vectors, colours, strings, arrays, built-ins and user
 // functions.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #include "io/pov/function_scene.h"
 
-#include "core/render/surface_texture.h"
 #include "core/scene/scene_view.h"
+#include "core/shading/surface_texture.h"
 
 namespace sheaf::io::pov {
 

@@ -1,7 +1,7 @@
 // A pigment function's pigment, or a pattern function's pattern, lowered into a scene of its
 // own when the function is parsed, so that the scene language evaluates it as the render
 // does (height fields of functions, functions.inc's eval_pigment, calls in expressions):
-// the same MaterialBuilder and the same evaluator (core/render/surface_texture.h), over only
+// the same MaterialBuilder and the same evaluator (core/shading/surface_texture.h), over only
 // the tables pigments and patterns read.
 #pragma once
 

@@ -1,10 +1,10 @@
 // Isosurfaces, function patterns, and the functions they run (internal and pattern ones).
 #include "io/pov/builder.h"
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
-#include "core/render/surface_texture.h"
 #include "core/scene/analytic.h"
 #include "core/scene/prepared_scene.h"
+#include "core/shading/surface_texture.h"
 #include "io/image/texture_sampler.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // julia_fractal in the POV reader: the shape it builds, POV-Ray's defaults and clamps, and the
 // errors and warnings of what it refuses or leaves out.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include <cmath>
 

@@ -173,7 +173,7 @@ struct PovMedia {
     int scatter_type = 1; // POV-Ray's scattering types 1..5 (ScatterType)
     double eccentricity = 0, extinction = 1;
     std::vector<std::shared_ptr<const PovPigment>> densities; // multiplied
-    int samples = 32; // steps along each ray inside (core/render/media.h)
+    int samples = 32; // steps along each ray inside (core/shading/media.h)
     int light_samples = 8; // intervals x samples: steps along a shadow ray inside
     Affine local;     // the medium's own transforms, applied to its densities
 };

@@ -2,7 +2,7 @@
 // transforms (POV-Ray's rotation order, the z mirror), textures to materials, and unsupported
 // features as warnings (errors when strict).
 #include "io/pov/builder.h"
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include "core/scene/analytic.h"
 #include "core/scene/prepared_scene.h"

@@ -1,6 +1,6 @@
 // POV-Ray's photons: the blocks read, their errors, and renders against povray 3.7's pixels.
-#include "core/render/renderer.h"
-#include "io/pov/pov_test_util.h"
+#include "core/backend/backend.h"
+#include "tests/support/pov_test_util.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Splines of the scene language: each type's values against what povray 3.7 prints for the
 // same splines (#debug with vstr), mixed dimensions, copies extended, a type given at the
 // call, spline functions, and errors at their place.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 namespace sheaf::io::pov {
 namespace {

@@ -3,7 +3,7 @@
 // y), one glyph shape per character with ink, and errors at the text's position. Uses the fonts
 // of Debian's povray-includes, which the test command installs.
 #include "io/pov/builder.h"
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include "core/scene/analytic.h"
 #include "core/scene/prepared_scene.h"

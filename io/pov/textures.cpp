@@ -407,7 +407,7 @@ PovMedia Parser::parse_media() {
             if (accept_sym(",")) parse_float(); // method 1 and 2's maximum
         } else if (k == "method" || k == "confidence" || k == "variance" || k == "ratio" ||
                    k == "jitter" || k == "aa_threshold" || k == "aa_level") {
-            parse_float(); // Sheaf's steps are fixed (core/render/media.h)
+            parse_float(); // Sheaf's steps are fixed (core/shading/media.h)
         } else if (k == "scattering") {
             parse_scattering(m);
         } else {

@@ -1,11 +1,11 @@
 // POV-Ray textures into the core's procedural textures: patterns with their maps and
 // transforms, lists, pigment maps, layers, texture maps, normals, finishes, interiors, image
 // maps, sky_sphere; what is not supported warns and falls back to an average.
-#include "io/pov/pov_test_util.h"
+#include "tests/support/pov_test_util.h"
 
 #include "core/backend/device_stack.h"
-#include "core/render/surface_texture.h"
 #include "core/scene/prepared_scene.h"
+#include "core/shading/surface_texture.h"
 #include "io/image/texture_sampler.h"
 
 #include <OpenImageIO/imageio.h>

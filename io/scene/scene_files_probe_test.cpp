@@ -1,10 +1,10 @@
-// core/wavefront/analytic_probe.h under the CPU execution policy: every sample scene's analytic
+// tests/support/analytic_probe.h under the CPU execution policy: every sample scene's analytic
 // objects and isosurfaces, probed ray by ray through the scene's packed copy (DeviceScene)
 // against the host's own, bit for bit. It proves the probe that gpu/analytic_bits_test.cu runs
 // on a device, and that packing the scene changes no answer.
-#include "core/wavefront/analytic_probe.h"
-#include "core/wavefront/cpu_exec.h"
-#include "io/scene/sample_scenes.h"
+#include "core/frame/cpu_exec.h"
+#include "tests/support/analytic_probe.h"
+#include "tests/support/sample_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,11 @@
 // Every sample scene (scenes/*.pov and *.xml) through the wavefront pipeline under the CPU
-// execution policy against the CPU renderer: the same images, passes and statistics. The CUDA
+// execution policy against the CPU backend: the same images, passes and statistics. The CUDA
 // backend runs that pipeline with another exec (gpu/cuda_backend_test.cpp makes the same
 // comparison on a device); this makes it on any machine, for the scene files' features that
 // the pipeline test scenes do not reach.
-#include "core/render/renderer.h"
-#include "core/scenes/test_scenes.h"
-#include "core/wavefront/wavefront.h"
-#include "io/scene/sample_scenes.h"
+#include "core/frame/render_frame.h"
+#include "tests/support/sample_scenes.h"
+#include "tests/support/test_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "io/xml/xml_scene.h"
 
 #include "core/base/error.h"
-#include "io/mesh/mesh_test_files.h"
+#include "tests/support/mesh_test_files.h"
 
 #include <gtest/gtest.h>
 

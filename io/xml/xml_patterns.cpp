@@ -1,5 +1,5 @@
 // What <pigment>, <normal> and <switch> share: the pattern named by the 'pattern' attribute
-// with its modifiers (core/scene/pattern.h, evaluated by core/render/pattern_eval.h), the
+// with its modifiers (core/scene/pattern.h, evaluated by core/texture/pattern_eval.h), the
 // transform children that place it, and the values and count of its <entry> elements.
 #include "io/xml/xml_reader.h"
 

@@ -4,10 +4,10 @@
 // should: a checker gives two colours, fog darkens what is far, the sky colours misses.
 #include "io/xml/xml_scene.h"
 
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 #include "io/image/texture_sampler.h"
-#include "io/mesh/mesh_test_files.h"
 #include "io/scene/scene_file.h"
+#include "tests/support/mesh_test_files.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

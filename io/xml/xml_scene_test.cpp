@@ -3,10 +3,10 @@
 // subdivision; load_scene_file reads .xml.
 #include "io/xml/xml_scene.h"
 
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 #include "io/image/texture_sampler.h"
-#include "io/mesh/mesh_test_files.h"
 #include "io/scene/scene_file.h"
+#include "tests/support/mesh_test_files.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 
 #include "sheaf/sheaf.h"
 
-#include "core/render/frame.h"
+#include "core/frame/frame.h"
 #include "core/scene/prepared_scene.h"
 #include "core/scene/scene.h"
 #include "core/settings/settings.h"

@@ -2,7 +2,7 @@
 // frame pipeline.
 #include "capi_internal.h"
 
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 
 using namespace sheaf::capi;
 

@@ -15,8 +15,8 @@
 // the depth, normal, albedo, id and test passes are neither resolved nor read back) unless
 // --set names the passes.
 #include "bench_args.h"
+#include "core/backend/backend.h"
 #include "core/base/error.h"
-#include "core/render/renderer.h"
 #include "core/scenes/builtin.h"
 
 #include <algorithm>

@@ -10,7 +10,7 @@
 // Times are wall-clock ("Time") and the CPU time of every thread of the process ("CPU"): on a
 // shared machine the second is the steadier measure of the work done.
 // Run: build/tests/bench/sheaf_bench_io
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 #include "core/scenes/builtin.h"
 #include "io/color/color.h"
 #include "io/image/image_io.h"

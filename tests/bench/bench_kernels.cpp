@@ -1,13 +1,13 @@
 // Micro-benchmarks of the per-element kernels and the sort, and whole frames of the
 // built-in scenes. Run: build/tests/bench/sheaf_bench
+#include "core/backend/backend.h"
+#include "core/frame/cpu_exec.h"
+#include "core/frame/scene_copy.h"
 #include "core/geometry/cone_sphere.h"
 #include "core/geometry/ray_triangle.h"
-#include "core/render/renderer.h"
 #include "core/rsh/cull_units.h"
 #include "core/scenes/builtin.h"
 #include "core/sort/radix_sort.h"
-#include "core/wavefront/cpu_exec.h"
-#include "core/wavefront/wf_scene.h"
 
 #include <benchmark/benchmark.h>
 

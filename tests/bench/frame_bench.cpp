@@ -5,16 +5,16 @@
 // Usage: sheaf_frame_bench [--sizes 512,1024] [--frames K] [--backends cpu,cuda]
 //                          [--set KEY=VALUE ...] [scene ...]
 // A backend is a value of the setting `backend`, or `wavefront-cpu`: the CUDA module's pipeline
-// (core/wavefront) compiled for the CPU policy, to weigh it against the CPU renderer.
+// (core/frame/wavefront_tracer.h) under the CPU policy, to weigh it against the CPU backend's.
 // Times are the median of K frames (default 3), and the first frame's apart: on the CUDA
 // backend the frames after the first find the scene on the device (device.scene_kept), so a
 // first frame marked "copied" adds the scene's copy ("kept": an earlier size left it there). Rays
 // per second counts every ray the frame traced: primary (one per sample) and secondary (shadow,
 // reflection, refraction, AO).
 #include "bench_args.h"
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
+#include "core/frame/render_frame.h"
 #include "core/scenes/builtin.h"
-#include "core/wavefront/wavefront.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
                     const double t = st.get(std::string("time_ms.") + p);
                     std::printf(" %.2f (%.0f%%) |", t, ms > 0 ? 100 * t / ms : 0.0);
                 }
-                // The wavefront pipeline's fixed costs on a GPU (none for the CPU renderer).
+                // The wavefront pipeline's fixed costs on a GPU (none for the CPU backend).
                 if (st.has("device.launches"))
                     std::printf(" %.0f | %.0f |", st.get("device.launches"),
                                 st.get("device.host_waits"));

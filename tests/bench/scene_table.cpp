@@ -2,7 +2,7 @@
 // brute force (paper 000, Table 4), their ratio, and the time per phase (Table 5).
 // Usage: sheaf_scene_table [--size N] [--frames K] [scene ...]
 // Times are the median of K frames on this machine; counts do not depend on K.
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 #include "core/scenes/builtin.h"
 
 #include <algorithm>

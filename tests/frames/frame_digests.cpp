@@ -9,12 +9,12 @@
 // Usage: sheaf_frame_digests [--scenes DIR] [--only SUBSTRING] [--stats]
 // Prints "name | settings | rgba depth normal albedo object tests | stats" per frame; --stats
 // also prints each frame's statistics (to see what a differing digest changed).
-#include "core/render/renderer.h"
+#include "core/backend/backend.h"
 #include "core/scenes/builtin.h"
-#include "core/scenes/test_scenes.h"
 #include "io/image/raster.h"
 #include "io/image/texture_sampler.h"
 #include "io/scene/scene_file.h"
+#include "tests/support/test_scenes.h"
 
 #include <algorithm>
 #include <cinttypes>

@@ -1,0 +1,287 @@
+// Patterns: list patterns alternate where POV-Ray's do, continuous patterns stay in [0, 1] and
+// follow frequency, phase and the waves, noise is deterministic and smooth, turbulence moves
+// points by about its amount.
+#include "core/texture/pattern_eval.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace sheaf {
+namespace {
+
+Pattern make(PatternKind k) {
+    Pattern p;
+    p.kind = k;
+    return p;
+}
+
+// Classic turbulence displaces by the amount times the fractal vector noise, as POV-Ray's
+// DTurbulence does (vturbulence's length); the band patterns POV-Ray bends inside the pattern
+// (marble, wood, agate, the spirals) by kBandTurbulenceScale times that; warp { turbulence }
+// like the first.
+TEST(Patterns, TurbulenceDisplacesAsPovRayDoes) {
+    const Vec3 world(0.3f, -1.7f, 2.2f);
+    const Vec3 noise = vector_turbulence(world, 6, 0.5f, 2.0f);
+    ASSERT_GT(length(noise), 0.05f);
+    Pattern pt;
+    pt.has_turbulence = true;
+    pt.turbulence = Vec3(0.3f, 0.2f, 0.1f);
+    for (PatternKind k : {PatternKind::Gradient, PatternKind::Bozo, PatternKind::Checker}) {
+        pt.kind = k;
+        const Vec3 d = pattern_point(pt, world, nullptr) - world;
+        EXPECT_NEAR(d.x, 0.3f * noise.x, 1e-5f);
+        EXPECT_NEAR(d.z, 0.1f * noise.z, 1e-5f);
+    }
+    for (PatternKind k : {PatternKind::Marble, PatternKind::Wood, PatternKind::Agate,
+                          PatternKind::Spiral1, PatternKind::Spiral2}) {
+        pt.kind = k;
+        const Vec3 d = pattern_point(pt, world, nullptr) - world;
+        EXPECT_NEAR(d.y, kBandTurbulenceScale * 0.2f * noise.y, 1e-5f);
+    }
+    Warp w;
+    w.kind = WarpKind::Turbulence;
+    w.a = Vec3(0.5f);
+    w.f[0] = 0.5f, w.f[1] = 2.0f;
+    const Vec3 d = warp_point(w, world) - world;
+    EXPECT_NEAR(d.x, 0.5f * vector_turbulence(world, w.octaves, 0.5f, 2.0f).x, 1e-5f);
+}
+
+TEST(Patterns, CheckerAlternatesInEveryAxis) {
+    const Pattern p = make(PatternKind::Checker);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 0.5f, 0.5f)), 0);
+    EXPECT_EQ(pattern_index_at(p, Vec3(1.5f, 0.5f, 0.5f)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 1.5f, 0.5f)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 0.5f, -0.5f)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(-0.5f, -0.5f, 0.5f)), 0);
+    // A face on an integer plane takes one side consistently.
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.25f, 0.0f, 0.25f)), pattern_index_at(p, Vec3(0.25f, 1e-6f, 0.25f)));
+}
+
+TEST(Patterns, ListPatternsStayInTheirEntries) {
+    std::mt19937 g(3);
+    std::uniform_real_distribution<float> u(-20, 20);
+    const std::pair<PatternKind, int> kinds[] = {{PatternKind::Checker, 2},
+                                                 {PatternKind::Hexagon, 3},
+                                                 {PatternKind::Brick, 2},
+                                                 {PatternKind::Square, 4},
+                                                 {PatternKind::Triangular, 6}};
+    for (auto [k, n] : kinds) {
+        std::vector<int> seen(size_t(n), 0);
+        for (int i = 0; i < 4000; ++i) {
+            const int idx = pattern_index_at(make(k), Vec3(u(g), u(g), u(g)));
+            ASSERT_GE(idx, 0);
+            ASSERT_LT(idx, n);
+            seen[size_t(idx)]++;
+        }
+        for (int i = 0; i < n; ++i) EXPECT_GT(seen[size_t(i)], 0) << int(k) << " entry " << i;
+    }
+}
+
+TEST(Patterns, HexagonNeighboursDiffer) {
+    const Pattern p = make(PatternKind::Hexagon);
+    // Centres of a hexagon and its six neighbours (unit side, flat sides along x).
+    const Vec3 c(0, 0, 0);
+    const float h = std::sqrt(3.0f);
+    const Vec3 n[6] = {{1.5f, 0, h / 2}, {1.5f, 0, -h / 2}, {-1.5f, 0, h / 2},
+                       {-1.5f, 0, -h / 2}, {0, 0, h}, {0, 0, -h}};
+    for (const Vec3& q : n) EXPECT_NE(pattern_index_at(p, c), pattern_index_at(p, q));
+}
+
+TEST(Patterns, BrickHasMortarBetweenBricks) {
+    Pattern p = make(PatternKind::Brick); // 8 x 3 x 4.5 bricks, 0.5 mortar
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 1.5f, 2.25f)), 1);  // inside a brick
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 0.1f, 2.25f)), 0);  // the mortar under it
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 1.5f, 2.25f)), 0); // between two bricks
+    // The next course is offset by half a brick: x = 0 is inside a brick there.
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 4.5f, 0.1f)), 1);
+}
+
+TEST(Patterns, GradientFrequencyPhaseAndWaves) {
+    Pattern p = make(PatternKind::Gradient);
+    p.vector = Vec3(1, 0, 0);
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 7, 7)), 0.25f, 1e-6);
+    EXPECT_NEAR(pattern_value_at(p, Vec3(2.25f, 0, 0)), 0.25f, 1e-5); // repeats every unit
+    EXPECT_NEAR(pattern_value_at(p, Vec3(-0.25f, 0, 0)), 0.75f, 1e-5);
+    p.frequency = 2;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 0, 0)), 0.5f, 1e-5);
+    p.frequency = 1, p.phase = 0.5f;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 0, 0)), 0.75f, 1e-5);
+    p.phase = 0, p.wave = Wave::Triangle;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.25f, 0, 0)), 0.5f, 1e-5);
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.75f, 0, 0)), 0.5f, 1e-5);
+    p.wave = Wave::Poly, p.wave_exponent = 2;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.5f, 0, 0)), 0.25f, 1e-5);
+}
+
+TEST(Patterns, SpiralsFollowPovRaysFormulas) {
+    // spiral1: z + r + arms * angle / 360, the angle counted from -y towards +x;
+    // spiral2: that triangle-waved, plus r triangle-waved (the default wave is applied after).
+    Pattern p = make(PatternKind::Spiral1);
+    p.param[0] = 2;
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.5f, 0, 0.125f)), 0.125f, 1e-5); // 1.125 wraps
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0, -0.25f, 0)), 0.25f, 1e-5);     // angle 0
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0, 0.25f, 0)), 0.25f, 1e-5);      // 0.25 + 1
+    EXPECT_NEAR(pattern_value_at(p, Vec3(-0.1f, 0, 0)), 0.6f, 1e-5);       // 0.1 - 0.5
+    p.kind = PatternKind::Spiral2;
+    // s = 0.2 + 0.5 = 0.7: 0.6 waved; r = 0.2: 0.4 waved; 1.0 stays 1.
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0.2f, 0, 0)), 1.0f, 1e-5);
+    // s = 0.1 + 0 = 0.1: 0.2; r = 0.1: 0.2.
+    EXPECT_NEAR(pattern_value_at(p, Vec3(0, -0.1f, 0)), 0.4f, 1e-5);
+}
+
+TEST(Patterns, ContinuousPatternsStayInTheUnitInterval) {
+    std::mt19937 g(7);
+    std::uniform_real_distribution<float> u(-2, 2); // the bounded patterns vary within 1
+    for (int k = int(PatternKind::Gradient); k < int(PatternKind::Image); ++k) {
+        if (PatternKind(k) == PatternKind::Function) continue; // runs a program: function_test
+        if (PatternKind(k) == PatternKind::Slope)
+            continue; // reads the surface: surface_texture_test
+        Pattern p = make(PatternKind(k));
+        p.param[0] = 3;
+        float lo = 1, hi = 0;
+        for (int i = 0; i < 2000; ++i) {
+            const float v = pattern_value_at(p, Vec3(u(g), u(g), u(g)));
+            ASSERT_TRUE(v >= 0 && v <= 1) << "pattern " << k << " gave " << v;
+            lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+        EXPECT_GT(hi - lo, 0.2f) << "pattern " << k << " hardly varies";
+    }
+}
+
+TEST(Patterns, MapSpansBlendBetweenEntriesAndClampOutside) {
+    PigmentEntry e[3];
+    e[0].value = 0.2f, e[1].value = 0.6f, e[2].value = 0.6f; // a sharp step at 0.6
+    auto same = [](MapSpan m, uint32_t i) { return m.lo == i && m.hi == i && m.t == 0.0f; };
+    EXPECT_TRUE(same(map_span(e, 3, 0.1f), 0)); // below the first entry
+    EXPECT_TRUE(same(map_span(e, 3, 0.2f), 0)); // on it
+    EXPECT_TRUE(same(map_span(e, 3, 0.9f), 2)); // above the last
+    EXPECT_TRUE(same(map_span(e, 3, 0.6f), 1)); // on the step: the first of the two
+    EXPECT_TRUE(same(map_span(e, 3, std::nanf("")), 0));
+    EXPECT_TRUE(same(map_span(e, 1, 0.5f), 0)); // one entry
+    const MapSpan m = map_span(e, 3, 0.3f);
+    EXPECT_EQ(m.lo, 0u);
+    EXPECT_EQ(m.hi, 1u);
+    EXPECT_FLOAT_EQ(m.t, 0.25f);
+}
+
+TEST(Noise, DeterministicSmoothAndZeroOnTheLattice) {
+    EXPECT_EQ(gradient_noise(Vec3(3, -2, 5)), 0.0f);
+    EXPECT_EQ(gradient_noise(Vec3(0.3f, 0.4f, 0.5f)), gradient_noise(Vec3(0.3f, 0.4f, 0.5f)));
+    std::mt19937 g(1);
+    std::uniform_real_distribution<float> u(-50, 50);
+    double sum = 0, sum2 = 0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 p(u(g), u(g), u(g));
+        const float a = gradient_noise(p), b = gradient_noise(p + Vec3(1e-3f, 0, 0));
+        EXPECT_LT(std::fabs(a - b), 0.01f); // smooth
+        ASSERT_LE(std::fabs(a), 1.1f);
+        sum += a, sum2 += double(a) * a;
+    }
+    EXPECT_NEAR(sum / n, 0.0, 0.02);        // centred
+    EXPECT_GT(std::sqrt(sum2 / n), 0.1);     // and not flat
+}
+
+TEST(Noise, TurbulenceMovesPointsByAboutItsAmount) {
+    Pattern p = make(PatternKind::Gradient);
+    p.turbulence = Vec3(0.5f);
+    p.has_turbulence = true;
+    std::mt19937 g(5);
+    std::uniform_real_distribution<float> u(-10, 10);
+    double moved = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const Vec3 q(u(g), u(g), u(g));
+        moved += length(pattern_point(p, q, nullptr) - q);
+    }
+    moved /= 1000;
+    EXPECT_GT(moved, 0.05);
+    EXPECT_LT(moved, 1.5);
+    p.has_turbulence = false;
+    EXPECT_EQ(length(pattern_point(p, Vec3(1, 2, 3), nullptr) - Vec3(1, 2, 3)), 0.0f);
+}
+
+void expect_near(Vec3 a, Vec3 b) {
+    EXPECT_NEAR(a.x, b.x, 1e-5f);
+    EXPECT_NEAR(a.y, b.y, 1e-5f);
+    EXPECT_NEAR(a.z, b.z, 1e-5f);
+}
+
+Warp warp(WarpKind k) {
+    Warp w;
+    w.kind = k;
+    return w;
+}
+
+TEST(Warps, RepeatCopiesASlabWithItsOffsetAndFlips) {
+    Warp w = warp(WarpKind::Repeat);
+    w.axis = 0, w.f[0] = 2, w.b = Vec3(1.0f), w.a = Vec3(0, 0, 0.25f);
+    expect_near(warp_point(w, Vec3(5, 1, 0)), Vec3(1, 1, 0.5f));    // slab 2: two offsets
+    expect_near(warp_point(w, Vec3(-1, 1, 0)), Vec3(1, 1, -0.25f)); // slab -1
+    w.a = Vec3(0.0f), w.b = Vec3(1, -1, 1);                         // odd slabs mirrored in y
+    expect_near(warp_point(w, Vec3(3, 1, 0)), Vec3(1, -1, 0));
+    expect_near(warp_point(w, Vec3(5, 1, 0)), Vec3(1, 1, 0));
+    w.b = Vec3(-1, 1, 1); // mirrored along the axis itself: 2.5 is 0.5's mirror image
+    expect_near(warp_point(w, Vec3(2.5f, 0, 0)), Vec3(1.5f, 0, 0));
+}
+
+TEST(Warps, MappingWarpsFollowPovRaysFormulas) {
+    Warp planar = warp(WarpKind::Planar);
+    planar.f[0] = 0.5f;
+    expect_near(warp_point(planar, Vec3(1, 2, 3)), Vec3(1, 2, 0.5f));
+    Warp cyl = warp(WarpKind::Cylindrical); // a quarter turn from +x towards +z
+    expect_near(warp_point(cyl, Vec3(0, 3, 2)), Vec3(0.25f, 3, 2));
+    cyl.f[0] = 1; // dist_exp 1: the angle times the distance
+    expect_near(warp_point(cyl, Vec3(0, 3, 2)), Vec3(0.5f, 3, 2));
+    cyl.f[0] = 0, cyl.b = Vec3(0, 1, 0); // orientation y
+    expect_near(warp_point(cyl, Vec3(0, 3, 2)), Vec3(0.25f, -2, 3));
+    expect_near(warp_point(cyl, Vec3(0, 3, 0)), Vec3(0, 3, 0)); // on the axis: unmoved
+    Warp sph = warp(WarpKind::Spherical);
+    expect_near(warp_point(sph, Vec3(0, 0, -2)), Vec3(0.75f, 0.5f, 2));
+    expect_near(warp_point(sph, Vec3(0, 2, 0)), Vec3(0, 1, 2)); // the pole
+    Warp tor = warp(WarpKind::Toroidal);
+    tor.f[1] = 2; // major radius
+    expect_near(warp_point(tor, Vec3(3, 0, 0)), Vec3(0, 0.5f, 1));
+    expect_near(warp_point(tor, Vec3(2, -1, 0)), Vec3(0, 0.25f, 1));
+    Warp hole = warp(WarpKind::BlackHole); // radius 2 at the origin, falloff 1, strength 1
+    hole.f[0] = 2, hole.f[1] = 1, hole.f[2] = 1, hole.b = Vec3(0.0f);
+    expect_near(warp_point(hole, Vec3(1, 0, 0)), Vec3(1.5f, 0, 0)); // half its distance out
+    expect_near(warp_point(hole, Vec3(3, 0, 0)), Vec3(3, 0, 0));    // outside: unmoved
+    hole.axis = 1;                                                  // inverse: pulled in
+    expect_near(warp_point(hole, Vec3(1, 0, 0)), Vec3(0.5f, 0, 0));
+    hole.b = Vec3(10, 0, 0); // repeated along x: the copy around x = 10
+    expect_near(warp_point(hole, Vec3(11, 0, 0)), Vec3(10.5f, 0, 0));
+    const Warp cubic = warp(WarpKind::Cubic);
+    expect_near(warp_point(cubic, Vec3(2, 0, 0)), Vec3(0.625f, 0.5f, 2));
+    expect_near(warp_point(cubic, Vec3(0, -2, 0)), Vec3(0.375f, 1.0f / 6, 2));
+}
+
+TEST(Warps, TheChainRunsFromTheLastDeclaredToTheFirst) {
+    // World -> the warp's space halves, the repeat folds x into [0, 1), then to_inner shifts.
+    Pattern p = make(PatternKind::Gradient);
+    p.to_pattern = Affine::scale(Vec3(0.5f));
+    Warp w = warp(WarpKind::Repeat);
+    w.axis = 0, w.f[0] = 1, w.b = Vec3(1.0f);
+    w.to_inner = Affine::translate(Vec3(0, 10, 0));
+    const Warp warps[] = {Warp(), w};
+    p.warp_first = 1, p.warp_count = 1;
+    expect_near(pattern_point(p, Vec3(5, 2, 4), warps), Vec3(0.5f, 11, 2));
+    // Gradients come back through every transform's transpose.
+    expect_near(pattern_gradient_to_world(p, warps, Vec3(1, 1, 1)), Vec3(0.5f, 0.5f, 0.5f));
+}
+
+TEST(Noise, CellDistancesAreOrdered) {
+    std::mt19937 g(9);
+    std::uniform_real_distribution<float> u(-10, 10);
+    for (int i = 0; i < 1000; ++i) {
+        float f1, f2;
+        uint32_t id;
+        cell_distances(Vec3(u(g), u(g), u(g)), f1, f2, id);
+        EXPECT_LE(f1, f2);
+        EXPECT_LT(f1, 1.8f); // the own cell's point is within its diagonal
+    }
+}
+
+} // namespace
+} // namespace sheaf

@@ -29,12 +29,17 @@ class CpuExec {
     /// Launches run on this machine's cores over host memory.
     static constexpr bool kHostMemory = true;
 
+    /// `shared`: a tracker to count into (the frame's, under its limit), else its own.
+    explicit CpuExec(MemoryTracker* shared = nullptr) : memory_(shared ? shared : &own_) {}
+    CpuExec(const CpuExec&) = delete;
+    CpuExec& operator=(const CpuExec&) = delete;
+
     void* allocate(size_t bytes) {
-        memory_.add(int64_t(bytes));
+        memory_->add(int64_t(bytes));
         return ::operator new(bytes);
     }
     void deallocate(void* p, size_t bytes) {
-        memory_.sub(int64_t(bytes));
+        memory_->sub(int64_t(bytes));
         ::operator delete(p);
     }
     void copy_to_device(void* dst, const void* src, size_t bytes) {
@@ -162,9 +167,9 @@ class CpuExec {
     };
     Stopwatch stopwatch() { return Stopwatch(); }
 
-    int64_t peak_bytes() const { return memory_.peak(); }
+    int64_t peak_bytes() const { return memory_->peak(); }
     /// What the buffers hold, counted (and, with a limit, refused) as they are allocated.
-    MemoryTracker& memory() { return memory_; }
+    MemoryTracker& memory() { return *memory_; }
     /// traversal.batch when the setting is 0: the CPU's.
     size_t auto_batch_pairs() const { return kCpuBatchPairs; }
     /// Device work started (launches, scans, reductions, sorts) and host waits for the device
@@ -217,7 +222,8 @@ class CpuExec {
             op);
     }
 
-    MemoryTracker memory_;
+    MemoryTracker own_;
+    MemoryTracker* memory_;
     uint64_t launches_ = 0, waits_ = 0;
 };
 

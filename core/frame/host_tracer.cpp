@@ -1,24 +1,36 @@
 #include "core/frame/host_tracer.h"
 
-#include "core/rsh/trace.h"
+#include "core/frame/phases.h"
+#include "core/frame/scene_copy.h"
 
-namespace sheaf::wavefront {
+namespace sheaf {
 
-void HostTracer::trace(const DeviceBatch<CpuExec>& batch, DeviceTraceResult<CpuExec>& out) {
-    const size_t n = batch.n;
-    const bool any = any_hit_query(batch.type);
-    out = DeviceTraceResult<CpuExec>();
-    // Sized here, filled by trace_rays: no pass over them before it.
-    if (any)
-        out.occluded = DeviceBuffer<uint8_t, CpuExec>(ex_, n);
-    else
-        out.closest = DeviceBuffer<uint64_t, CpuExec>(ex_, n);
-    if (batch.type == RayType::Shadow && transparent_)
-        out.pass_log = DeviceBuffer<uint64_t, CpuExec>(ex_, 3 * n);
-    out.tests = DeviceBuffer<uint32_t, CpuExec>(ex_, n);
-    const RaySpan rays{batch.type, n, batch.rays.data(), batch.pixel.data(), batch.light.data()};
-    trace_rays(host_, units_, rays, s_, st_, ex_.memory(),
-               {out.closest.data(), out.occluded.data(), out.pass_log.data(), out.tests.data()});
+void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
+                 Stats& stats, MemoryTracker& memory, TraceResult& out) {
+    trace_batch(scene, *cull_units_for(scene, s), batch, s, stats, memory, out);
 }
 
-} // namespace sheaf::wavefront
+void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
+                 const RenderSettings& s, Stats& stats, MemoryTracker& memory, TraceResult& out) {
+    using wavefront::CpuExec;
+    CpuExec ex(&memory);
+    wavefront::PhaseClock<CpuExec> clock(ex);
+    wavefront::HostTracer tracer(ex, scene, SceneView(scene), units,
+                                 wavefront::host_cull_view(units), s, stats, clock);
+    const size_t n = batch.size();
+    wavefront::DeviceBatch<CpuExec> b(ex, batch.type, n);
+    b.rays.upload(batch.rays.data(), n);
+    b.pixel.upload(batch.pixel.data(), n);
+    b.weight.upload(batch.weight.data(), n);
+    if (!b.light.empty()) b.light.upload(batch.light.data(), n);
+    wavefront::DeviceTraceResult<CpuExec> r;
+    tracer.trace(b, r);
+    tracer.flush();
+    clock.add_to(stats);
+    out.closest = r.closest.download();
+    out.occluded = r.occluded.download();
+    out.pass_log = r.pass_log.download();
+    out.tests = r.tests.download();
+}
+
+} // namespace sheaf

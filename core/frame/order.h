@@ -1,7 +1,7 @@
-// The order rays enter the hierarchy in (sort.mode), on the executing side: as
-// core/sort/ray_order.cpp, with the same permutation (stable sorts, ties by ray index) and
-// the same chunk count; compress-sort-decompress as flags, scans, a sort of the chunks and an
-// expansion.
+// The order rays enter the hierarchy in (sort.mode), on the executing side: unsorted, every
+// ray sorted by its key, or compress-sort-decompress (paper 000 sections 3.3.3-3.3.5) as
+// flags, scans, a sort of the chunks and an expansion. Sorts are stable (ties by ray index),
+// so full and csd, radix and bitonic, give the same permutation.
 #pragma once
 
 #include "core/frame/phases.h"

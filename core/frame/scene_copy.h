@@ -12,7 +12,7 @@
 #include "core/frame/buffer.h"
 #include "core/rsh/cull_units.h"
 #include "core/scene/scene_view.h"
-#include "core/shading/photon_pass.h"
+#include "core/frame/photon_pass.h"
 
 #include <cstdint>
 #include <cstring>
@@ -41,7 +41,7 @@ template <class Exec> class DeviceScene {
   public:
     static constexpr size_t kOwnCopy = size_t(1) << 20;
 
-    /// `photons`: the frame's photon map (shot on the host, core/shading/photon_pass.h), or none.
+    /// `photons`: the frame's photon map (shot on the host, core/frame/photon_pass.h), or none.
     DeviceScene(Exec& exec, const PreparedScene& p, const CullUnits& units,
                 const PhotonMap* photons = nullptr)
         : exec_(exec) {

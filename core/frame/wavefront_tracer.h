@@ -12,10 +12,12 @@
 #include "core/frame/scene_copy.h"
 #include "core/hash/ray_hash.h"
 #include "core/rays/ray_gen.h"
+#include "core/rsh/cpu_traversal.h"
 #include "core/rsh/hierarchy.h"
 #include "core/rsh/trace_kernels.h"
 
 #include <cfloat>
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -83,18 +85,31 @@ struct BoxUnion {
     }
 };
 
-/// The wavefront implementation of the intersection seam (seam.h): the CUDA module's tracer,
-/// and under the CPU policy the one the tests hold the CPU's against.
-template <class Exec> class WavefrontTracer {
+/// How a tracer walks the ray hierarchy down to the exact tests: as launches with a count,
+/// compaction and next launch per level (a device's way), or on host memory through
+/// per-thread candidate lists (core/rsh/cpu_traversal.h: faster on CPU cores).
+enum class Traversal { Wavefront, Host };
+
+/// The intersection seam's implementation (seam.h): brute, or hash, order, the ray hierarchy
+/// and its traversal (rah, crsh). Every stage but the traversal is written once, as launches;
+/// the traversal is the wavefront's on a device (the CUDA module's tracer) or the CPU's
+/// (HostTracer, core/frame/host_tracer.h, the CPU backend's). The tests hold the two against
+/// each other under the CPU policy.
+template <class Exec, Traversal kTraversal = Traversal::Wavefront> class WavefrontTracer {
+    static_assert(kTraversal == Traversal::Wavefront || Exec::kHostMemory,
+                  "the host traversal reads host memory");
+
   public:
-    /// Its launches are what a device would run: the frame reports device.* counters.
-    static constexpr bool kDeviceWork = true;
+    /// Whether its launches are what a device would run: the frame then reports device.*
+    /// counters.
+    static constexpr bool kDeviceWork = kTraversal == Traversal::Wavefront;
 
     /// `units`: the culling units on the host, `cull` the same on the executing side.
     WavefrontTracer(Exec& ex, const PreparedScene& host, const SceneView& scene,
                  const CullUnits& units, const CullView& cull, const RenderSettings& s,
                  Stats& stats, PhaseClock<Exec>& clock)
-        : ex_(ex), scene_(scene), cull_(cull), s_(s), st_(stats), clock_(clock),
+        : ex_(ex), host_(host), units_(units), scene_(scene), cull_(cull), s_(s), st_(stats),
+          clock_(clock),
           light_count_(uint32_t(host.lights.size())), batch_(s.batch_or(ex.auto_batch_pairs())) {
         for (uint8_t f : host.prim_flags) transparent_ = transparent_ || (f & kPrimMayPass);
         for (size_t u = 0; u < units.count(); ++u)
@@ -169,15 +184,20 @@ template <class Exec> class WavefrontTracer {
         st_.add(std::string("hierarchy.") + ray_type_name(batch.type) + ".top_nodes",
                 double(node_count(s_.hierarchy_depth)));
 
-        clock_.start("traversal");
         sinks_ = out.sinks();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>(ex_, node_count(1));
         fill(ex_, leaf_pairs_.data(), node_count(1), 0u);
-        counters_ = DeviceBuffer<uint32_t, Exec>(ex_, size_t(depth) + 1);
-        pair_bufs_.resize(size_t(depth) + 1);
-        traverse();
-        pair_bufs_.clear();
-        counters_ = DeviceBuffer<uint32_t, Exec>();
+        if constexpr (kTraversal == Traversal::Host) {
+            host_traverse(cull, depth);
+            clock_.start("traversal");
+        } else {
+            clock_.start("traversal");
+            counters_ = DeviceBuffer<uint32_t, Exec>(ex_, size_t(depth) + 1);
+            pair_bufs_.resize(size_t(depth) + 1);
+            traverse();
+            pair_bufs_.clear();
+            counters_ = DeviceBuffer<uint32_t, Exec>();
+        }
         spread_ray_tests(out.tests.data(), n);
         clock_.stop("traversal");
 
@@ -329,6 +349,30 @@ template <class Exec> class WavefrontTracer {
             });
             levels_.push_back(std::move(nodes));
         }
+    }
+
+    // The CPU's traversal (core/rsh/cpu_traversal.h) over the levels built here, its counts
+    // into the batch's slot as the wavefront's go there; its time as the phases traversal and
+    // final_tests.
+    void host_traverse(bool cull, int depth) {
+        const auto start = std::chrono::steady_clock::now();
+        std::vector<const RayNode*> nodes(levels_.size());
+        std::vector<size_t> count(levels_.size() + 1);
+        count[0] = sorted_.size();
+        for (size_t k = 0; k < levels_.size(); ++k)
+            nodes[k] = levels_[k].data(), count[k + 1] = levels_[k].size();
+        const LevelsView h{depth, s_.hierarchy_arity, nodes.data(), count.data()};
+        TraversalCounts counts;
+        traverse_on_cpu(host_, units_, h, sorted_.data(), perm_, any_, shadow_, skip_, batch_,
+                        cull, ex_.memory(), sinks_, leaf_pairs_.data(), counts);
+        *objects_count_ = counts.objects;
+        *final_count_ = counts.final;
+        for (size_t k = 1; k < counts.levels.size(); ++k) level_counts_[k] = counts.levels[k];
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        st_.add("time_ms.traversal", ms - counts.final_ms);
+        st_.add("time_ms.final_tests", counts.final_ms);
     }
 
     // Top nodes against the object spheres and, within split objects, the unit spheres
@@ -629,6 +673,8 @@ template <class Exec> class WavefrontTracer {
     }
 
     Exec& ex_;
+    const PreparedScene& host_; // the scene and units in host memory (the host traversal)
+    const CullUnits& units_;
     SceneView scene_;
     CullView cull_;
     const RenderSettings& s_;

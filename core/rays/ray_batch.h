@@ -19,7 +19,7 @@ enum class RayType : uint8_t {
     Ao = 3,
     Diffuse = 4,
     Camera = 5,
-    Photon = 6 // photons from the lights (core/shading/photon_pass.h): closest hit
+    Photon = 6 // photons from the lights (core/frame/photon_pass.h): closest hit
 };
 constexpr int kRayTypeCount = 7;
 

@@ -1,11 +1,7 @@
-// Tracing one batch of secondary rays with the accel of the settings:
-//  brute - every ray against every primitive;
-//  rah   - the ray hierarchy over the rays in generation order (Roger et al.);
-//  crsh  - hash (hash.mode), order (sort.mode), then the ray hierarchy (paper 000).
-// The hierarchy is traversed top-down: top nodes against object spheres (cull.objects), then
-// against primitive spheres level by level, keeping compacted (node, primitive) candidate
-// pairs, then exact tests of each ray against its leaf's candidates. Candidate pairs are
-// processed in batches of at most traversal.batch per level, so memory stays bounded.
+// What tracing a batch of rays gives (the tracers: core/frame/wavefront_tracer.h and its host
+// traversal, core/rsh/cpu_traversal.h): packed closest hits, occlusion, the light a shadow
+// ray keeps through transparent surfaces, each ray's exact tests, and the statistics rows of
+// the counts (tests.<type>.objects, level<k>, final, total).
 #pragma once
 
 #include "core/base/memory.h"
@@ -67,43 +63,7 @@ void add_late_counts(Stats& stats, const std::string& prefix, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
                      const TestCount& final);
 
-/// A batch of rays to trace, as pointers into arrays that outlive the call (light: shadow rays'
-/// lights, which the crsh key uses; otherwise may be null).
-struct RaySpan {
-    RayType type = RayType::Shadow;
-    size_t n = 0;
-    const Ray* rays = nullptr;
-    const uint32_t* pixel = nullptr;
-    const uint32_t* light = nullptr;
-};
-
-/// Where a traced span's results go, each indexed like the span: closest (n, closest-hit
-/// types) or occluded (n, any-hit types), pass_log (3n, shadow rays, when
-/// shadows_pass_surfaces) and tests (n). Filled whole by trace_rays.
-struct HitSpan {
-    uint64_t* closest = nullptr;
-    uint8_t* occluded = nullptr;
-    uint64_t* pass_log = nullptr;
-    uint32_t* tests = nullptr;
-};
-
 /// Whether some primitive of `scene` may let a shadow ray through (its pass log is kept).
 bool shadows_pass_surfaces(const PreparedScene& scene);
-
-/// The CPU's traversal of one span: trace_batch's work on arrays the caller owns (the frame
-/// pipeline's buffers), with the same statistics.
-void trace_rays(const PreparedScene& scene, const CullUnits& units, const RaySpan& rays,
-                const RenderSettings& settings, Stats& stats, MemoryTracker& memory,
-                const HitSpan& out);
-
-/// Traces `batch` (in its own order; results are indexed like the batch). Adds rays.<type>,
-/// tests.<type>.*, hierarchy.<type>.* and time_ms.* entries to `stats`. `units`: the scene's
-/// culling units under the settings (cull_units_for).
-void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
-                 const RenderSettings& settings, Stats& stats, MemoryTracker& memory,
-                 TraceResult& result);
-/// The same, with the scene's culling units under the settings.
-void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& settings,
-                 Stats& stats, MemoryTracker& memory, TraceResult& result);
 
 } // namespace sheaf

@@ -1,5 +1,5 @@
 // Photon mapping's scene data (POV-Ray's photons): the scene's settings, what each object does
-// with photons, and what each light sends. The photon pass is core/shading/photon_pass.h; the
+// with photons, and what each light sends. The photon pass is core/frame/photon_pass.h; the
 // gather at shaded points is core/scene/photon_gather.h.
 #pragma once
 

@@ -376,7 +376,7 @@ class Scene {
     /// atmospheric `media`; only its media are read). Rays that leave the scene cross
     /// kAtmosphereFar units of it (core/shading/media.h).
     int32_t atmosphere = -1;
-    /// Photon mapping (caustics): on when photons.spacing > 0 (core/shading/photon_pass.h).
+    /// Photon mapping (caustics): on when photons.spacing > 0 (core/frame/photon_pass.h).
     PhotonSettings photons;
     /// The gamma of the space colours are given and computed in (POV-Ray's assumed_gamma): the
     /// frame's value v is light v^working_gamma, and image textures are read into that space.

@@ -58,7 +58,7 @@ struct SceneView : ShapeTables {
     Fog fog;
     const Rainbow* rainbows = nullptr;
     uint32_t rainbow_count = 0;
-    // The frame's photon map (core/shading/photon_pass.h); empty unless the frame shot photons.
+    // The frame's photon map (core/frame/photon_pass.h); empty unless the frame shot photons.
     PhotonMapView photon_map;
     const Light* lights = nullptr;
     uint32_t light_count = 0;

@@ -3,7 +3,7 @@
 #include "core/backend/backend.h"
 #include "core/frame/render_frame.h"
 #include "core/scene/photon_gather.h"
-#include "core/shading/photon_pass.h"
+#include "core/frame/photon_pass.h"
 #include "tests/support/test_scenes.h"
 
 #include <gtest/gtest.h>

@@ -339,7 +339,7 @@ inline Scene scattering_scene() {
 /// crosses the view past a solid ball, a transparent solid ball the atmosphere leaves out, six
 /// more spotlights behind the camera (more lights than a step takes, none reaching the
 /// steps in view) and a point light.
-/// Photons (core/shading/photon_pass.h): a glass ball and a mirror ball, both targets, over a
+/// Photons (core/frame/photon_pass.h): a glass ball and a mirror ball, both targets, over a
 /// floor inside a room, lit by a spotlight and a fading point light; the glass focuses a
 /// caustic under it, the mirror throws one on the wall.
 inline Scene photon_scene() {

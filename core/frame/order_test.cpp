@@ -1,7 +1,10 @@
-// Radix sort and ray ordering: permutations, stability, and full == csd.
+// Radix sort and ray ordering (order.h, under the CPU policy): permutations, stability, and
+// full == csd, radix == bitonic.
+#include "core/frame/order.h"
+
+#include "core/frame/cpu_exec.h"
 #include "core/sort/bitonic_sort.h"
 #include "core/sort/radix_sort.h"
-#include "core/sort/ray_order.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +14,23 @@
 
 namespace sheaf {
 namespace {
+
+struct OrderResult {
+    std::vector<uint32_t> perm;
+    size_t chunks = 0;
+};
+
+/// order_rays on the CPU policy, its phase times added to `stats`.
+OrderResult order_rays(const std::vector<uint32_t>& keys, int words, size_t n, SortMode mode,
+                       Stats& stats, SortAlgorithm algorithm = SortAlgorithm::Radix) {
+    wavefront::CpuExec ex;
+    wavefront::DeviceBuffer<uint32_t, wavefront::CpuExec> k(ex, keys.size());
+    k.upload(keys.data(), keys.size());
+    wavefront::PhaseClock<wavefront::CpuExec> clock(ex);
+    const auto order = wavefront::order_rays(ex, k.data(), words, n, mode, clock, algorithm);
+    clock.add_to(stats);
+    return {order.perm.download(), order.chunks};
+}
 
 bool is_permutation_of_n(const std::vector<uint32_t>& p) {
     std::vector<char> seen(p.size(), 0);

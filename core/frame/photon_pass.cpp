@@ -1,11 +1,11 @@
-#include "core/shading/photon_pass.h"
+#include "core/frame/photon_pass.h"
 
 #include "core/base/error.h"
 #include "core/base/parallel.h"
 #include "core/base/timer.h"
 #include "core/frame/frame_stats.h"
 #include "core/rays/ray_gen.h"
-#include "core/rsh/trace.h"
+#include "core/frame/host_tracer.h"
 #include "core/scene/scene_view.h"
 #include "core/shading/shade.h"
 #include "core/shading/surface_hit.h"

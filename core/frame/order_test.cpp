@@ -3,7 +3,7 @@
 #include "core/frame/order.h"
 
 #include "core/frame/cpu_exec.h"
-#include "core/sort/bitonic_sort.h"
+#include "tests/support/bitonic_sort.h"
 #include "core/sort/radix_sort.h"
 
 #include <gtest/gtest.h>

@@ -103,7 +103,7 @@ struct BitonicLess {
     }
 };
 
-/// The bitonic network of core/sort/bitonic_sort.h as launches: log^2 n stages of n / 2
+/// The bitonic network of tests/support/bitonic_sort.h as launches: log^2 n stages of n / 2
 /// compare-exchanges; ties broken by value, so the permutation is the stable radix sort's.
 template <class Exec>
 void bitonic_sort_pairs(Exec& ex, uint32_t* keys, int words, uint32_t* values, size_t n) {

@@ -1,6 +1,9 @@
 // The ray hierarchy is conservative: every ray lies in its node's sphere and cone, and every
-// node in its parent's.
+// node in its parent's. Levels are built here node by node with build_ray_node, as the tracer
+// (core/frame/wavefront_tracer.h) builds them with one launch a level.
 #include "core/rsh/hierarchy.h"
+
+#include "core/base/memory.h"
 
 #include <gtest/gtest.h>
 
@@ -8,6 +11,40 @@
 
 namespace sheaf {
 namespace {
+
+struct RayHierarchy {
+    int depth = 0, arity = 0;
+    size_t ray_count = 0;
+    // levels[k - 1] holds the nodes of level k: level 1 sits on the rays, level `depth` is the top.
+    std::vector<TrackedVector<RayNode>> levels;
+
+    size_t node_count(int level) const {
+        return level == 0 ? ray_count : levels[size_t(level) - 1].size();
+    }
+    /// The children of node i of `level` are [first, last) of level - 1 (rays when level is 1).
+    size_t first_child(size_t i) const { return i * size_t(arity); }
+    size_t last_child(int level, size_t i) const {
+        const size_t e = (i + 1) * size_t(arity), n = node_count(level - 1);
+        return e < n ? e : n;
+    }
+};
+
+RayHierarchy build_hierarchy(const TrackedVector<Ray>& rays, int depth, int arity,
+                             MemoryTracker& memory, bool bound_reach = false) {
+    RayHierarchy h;
+    h.depth = depth, h.arity = arity, h.ray_count = rays.size();
+    for (int level = 1; level <= depth; ++level) {
+        const size_t below = h.node_count(level - 1);
+        TrackedVector<RayNode> nodes =
+            tracked_vector<RayNode>(memory, (below + size_t(arity) - 1) / size_t(arity));
+        const RayNode* children = level == 1 ? nullptr : h.levels[size_t(level) - 2].data();
+        for (size_t i = 0; i < nodes.size(); ++i)
+            nodes[i] = build_ray_node(rays.data(), children, h.first_child(i),
+                                      h.last_child(level, i), bound_reach);
+        h.levels.push_back(std::move(nodes));
+    }
+    return h;
+}
 
 TrackedVector<Ray> random_rays(MemoryTracker& m, size_t n, uint32_t seed) {
     std::mt19937 g(seed);

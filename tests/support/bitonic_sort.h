@@ -1,7 +1,8 @@
-// A parallel bitonic sort of (key, value) pairs with multi-word keys, for paper 003's
-// comparison of bitonic and radix sorting. O(n log^2 n) compare-exchanges in log^2 n parallel
-// stages over a power-of-two padding of the input. Ties are broken by the value (the ray's
-// index), so the result is the permutation the stable radix sort gives.
+// The host reference of the bitonic sort the tracer runs as launches (core/frame/steps.h;
+// paper 003 compares bitonic and radix sorting): pairs with multi-word keys, O(n log^2 n)
+// compare-exchanges in log^2 n parallel stages over a power-of-two padding of the input. Ties
+// are broken by the value (the ray's index), so the result is the permutation the stable
+// radix sort gives.
 #pragma once
 
 #include "core/base/parallel.h"

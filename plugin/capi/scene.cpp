@@ -361,7 +361,7 @@ SHEAF_API SheafError sheafSceneSetCamera(SheafScene scene, const float position[
 }
 
 SHEAF_API SheafError sheafSceneAddTexture(SheafScene scene, const char* path,
-                                          SheafTextureMapping mapping,
+                                          int mapping,
                                           const float* world_to_texture_3x4, const char* colorspace,
                                           uint32_t* out_texture_id) {
     return barrier([&] {
@@ -385,7 +385,7 @@ SHEAF_API SheafError sheafSceneAddTexture(SheafScene scene, const char* path,
             t.mapping = sheaf::TextureMapping::Torus;
             break;
         default:
-            throw InvalidArgument("texture mapping " + std::to_string(int(mapping)) +
+            throw InvalidArgument("texture mapping " + std::to_string(mapping) +
                                   " is not a SheafTextureMapping");
         }
         if (world_to_texture_3x4)
@@ -439,7 +439,7 @@ SHEAF_API SheafError sheafSceneAddLight(SheafScene scene, const SheafLightDesc* 
             break;
         default:
             throw InvalidArgument(
-                "light type " + std::to_string(int(desc->type)) +
+                "light type " + std::to_string(desc->type) +
                 " is not one of SHEAF_LIGHT_POINT, SHEAF_LIGHT_SPOT, SHEAF_LIGHT_PARALLEL");
         }
         l.position = vec3(desc->position, "position");
@@ -463,11 +463,11 @@ SHEAF_API SheafError sheafSceneSetCameraDesc(SheafScene scene, const SheafCamera
         require(desc, "desc");
         sheaf::Camera c;
         // SheafProjection's values are Projection's, in the same order.
-        if (!(int(desc->projection) >= 0 && int(desc->projection) < sheaf::kProjectionCount))
-            throw InvalidArgument("projection " + std::to_string(int(desc->projection)) +
+        if (!(desc->projection >= 0 && desc->projection < sheaf::kProjectionCount))
+            throw InvalidArgument("projection " + std::to_string(desc->projection) +
                                   " is not a SheafProjection (SHEAF_PROJECTION_PERSPECTIVE .. "
                                   "SHEAF_PROJECTION_SPHERICAL)");
-        c.projection = sheaf::Projection(int(desc->projection));
+        c.projection = sheaf::Projection(desc->projection);
         if (c.projection == sheaf::Projection::Spherical) c.angle_degrees = 360;
         c.position = vec3(desc->position, "position");
         c.look_at = vec3(desc->look_at, "look_at");

@@ -13,7 +13,7 @@ SHEAF_API SheafError sheafSceneAddSubdivisionMesh(
     SheafScene scene, const float* positions, uint32_t vertex_count, const uint32_t* face_sizes,
     uint32_t face_count, const uint32_t* face_indices, const uint32_t* crease_edges,
     const float* crease_sharpness, uint32_t crease_count, const float* uvs,
-    SheafSubdivScheme scheme, int level, uint32_t* out_mesh_id) {
+    int scheme, int level, uint32_t* out_mesh_id) {
     return barrier([&] {
         SheafSceneT& s = *require(scene, "scene");
         if (vertex_count > 0) require(positions, "positions");
@@ -31,7 +31,7 @@ SHEAF_API SheafError sheafSceneAddSubdivisionMesh(
             options.scheme = sheaf::io::SubdivScheme::Loop;
             break;
         default:
-            throw InvalidArgument("subdivision scheme " + std::to_string(int(scheme)) +
+            throw InvalidArgument("subdivision scheme " + std::to_string(scheme) +
                                   " is not one of SHEAF_SUBDIV_CATMULL_CLARK, SHEAF_SUBDIV_LOOP");
         }
         if (level < 0 || level > sheaf::io::kMaxSubdivLevel)

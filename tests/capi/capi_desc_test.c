@@ -3,6 +3,7 @@
  * radiance they must give; bad enum values are INVALID_ARGUMENT. Exits non-zero on any failure. */
 #include <sheaf/sheaf.h>
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -88,14 +89,27 @@ int main(void) {
     red = centre_red(s);
     CHECK(fabsf(red - 0.5f) < 1e-6f, "emission: %f", red);
 
-    /* Bad enums and NULLs are argument errors, not crashes. */
-    sheafLightDescInit(&light);
-    light.type = (SheafLightType)7;
-    CHECK(sheafSceneAddLight(s, &light, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "bad light type");
+    /* Bad enums and NULLs are argument errors, not crashes: every value outside each enum
+     * (the C ABI takes enums as int, so no value is undefined behaviour to pass). */
+    {
+        const int bad_light[] = {-1, 3, 7, 256, 65536, INT_MAX, INT_MIN};
+        const int bad_projection[] = {-1, 11, 255, 65536, INT_MAX, INT_MIN};
+        size_t i;
+        for (i = 0; i < sizeof bad_light / sizeof bad_light[0]; ++i) {
+            sheafLightDescInit(&light);
+            light.type = bad_light[i];
+            CHECK(sheafSceneAddLight(s, &light, NULL) == SHEAF_ERROR_INVALID_ARGUMENT,
+                  "light type %d", bad_light[i]);
+        }
+        for (i = 0; i < sizeof bad_projection / sizeof bad_projection[0]; ++i) {
+            sheafCameraDescInit(&cam);
+            cam.projection = bad_projection[i];
+            CHECK(sheafSceneSetCameraDesc(s, &cam) == SHEAF_ERROR_INVALID_ARGUMENT,
+                  "projection %d", bad_projection[i]);
+        }
+    }
     CHECK(sheafSceneAddLight(s, NULL, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "NULL light");
     sheafCameraDescInit(&cam);
-    cam.projection = (SheafProjection)11;
-    CHECK(sheafSceneSetCameraDesc(s, &cam) == SHEAF_ERROR_INVALID_ARGUMENT, "bad projection");
     CHECK(sheafSceneSetCameraLens(s, 0, 180, NULL) == SHEAF_ERROR_INVALID_ARGUMENT, "angle 0");
     {
         const float flat[3] = {1, 0, 1};
@@ -206,9 +220,14 @@ int main(void) {
         CHECK(tex == 0, "first texture id %u", tex);
         OK(sheafSceneSetMeshUvs(s, 0, uvs, 4));
         CHECK(sheafSceneSetMeshUvs(s, 0, uvs, 3) == SHEAF_ERROR_INVALID_ARGUMENT, "uv count");
-        CHECK(sheafSceneAddTexture(s, "x.png", (SheafTextureMapping)9, NULL, NULL, NULL) ==
-                  SHEAF_ERROR_INVALID_ARGUMENT,
-              "bad mapping");
+        {
+            const int bad[] = {-1, 5, 9, 256, INT_MAX, INT_MIN};
+            size_t i;
+            for (i = 0; i < sizeof bad / sizeof bad[0]; ++i)
+                CHECK(sheafSceneAddTexture(s, "x.png", bad[i], NULL, NULL, NULL) ==
+                          SHEAF_ERROR_INVALID_ARGUMENT,
+                      "mapping %d", bad[i]);
+        }
         mat.texture = 0;
         OK(sheafSceneAddMaterial(s, &mat, NULL));
         CHECK(sheafSceneCommit(s) == SHEAF_ERROR_SCENE, "missing texture");

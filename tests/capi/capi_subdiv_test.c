@@ -4,6 +4,7 @@
  * leave the scene as it was. Exits non-zero on any failure. */
 #include <sheaf/sheaf.h>
 
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -110,10 +111,15 @@ int main(void) {
                                                   cube_faces, NULL, NULL, 0, NULL,
                                                   SHEAF_SUBDIV_CATMULL_CLARK, 1, &id),
                      SHEAF_ERROR_INVALID_ARGUMENT, "'scene' is NULL");
-        expect_error(sheafSceneAddSubdivisionMesh(s, cube_positions, 8, cube_sizes, 6, cube_faces,
-                                                  NULL, NULL, 0, NULL, (SheafSubdivScheme)7, 1,
-                                                  &id),
-                     SHEAF_ERROR_INVALID_ARGUMENT, "scheme 7");
+        {
+            const int bad[] = {-1, 2, 7, 256, INT_MAX, INT_MIN};
+            size_t i;
+            for (i = 0; i < sizeof bad / sizeof bad[0]; ++i)
+                expect_error(sheafSceneAddSubdivisionMesh(s, cube_positions, 8, cube_sizes, 6,
+                                                          cube_faces, NULL, NULL, 0, NULL, bad[i],
+                                                          1, &id),
+                             SHEAF_ERROR_INVALID_ARGUMENT, "is not one of SHEAF_SUBDIV");
+        }
         expect_error(add_cube(s, 9, &id), SHEAF_ERROR_INVALID_ARGUMENT, "level 9 is out of range");
         expect_error(add_cube(s, -1, &id), SHEAF_ERROR_INVALID_ARGUMENT, "out of range");
         expect_error(sheafSceneAddSubdivisionMesh(s, cube_positions, 8, cube_sizes, 6, bad_faces,

@@ -162,7 +162,7 @@ typedef enum SheafTextureMapping {
  * colorspace: NULL or "" to follow the file (8-bit sRGB, float linear), "srgb" or "linear".
  * The file is opened when the scene is committed: a missing one is SHEAF_ERROR_SCENE. */
 SHEAF_API SheafError sheafSceneAddTexture(SheafScene scene, const char* path,
-                                          SheafTextureMapping mapping,
+                                          int mapping /* a SheafTextureMapping */,
                                           const float* world_to_texture_3x4, const char* colorspace,
                                           uint32_t* out_texture_id);
 /* Texture coordinates of a mesh: 2 floats per vertex (t = 0 at the bottom of the image). */
@@ -176,7 +176,7 @@ typedef enum SheafLightType {
 } SheafLightType;
 
 typedef struct SheafLightDesc {
-    SheafLightType type;
+    int type;             /* a SheafLightType; any other value is SHEAF_ERROR_INVALID_ARGUMENT */
     float position[3];    /* point and spot */
     float direction[3];   /* spot: the cone's axis; parallel: the way the light travels */
     float color[3];       /* linear RGB intensity */
@@ -210,7 +210,7 @@ typedef enum SheafProjection {
 } SheafProjection;
 
 typedef struct SheafCameraDesc {
-    SheafProjection projection;
+    int projection; /* a SheafProjection; any other value is SHEAF_ERROR_INVALID_ARGUMENT */
     float position[3], look_at[3], up[3];
     float fov_y_degrees; /* perspective: vertical field of view */
     float ortho_height;  /* orthographic: height of the view in scene units */
@@ -331,7 +331,7 @@ typedef enum SheafSubdivScheme { SHEAF_SUBDIV_CATMULL_CLARK = 0, SHEAF_SUBDIV_LO
 SHEAF_API SheafError sheafSceneAddSubdivisionMesh(SheafScene scene, const float* positions, uint32_t vertex_count,
     const uint32_t* face_sizes, uint32_t face_count, const uint32_t* face_indices,
     const uint32_t* crease_edges, const float* crease_sharpness, uint32_t crease_count,
-    const float* uvs, SheafSubdivScheme scheme, int level, uint32_t* out_mesh_id);
+    const float* uvs, int scheme /* a SheafSubdivScheme */, int level, uint32_t* out_mesh_id);
 
 #ifdef __cplusplus
 }

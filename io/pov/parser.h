@@ -34,7 +34,8 @@ constexpr size_t kMaxDataBytes = size_t(2) << 30;
 constexpr size_t kMaxObjects = 5'000'000;
 /// Nested expressions, objects, textures and function bodies: the parser recurses into each,
 /// so a deeper nesting is refused before the stack runs out (about 3 KB a level: 500 levels
-/// need 1.5 MB of the 8 MB a thread has by default).
+/// need 1.5 MB of the 64 MiB the readers run on, core/base/stack.h, whatever the calling
+/// thread's stack).
 constexpr int kMaxNesting = 500;
 /// Parse steps: tokens read (macro bodies and loop bodies each time they run) and function
 /// nodes evaluated. Bounds what no other limit does, such as macros or functions that call

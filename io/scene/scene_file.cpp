@@ -2,6 +2,7 @@
 #include "io/scene/scene_file.h"
 
 #include "core/base/error.h"
+#include "core/base/stack.h"
 #include "core/scenes/builtin.h"
 #include "io/mesh/mesh_scene.h"
 #include "io/pov/pov_reader.h"
@@ -73,7 +74,12 @@ SceneFile load_scene_file(const std::string& path, const SceneFileOptions& optio
     if (!std::ifstream(path)) throw SceneError(path + ": cannot open file");
     const std::string ext = lower_extension(path);
     for (const Reader& r : kReaders)
-        if (ext == r.extension) return r.read(path, options);
+        if (ext == r.extension) {
+            // On a stack of known size, whatever the calling thread has (core/base/stack.h).
+            SceneFile file;
+            run_on_stack(kReaderStackBytes, [&] { file = r.read(path, options); });
+            return file;
+        }
     throw SceneError(path + ": no reader for '" + ext + "' files; scene files are " +
                      scene_file_extensions() + ", or builtin:NAME");
 }

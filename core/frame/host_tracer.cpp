@@ -5,18 +5,16 @@
 
 namespace sheaf {
 
-void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
-                 Stats& stats, MemoryTracker& memory, TraceResult& out) {
-    trace_batch(scene, *cull_units_for(scene, s), batch, s, stats, memory, out);
-}
+namespace {
 
-void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
-                 const RenderSettings& s, Stats& stats, MemoryTracker& memory, TraceResult& out) {
+template <wavefront::Traversal kTraversal>
+void trace_with(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
+                const RenderSettings& s, Stats& stats, MemoryTracker& memory, TraceResult& out) {
     using wavefront::CpuExec;
     CpuExec ex(&memory);
     wavefront::PhaseClock<CpuExec> clock(ex);
-    wavefront::HostTracer tracer(ex, scene, SceneView(scene), units,
-                                 wavefront::host_cull_view(units), s, stats, clock);
+    wavefront::WavefrontTracer<CpuExec, kTraversal> tracer(
+        ex, scene, SceneView(scene), units, wavefront::host_cull_view(units), s, stats, clock);
     const size_t n = batch.size();
     wavefront::DeviceBatch<CpuExec> b(ex, batch.type, n);
     b.rays.upload(batch.rays.data(), n);
@@ -31,6 +29,23 @@ void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBa
     out.occluded = r.occluded.download();
     out.pass_log = r.pass_log.download();
     out.tests = r.tests.download();
+}
+
+} // namespace
+
+void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
+                 Stats& stats, MemoryTracker& memory, TraceResult& out,
+                 wavefront::Traversal traversal) {
+    trace_batch(scene, *cull_units_for(scene, s), batch, s, stats, memory, out, traversal);
+}
+
+void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
+                 const RenderSettings& s, Stats& stats, MemoryTracker& memory, TraceResult& out,
+                 wavefront::Traversal traversal) {
+    if (traversal == wavefront::Traversal::Host)
+        trace_with<wavefront::Traversal::Host>(scene, units, batch, s, stats, memory, out);
+    else
+        trace_with<wavefront::Traversal::Wavefront>(scene, units, batch, s, stats, memory, out);
 }
 
 } // namespace sheaf

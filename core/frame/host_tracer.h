@@ -19,12 +19,15 @@ using HostTracer = WavefrontTracer<CpuExec, Traversal::Host>;
 /// Traces `batch` through the CPU backend's tracer outside a frame (the photon pass, tests):
 /// results indexed like the batch; adds rays.<type>, tests.<type>.*, hierarchy.<type>.* and
 /// time_ms.* entries to `stats`; its buffers count into `memory`. `units`: the scene's
-/// culling units under the settings (cull_units_for).
+/// culling units under the settings (cull_units_for). `traversal`: the CPU's, or the
+/// wavefront's (the CUDA module's, which the tests hold against it).
 void trace_batch(const PreparedScene& scene, const CullUnits& units, const RayBatch& batch,
                  const RenderSettings& settings, Stats& stats, MemoryTracker& memory,
-                 TraceResult& result);
+                 TraceResult& result,
+                 wavefront::Traversal traversal = wavefront::Traversal::Host);
 /// The same, with the scene's culling units under the settings.
 void trace_batch(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& settings,
-                 Stats& stats, MemoryTracker& memory, TraceResult& result);
+                 Stats& stats, MemoryTracker& memory, TraceResult& result,
+                 wavefront::Traversal traversal = wavefront::Traversal::Host);
 
 } // namespace sheaf

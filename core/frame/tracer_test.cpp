@@ -80,30 +80,6 @@ struct Mode {
     long long batch;
 };
 
-// The same batch through the wavefront tracer (the CUDA module's traversal) under the CPU
-// policy: trace_batch with WavefrontTracer in place of HostTracer.
-void trace_wavefront(const PreparedScene& scene, const RayBatch& batch, const RenderSettings& s,
-                     Stats& stats, TraceResult& out) {
-    using wavefront::CpuExec;
-    CpuExec ex;
-    wavefront::PhaseClock<CpuExec> clock(ex);
-    const auto units = cull_units_for(scene, s);
-    wavefront::WavefrontTracer<CpuExec> tracer(ex, scene, SceneView(scene), *units,
-                                               wavefront::host_cull_view(*units), s, stats, clock);
-    const size_t n = batch.size();
-    wavefront::DeviceBatch<CpuExec> b(ex, batch.type, n);
-    b.rays.upload(batch.rays.data(), n);
-    b.pixel.upload(batch.pixel.data(), n);
-    b.weight.upload(batch.weight.data(), n);
-    if (!b.light.empty()) b.light.upload(batch.light.data(), n);
-    wavefront::DeviceTraceResult<CpuExec> r;
-    tracer.trace(b, r);
-    tracer.flush();
-    out.closest = r.closest.download();
-    out.occluded = r.occluded.download();
-    out.tests = r.tests.download();
-}
-
 // Every tracer (the CPU backend's, the wavefront's) under every accel finds brute force's hits.
 TEST(Trace, EveryModeFindsWhatBruteForceFinds) {
     const PreparedScene scene = random_scene(3);
@@ -157,7 +133,7 @@ TEST(Trace, EveryModeFindsWhatBruteForceFinds) {
             // The wavefront tracer: the same hits, per-ray tests and counts.
             TraceResult wave;
             Stats wst;
-            trace_wavefront(scene, batch, s, wst, wave);
+            trace_batch(scene, batch, s, wst, mem, wave, wavefront::Traversal::Wavefront);
             EXPECT_EQ(wave.closest, ref.closest) << what << " (wavefront)";
             EXPECT_EQ(wave.occluded, ref.occluded) << what << " (wavefront)";
             EXPECT_EQ(wave.tests, got.tests) << what << " (wavefront)";

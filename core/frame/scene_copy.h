@@ -29,12 +29,19 @@ struct CullView {
     const uint32_t* object = nullptr;
     const uint32_t* object_units = nullptr; // objects + 1 entries
     uint32_t count = 0;
+    BvhView bvh; // accel=bvh (CullUnits::bvh); empty otherwise
 };
 
 /// The units in host memory, for an exec that reads it (no copy).
 inline CullView host_cull_view(const CullUnits& u) {
     return {u.begin.data(), u.sphere.data(), u.object.data(), u.object_units.data(),
-            uint32_t(u.count())};
+            uint32_t(u.count()), u.bvh ? u.bvh->view() : BvhView{}};
+}
+
+/// The units' BVH, or an empty one.
+inline const Bvh& units_bvh(const CullUnits& u) {
+    static const Bvh none;
+    return u.bvh ? *u.bvh : none;
 }
 
 template <class Exec> class DeviceScene {
@@ -83,6 +90,9 @@ template <class Exec> class DeviceScene {
             dst = static_cast<const T*>(static_cast<const void*>(slots_.at(k++).at));
         });
         cull.count = uint32_t(units.count());
+        const BvhView b = units_bvh(units).view();
+        cull.bvh.node_count = b.node_count, cull.bvh.prim_count = b.prim_count;
+        cull.bvh.unbounded_count = b.unbounded_count;
         v.textures = nullptr;
         v.sampler = nullptr;
         // The same device copy, the packed arrays' pointers set above (a small warp table is
@@ -157,6 +167,9 @@ template <class Exec> class DeviceScene {
         f(units.sphere, cull.sphere);
         f(units.object, cull.object);
         f(units.object_units, cull.object_units);
+        f(units_bvh(units).nodes, cull.bvh.nodes);
+        f(units_bvh(units).prims, cull.bvh.prims);
+        f(units_bvh(units).unbounded, cull.bvh.unbounded);
     }
 
     /// Where one array lives: in a buffer of its own, or at `offset` in the packed buffer.

@@ -6,6 +6,7 @@
 // keys, the same hits.
 #pragma once
 
+#include "core/accel/bvh_trace.h"
 #include "core/frame/batch.h"
 #include "core/frame/compact.h"
 #include "core/frame/order.h"
@@ -57,7 +58,7 @@ struct TopCandidates {
 /// A traced batch's counts kept on the executing side until the frame reads them (at
 /// namespace scope: nvcc's extended lambdas may not capture a class's private types).
 struct BatchCounts {
-    TestCount objects, final;
+    TestCount objects, final, nodes; // nodes: accel=bvh's ray-box tests
     TestCount levels[kMaxHierarchyDepth + 1]; // index k: level k
 };
 
@@ -146,15 +147,22 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
 
         // Object and final tests count into this batch's slot, read with the others' by
         // flush().
-        const bool cull = s_.accel != Accel::Brute && s_.cull_objects;
-        const int depth = s_.accel == Accel::Brute ? 0 : s_.hierarchy_depth;
-        BatchCounts* slot = take_slot(p, cull, depth);
+        const bool per_ray = s_.accel == Accel::Brute || s_.accel == Accel::Bvh;
+        const bool cull = !per_ray && s_.cull_objects;
+        const int depth = per_ray ? 0 : s_.hierarchy_depth;
+        const bool bvh = s_.accel == Accel::Bvh;
+        BatchCounts* slot = take_slot(p, cull, depth, bvh);
         objects_count_ = &slot->objects;
         final_count_ = &slot->final;
+        node_count_ = &slot->nodes;
         level_counts_ = slot->levels;
-        if (s_.accel == Accel::Brute) {
-            brute(batch, out);
-            add_test_counts(st_, p, false, {}, {}, {}); // final tests only
+        if (per_ray) {
+            const TestCount none;
+            if (bvh)
+                bvh_trace(batch, out);
+            else
+                brute(batch, out);
+            add_test_counts(st_, p, false, {}, {}, {}, bvh ? &none : nullptr); // no levels
             return;
         }
 
@@ -216,7 +224,8 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         for (size_t i = 0; i < pending_.size(); ++i) {
             const BatchCounts& c = counts[i];
             const std::vector<TestCount> levels(c.levels, c.levels + pending_[i].depth + 1);
-            add_late_counts(st_, pending_[i].prefix, pending_[i].cull, c.objects, levels, c.final);
+            add_late_counts(st_, pending_[i].prefix, pending_[i].cull, c.objects, levels, c.final,
+                            pending_[i].bvh ? &c.nodes : nullptr);
         }
         pending_.clear();
         // A batch traced after this takes a new buffer, zeroed when allocated: no launch to
@@ -251,6 +260,35 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
             },
             SumCounts{});
         clock_.stop("final_tests");
+    }
+
+    // accel=bvh: each ray through the scene's BVH (core/accel/bvh_trace.h), written once for
+    // both backends.
+    void bvh_trace(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
+        clock_.start("traversal");
+        const size_t n = batch.n;
+        DeviceBuffer<BvhCounts, Exec> counts(ex_, n);
+        const SceneView scene = scene_;
+        const BvhView bvh = cull_.bvh;
+        const Ray* rays = batch.rays.data();
+        uint32_t* tests = out.tests.data();
+        BvhCounts* per = counts.data();
+        const bool any = any_, shadow = shadow_;
+        const uint8_t skip = skip_;
+        const HitSinks sinks = out.sinks();
+        ex_.launch("bvh.trace", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+            const BvhCounts c =
+                bvh_trace_ray(bvh, scene, rays[i], uint32_t(i), any, shadow, skip, sinks);
+            tests[i] = uint32_t(c.prims.tests < 0xFFFFFFFFu ? c.prims.tests : 0xFFFFFFFFu);
+            per[i] = c;
+        });
+        ex_.reduce_into(
+            "bvh.prim_counts", n, final_count_, TestCount{},
+            [=] SHEAF_HD_LAMBDA(size_t i) -> TestCount { return per[i].prims; }, SumCounts{});
+        ex_.reduce_into(
+            "bvh.node_counts", n, node_count_, TestCount{},
+            [=] SHEAF_HD_LAMBDA(size_t i) -> TestCount { return per[i].nodes; }, SumCounts{});
+        clock_.stop("traversal");
     }
 
     // Keys of the batch under hash.mode. Returns the number of 32-bit words per key.
@@ -657,10 +695,11 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         std::string prefix; // of the batch's statistics keys
         bool cull;          // whether it has objects.* rows
         int depth;          // its level<k>.* rows: k in 1..depth
+        bool bvh;           // whether it has nodes.* rows
     };
 
     // A zeroed slot for the next batch; the slots grow by doubling.
-    BatchCounts* take_slot(const std::string& prefix, bool cull, int depth) {
+    BatchCounts* take_slot(const std::string& prefix, bool cull, int depth, bool bvh) {
         if (pending_.size() == slots_.size()) {
             DeviceBuffer<BatchCounts, Exec> grown(ex_, std::max<size_t>(16, 2 * slots_.size()));
             fill(ex_, grown.data(), grown.size(), BatchCounts{});
@@ -668,7 +707,7 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
                 ex_.copy_on_device(grown.data(), slots_.data(), slots_.size() * sizeof(BatchCounts));
             slots_ = std::move(grown);
         }
-        pending_.push_back({prefix, cull, depth});
+        pending_.push_back({prefix, cull, depth, bvh});
         return slots_.data() + (pending_.size() - 1);
     }
 
@@ -698,6 +737,7 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
     // The batch's counts on the executing side, in its slot of slots_.
     TestCount* objects_count_ = nullptr;
     TestCount* final_count_ = nullptr;
+    TestCount* node_count_ = nullptr;
     TestCount* level_counts_ = nullptr; // index k: level k
     // Object and final-test counts of the batches traced since the last flush.
     DeviceBuffer<BatchCounts, Exec> slots_;

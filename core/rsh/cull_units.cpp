@@ -12,6 +12,7 @@ namespace sheaf {
 struct CullUnitsCache {
     std::mutex mutex;
     std::map<int, std::shared_ptr<const CullUnits>> by_cluster;
+    std::shared_ptr<const CullUnits> with_bvh; // whole objects and the BVH
 };
 
 std::shared_ptr<CullUnitsCache> new_cull_units_cache() {
@@ -60,9 +61,21 @@ CullUnits make_cull_units(const PreparedScene& scene, int cluster) {
 
 std::shared_ptr<const CullUnits> cull_units_for(const PreparedScene& scene,
                                                 const RenderSettings& settings) {
-    const int cluster = settings.cull_objects ? std::max(0, settings.cull_cluster) : 0;
+    const bool bvh = settings.accel == Accel::Bvh;
+    const int cluster = settings.cull_objects && !bvh ? std::max(0, settings.cull_cluster) : 0;
+    const auto make = [&] {
+        CullUnits u = make_cull_units(scene, cluster);
+        if (bvh) u.bvh = bvh_for(scene);
+        return std::make_shared<const CullUnits>(std::move(u));
+    };
     CullUnitsCache* cache = scene.cull_units_cache.get();
-    if (!cache) return std::make_shared<const CullUnits>(make_cull_units(scene, cluster));
+    if (!cache) return make();
+    if (bvh) {
+        bvh_for(scene); // built outside this cache's lock (make() then finds it kept)
+        std::lock_guard<std::mutex> lock(cache->mutex);
+        if (!cache->with_bvh) cache->with_bvh = make();
+        return cache->with_bvh;
+    }
     std::lock_guard<std::mutex> lock(cache->mutex);
     std::shared_ptr<const CullUnits>& units = cache->by_cluster[cluster];
     if (!units) units = std::make_shared<const CullUnits>(make_cull_units(scene, cluster));

@@ -7,6 +7,7 @@
 // traversal and the wavefront's.
 #pragma once
 
+#include "core/accel/bvh.h"
 #include "core/geometry/sphere.h"
 #include "core/scene/prepared_scene.h"
 #include "core/settings/settings.h"
@@ -25,6 +26,9 @@ struct CullUnits {
     std::vector<Sphere> sphere;         // per unit: encloses its primitives
     std::vector<uint32_t> object;       // per unit
     std::vector<uint32_t> object_units; // objects + 1 entries
+    /// accel=bvh: the scene's object-space hierarchy (bvh_for), which the traversal tests
+    /// instead of the units; null otherwise.
+    std::shared_ptr<const Bvh> bvh;
     size_t count() const { return sphere.size(); }
     bool split(uint32_t o) const { return object_units[o + 1] - object_units[o] > 1; }
 };
@@ -37,7 +41,8 @@ CullUnits make_cull_units(const PreparedScene& scene, int cluster);
 
 /// The units a render with `settings` culls by (whole objects unless cull.objects and
 /// cull.cluster split them), computed once per scene and cluster size when the scene came
-/// from prepare_scene (its cull_units_cache), else computed here.
+/// from prepare_scene (its cull_units_cache), else computed here. Under accel=bvh, whole
+/// objects and the scene's BVH.
 std::shared_ptr<const CullUnits> cull_units_for(const PreparedScene& scene,
                                                 const RenderSettings& settings);
 

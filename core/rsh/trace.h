@@ -51,17 +51,18 @@ struct TraceResult {
 
 /// The statistics rows of one traced batch from its counts: `prefix` ("tests.shadow.")
 /// objects.* (when culling objects; not in the total, as in the paper), level<k>.* for k from
-/// the top (levels[k]) down to 1, final.*, and total.
+/// the top (levels[k]) down to 1, nodes.* (accel=bvh: ray-box tests, when `nodes` is given),
+/// final.*, and total.
 void add_test_counts(Stats& stats, const std::string& prefix, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
-                     const TestCount& final);
+                     const TestCount& final, const TestCount* nodes = nullptr);
 
 /// Adds a batch's counts to the rows add_test_counts wrote (objects.* when culling objects,
 /// level<k>.* for each levels[k], k >= 1, final.* and total): for counts read after the batch,
 /// the rows written first with the counts zero, so the keys keep their order.
 void add_late_counts(Stats& stats, const std::string& prefix, bool cull_objects,
                      const TestCount& objects, const std::vector<TestCount>& levels,
-                     const TestCount& final);
+                     const TestCount& final, const TestCount* nodes = nullptr);
 
 /// Whether some primitive of `scene` may let a shadow ray through (its pass log is kept).
 bool shadows_pass_surfaces(const PreparedScene& scene);

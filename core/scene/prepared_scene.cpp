@@ -346,6 +346,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.background = scene.background;
     p.settings = scene.settings;
     p.cull_units_cache = new_cull_units_cache();
+    p.bvh_cache = new_bvh_cache();
     return p;
 }
 

@@ -41,6 +41,9 @@ constexpr uint8_t kPrimMayPass = 0x80;
 /// Culling units already computed for a prepared scene, by cull.cluster (core/rsh/cull_units.h).
 struct CullUnitsCache;
 std::shared_ptr<CullUnitsCache> new_cull_units_cache();
+/// The BVH of a prepared scene, built on first use (core/accel/bvh.h).
+struct BvhCache;
+std::shared_ptr<BvhCache> new_bvh_cache();
 
 struct PreparedScene {
     // Primitives (triangles for now), object by object: object o owns
@@ -109,6 +112,8 @@ struct PreparedScene {
     // Set by prepare_scene: the culling units of this geometry, computed once per
     // cull.cluster value and shared by its frames (and copies).
     std::shared_ptr<CullUnitsCache> cull_units_cache;
+    // Set by prepare_scene: the BVH of this geometry (accel=bvh), built once and shared alike.
+    std::shared_ptr<BvhCache> bvh_cache;
     std::vector<Light> lights;
     Camera camera;
     // Projection::Mesh: the camera meshes' faces, the meshes, and the distribution-3 uv grid

@@ -22,12 +22,13 @@ const std::vector<SettingSpec>& setting_specs() {
          "crsh",
          0,
          0,
-         {"brute", "rah", "crsh"},
+         {"brute", "rah", "crsh", "bvh"},
          "how secondary rays find geometry: every ray against every primitive (brute), the ray "
          "hierarchy over "
          "rays in generation order (rah, Roger et al.) or over rays hashed and sorted by hash.mode "
          "and sort.mode "
-         "(crsh, paper 000)"},
+         "(crsh, paper 000), or each ray through a bounding volume hierarchy of the primitives "
+         "(bvh, SAH-built, four-wide)"},
         {"hierarchy.depth",
          K::Int,
          "2",
@@ -378,7 +379,10 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     auto choice = [&](const char* k) { return v.at(k); };
     RenderSettings r;
     const std::string accel = choice("accel");
-    r.accel = accel == "brute" ? Accel::Brute : accel == "rah" ? Accel::Rah : Accel::Crsh;
+    r.accel = accel == "brute" ? Accel::Brute
+              : accel == "rah" ? Accel::Rah
+              : accel == "bvh" ? Accel::Bvh
+                               : Accel::Crsh;
     r.hierarchy_depth = i("hierarchy.depth");
     r.hierarchy_arity = i("hierarchy.arity");
     const std::string hash = choice("hash.mode");
@@ -420,7 +424,7 @@ size_t device_batch_pairs(uint64_t device_bytes) {
 }
 
 const char* to_string(Accel a) {
-    return a == Accel::Brute ? "brute" : a == Accel::Rah ? "rah" : "crsh";
+    return a == Accel::Brute ? "brute" : a == Accel::Rah ? "rah" : a == Accel::Bvh ? "bvh" : "crsh";
 }
 const char* to_string(HashMode h) {
     switch (h) {

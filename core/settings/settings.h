@@ -53,7 +53,7 @@ class Settings {
     std::map<std::string, std::string, std::less<>> values_;
 };
 
-enum class Accel { Brute, Rah, Crsh };
+enum class Accel { Brute, Rah, Crsh, Bvh };
 enum class HashMode { None, Crsh, Hash32, Hash192, Static1d, Static3d };
 enum class SortMode { None, Full, Csd };
 enum class SortAlgorithm { Radix, Bitonic };

@@ -1,0 +1,75 @@
+// The object-space hierarchy of accel=bvh: a bounding volume hierarchy of four-wide nodes over
+// every bounded primitive of a prepared scene (triangles, analytic shapes, CSG roots), built
+// top-down with the surface-area heuristic over binned centroids, and the primitives without
+// finite bounds (planes, unclipped polys) kept aside for every ray to test. Built once per
+// scene on the host (bvh_for caches it beside the culling units) and traversed by the same
+// per-ray function on both backends (core/accel/bvh_trace.h).
+#pragma once
+
+#include "core/base/device.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace sheaf {
+
+struct PreparedScene;
+
+constexpr int kBvhWidth = 4;
+constexpr uint32_t kBvhNoChild = 0xFFFFFFFFu;
+/// Levels of nodes below the root at which the builder stops weighing surface areas and
+/// splits at the median, so that a traversal's stack is bounded (kBvhStack).
+constexpr int kBvhSahDepth = 24;
+/// Entries of a traversal's stack: at most three siblings wait per level, and below
+/// kBvhSahDepth the median split at least halves a node's primitives per level (2^32 of
+/// them: 29 levels to leaves of 8).
+constexpr int kBvhStack = 3 * (kBvhSahDepth + 30) + 1;
+
+/// Four children's bounds as a structure of arrays (lo[axis][child]), so that the four slab
+/// tests are one vector operation. Child i is the node child[i] when count[i] is 0, the leaf of
+/// primitives prims[child[i], child[i] + count[i]) otherwise, and no child at all when child[i]
+/// is kBvhNoChild (its bounds then empty). 128 bytes: two cache lines.
+struct BvhNode {
+    float lo[3][kBvhWidth];
+    float hi[3][kBvhWidth];
+    uint32_t child[kBvhWidth];
+    uint32_t count[kBvhWidth];
+};
+static_assert(sizeof(BvhNode) == 128, "a BVH node is two cache lines");
+
+/// The hierarchy as the per-ray traversal reads it (host or device pointers). The root is node
+/// 0 when there are nodes.
+struct BvhView {
+    const BvhNode* nodes = nullptr;
+    const uint32_t* prims = nullptr;     // leaves' primitives, leaf by leaf
+    const uint32_t* unbounded = nullptr; // primitives every ray tests
+    uint32_t node_count = 0, prim_count = 0, unbounded_count = 0;
+};
+
+struct Bvh {
+    std::vector<BvhNode> nodes;
+    std::vector<uint32_t> prims;
+    std::vector<uint32_t> unbounded;
+    int depth = 0; // levels of nodes, the root's counted
+
+    BvhView view() const {
+        return {nodes.data(), prims.data(), unbounded.data(), uint32_t(nodes.size()),
+                uint32_t(prims.size()), uint32_t(unbounded.size())};
+    }
+    /// Bytes of hierarchy (nodes and leaf lists) beside the scene's own arrays.
+    size_t bytes() const {
+        return nodes.size() * sizeof(BvhNode) + (prims.size() + unbounded.size()) * 4;
+    }
+};
+
+/// The BVH of every primitive of `scene`: each primitive with finite bounds in exactly one
+/// leaf, the others in `unbounded`. Multithreaded (oneTBB); the same tree for the same scene.
+Bvh build_bvh(const PreparedScene& scene);
+
+/// The scene's BVH, built on first use and kept with the scene (PreparedScene's cache) for
+/// every later frame, comparison and sweep.
+std::shared_ptr<const Bvh> bvh_for(const PreparedScene& scene);
+
+} // namespace sheaf

@@ -112,7 +112,8 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         : ex_(ex), host_(host), units_(units), scene_(scene), cull_(cull), s_(s), st_(stats),
           clock_(clock),
           light_count_(uint32_t(host.lights.size())), batch_(s.batch_or(ex.auto_batch_pairs())) {
-        for (uint8_t f : host.prim_flags) transparent_ = transparent_ || (f & kPrimMayPass);
+        for (uint8_t f : host.prim_flags) flags_ = uint8_t(flags_ | f);
+        transparent_ = (flags_ & kPrimMayPass) != 0;
         for (size_t u = 0; u < units.count(); ++u)
             units_with_prims_ += units.begin[u + 1] > units.begin[u] ? 1 : 0;
     }
@@ -125,7 +126,8 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         const uint32_t prims = scene_.prim_count();
         any_ = any_hit_query(batch.type);
         shadow_ = batch.type == RayType::Shadow;
-        skip_ = skip_flags(batch.type);
+        // Flags no primitive has skip nothing: no candidate then reads its primitive's flags.
+        skip_ = uint8_t(skip_flags(batch.type) & flags_);
         const std::string p = std::string("tests.") + ray_type_name(batch.type) + ".";
         st_.add(std::string("rays.") + ray_type_name(batch.type), double(n));
         st_.add(p + "brute_force", double(n) * double(prims));
@@ -723,6 +725,7 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
     size_t batch_; // traversal.batch, or the exec's choice when it is 0
     uint32_t units_with_prims_ = 0;
     bool transparent_ = false; // some primitive may let light through (shadow pass logs)
+    uint8_t flags_ = 0;        // every flag some primitive has
     // The batch being traced.
     bool any_ = false, shadow_ = false;
     uint8_t skip_ = 0;

@@ -80,7 +80,7 @@ TEST(Cuda, BuiltinScenesMatchTheCpu) {
     for (const std::string& name : builtin_scene_names()) {
         const PreparedScene scene = prepare_scene(make_builtin_scene(name));
         for (const SettingList& kv :
-             {SettingList{}, SettingList{{"accel", "rah"}},
+             {SettingList{}, SettingList{{"accel", "rah"}}, SettingList{{"accel", "bvh"}},
               SettingList{{"hash.mode", "hash192"}, {"ao.samples", "4"}},
               SettingList{{"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
               SettingList{{"aa.samples", "2"}, {"traversal.batch", "65536"}}})
@@ -94,6 +94,7 @@ TEST(Cuda, PipelineTestScenesMatchTheCpu) {
     const std::vector<SettingList> variants = {
         {{"accel", "brute"}},
         {{"accel", "rah"}, {"cull.objects", "false"}},
+        {{"accel", "bvh"}},
         {},
         {{"hash.mode", "hash32"}, {"sort.mode", "full"}, {"ao.samples", "3"}},
         {{"hash.mode", "hash192"}},
@@ -122,6 +123,7 @@ TEST(Cuda, SceneFilesMatchTheCpu) {
                 return;
             }
             expect_cuda_matches_cpu(scene, name, {});
+            expect_cuda_matches_cpu(scene, name, {{"accel", "bvh"}});
         });
 }
 

@@ -33,7 +33,7 @@ std::vector<std::string> traced_types(const std::vector<RunResult>& results) {
 std::vector<std::string> level_rows(const std::vector<RunResult>& results,
                                     const std::string& type) {
     const std::string prefix = "tests." + type + ".";
-    bool objects = false, final_row = false;
+    bool objects = false, nodes = false, final_row = false;
     int top = 0;
     for (const RunResult& r : results)
         for (const auto& [key, value] : r.stats) {
@@ -41,16 +41,19 @@ std::vector<std::string> level_rows(const std::vector<RunResult>& results,
             const std::string rest = key.substr(prefix.size());
             if (starts_with(rest, "objects.")) objects = true;
             if (starts_with(rest, "final.")) final_row = true;
+            if (starts_with(rest, "nodes.")) nodes = true;
             if (starts_with(rest, "level")) top = std::max(top, std::atoi(rest.c_str() + 5));
         }
     std::vector<std::string> rows;
     if (objects) rows.push_back("objects");
     for (int k = top; k >= 1; --k) rows.push_back("level" + std::to_string(k));
+    if (nodes) rows.push_back("nodes");
     if (final_row) rows.push_back("final");
     return rows;
 }
 
 std::string row_label(const std::string& row) {
+    if (row == "nodes") return "bvh nodes";
     return starts_with(row, "level") ? "level " + row.substr(5) : row;
 }
 

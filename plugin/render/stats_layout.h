@@ -15,10 +15,10 @@ namespace render {
 std::vector<std::string> traced_types(const std::vector<RunResult>& results);
 
 /// The rows of a ray type's table any result has: "objects", "level<k>" from the highest k down,
-/// "final". The stat keys are tests.<type>.<row>.tests|hits|misses.
+/// "nodes" (accel=bvh's box tests), "final". The stat keys are tests.<type>.<row>.tests|hits|misses.
 std::vector<std::string> level_rows(const std::vector<RunResult>& results, const std::string& type);
 
-/// "level2" -> "level 2"; others unchanged.
+/// "level2" -> "level 2", "nodes" -> "bvh nodes"; others unchanged.
 std::string row_label(const std::string& row);
 
 /// The phases timed (time_ms.<phase>, without "frame"), in the frame's order.

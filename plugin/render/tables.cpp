@@ -64,7 +64,8 @@ std::string totals_table(const std::vector<RunResult>& results) {
                           with_commas(r.stat("tests.brute_force")), percent(r.share()),
                           first > 0 ? fixed(r.stat("tests.total") / first, 3) + "x" : "-",
                           fixed(r.stat("time_ms.frame"), 1)});
-    return "Totals (levels + final tests; object-sphere tests not counted, as in the paper)\n" +
+    return "Totals (levels or bvh nodes + final tests; object-sphere tests not counted, as in the "
+           "paper)\n" +
            t.str() + "\n";
 }
 

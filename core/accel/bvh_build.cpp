@@ -74,6 +74,11 @@ Box padded(Box b) {
     return b;
 }
 
+int widest_axis(const Box& b) {
+    const Vec3 e = b.hi - b.lo;
+    return e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+}
+
 bool finite_box(const Box& b) {
     const auto fin = [](const Vec3& v) {
         return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -202,8 +207,7 @@ class Builder {
     // Half the range by count along the centroids' widest axis (nth_element): the split of
     // ranges whose centroids coincide, where a split must be made, and below kBvhSahDepth.
     Split median(const Range& r) {
-        const Vec3 e = r.centroids.hi - r.centroids.lo;
-        const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+        const int axis = widest_axis(r.centroids);
         std::vector<uint32_t>& order = out_.prims;
         const uint32_t mid = r.begin + r.size() / 2;
         std::nth_element(order.begin() + r.begin, order.begin() + mid, order.begin() + r.end,
@@ -228,7 +232,7 @@ class Builder {
             return median(r);
         }
         const Vec3 e = r.centroids.hi - r.centroids.lo;
-        const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+        const int axis = widest_axis(r.centroids);
         if (!(e[axis] > 0)) {
             if (r.size() <= kMaxLeaf) return s;
             return median(r);

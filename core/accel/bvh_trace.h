@@ -108,22 +108,19 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray(const BvhView& bvh, const SceneView& sce
     BvhCounts c;
     uint64_t best = kNoHit;
     bool done = false;
+    // The ray the triangles are tested with: a triangle's distance does not depend on tmax, so
+    // the best hit bounds their tests (equal distances still pass: the lower primitive wins
+    // the tie). Analytic shapes take the ray as given.
+    Ray bounded = r;
     // One primitive's exact test: false when the ray is finished (an opaque any hit).
     const auto test = [&](uint32_t p) {
         if (skip && scene.prim_flag(p, skip)) return true;
         ++c.prims.tests;
         float t;
         if (scene.is_triangle(p)) {
-            // A triangle's distance does not depend on tmax: the best hit bounds the test,
-            // equal distances still pass (the lower primitive wins the tie).
-            Ray near = r;
-            if (!any && best != kNoHit) {
-                const float bt = hit_t(best);
-                near.tmax = bt < near.tmax ? bvh_next_up(bt) : near.tmax;
-            }
             const TriangleVerts& tri = scene.tris[p];
             TriangleHit h;
-            if (!intersect_triangle(near, tri.a, tri.b, tri.c, h)) return true;
+            if (!intersect_triangle(bounded, tri.a, tri.b, tri.c, h)) return true;
             t = h.t;
         } else if (!intersect_prim(scene, p, r, t)) {
             return true;
@@ -135,7 +132,10 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray(const BvhView& bvh, const SceneView& sce
             return false;
         }
         const uint64_t h = pack_hit(t, p);
-        best = h < best ? h : best;
+        if (h < best) {
+            best = h;
+            bounded.tmax = t < r.tmax ? bvh_next_up(t) : r.tmax;
+        }
         return true;
     };
     for (uint32_t k = 0; k < bvh.unbounded_count && !done; ++k) done = !test(bvh.unbounded[k]);

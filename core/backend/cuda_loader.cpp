@@ -1,24 +1,10 @@
 #include "core/backend/cuda_loader.h"
 
-#include <dlfcn.h>
+#include "core/base/module_loader.h"
 
-#include <cstdlib>
 #include <mutex>
 
 namespace sheaf {
-
-namespace {
-
-std::string directory_of_this_image() {
-    Dl_info info{};
-    if (!dladdr(reinterpret_cast<const void*>(&cuda_module_candidates), &info) || !info.dli_fname)
-        return {};
-    const std::string file = info.dli_fname;
-    const size_t slash = file.rfind('/');
-    return slash == std::string::npos ? std::string(".") : file.substr(0, slash);
-}
-
-} // namespace
 
 std::string cuda_module_build_path() {
 #ifdef SHEAF_CUDA_MODULE_BUILD_PATH
@@ -29,40 +15,23 @@ std::string cuda_module_build_path() {
 }
 
 std::vector<std::string> cuda_module_candidates() {
-    if (const char* env = std::getenv("SHEAF_CUDA_MODULE"); env && *env) return {env};
-    std::vector<std::string> c;
-    if (const std::string dir = directory_of_this_image(); !dir.empty())
-        c.push_back(dir + "/" SHEAF_CUDA_MODULE_FILE);
-    if (const std::string built = cuda_module_build_path(); !built.empty()) c.push_back(built);
-    c.push_back(SHEAF_CUDA_MODULE_FILE); // the dynamic loader's search path
-    return c;
+    return module_candidates("SHEAF_CUDA_MODULE", SHEAF_CUDA_MODULE_FILE, cuda_module_build_path());
 }
 
 CudaBackendStatus load_cuda_backend(const std::vector<std::string>& candidates) {
     CudaBackendStatus st;
-    std::string tried;
-    for (const std::string& path : candidates) {
-        void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (!handle) {
-            const char* e = dlerror();
-            tried += std::string(tried.empty() ? "" : "; ") + (e ? e : path + ": cannot be opened");
-            continue;
-        }
-        auto entry = reinterpret_cast<SheafCudaModuleEntry>(dlsym(handle, SHEAF_CUDA_MODULE_ENTRY));
-        const SheafCudaModule* m =
-            entry ? entry(SHEAF_CUDA_MODULE_ABI, cuda_module_signature()) : nullptr;
-        if (!m) {
-            tried += std::string(tried.empty() ? "" : "; ") + path +
-                     (entry ? ": built from another version of Sheaf"
-                            : ": no " SHEAF_CUDA_MODULE_ENTRY " in it");
-            dlclose(handle);
-            continue;
-        }
-        // Loaded for the life of the process: never dlclose'd, the CUDA runtime inside stays.
-        st.module = m;
-        st.path = path;
-        break;
-    }
+    const OpenedModule m = open_module(
+        candidates, SHEAF_CUDA_MODULE_ENTRY, [](void* symbol, std::string& why) -> const void* {
+            if (!symbol) return nullptr;
+            const SheafCudaModule* t = reinterpret_cast<SheafCudaModuleEntry>(symbol)(
+                SHEAF_CUDA_MODULE_ABI, cuda_module_signature());
+            if (!t) why = "built from another version of Sheaf";
+            return t;
+        });
+    // Loaded for the life of the process: the CUDA runtime inside stays.
+    st.module = static_cast<const SheafCudaModule*>(m.table);
+    st.path = m.path;
+    const std::string& tried = m.tried;
     if (!st.module) {
         st.error = "no CUDA module: " SHEAF_CUDA_MODULE_FILE " not found or not loadable";
         st.detail = st.error + " (" + tried + ")";

@@ -1,9 +1,9 @@
-// Image files through OpenImageIO: 8-bit display-referred or float scene-linear by extension.
+// Image files through OpenImageIO (the image module, loaded at the first image written):
+// 8-bit display-referred or float scene-linear by extension.
 #include "io/image/image_io.h"
 
 #include "core/base/error.h"
-
-#include <OpenImageIO/imageio.h>
+#include "io/image/image_module.h"
 
 #include <algorithm>
 #include <cctype>
@@ -62,24 +62,6 @@ std::vector<std::pair<std::string, std::string>> frame_metadata(const Frame& fra
     return {{"sheaf:settings", settings}, {"sheaf:stats", frame.stats.to_json()}};
 }
 
-std::unique_ptr<OIIO::ImageOutput> open_output(const std::string& path,
-                                               const OIIO::ImageSpec& spec) {
-    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(path);
-    if (!out) throw RenderError(path + ": cannot write image: " + OIIO::geterror());
-    if (!out->open(path, spec))
-        throw RenderError(path + ": cannot write image: " + out->geterror());
-    return out;
-}
-
-void finish(std::unique_ptr<OIIO::ImageOutput>& out, bool ok, const std::string& path) {
-    if (!ok) {
-        const std::string message = out->geterror();
-        out->close();
-        throw RenderError(path + ": cannot write image: " + message);
-    }
-    if (!out->close()) throw RenderError(path + ": cannot write image: " + out->geterror());
-}
-
 /// The frame's pixels, when it holds `pass` to write.
 size_t pixel_count(const Frame& frame, const std::string& path,
                    const std::string& pass = "combined") {
@@ -95,7 +77,7 @@ void write_exr(const Frame& frame, const std::string& path) {
     const size_t pixels = pixel_count(frame, path);
     const bool half = setting(frame, "output.exr") != "float";
     std::vector<std::string> names = {"R", "G", "B", "A"};
-    std::vector<OIIO::TypeDesc> formats(4, half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+    std::vector<int> formats(4, half ? SHEAF_PIXEL_HALF : SHEAF_PIXEL_FLOAT);
     std::vector<std::function<float(size_t)>> get = {
         [&](size_t p) { return frame.rgba[4 * p]; },
         [&](size_t p) { return frame.rgba[4 * p + 1]; },
@@ -104,7 +86,7 @@ void write_exr(const Frame& frame, const std::string& path) {
     auto add = [&](const char* name, std::function<float(size_t)> f, size_t have) {
         if (have < pixels) return; // a frame without this pass
         names.push_back(name);
-        formats.push_back(OIIO::TypeDesc::FLOAT);
+        formats.push_back(SHEAF_PIXEL_FLOAT);
         get.push_back(std::move(f));
     };
     add(
@@ -131,20 +113,20 @@ void write_exr(const Frame& frame, const std::string& path) {
         "tests", [&](size_t p) { return float(frame.tests[p]); }, frame.tests.size());
 
     const int nc = int(names.size());
-    OIIO::ImageSpec spec(frame.width, frame.height, nc, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = names;
-    spec.channelformats = formats;
-    spec.alpha_channel = 3;
-    spec.z_channel = names.size() > 4 && names[4] == "Z" ? 4 : -1;
-    spec.attribute("Software", "Sheaf");
-    spec.attribute("oiio:ColorSpace", "Linear");
-    spec.attribute("compression", "zip");
-    for (const auto& [k, v] : frame_metadata(frame)) spec.attribute(k, v);
     std::vector<float> data(pixels * size_t(nc));
     for (size_t p = 0; p < pixels; ++p)
         for (int c = 0; c < nc; ++c) data[p * nc + c] = get[size_t(c)](p);
-    auto out = open_output(path, spec);
-    finish(out, out->write_image(OIIO::TypeDesc::FLOAT, data.data()), path);
+    io::ImageToWrite im;
+    im.path = path;
+    im.width = frame.width, im.height = frame.height, im.channels = nc;
+    im.channel_names = names;
+    im.types = formats;
+    im.alpha_channel = 3;
+    im.z_channel = names.size() > 4 && names[4] == "Z" ? 4 : -1;
+    im.attributes = {{"Software", "Sheaf"}, {"oiio:ColorSpace", "Linear"}, {"compression", "zip"}};
+    for (const auto& kv : frame_metadata(frame)) im.attributes.push_back(kv);
+    im.pixels = data.data();
+    io::encode_image(im);
 }
 
 // A colour for each object id, far apart for neighbouring ids.
@@ -209,13 +191,9 @@ void write_pixels(const std::string& path, int w, int h, int channels, const flo
     // Layout in the file: grey stays grey where the format allows, alpha where it fits.
     const int colour_out = (colour_in || format.max_channels == 3) ? 3 : 1;
     const int nc = std::min(format.max_channels, colour_out + (alpha_in ? 1 : 0));
-    const OIIO::TypeDesc type = eight                               ? OIIO::TypeDesc::UINT8
-                                : format.encoding == Encoding::Half ? OIIO::TypeDesc::HALF
-                                                                    : OIIO::TypeDesc::FLOAT;
-    OIIO::ImageSpec spec(w, h, nc, type);
-    spec.attribute("Software", "Sheaf");
-    spec.attribute("oiio:ColorSpace", eight && display_referred ? "sRGB" : "Linear");
-    for (const auto& [k, v] : metadata) spec.attribute(k, v);
+    const int type = eight                               ? SHEAF_PIXEL_UINT8
+                     : format.encoding == Encoding::Half ? SHEAF_PIXEL_HALF
+                                                         : SHEAF_PIXEL_FLOAT;
     std::vector<float> data(n * size_t(nc));
     for (size_t p = 0; p < n; ++p)
         for (int c = 0; c < nc; ++c) {
@@ -226,8 +204,15 @@ void write_pixels(const std::string& path, int w, int h, int channels, const flo
                 v = std::round(std::fmin(v, 1.0f) * 255.0f) / 255.0f; // OIIO converts to 8 bits
             data[p * nc + c] = v;
         }
-    auto out = open_output(path, spec);
-    finish(out, out->write_image(OIIO::TypeDesc::FLOAT, data.data()), path);
+    io::ImageToWrite im;
+    im.path = path;
+    im.width = w, im.height = h, im.channels = nc;
+    im.types.assign(size_t(nc), type);
+    im.attributes = {{"Software", "Sheaf"},
+                     {"oiio:ColorSpace", eight && display_referred ? "sRGB" : "Linear"}};
+    for (const auto& kv : metadata) im.attributes.push_back(kv);
+    im.pixels = data.data();
+    io::encode_image(im);
 }
 
 void write_image(const Frame& frame, const std::string& path) {

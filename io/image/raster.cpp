@@ -1,8 +1,8 @@
 #include "io/image/raster.h"
 
 #include "core/base/error.h"
+#include "io/image/image_module.h"
 
-#include <OpenImageIO/imageio.h>
 #include <png.h>
 
 #include <algorithm>
@@ -51,12 +51,11 @@ std::vector<uint8_t> png_indices(const std::string& path, int& w, int& h) {
 } // namespace
 
 Raster read_raster(const std::string& path, size_t max_pixels) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw RenderError(OIIO::geterror());
-    const OIIO::ImageSpec spec = in->spec();
+    ImageReader in(path);
+    const SheafImageInfo& spec = in.info();
     Raster r;
     r.width = spec.width, r.height = spec.height;
-    if (r.width < 2 || r.height < 2 || spec.nchannels < 1 ||
+    if (r.width < 2 || r.height < 2 || spec.channels < 1 ||
         size_t(r.width) * size_t(r.height) > max_pixels)
         throw RenderError("an image of " + std::to_string(r.width) + " x " +
                           std::to_string(r.height) + " pixels, where at least 2 x 2 and at most " +
@@ -71,10 +70,8 @@ Raster read_raster(const std::string& path, size_t max_pixels) {
         for (size_t i = 0; i < n; ++i) r.pixels[i] = float(indices[i]) / 255.0f;
         return r;
     }
-    r.channels = std::min(spec.nchannels, 3);
-    r.pixels.resize(n * size_t(r.channels));
-    if (!in->read_image(0, 0, 0, r.channels, OIIO::TypeDesc::FLOAT, r.pixels.data()))
-        throw RenderError(in->geterror());
+    r.channels = std::min(spec.channels, 3);
+    r.pixels = in.read(r.channels);
     return r;
 }
 

@@ -1,9 +1,9 @@
 // Reading an image's pixels for the scene readers (a POV-Ray height field's heights).
 // The reader is passed to them as a function pointer in their options rather than called
-// directly, so that a program that reads scenes but no images (the CUDA test and the GPU
-// kit's benchmarks) does not link OpenImageIO and the hundreds of megabytes of libraries it
-// brings: libsheaf and the tests pass &read_raster, and a scene asking for an image without
-// one is an error at the file's position.
+// directly, so that a program may read scenes without reading images: libsheaf and the tests
+// pass &read_raster (which loads the image module, and OpenImageIO with it, at the first image:
+// io/image/image_module_abi.h); programs that carry no image module (the GPU kit's) pass
+// none, and a scene asking for an image is then an error at the file's position.
 #pragma once
 
 #include <cstddef>
@@ -21,7 +21,8 @@ struct Raster {
     bool indexed = false;
 };
 
-/// Reads `path` through OpenImageIO (palette PNGs through libpng, for their indices).
+/// Reads `path` through the image module (OpenImageIO; palette PNGs through libpng, for their
+/// indices).
 /// Throws RenderError("cannot read ...") for an unreadable file, and for one of more than
 /// `max_pixels` pixels or less than 2 x 2, before reading its pixels.
 Raster read_raster(const std::string& path, size_t max_pixels);

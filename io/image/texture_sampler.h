@@ -1,5 +1,6 @@
 // Image textures for the core through OpenImageIO's TextureSystem (cached, filtered,
-// mip-mapped): the TextureSampler the renderer asks for colours.
+// mip-mapped), in the image module (io/image/image_module_abi.h): the TextureSampler the
+// renderer asks for colours.
 #pragma once
 
 #include "core/scene/prepared_scene.h"
@@ -13,8 +14,7 @@ void attach_texture_sampler(PreparedScene& scene);
 
 /// What scene readers are given to sample the images of pigments they evaluate themselves
 /// (POV-Ray's pigment functions in the scene language): attach_texture_sampler, or nullptr in
-/// programs that read no images (as RasterReader, io/image/raster.h: they do not link
-/// OpenImageIO).
+/// programs that read no images (as RasterReader, io/image/raster.h).
 using SamplerAttacher = void (*)(PreparedScene& scene);
 
 } // namespace sheaf::io

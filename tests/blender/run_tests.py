@@ -79,6 +79,9 @@ def install_addon():
     check(os.path.isfile(os.path.join(installed, "__init__.py")), "not installed in %s" % installed)
     lib = os.path.join(installed, "lib", "libsheaf.so.0")
     check(os.path.isfile(lib) and not os.path.islink(lib), "no library file %s" % lib)
+    image_module = os.path.join(installed, "lib", "libsheaf_image.so.0")
+    check(os.path.isfile(image_module) and not os.path.islink(image_module),
+          "no image module %s (textures and image files)" % image_module)
     check(os.path.isfile(os.path.join(installed, "share", "sheaf", "presets", "crsh.xml")),
           "no presets in the add-on")
     result = bpy.ops.preferences.addon_enable(module="sheaf_blender")

@@ -1,0 +1,69 @@
+/* Start-up: libsheaf loads OpenImageIO (through its image module, libsheaf_image.so.0) only at
+ * the first image read or written. A host that loads a scene and renders into memory never maps
+ * it; the first image saved maps it and writes a readable file. Exits non-zero on any failure. */
+#include <sheaf/sheaf.h>
+
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+
+/* Whether a library whose path contains `name` is mapped into this process. */
+static int mapped(const char* name) {
+    char line[4096];
+    int found = 0;
+    FILE* maps = fopen("/proc/self/maps", "r");
+    if (!maps) {
+        fprintf(stderr, "cannot read /proc/self/maps\n");
+        return -1;
+    }
+    while (!found && fgets(line, sizeof line, maps)) found = strstr(line, name) != NULL;
+    fclose(maps);
+    return found;
+}
+
+int main(int argc, char** argv) {
+    SheafScene scene = NULL;
+    SheafRenderer renderer = NULL;
+    SheafFrame frame = NULL;
+    FILE* written;
+    const char* out = argc > 1 ? argv[1] : "capi_lazy_image.png";
+    int width = 0, height = 0;
+
+    CHECK(mapped("libOpenImageIO") == 0, "OpenImageIO mapped at load");
+    OK(sheafSceneNew(&scene));
+    OK(sheafSceneLoadBuiltin(scene, "cornell"));
+    OK(sheafRendererNew(&renderer));
+    OK(sheafRendererSetInt(renderer, "width", 32));
+    OK(sheafRendererSetInt(renderer, "height", 24));
+    OK(sheafRender(renderer, scene, &frame));
+    OK(sheafFrameGetSize(frame, &width, &height));
+    CHECK(width == 32 && height == 24, "a frame of %dx%d", width, height);
+    CHECK(mapped("libOpenImageIO") == 0, "OpenImageIO mapped by a render into memory");
+    CHECK(mapped("libsheaf_image") == 0, "the image module loaded by a render into memory");
+
+    remove(out);
+    OK(sheafFrameSaveImage(frame, out));
+    CHECK(mapped("libsheaf_image") == 1, "the first image saved did not load the image module");
+    CHECK(mapped("libOpenImageIO") == 1, "the first image saved did not load OpenImageIO");
+    written = fopen(out, "rb");
+    CHECK(written != NULL, "%s not written", out);
+    if (written) {
+        unsigned char sig[8] = {0};
+        CHECK(fread(sig, 1, 8, written) == 8 && memcmp(sig, "\x89PNG\r\n\x1a\n", 8) == 0,
+              "%s is not a PNG file", out);
+        fclose(written);
+    }
+    /* An unknown extension is refused with Sheaf's message, as before the module. */
+    CHECK(sheafFrameSaveImage(frame, "x.unknown") == SHEAF_ERROR_IO,
+          "x.unknown was not refused as an I/O error");
+
+    OK(sheafFrameRelease(frame));
+    OK(sheafRendererRelease(renderer));
+    OK(sheafSceneRelease(scene));
+    if (g_failures)
+        fprintf(stderr, "%d failures\n", g_failures);
+    else
+        printf("capi_lazy_image: all %d checks passed\n", g_checks);
+    return g_failures ? 1 : 0;
+}

@@ -1,9 +1,10 @@
-// Image files through OpenImageIO (the image module, loaded at the first image written):
-// 8-bit display-referred or float scene-linear by extension.
+// Image files by extension: 8-bit display-referred or float scene-linear; PNG through libpng,
+// the others through OpenImageIO (the image module, loaded at the first such image).
 #include "io/image/image_io.h"
 
 #include "core/base/error.h"
 #include "io/image/image_module.h"
+#include "io/image/png_write.h"
 
 #include <algorithm>
 #include <cctype>
@@ -204,6 +205,14 @@ void write_pixels(const std::string& path, int w, int h, int channels, const flo
                 v = std::round(std::fmin(v, 1.0f) * 255.0f) / 255.0f; // OIIO converts to 8 bits
             data[p * nc + c] = v;
         }
+    if (lower_extension(path) == ".png") {
+        // libpng directly: no OpenImageIO to load for the default output.
+        std::vector<uint8_t> bytes(data.size());
+        for (size_t i = 0; i < data.size(); ++i) bytes[i] = uint8_t(std::lround(data[i] * 255.0f));
+        std::vector<std::pair<std::string, std::string>> text = {{"Software", "Sheaf"}};
+        text.insert(text.end(), metadata.begin(), metadata.end());
+        return io::write_png(path, w, h, nc, bytes, display_referred, text);
+    }
     io::ImageToWrite im;
     im.path = path;
     im.width = w, im.height = h, im.channels = nc;

@@ -1,4 +1,5 @@
-// Image files through OpenImageIO, the format chosen by the extension:
+// Image files, the format chosen by the extension: PNG through libpng (io/image/png_write.h),
+// the others through OpenImageIO (the image module, io/image/image_module.h):
 //  - .png .jpg .jpeg .tif .tiff: 8 bits per channel, display-referred through OpenColorIO
 //    (the frame's output.display / output.view / output.look / output.ocio_config settings);
 //  - .exr: scene-linear RGBA (half or float: output.exr) plus every pass as named channels:

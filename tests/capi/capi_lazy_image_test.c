@@ -1,6 +1,7 @@
 /* Start-up: libsheaf loads OpenImageIO (through its image module, libsheaf_image.so.0) only at
- * the first image read or written. A host that loads a scene and renders into memory never maps
- * it; the first image saved maps it and writes a readable file. Exits non-zero on any failure. */
+ * the first image that needs it. A host that loads a scene, renders into memory and saves a PNG
+ * (libpng) never maps it; the first EXR saved maps it and writes a readable file. Exits
+ * non-zero on any failure. */
 #include <sheaf/sheaf.h>
 
 #include <stdio.h>
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
     SheafFrame frame = NULL;
     FILE* written;
     const char* out = argc > 1 ? argv[1] : "capi_lazy_image.png";
+    const char* exr = argc > 2 ? argv[2] : "capi_lazy_image.exr";
     int width = 0, height = 0;
 
     CHECK(mapped("libOpenImageIO") == 0, "OpenImageIO mapped at load");
@@ -43,15 +45,28 @@ int main(int argc, char** argv) {
     CHECK(mapped("libsheaf_image") == 0, "the image module loaded by a render into memory");
 
     remove(out);
-    OK(sheafFrameSaveImage(frame, out));
-    CHECK(mapped("libsheaf_image") == 1, "the first image saved did not load the image module");
-    CHECK(mapped("libOpenImageIO") == 1, "the first image saved did not load OpenImageIO");
+    OK(sheafFrameSaveImage(frame, out)); /* a PNG: written with libpng, no module */
+    CHECK(mapped("libsheaf_image") == 0, "a PNG loaded the image module");
+    CHECK(mapped("libOpenImageIO") == 0, "a PNG loaded OpenImageIO");
     written = fopen(out, "rb");
     CHECK(written != NULL, "%s not written", out);
     if (written) {
         unsigned char sig[8] = {0};
         CHECK(fread(sig, 1, 8, written) == 8 && memcmp(sig, "\x89PNG\r\n\x1a\n", 8) == 0,
               "%s is not a PNG file", out);
+        fclose(written);
+    }
+
+    remove(exr);
+    OK(sheafFrameSaveImage(frame, exr));
+    CHECK(mapped("libsheaf_image") == 1, "the first EXR saved did not load the image module");
+    CHECK(mapped("libOpenImageIO") == 1, "the first EXR saved did not load OpenImageIO");
+    written = fopen(exr, "rb");
+    CHECK(written != NULL, "%s not written", exr);
+    if (written) {
+        unsigned char magic[4] = {0};
+        CHECK(fread(magic, 1, 4, written) == 4 && memcmp(magic, "\x76\x2f\x31\x01", 4) == 0,
+              "%s is not an OpenEXR file", exr);
         fclose(written);
     }
     /* An unknown extension is refused with Sheaf's message, as before the module. */

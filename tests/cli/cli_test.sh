@@ -25,10 +25,12 @@ else
 fi
 expect_in "$OUT/png.out" "wrote $OUT/cornell.png (32x32, scene " "success line"
 
-# Without the image module (OpenImageIO is loaded through it at the first image), a scene is
-# still checked, and writing an image fails with the reason and exit code 3.
+# Without the image module (OpenImageIO, loaded at the first image that needs it), a scene is
+# still checked and a PNG still written (through libpng), and writing an EXR fails with the
+# reason and exit code 3.
 SHEAF_IMAGE_MODULE=/nonexistent/libsheaf_image.so.0 expect_rc no_image_module_check 0 --check builtin:cornell
-SHEAF_IMAGE_MODULE=/nonexistent/libsheaf_image.so.0 expect_rc no_image_module 3 builtin:cornell "${S[@]}" -o "$OUT/none.png"
+SHEAF_IMAGE_MODULE=/nonexistent/libsheaf_image.so.0 expect_rc no_image_module_png 0 builtin:cornell "${S[@]}" -o "$OUT/none.png"
+SHEAF_IMAGE_MODULE=/nonexistent/libsheaf_image.so.0 expect_rc no_image_module 3 builtin:cornell "${S[@]}" -o "$OUT/none.exr"
 expect_in "$OUT/no_image_module.err" "the image module libsheaf_image.so.0 was not found" "a missing image module is named"
 
 # EXR output (magic number 76 2f 31 01).

@@ -4,8 +4,9 @@
 # Assimp, oneTBB ...): the module, the CUDA tests, both benchmarks, the sample scenes,
 # POV-Ray's includes, and every shared library they need beyond the C/C++ runtime: about
 # 55 MiB, under the device tool's 64 MiB carry (the script fails past it). (Not libsheaf and
-# the CLI: OpenImageIO brings some 350 MB of libraries with it, which is why the scene
-# readers take their image reader from the host; the test checks backend selection itself.)
+# the CLI: they linked OpenImageIO, some 350 MB of libraries, when the kit was made, which is
+# why the scene readers take their image reader from the host; since ff7a349 OpenImageIO is
+# loaded only through the image module. The test checks backend selection itself.)
 #
 # usage: gpu/kit.sh BUILD_DIR KIT_DIR     (e.g. gpu/kit.sh build build/gpu-kit)
 # then, on the GPU machine: KIT_DIR/run.sh [OUT_DIR]   (docs/performance.md, "On a GPU")

@@ -24,13 +24,14 @@ struct Format {
     const char* extension;
     Encoding encoding;
     int max_channels; // jpeg has no alpha; Radiance HDR holds RGB only
+    bool libpng;      // written with libpng, not through the image module (OpenImageIO)
 };
 
 constexpr Format kFormats[] = {
-    {".png", Encoding::Display8, 4},  {".jpg", Encoding::Display8, 3},
-    {".jpeg", Encoding::Display8, 3}, {".tif", Encoding::Display8, 4},
-    {".tiff", Encoding::Display8, 4}, {".exr", Encoding::Half, 4},
-    {".hdr", Encoding::Float, 3},
+    {".png", Encoding::Display8, 4, true},   {".jpg", Encoding::Display8, 3, false},
+    {".jpeg", Encoding::Display8, 3, false}, {".tif", Encoding::Display8, 4, false},
+    {".tiff", Encoding::Display8, 4, false}, {".exr", Encoding::Half, 4, false},
+    {".hdr", Encoding::Float, 3, false},
 };
 
 std::string lower_extension(const std::string& path) {
@@ -195,23 +196,26 @@ void write_pixels(const std::string& path, int w, int h, int channels, const flo
     const int type = eight                               ? SHEAF_PIXEL_UINT8
                      : format.encoding == Encoding::Half ? SHEAF_PIXEL_HALF
                                                          : SHEAF_PIXEL_FLOAT;
-    std::vector<float> data(n * size_t(nc));
-    for (size_t p = 0; p < n; ++p)
-        for (int c = 0; c < nc; ++c) {
-            float v = c < colour_out ? rgba[4 * p + c] : rgba[4 * p + 3];
-            if (eight || format.encoding == Encoding::Float)
-                v = std::isfinite(v) && v > 0 ? v : 0.0f;
-            if (eight)
-                v = std::round(std::fmin(v, 1.0f) * 255.0f) / 255.0f; // OIIO converts to 8 bits
-            data[p * nc + c] = v;
-        }
-    if (lower_extension(path) == ".png") {
-        // libpng directly: no OpenImageIO to load for the default output.
-        std::vector<uint8_t> bytes(data.size());
-        for (size_t i = 0; i < data.size(); ++i) bytes[i] = uint8_t(std::lround(data[i] * 255.0f));
+    // A channel's value as the file holds it: clamped where the format cannot hold more, and
+    // for 8-bit files the byte's value (0..255).
+    const auto value = [&](size_t p, int c) {
+        float v = c < colour_out ? rgba[4 * p + c] : rgba[4 * p + 3];
+        if (eight || format.encoding == Encoding::Float)
+            v = std::isfinite(v) && v > 0 ? v : 0.0f;
+        return eight ? std::round(std::fmin(v, 1.0f) * 255.0f) : v;
+    };
+    const size_t count = n * size_t(nc);
+    if (format.libpng) { // no OpenImageIO to load for the default output
+        std::vector<uint8_t> bytes(count);
+        for (size_t i = 0; i < count; ++i) bytes[i] = uint8_t(value(i / nc, int(i % nc)));
         std::vector<std::pair<std::string, std::string>> text = {{"Software", "Sheaf"}};
         text.insert(text.end(), metadata.begin(), metadata.end());
         return io::write_png(path, w, h, nc, bytes, display_referred, text);
+    }
+    std::vector<float> data(count);
+    for (size_t i = 0; i < count; ++i) {
+        const float v = value(i / nc, int(i % nc));
+        data[i] = eight ? v / 255.0f : v; // OpenImageIO converts to 8 bits exactly
     }
     io::ImageToWrite im;
     im.path = path;

@@ -3,7 +3,6 @@
 #include "core/base/error.h"
 #include "core/base/module_loader.h"
 
-#include <atomic>
 #include <mutex>
 
 namespace sheaf::io {
@@ -17,8 +16,6 @@ std::string module_build_path() {
     return {};
 #endif
 }
-
-std::atomic<bool> g_loaded{false};
 
 } // namespace
 
@@ -41,13 +38,10 @@ const SheafImageModule& image_module() {
             error = "images cannot be read or written: the image module " SHEAF_IMAGE_MODULE_FILE
                     " was not found or not loadable (" +
                     m.tried + ")";
-        g_loaded = module != nullptr;
     });
     if (!module) throw RenderError(error);
     return *module;
 }
-
-bool image_module_loaded() { return g_loaded; }
 
 void encode_image(const ImageToWrite& im) {
     const SheafImageModule& m = image_module();

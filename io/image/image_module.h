@@ -15,9 +15,6 @@ namespace sheaf::io {
 /// where it was looked for when no module could be loaded.
 const SheafImageModule& image_module();
 
-/// Whether this process has loaded the module yet (for tests and --version's report).
-bool image_module_loaded();
-
 /// One image to write (see SheafImageWrite): `pixels` is width x height x channels floats.
 struct ImageToWrite {
     std::string path;

@@ -112,7 +112,8 @@ def main():
             for who, cmd in (("pov", pov_cmd), ("sheaf", sheaf_cmd)):
                 wall, kib, rc, text = run(cmd, folder, a.timeout)
                 if rc != 0:
-                    error = f"{who} exit {rc}: {text.strip().splitlines()[-1:] if text else ''}"
+                    last = text.strip().splitlines()[-1] if text.strip() else ""
+                    error = f"{who} exit {rc}: {last}"
                     break
                 if who == "pov":
                     extra = (pov_seconds(text, "Parse"), pov_seconds(text, "Trace"))

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -170,37 +171,33 @@ int main(int argc, char** argv) {
         sheafSceneRelease(scene);
     }
 
-    // 4. Errors are per thread: one thread's failure is not another's message.
+    // 4. Errors are per thread: one thread's failure is not another's message. Each thread
+    //    makes its failing call, waits until the other has made its own, then reads its error.
     {
         std::atomic<int> ready{0};
+        const auto error_after = [&](void (*failing_call)(), std::string& message) {
+            failing_call();
+            ++ready;
+            while (ready < 2) std::this_thread::yield();
+            const char* m = nullptr;
+            sheafGetLastError(&m);
+            message = m ? m : "";
+        };
         std::string message_a, message_b;
-        std::thread a([&] {
-            SheafRenderer r = nullptr;
-            sheafRendererNew(&r);
-            sheafRendererSetInt(r, "hierarchy.arity", 1); // out of range
-            ++ready;
-            while (ready < 2) std::this_thread::yield();
-            const char* m = nullptr;
-            sheafGetLastError(&m);
-            message_a = m ? m : "";
-            sheafRendererRelease(r);
-        });
-        std::thread b([&] {
-            SheafScene s = nullptr;
-            sheafSceneNew(&s);
-            sheafSceneLoadBuiltin(s, "no-such-scene");
-            ++ready;
-            while (ready < 2) std::this_thread::yield();
-            const char* m = nullptr;
-            sheafGetLastError(&m);
-            message_b = m ? m : "";
-            sheafSceneRelease(s);
-        });
+        // Failing calls that leave nothing to release: a later successful call would clear
+        // the thread's error before it is read.
+        std::thread a(error_after, +[] {
+            const char* name = nullptr;
+            sheafGetBuiltinSceneName(999, &name); // an index out of range
+        }, std::ref(message_a));
+        std::thread b(error_after, +[] {
+            sheafRendererSetInt(nullptr, "width", 64); // no renderer
+        }, std::ref(message_b));
         a.join();
         b.join();
-        if (message_a.find("hierarchy.arity") == std::string::npos)
+        if (message_a.find("999") == std::string::npos)
             fail("thread a's error is '" + message_a + "'");
-        if (message_b.find("no-such-scene") == std::string::npos)
+        if (message_b.find("'renderer'") == std::string::npos)
             fail("thread b's error is '" + message_b + "'");
     }
 

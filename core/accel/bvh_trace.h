@@ -20,52 +20,68 @@ struct BvhCounts {
     TestCount nodes, prims;
 };
 
+/// A ray's slab planes in a node: for each axis, which of a child's two bounds the ray meets
+/// first (lo when the direction's component is positive), as offsets into the node's bounds
+/// (BvhNode::lo and hi are one array of 24 floats). Taken once per ray; the entry and exit
+/// distances then need no minimum or maximum, and an empty child (lo above hi) is missed.
+struct BvhPlanes {
+    int near[3], far[3];
+};
+
+SHEAF_HD_INLINE BvhPlanes bvh_planes(const Vec3& inv) {
+    BvhPlanes p;
+    for (int a = 0; a < 3; ++a) {
+        const bool up = inv[a] >= 0;
+        p.near[a] = (up ? 0 : 3 * kBvhWidth) + a * kBvhWidth;
+        p.far[a] = (up ? 3 * kBvhWidth : 0) + a * kBvhWidth;
+    }
+    return p;
+}
+
 /// The slab test of a ray against the four children of a node, conservative under rounding
 /// (the far distance grown by a few units in the last place, the boxes padded when built):
 /// bit i of the result set when child i is present and meets the ray within [t0, t1], its
-/// entry distance in near[i].
-SHEAF_HD_INLINE uint32_t bvh_children_hit(const BvhNode& n, const Vec3& o, const Vec3& inv,
-                                          float t0, float t1, float near[kBvhWidth]) {
+/// entry distance in near[i]; the children present added to `tested`. For a positive inverse direction, (lo - o) * inv <= (hi - o) *
+/// inv in floating point as in reals (rounding is monotonic), so taking the planes in the
+/// ray's order gives what the minimum and maximum of the two would.
+SHEAF_HD_INLINE uint32_t bvh_children_hit(const BvhNode& n, const BvhPlanes& pl, const Vec3& o,
+                                          const Vec3& inv, float t0, float t1,
+                                          float near[kBvhWidth], uint64_t& tested) {
+    const float* b = &n.lo[0][0];
 #if !defined(__CUDA_ARCH__) && defined(__SSE2__)
-    // The four children at once (the same operations as below, lane by lane: SSE's min and
-    // max are the comparisons written there).
-    const auto slab = [&](int axis, float origin, float rcp, __m128& lo, __m128& hi) {
-        const __m128 org = _mm_set1_ps(origin), r = _mm_set1_ps(rcp);
-        const __m128 a = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.lo[axis]), org), r);
-        const __m128 b = _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(n.hi[axis]), org), r);
-        lo = _mm_min_ps(a, b), hi = _mm_max_ps(a, b);
+    const auto dist = [&](int off, int axis) {
+        return _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(b + off), _mm_set1_ps(o[axis])),
+                          _mm_set1_ps(inv[axis]));
     };
-    __m128 nx, fx, ny, fy, nz, fz;
-    slab(0, o.x, inv.x, nx, fx);
-    slab(1, o.y, inv.y, ny, fy);
-    slab(2, o.z, inv.z, nz, fz);
-    const __m128 tn = _mm_max_ps(_mm_max_ps(_mm_max_ps(nx, ny), nz), _mm_set1_ps(t0));
-    __m128 tf = _mm_min_ps(_mm_min_ps(fx, fy), fz);
+    const __m128 tn = _mm_max_ps(
+        _mm_max_ps(_mm_max_ps(dist(pl.near[0], 0), dist(pl.near[1], 1)), dist(pl.near[2], 2)),
+        _mm_set1_ps(t0));
+    __m128 tf = _mm_min_ps(_mm_min_ps(dist(pl.far[0], 0), dist(pl.far[1], 1)), dist(pl.far[2], 2));
     const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), tf);
     tf = _mm_add_ps(tf, _mm_mul_ps(magnitude, _mm_set1_ps(4e-7f)));
     tf = _mm_min_ps(tf, _mm_set1_ps(t1));
     _mm_storeu_ps(near, tn);
     const __m128i none = _mm_cmpeq_epi32(
         _mm_loadu_si128(reinterpret_cast<const __m128i*>(n.child)), _mm_set1_epi32(-1));
-    return uint32_t(_mm_movemask_ps(_mm_cmple_ps(tn, tf)) & ~_mm_movemask_ps(_mm_castsi128_ps(none)));
+    const uint32_t present = uint32_t(~_mm_movemask_ps(_mm_castsi128_ps(none))) & 0xFu;
+    tested += (0x4332322132212110ull >> (4 * present)) & 0xFu; // bits set in 4 (no popcnt)
+    return uint32_t(_mm_movemask_ps(_mm_cmple_ps(tn, tf))) & present;
 #else
     uint32_t mask = 0;
     for (int i = 0; i < kBvhWidth; ++i) {
-        const float ax = (n.lo[0][i] - o.x) * inv.x, bx = (n.hi[0][i] - o.x) * inv.x;
-        const float ay = (n.lo[1][i] - o.y) * inv.y, by = (n.hi[1][i] - o.y) * inv.y;
-        const float az = (n.lo[2][i] - o.z) * inv.z, bz = (n.hi[2][i] - o.z) * inv.z;
-        const float nx = ax < bx ? ax : bx, fx = ax > bx ? ax : bx;
-        const float ny = ay < by ? ay : by, fy = ay > by ? ay : by;
-        const float nz = az < bz ? az : bz, fz = az > bz ? az : bz;
-        float tn = nx > ny ? nx : ny;
-        tn = tn > nz ? tn : nz;
-        tn = tn > t0 ? tn : t0;
-        float tf = fx < fy ? fx : fy;
-        tf = tf < fz ? tf : fz;
+        float tn = t0, tf = 3.402823466e+38f;
+        for (int a = 0; a < 3; ++a) {
+            const float n0 = (b[pl.near[a] + i] - o[a]) * inv[a];
+            const float f0 = (b[pl.far[a] + i] - o[a]) * inv[a];
+            tn = n0 > tn ? n0 : tn;
+            tf = f0 < tf ? f0 : tf;
+        }
         tf += (tf < 0 ? -tf : tf) * 4e-7f;
         tf = tf < t1 ? tf : t1;
         near[i] = tn;
-        if (tn <= tf && n.child[i] != kBvhNoChild) mask |= 1u << i;
+        if (n.child[i] == kBvhNoChild) continue;
+        ++tested;
+        if (tn <= tf) mask |= 1u << i;
     }
     return mask;
 #endif
@@ -100,18 +116,19 @@ SHEAF_HD_INLINE float bvh_next_up(float x) {
 }
 
 /// Ray i of a batch (r) through the BVH against `scene`: writes closest[i] for closest-hit
-/// queries, occluded[i] and the pass log for any-hit ones, as brute_trace_ray does. `skip`:
-/// primitive flags that are no candidates for this ray type.
-SHEAF_HD_INLINE BvhCounts bvh_trace_ray(const BvhView& bvh, const SceneView& scene, const Ray& r,
-                                        uint32_t i, bool any, bool shadow, uint8_t skip,
-                                        const HitSinks& out) {
+/// queries (Any false), occluded[i] and the pass log for any-hit ones, as brute_trace_ray
+/// does. `skip`: primitive flags that are no candidates for this ray type.
+template <bool Any>
+SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& scene,
+                                           const Ray& r, uint32_t i, bool shadow, uint8_t skip,
+                                           const HitSinks& out) {
     BvhCounts c;
     uint64_t best = kNoHit;
-    bool done = false;
     // The ray the triangles are tested with: a triangle's distance does not depend on tmax, so
     // the best hit bounds their tests (equal distances still pass: the lower primitive wins
     // the tie). Analytic shapes take the ray as given.
     Ray bounded = r;
+    float far = r.tmax; // what a closest-hit ray still looks for: up to its best hit
     // One primitive's exact test: false when the ray is finished (an opaque any hit).
     const auto test = [&](uint32_t p) {
         if (skip && scene.prim_flag(p, skip)) return true;
@@ -126,65 +143,85 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray(const BvhView& bvh, const SceneView& sce
             return true;
         }
         ++c.prims.hits;
-        if (any && passes(scene, shadow, p)) return record_pass(scene, out, i, r, t, p);
-        if (any) {
+        if constexpr (Any) {
+            if (passes(scene, shadow, p)) return record_pass(scene, out, i, r, t, p);
             out.occluded[i] = 1;
             return false;
+        } else {
+            const uint64_t h = pack_hit(t, p);
+            if (h < best) {
+                best = h;
+                bounded.tmax = t < r.tmax ? bvh_next_up(t) : r.tmax;
+                far = hit_t(best);
+            }
+            return true;
         }
-        const uint64_t h = pack_hit(t, p);
-        if (h < best) {
-            best = h;
-            bounded.tmax = t < r.tmax ? bvh_next_up(t) : r.tmax;
-        }
-        return true;
     };
+    bool done = false;
     for (uint32_t k = 0; k < bvh.unbounded_count && !done; ++k) done = !test(bvh.unbounded[k]);
     if (bvh.node_count > 0 && !done) {
         const Vec3 inv = bvh_inverse(r.dir);
+        const BvhPlanes planes = bvh_planes(inv);
         // Entries: a node (its index), or a leaf (kLeaf | node * 4 + slot); with the entry
-        // distance, so that a closest-hit ray drops what its best hit has passed.
+        // distance, so that a closest-hit ray drops what its best hit has passed. The entry
+        // in hand (e) is not on the stack: of a node's children met, the nearest is taken
+        // next and the others pushed, farthest first (any-hit rays: in order; the first
+        // opaque hit anywhere ends them).
         constexpr uint32_t kLeaf = 0x80000000u;
         uint32_t stack[kBvhStack];
         float stack_t[kBvhStack];
         int sp = 0;
-        stack[sp] = 0, stack_t[sp] = r.tmin, ++sp;
-        while (sp > 0 && !done) {
-            --sp;
-            const uint32_t e = stack[sp];
-            const float far = any || best == kNoHit ? r.tmax : hit_t(best);
-            if (stack_t[sp] > far) continue;
+        uint32_t e = 0;
+        for (;;) {
             if (e & kLeaf) {
                 const BvhNode& n = bvh.nodes[(e & ~kLeaf) >> 2];
                 const uint32_t slot = e & 3u, first = n.child[slot];
                 for (uint32_t k = first; k < first + n.count[slot] && !done; ++k)
                     done = !test(bvh.prims[k]);
-                continue;
+                if (done) break;
+            } else {
+                const BvhNode& n = bvh.nodes[e];
+                float near[kBvhWidth];
+                uint32_t mask =
+                    bvh_children_hit(n, planes, r.origin, inv, r.tmin, far, near, c.nodes.tests);
+                if (mask) {
+                    int order[kBvhWidth], hits = 0;
+                    for (; mask; mask &= mask - 1) {
+                        const int k = lowest_bit(mask);
+                        int at = hits++;
+                        if constexpr (!Any)
+                            while (at > 0 && near[order[at - 1]] < near[k])
+                                order[at] = order[at - 1], --at;
+                        order[at] = k;
+                    }
+                    c.nodes.hits += uint64_t(hits);
+                    for (int h = 0; h + 1 < hits; ++h) {
+                        const int k = order[h];
+                        stack[sp] = n.count[k] > 0 ? kLeaf | (e << 2 | uint32_t(k)) : n.child[k];
+                        if constexpr (!Any) stack_t[sp] = near[k];
+                        ++sp;
+                    }
+                    const int k = order[hits - 1];
+                    e = n.count[k] > 0 ? kLeaf | (e << 2 | uint32_t(k)) : n.child[k];
+                    continue;
+                }
             }
-            const BvhNode& n = bvh.nodes[e];
-            float near[kBvhWidth];
-            uint32_t mask = bvh_children_hit(n, r.origin, inv, r.tmin, far, near);
-            for (int k = 0; k < kBvhWidth; ++k) c.nodes.tests += n.child[k] != kBvhNoChild ? 1 : 0;
-            // Pushed farthest first, so the nearest is taken next (any-hit rays: in order,
-            // the first opaque hit anywhere ends them).
-            int order[kBvhWidth], hits = 0;
-            for (; mask; mask &= mask - 1) {
-                const int k = lowest_bit(mask);
-                int at = hits++;
-                while (!any && at > 0 && near[order[at - 1]] < near[k])
-                    order[at] = order[at - 1], --at;
-                order[at] = k;
-            }
-            c.nodes.hits += uint64_t(hits);
-            for (int h = 0; h < hits; ++h) {
-                const int k = order[h];
-                stack[sp] = n.count[k] > 0 ? kLeaf | (e << 2 | uint32_t(k)) : n.child[k];
-                stack_t[sp] = near[k];
-                ++sp;
-            }
+            // The next waiting entry that a closest-hit ray's best hit has not passed.
+            while (sp > 0 && (!Any && stack_t[sp - 1] > far)) --sp;
+            if (sp == 0) break;
+            e = stack[--sp];
         }
     }
-    if (!any) out.closest[i] = best;
+    if constexpr (!Any) out.closest[i] = best;
     return c;
+}
+
+/// bvh_trace_ray_as for a query chosen at run time.
+SHEAF_HD_INLINE BvhCounts bvh_trace_ray(const BvhView& bvh, const SceneView& scene, const Ray& r,
+                                        uint32_t i, bool any, bool shadow, uint8_t skip,
+                                        const HitSinks& out) {
+    return any ? bvh_trace_ray_as<true>(bvh, scene, r, i, shadow, skip, out)
+               : bvh_trace_ray_as<false>(bvh, scene, r, i, shadow, skip, out);
 }
 
 } // namespace sheaf

@@ -12,11 +12,15 @@
 #define SHEAF_HD_NOINLINE __host__ __device__ __noinline__
 // The bodies of the wavefront pipeline's launches: extended lambdas (nvcc --extended-lambda).
 #define SHEAF_HD_LAMBDA __host__ __device__
+// A small function in the innermost loops (the exact ray-triangle test), inlined where the
+// compiler's own weighing would call it.
+#define SHEAF_HD_HOT __host__ __device__ __forceinline__
 #else
 #define SHEAF_HD
 #define SHEAF_HD_INLINE inline
 #define SHEAF_HD_NOINLINE inline
 #define SHEAF_HD_LAMBDA
+#define SHEAF_HD_HOT inline __attribute__((always_inline))
 #endif
 
 // 1 while nvcc compiles device code, 0 for host code (g++, or nvcc's host pass): the few

@@ -12,7 +12,7 @@ struct TriangleHit {
 
 /// True when the ray meets the triangle (a, b, c) at t strictly inside (tmin, tmax).
 /// Deterministic: the same inputs give the same t on every accel mode and backend.
-SHEAF_HD_INLINE bool intersect_triangle(const Ray& r, Vec3 a, Vec3 b, Vec3 c, TriangleHit& hit) {
+SHEAF_HD_HOT bool intersect_triangle(const Ray& r, Vec3 a, Vec3 b, Vec3 c, TriangleHit& hit) {
     const Vec3 e1 = b - a;
     const Vec3 e2 = c - a;
     const Vec3 p = cross(r.dir, e2);

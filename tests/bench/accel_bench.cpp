@@ -162,8 +162,8 @@ int main(int argc, char** argv) {
                 threads, width, width, rounds);
     std::printf("| triangles | Embree build | Embree primary | Embree shadow | Embree B/tri | "
                 "mode | Sheaf build | Sheaf shadow | of which traversal | ratio to Embree | Mrays/s | "
-                "Sheaf B/tri | frame | occluded (Sheaf / Embree) |\n");
-    std::printf("|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n");
+                "Sheaf B/tri | box tests / ray | exact tests / ray | frame | occluded (Sheaf / Embree) |\n");
+    std::printf("|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (const size_t n : sizes) {
         const Scene scene = make_scene(n);
         const PreparedScene prepared = prepare_scene(scene);
@@ -292,6 +292,7 @@ int main(int argc, char** argv) {
             }
             std::vector<double> trace_ms, walk_ms;
             size_t occluded = 0;
+            double box_tests = 0, exact_tests = 0; // per shadow ray
             const auto units = cull_units_for(prepared, s);
             for (int r = 0; r < rounds; ++r) {
                 Stats st;
@@ -303,6 +304,8 @@ int main(int argc, char** argv) {
                 // buffers, hashing, sorting and hierarchy.
                 walk_ms.push_back(st.get("time_ms.traversal") + st.get("time_ms.final_tests"));
                 occluded = size_t(std::count(out.occluded.begin(), out.occluded.end(), uint8_t(1)));
+                box_tests = st.get("tests.shadow.nodes.tests") / double(rays.size());
+                exact_tests = st.get("tests.shadow.final.tests") / double(rays.size());
             }
             std::vector<double> frame_ms;
             for (int r = 0; r < rounds; ++r) {
@@ -312,11 +315,12 @@ int main(int argc, char** argv) {
             }
             const double t = median(trace_ms);
             std::printf("| %zu | %.1f ms | %.1f ms | %.1f ms | %.1f | %s | %.1f ms | %.1f ms | "
-                        "%.1f ms | %.2f× | %.1f | %.1f | %.0f ms | %zu / %zu |\n",
+                        "%.1f ms | %.2f× | %.1f | %.1f | %.1f | %.1f | %.0f ms | %zu / %zu |\n",
                         tris, median(build_ms), median(primary_ms), e_shadow,
                         embree_bytes / double(tris), mode.c_str(), build, t, median(walk_ms),
                         t / e_shadow,
-                        double(rays.size()) / t / 1e3, bytes / double(tris), median(frame_ms),
+                        double(rays.size()) / t / 1e3, bytes / double(tris), box_tests,
+                        exact_tests, median(frame_ms),
                         occluded, embree_occluded);
             std::fflush(stdout);
         }

@@ -89,7 +89,8 @@ TEST(Wavefront, TraversalChunksCostTheHostNoWait) {
     const PreparedScene scene = prepare_scene(make_builtin_scene("office"));
     const auto run = [&](size_t batch) {
         const RenderSettings s =
-            settings_for(scene, {{"traversal.batch", std::to_string(batch)}}, 192, 144);
+            settings_for(scene, {{"accel", "crsh"}, {"traversal.batch", std::to_string(batch)}},
+                         192, 144);
         return render_frame_wavefront_cpu(scene, s);
     };
     // Top chunks of 2^27 candidates (one a group), and of the fewest a chunk takes.

@@ -89,17 +89,18 @@ TEST_F(SceneKeepOffice, PlainValuesComeFromTheFramesScene) {
 }
 
 TEST(SceneKeep, CullingUnitsArePartOfTheCopy) {
-    // cull.cluster changes the culling units the copy holds, not the scene: copied anew.
+    // cull.cluster changes the culling units the copy holds under crsh, not the scene: copied
+    // anew.
     const PreparedScene office = prepare_scene(make_builtin_scene("office"));
+    const auto crsh = [&](const char* cluster) {
+        return test::settings_for(office, {{"accel", "crsh"}, {"cull.cluster", cluster}}, 40, 30);
+    };
     KeptFrames k;
-    expect_cpu_frame(k, office, test::settings_for(office, {{"cull.cluster", "0"}}, 40, 30), false,
-                     "whole objects");
-    expect_cpu_frame(k, office, test::settings_for(office, {{"cull.cluster", "3"}}, 40, 30), false,
-                     "clusters");
+    expect_cpu_frame(k, office, crsh("0"), false, "whole objects");
+    expect_cpu_frame(k, office, crsh("3"), false, "clusters");
     k.keep.clear();
     EXPECT_FALSE(k.keep.holds());
-    expect_cpu_frame(k, office, test::settings_for(office, {{"cull.cluster", "3"}}, 40, 30), false,
-                     "after clear");
+    expect_cpu_frame(k, office, crsh("3"), false, "after clear");
 }
 
 } // namespace

@@ -68,6 +68,7 @@ TEST(CullUnits, LargeObjectsSplitIntoRunsThatHoldTheirTriangles) {
 TEST(CullUnits, ComputedOncePerSceneAndClusterSize) {
     const PreparedScene scene = prepare_scene(make_builtin_scene("office"));
     Settings s;
+    s.set("accel", "crsh");
     const RenderSettings r64 = RenderSettings::resolve(s);
     s.set("cull.cluster", "16");
     const RenderSettings r16 = RenderSettings::resolve(s);
@@ -85,7 +86,7 @@ TEST(CullUnits, ComputedOncePerSceneAndClusterSize) {
 Frame render(const PreparedScene& scene, const std::string& cluster) {
     Settings s;
     s.set("width", "48"), s.set("height", "36"), s.set("ao.samples", "2");
-    s.set("cull.cluster", cluster);
+    s.set("accel", "crsh"), s.set("cull.cluster", cluster);
     return render_frame(scene, RenderSettings::resolve(s, scene.settings));
 }
 

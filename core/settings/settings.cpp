@@ -19,7 +19,7 @@ const std::vector<SettingSpec>& setting_specs() {
     static const std::vector<SettingSpec> specs = {
         {"accel",
          K::Choice,
-         "crsh",
+         "bvh",
          0,
          0,
          {"brute", "rah", "crsh", "bvh"},

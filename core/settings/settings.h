@@ -76,7 +76,7 @@ enum PassBit : uint32_t {
 
 /// The typed, resolved settings the pipeline runs with.
 struct RenderSettings {
-    Accel accel = Accel::Crsh;
+    Accel accel = Accel::Bvh;
     int hierarchy_depth = 2;
     int hierarchy_arity = 8;
     HashMode hash = HashMode::Crsh;

@@ -166,7 +166,7 @@ TEST(Settings, SetGetUnset) {
 TEST(RenderSettings, Defaults) {
     const RenderSettings r = RenderSettings::resolve(Settings{});
     const RenderSettings d;
-    EXPECT_EQ(r.accel, Accel::Crsh);
+    EXPECT_EQ(r.accel, Accel::Bvh);
     EXPECT_EQ(r.hierarchy_depth, 2);
     EXPECT_EQ(r.hierarchy_arity, 8);
     EXPECT_EQ(r.hash, HashMode::Crsh);

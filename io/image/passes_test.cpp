@@ -63,7 +63,7 @@ TEST(Passes, ExrCarriesEveryPassAsNamedChannels) {
         EXPECT_EQ(px[channel("tests")], float(f.tests[p]));
     }
     EXPECT_NE(spec.get_string_attribute("sheaf:stats").find("rays.shadow"), std::string::npos);
-    EXPECT_NE(spec.get_string_attribute("sheaf:settings").find("accel=crsh"), std::string::npos);
+    EXPECT_NE(spec.get_string_attribute("sheaf:settings").find("accel=bvh"), std::string::npos);
 }
 
 TEST(Passes, HalfExrKeepsExactIdsAndCounts) {

@@ -1,5 +1,5 @@
 // Frame benchmark per backend: the built-in scenes at 512x512 and 1024x1024 with the default
-// settings (crsh), the time per phase, the frame time and rays per second, on the CPU and, when
+// settings (accel=bvh), the time per phase, the frame time and rays per second, on the CPU and, when
 // a CUDA device is usable, the GPU of the same machine.
 //
 // Usage: sheaf_frame_bench [--sizes 512,1024] [--frames K] [--backends cpu,cuda]

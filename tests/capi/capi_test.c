@@ -156,7 +156,7 @@ static void test_settings(void) {
 
     OK(sheafRendererNew(&r));
     OK(sheafRendererGetString(r, "accel", buf, sizeof buf, &needed));
-    CHECK(strcmp(buf, "crsh") == 0 && needed == 5, "default accel '%s' needed %u", buf,
+    CHECK(strcmp(buf, "bvh") == 0 && needed == 4, "default accel '%s' needed %u", buf,
           (unsigned)needed);
     OK(sheafRendererSetFloat(r, "ao.distance", 2.5));
     OK(sheafRendererGetString(r, "ao.distance", buf, sizeof buf, NULL));

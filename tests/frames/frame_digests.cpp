@@ -95,14 +95,16 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
+    // The default accel (bvh), then the ray hierarchies with their own settings.
     const std::vector<test::SettingList> builtin_variants = {
         {},
         {{"accel", "brute"}},
+        {{"accel", "crsh"}},
         {{"accel", "rah"}, {"cull.objects", "false"}},
-        {{"hash.mode", "hash192"}, {"ao.samples", "2"}},
-        {{"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
-        {{"aa.samples", "2"}, {"traversal.batch", "4096"}},
-        {{"cull.cluster", "0"}, {"hierarchy.depth", "3"}, {"hierarchy.arity", "4"}},
+        {{"accel", "crsh"}, {"hash.mode", "hash192"}, {"ao.samples", "2"}},
+        {{"accel", "crsh"}, {"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
+        {{"accel", "crsh"}, {"aa.samples", "2"}, {"traversal.batch", "4096"}},
+        {{"accel", "crsh"}, {"cull.cluster", "0"}, {"hierarchy.depth", "3"}, {"hierarchy.arity", "4"}},
         {{"output.passes", "combined"}},
     };
     for (const std::string& name : builtin_scene_names()) {
@@ -127,7 +129,8 @@ int main(int argc, char** argv) {
         const PreparedScene scene = prepare_scene(built);
         for (const test::SettingList& kv :
              {test::SettingList{}, test::SettingList{{"accel", "brute"}},
-              test::SettingList{{"ao.samples", "3"}, {"hash.mode", "hash32"}}})
+              test::SettingList{{"accel", "crsh"}},
+              test::SettingList{{"accel", "crsh"}, {"ao.samples", "3"}, {"hash.mode", "hash32"}}})
             emit(o, name, scene, kv, 48, 36);
     }
 

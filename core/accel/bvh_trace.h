@@ -97,6 +97,19 @@ SHEAF_HD_INLINE Vec3 bvh_inverse(const Vec3& d) {
     return {f(d.x), f(d.y), f(d.z)};
 }
 
+/// Whether the line of ray r passes within sphere s, conservatively: the distance of the centre
+/// from the line as |oc x d| / |d|, whose components are off by at most a few units in the
+/// last place of |oc| |d| (err bounds that, with room); always for an unbounded sphere.
+SHEAF_HD_INLINE bool bvh_line_meets_sphere(const Sphere& s, const Ray& r) {
+    if (!(fabsf(s.radius) <= 1e30f)) return true;
+    const Vec3 oc = s.center - r.origin, d = r.dir;
+    const Vec3 cr = cross(oc, d);
+    const float err = 1e-6f * (fabsf(oc.x) + fabsf(oc.y) + fabsf(oc.z)) *
+                      (fabsf(d.x) + fabsf(d.y) + fabsf(d.z));
+    const float reach = fabsf(s.radius) * sqrtf(dot(d, d)) * 1.0001f + 2.0f * err;
+    return dot(cr, cr) <= reach * reach;
+}
+
 /// The index of the lowest set bit of a non-zero mask.
 SHEAF_HD_INLINE int lowest_bit(uint32_t mask) {
 #ifdef __CUDA_ARCH__
@@ -132,15 +145,21 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& 
     // One primitive's exact test: false when the ray is finished (an opaque any hit).
     const auto test = [&](uint32_t p) {
         if (skip && scene.prim_flag(p, skip)) return true;
-        ++c.prims.tests;
         float t;
         if (scene.is_triangle(p)) {
+            ++c.prims.tests;
             const TriangleVerts& tri = scene.tris[p];
             TriangleHit h;
             if (!intersect_triangle(bounded, tri.a, tri.b, tri.c, h)) return true;
             t = h.t;
-        } else if (!intersect_prim(scene, p, r, t)) {
-            return true;
+        } else {
+            // An analytic shape's exact test costs many triangles': its bounding sphere first
+            // (the leaf's box is the sphere's cube, which the ray may cross beside it).
+            ++c.nodes.tests;
+            if (!bvh_line_meets_sphere(scene.prim_sphere[p], r)) return true;
+            ++c.nodes.hits;
+            ++c.prims.tests;
+            if (!intersect_prim(scene, p, r, t)) return true;
         }
         ++c.prims.hits;
         if constexpr (Any) {

@@ -98,9 +98,14 @@ std::string Stats::to_table() const {
 
     for (const std::string& t : types) {
         const std::string p = "tests." + t + ".";
-        std::snprintf(line, sizeof line, "\nIntersection tests: %s (%s rays, %s top nodes)\n",
-                      t.c_str(), grouped(get("rays." + t)).c_str(),
-                      grouped(get("hierarchy." + t + ".top_nodes")).c_str());
+        // The ray hierarchy's top nodes (rah, crsh); a BVH has none.
+        const std::string top = "hierarchy." + t + ".top_nodes";
+        if (has(top))
+            std::snprintf(line, sizeof line, "\nIntersection tests: %s (%s rays, %s top nodes)\n",
+                          t.c_str(), grouped(get("rays." + t)).c_str(), grouped(get(top)).c_str());
+        else
+            std::snprintf(line, sizeof line, "\nIntersection tests: %s (%s rays)\n", t.c_str(),
+                          grouped(get("rays." + t)).c_str());
         os << line;
         std::snprintf(line, sizeof line, "  %-12s %18s %18s %18s\n", "", "tests", "hits", "misses");
         os << line;
@@ -115,6 +120,7 @@ std::string Stats::to_table() const {
         level_row("objects", "objects");
         for (int k = 16; k >= 1; --k)
             level_row("level " + std::to_string(k), "level" + std::to_string(k));
+        level_row("bvh nodes", "nodes");
         level_row("final", "final");
         const double total = get(p + "total"), brute = get(p + "brute_force");
         std::snprintf(line, sizeof line, "  %-12s %18s   %.2f%% of brute force (%s)\n", "total",
@@ -124,7 +130,8 @@ std::string Stats::to_table() const {
     }
 
     const double total = get("tests.total"), brute = get("tests.brute_force");
-    os << "\nTotals (levels + final tests; object-sphere tests on their own row)\n";
+    os << "\nTotals (hierarchy levels or BVH nodes + final tests; object-sphere tests on their "
+          "own row)\n";
     row("tests.total", total);
     row("tests.objects", get("tests.objects"));
     row("tests.brute_force", brute);

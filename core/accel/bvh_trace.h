@@ -41,9 +41,10 @@ SHEAF_HD_INLINE BvhPlanes bvh_planes(const Vec3& inv) {
 /// The slab test of a ray against the four children of a node, conservative under rounding
 /// (the far distance grown by a few units in the last place, the boxes padded when built):
 /// bit i of the result set when child i is present and meets the ray within [t0, t1], its
-/// entry distance in near[i]; the children present added to `tested`. For a positive inverse direction, (lo - o) * inv <= (hi - o) *
-/// inv in floating point as in reals (rounding is monotonic), so taking the planes in the
-/// ray's order gives what the minimum and maximum of the two would.
+/// entry distance in near[i]; the children present added to `tested`. For a positive inverse
+/// direction, (lo - o) * inv <= (hi - o) * inv in floating point as in reals (rounding is
+/// monotonic), so taking the planes in the ray's order gives what the minimum and maximum of
+/// the two would.
 SHEAF_HD_INLINE uint32_t bvh_children_hit(const BvhNode& n, const BvhPlanes& pl, const Vec3& o,
                                           const Vec3& inv, float t0, float t1,
                                           float near[kBvhWidth], uint64_t& tested) {
@@ -97,19 +98,6 @@ SHEAF_HD_INLINE Vec3 bvh_inverse(const Vec3& d) {
     return {f(d.x), f(d.y), f(d.z)};
 }
 
-/// Whether the line of ray r passes within sphere s, conservatively: the distance of the centre
-/// from the line as |oc x d| / |d|, whose components are off by at most a few units in the
-/// last place of |oc| |d| (err bounds that, with room); always for an unbounded sphere.
-SHEAF_HD_INLINE bool bvh_line_meets_sphere(const Sphere& s, const Ray& r) {
-    if (!(fabsf(s.radius) <= 1e30f)) return true;
-    const Vec3 oc = s.center - r.origin, d = r.dir;
-    const Vec3 cr = cross(oc, d);
-    const float err = 1e-6f * (fabsf(oc.x) + fabsf(oc.y) + fabsf(oc.z)) *
-                      (fabsf(d.x) + fabsf(d.y) + fabsf(d.z));
-    const float reach = fabsf(s.radius) * sqrtf(dot(d, d)) * 1.0001f + 2.0f * err;
-    return dot(cr, cr) <= reach * reach;
-}
-
 /// The index of the lowest set bit of a non-zero mask.
 SHEAF_HD_INLINE int lowest_bit(uint32_t mask) {
 #ifdef __CUDA_ARCH__
@@ -156,7 +144,7 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& 
             // An analytic shape's exact test costs many triangles': its bounding sphere first
             // (the leaf's box is the sphere's cube, which the ray may cross beside it).
             ++c.nodes.tests;
-            if (!bvh_line_meets_sphere(scene.prim_sphere[p], r)) return true;
+            if (!line_meets_sphere(scene.prim_sphere[p], r)) return true;
             ++c.nodes.hits;
             ++c.prims.tests;
             if (!intersect_prim(scene, p, r, t)) return true;

@@ -1,6 +1,7 @@
 // Bounding spheres: the unions of paper 000 (eqs. 7, 8) and their n-ary form.
 #pragma once
 
+#include "core/geometry/ray.h"
 #include "core/math/hd_math.h"
 #include "core/math/vec3.h"
 
@@ -35,6 +36,21 @@ SHEAF_HD_INLINE bool ray_meets_sphere(const Sphere& s, Vec3 origin, Vec3 dir) {
     const float along = dot(oc, dir);
     return !(length_squared(oc) - along * along > s.radius * s.radius ||
              (along < -s.radius && length(oc) > s.radius));
+}
+
+/// Whether the line of ray r (a direction of any length) passes within sphere s, never false
+/// where it does: the centre's distance from the line as |oc x d| / |d|, whose components are
+/// off by at most a few units in the last place of |oc| |d| (err bounds that, with room).
+/// Always for an unbounded sphere. ray_meets_sphere also drops spheres behind the origin, but
+/// takes a unit direction and no rounding margin.
+SHEAF_HD_INLINE bool line_meets_sphere(const Sphere& s, const Ray& r) {
+    if (!(fabsf(s.radius) <= 1e30f)) return true;
+    const Vec3 oc = s.center - r.origin, d = r.dir;
+    const Vec3 cr = cross(oc, d);
+    const float err = 1e-6f * (fabsf(oc.x) + fabsf(oc.y) + fabsf(oc.z)) *
+                      (fabsf(d.x) + fabsf(d.y) + fabsf(d.z));
+    const float reach = fabsf(s.radius) * sqrtf(dot(d, d)) * 1.0001f + 2.0f * err;
+    return dot(cr, cr) <= reach * reach;
 }
 
 /// Union of two spheres as written in paper 000 (eqs. 7 and 8): centre halfway between the

@@ -63,7 +63,8 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         out = Value::number(0);
         return true;
     }
-    expect_sym("(", "'(' after " + n);
+    if (!is_sym("(")) error_expected(peek(), "'(' after " + n);
+    advance();
     if (n == "defined") {
         const Token id = raw();
         if (id.kind != TokKind::Ident) error_expected(id, "an identifier");
@@ -167,10 +168,18 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         const int octaves = std::isfinite(num(2)) ? int(std::clamp(num(2), 1.0, 10.0)) : 6;
         out = vout(vector_turbulence(vec(3), octaves, float(num(1)), float(num(0))));
     } else if (n == "concat") {
+        // A string lives in the variables and values that hold it, which the data budget does
+        // not follow: one string may take a sixteenth of the budget, checked before it is built.
+        size_t size = 0;
+        for (size_t i = 0; i < args.size(); ++i) size += str(i).size();
+        const uint64_t most = options_.limits.data_bytes / 16;
+        if (size > most)
+            error_at(t, "a string longer than " + std::to_string(most >> 10) +
+                            " KiB (a sixteenth of the data limit; render --limit data_mib=N "
+                            "raises it)");
         std::string s;
+        s.reserve(size);
         for (size_t i = 0; i < args.size(); ++i) s += str(i);
-        charge(0, t);
-        if (s.size() > (size_t(256) << 20)) error_at(t, "a string longer than 256 MiB");
         out = Value::string(std::move(s));
     } else if (n == "str") {
         need(3);

@@ -40,7 +40,7 @@ bool Parser::directive(bool continuation) {
         advance();
         return true;
     }
-    const std::string& d = name.text;
+    const std::string_view d = name.text; // compared with many names: sizes first
     if (continuation) {
         const Cond* top = f.conds.empty() ? nullptr : &f.conds.back();
         bool ok = false;
@@ -74,14 +74,14 @@ bool Parser::directive(bool continuation) {
         ifdef_directive(d == "ifdef");
     } else if (d == "else" || d == "elseif") {
         Frame& cur = frames_.back();
-        if (cur.conds.empty()) error_at(name, "#" + d + " without #if");
+        if (cur.conds.empty()) error_at(name, "#" + name.text + " without #if");
         if (cur.conds.back().kind == Cond::Switch) {
             if (d == "elseif") parse_condition(); // falls through, like #case
         } else if (cur.conds.back().kind == Cond::If) {
             cur.conds.pop_back();
             skip_raw_to_end(1, name);
         } else {
-            error_at(name, "#" + d + " without #if");
+            error_at(name, "#" + name.text + " without #if");
         }
     } else if (d == "end") {
         end_directive(name);
@@ -122,7 +122,7 @@ bool Parser::directive(bool continuation) {
     } else if (d == "case" || d == "range") {
         Frame& cur = frames_.back();
         if (cur.conds.empty() || cur.conds.back().kind != Cond::Switch)
-            error_at(name, "#" + d + " outside #switch");
+            error_at(name, "#" + name.text + " outside #switch");
         expect_sym("(");
         parse_float();
         if (d == "range") {
@@ -392,9 +392,12 @@ void Parser::end_directive(const Token& where) {
         f.conds.pop_back();
         return;
     }
-    if (++c.iterations >= kMaxLoopIterations)
-        error_at(c.where,
-                 "this loop ran more than " + std::to_string(kMaxLoopIterations) + " times");
+    if (++c.iterations >= options_.limits.loop_iterations)
+        error_at(c.where, "this loop ran more than " +
+                              std::to_string(options_.limits.loop_iterations) +
+                              " times; if it is meant to, raise the limit: render --limit "
+                              "loop_iterations=N, load option limit.loop_iterations");
+    longest_loop_ = std::max(longest_loop_, uint64_t(c.iterations));
     if (c.kind == Cond::While) {
         const Token loop = c.where;
         f.pos = c.pos;

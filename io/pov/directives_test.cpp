@@ -3,6 +3,8 @@
 // self-includes) that must end in an error with a position, never a hang.
 #include "tests/support/pov_test_util.h"
 
+#include "io/pov/model.h"
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,7 @@ namespace {
 
 using test::declared;
 using test::error_of;
+using test::load_text;
 using test::TempDir;
 
 TEST(PovDirectives, DeclareLocalUndef) {
@@ -293,8 +296,70 @@ TEST(PovLimits, EndlessWhile) {
     std::string e;
     const double s =
         seconds([&] { e = error_of("#declare I = 0;\n#while (1)\n  #declare I = I + 1;\n#end"); });
-    EXPECT_EQ(e, "scene.pov:2:2: error: this loop ran more than 10000000 times");
+    EXPECT_EQ(e, "scene.pov:2:2: error: this loop ran more than 1000000 times; if it is meant "
+                 "to, raise the limit: render --limit loop_iterations=N, load option "
+                 "limit.loop_iterations");
     EXPECT_LT(s, 60);
+}
+
+// Each budget of PovLimits is the host's to set: a scene within it reads, the same scene past
+// it is an error at the place it went past, and the result says what the scene used.
+TEST(PovLimits, BudgetsAreSetByTheHostAndReported) {
+    const std::string loop = "#declare I = 0;\n#while (I < 100)\n  sphere { I, 1 }\n"
+                             "  #declare I = I + 1;\n#end";
+    const PovResult r = load_text(loop);
+    EXPECT_EQ(r.usage.loop_iterations, 100u);
+    EXPECT_EQ(r.usage.objects, 100u);
+    EXPECT_GT(r.usage.parse_steps, 100u * 10);
+    EXPECT_GE(r.usage.data_bytes, 100 * sizeof(PovObject));
+    const std::vector<LimitUse> uses = limit_uses(r.usage, PovOptions().limits);
+    ASSERT_EQ(uses.size(), 4u);
+    EXPECT_EQ(uses[0].name, "parse_steps");
+    EXPECT_EQ(uses[3].name, "loop_iterations");
+    EXPECT_EQ(uses[3].used, 100);
+    EXPECT_EQ(uses[3].limit, 1e6);
+
+    PovOptions o;
+    o.limits.loop_iterations = 50;
+    EXPECT_NE(error_of(loop, o).find("scene.pov:2:2: error: this loop ran more than 50 times"),
+              std::string::npos);
+    o = {};
+    o.limits.objects = 99;
+    EXPECT_NE(error_of(loop, o).find("scene.pov:3:3: error: more than 99 objects parsed"),
+              std::string::npos);
+    o = {};
+    o.limits.parse_steps = 500;
+    EXPECT_NE(error_of(loop, o).find("error: the scene takes more than 500 parse steps"),
+              std::string::npos);
+    o = {};
+    o.limits.data_bytes = 50 * sizeof(PovObject);
+    EXPECT_NE(error_of(loop, o).find("error: the scene's data would exceed"), std::string::npos);
+
+    PovLimits l;
+    EXPECT_TRUE(set_limit(l, "data_mib", 3));
+    EXPECT_EQ(l.data_bytes, uint64_t(3) << 20);
+    EXPECT_FALSE(set_limit(l, "data_mib", 0));
+    EXPECT_FALSE(set_limit(l, "tokens", 5));
+    EXPECT_FALSE(set_limit(l, "objects", (uint64_t(1) << 50) + 1));
+}
+
+// The hostile scenes of tests/fuzz/regressions stop within the default budgets after little
+// work: counted, not timed (a second or so on the development machine; docs/pov.md).
+TEST(PovLimits, RunawayScenesStopEarly) {
+    // Objects inside a union that never closes: the object budget.
+    EXPECT_NE(error_of("union {\n#while (1) sphere { 0, 1 } #end\n}")
+                  .find("error: more than 200000 objects parsed"),
+              std::string::npos);
+    // A string doubled without end: one string may take a sixteenth of the data budget.
+    EXPECT_NE(error_of("#declare S = \"ab\";\n#while (1)\n  #declare S = concat(S, S);\n#end")
+                  .find("scene.pov:3:16: error: a string longer than 16384 KiB"),
+              std::string::npos);
+    // A mesh's triangles count against the data budget.
+    PovOptions o;
+    o.limits.data_bytes = 100 * 64;
+    EXPECT_NE(error_of("mesh {\n#while (1) triangle { 0, x, y } #end\n}", o)
+                  .find("error: the scene's data would exceed"),
+              std::string::npos);
 }
 
 TEST(PovLimits, InfiniteMacroRecursion) {

@@ -527,7 +527,7 @@ Value Parser::call_function(const Token& t, const PovFunction& f) {
         for (int i = 0; i < 5; ++i) c[size_t(i)] = f.pigment->at(i, args[0], args[1], args[2]);
         return Value::color(c);
     }
-    uint64_t left = kMaxParseSteps - std::min(steps_, kMaxParseSteps);
+    uint64_t left = steps_left();
     const uint64_t had = left;
     try {
         const double v = f.eval(args.data(), int(args.size()), left);

@@ -49,7 +49,7 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
         }
         charge(size_t(w) * size_t(h) * sizeof(float), at);
         heights.resize(size_t(w) * size_t(h));
-        uint64_t left = kMaxParseSteps - std::min(steps_, kMaxParseSteps);
+        uint64_t left = steps_left();
         const uint64_t had = left;
         try {
             for (int j = 0; j < h; ++j)

@@ -11,19 +11,21 @@ void Parser::define_macro(const Token& where) {
     if (name.kind != TokKind::Ident) error_expected(name, "the macro's name");
     advance();
     Macro m;
+    std::vector<std::string> params;
     expect_sym("(");
     if (!is_sym_tok(raw(), ")")) {
         for (;;) {
             const Token p = raw();
             if (p.kind != TokKind::Ident) error_expected(p, "a parameter name");
             advance();
-            m.params.push_back(p.text);
+            params.push_back(p.text);
             if (is_sym_tok(raw(), ")")) break;
             if (!is_sym_tok(raw(), ",")) error_expected(raw(), "',' or ')'");
             advance();
         }
     }
     advance(); // ')'
+    m.params = std::make_shared<const std::vector<std::string>>(std::move(params));
     m.file = frames_.back().file;
     m.body = frames_.back().pos;
     skip_raw_to_end(1, where);
@@ -32,12 +34,17 @@ void Parser::define_macro(const Token& where) {
 
 void Parser::call_macro(const Token& name, const Macro& macro) {
     const Nest nest(*this, name); // an argument may call a macro while its '(' is read
-    const Macro m = macro; // the table may change while the arguments are parsed
+    // The table may change while the arguments are parsed: what the call needs, held.
+    const std::shared_ptr<const TokenFile> file = macro.file;
+    const size_t body = macro.body;
+    const std::shared_ptr<const std::vector<std::string>> holder = macro.params;
+    const std::vector<std::string>& params = *holder;
     std::vector<Value> args;
     // Arguments that are a declared variable alone are passed by reference, as in POV-Ray:
     // the macro's assignments to the parameter reach the variable.
     std::vector<std::pair<size_t, std::pair<size_t, std::string>>> by_ref;
-    expect_sym("(", "'(' after macro " + name.text);
+    if (!is_sym("(")) error_expected(peek(), "'(' after macro " + name.text);
+    advance();
     if (!accept_sym(")")) {
         for (;;) {
             const Token& t = peek();
@@ -59,22 +66,22 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
             accept_sym(","); // POV-Ray lets the comma out between arguments
         }
     }
-    if (args.size() != m.params.size())
-        error_at(name, "macro '" + name.text + "' takes " + std::to_string(m.params.size()) +
+    if (args.size() != params.size())
+        error_at(name, "macro '" + name.text + "' takes " + std::to_string(params.size()) +
                            " arguments, not " + std::to_string(args.size()));
     if (macro_depth_ >= kMaxMacroDepth)
         error_at(name, "macro calls nested deeper than " + std::to_string(kMaxMacroDepth) +
                            " (endless recursion?)");
     std::unordered_map<std::string, Value> scope;
     std::unordered_map<std::string, std::pair<size_t, std::string>> refs;
-    for (size_t i = 0; i < args.size(); ++i) scope[m.params[i]] = std::move(args[i]);
+    for (size_t i = 0; i < args.size(); ++i) scope[params[i]] = std::move(args[i]);
     for (auto& [i, var] : by_ref) {
-        scope.erase(m.params[i]);
-        refs[m.params[i]] = std::move(var);
+        scope.erase(params[i]);
+        refs[params[i]] = std::move(var);
     }
     Frame f;
-    f.file = m.file;
-    f.pos = m.body;
+    f.file = file;
+    f.pos = body;
     f.macro = true;
     f.own_scope = true;
     f.where = name;

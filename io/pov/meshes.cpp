@@ -136,6 +136,10 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
                 error_expected(i, "uv_vectors, texture or '}'");
             }
         }
+        // Its corners, indices, normals and uv coordinates, and its own texture's index.
+        charge(3 * sizeof(Vec3) + 4 * sizeof(uint32_t) + (stri ? 3 * sizeof(Vec3) : 0) +
+                   (given_uv ? 6 * sizeof(float) : 0),
+               t);
         add_triangle(*mesh, p[0], p[1], p[2], stri ? n : nullptr, given_uv ? uv : nullptr);
         smooth.push_back(stri);
         any_smooth = any_smooth || stri;

@@ -71,9 +71,7 @@ bool Parser::parse_object(PovObject& o) {
     const Nest nest(*this, kw);
     o = PovObject();
     o.where = kw;
-    if (++objects_made_ > kMaxObjects)
-        error_at(kw, "more than " + std::to_string(kMaxObjects) +
-                         " objects parsed (an endless loop?)");
+    count_objects(kw);
     const std::string& k = kw.text;
     if (unsupported_objects().count(k)) {
         unsupported(kw, "object '" + k + "'");

@@ -17,30 +17,25 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
 namespace sheaf::io::pov {
 
 /// Limits: exceeding one is a SceneError at the offending position, never a hang.
-constexpr uint64_t kMaxLoopIterations = 10'000'000;
 constexpr int kMaxMacroDepth = 200;
 constexpr int kMaxIncludeDepth = 64;
 constexpr size_t kMaxArrayElements = 100'000'000;
-constexpr size_t kMaxDataBytes = size_t(2) << 30;
-/// Objects parsed, temporaries included: objects inside a union are not placed (and charged to
-/// the data budget) until it closes, so an endless loop inside one grew it without bound (20
-/// million took 11 GB). Objects also count against the data budget as a CSG takes them.
-constexpr size_t kMaxObjects = 5'000'000;
+/// The budgets of work and memory are PovLimits (pov_reader.h). Objects count twice: as they
+/// are parsed, temporaries included (objects inside a union are not placed, and charged to the
+/// data budget, until it closes, so an endless loop inside one grew without bound), and against
+/// the data budget as they are placed or a CSG takes them.
 /// Nested expressions, objects, textures and function bodies: the parser recurses into each,
 /// so a deeper nesting is refused before the stack runs out (about 3 KB a level: 500 levels
 /// need 1.5 MB of the 64 MiB the readers run on, core/base/stack.h, whatever the calling
 /// thread's stack).
 constexpr int kMaxNesting = 500;
-/// Parse steps: tokens read (macro bodies and loop bodies each time they run) and function
-/// nodes evaluated. Bounds what no other limit does, such as macros or functions that call
-/// themselves twice per level (2^40 calls within the depth limits).
-constexpr uint64_t kMaxParseSteps = 1'000'000'000;
 /// A function body's tree, which is evaluated (and freed) recursively.
 constexpr int kMaxFunctionHeight = 10'000;
 /// Array dimensions, as POV-Ray's own limit.
@@ -52,7 +47,9 @@ struct FunctionScene; // io/pov/function_scene.h
 struct Macro {
     std::shared_ptr<const TokenFile> file;
     size_t body = 0; // index of the first body token
-    std::vector<std::string> params;
+    /// Shared, so that a call holds them without a copy while its arguments (which may
+    /// redefine the macro) are parsed.
+    std::shared_ptr<const std::vector<std::string>> params;
 };
 
 /// An open #fopen file.
@@ -105,10 +102,10 @@ class Parser {
     bool is_sym(const char* s) { return is_sym_tok(peek(), s); }
     bool is_kw(const char* s) { return is_kw_tok(peek(), s); }
     static bool is_sym_tok(const Token& t, const char* s) {
-        return t.kind == TokKind::Symbol && t.text == s;
+        return t.kind == TokKind::Symbol && std::string_view(t.text) == s; // sizes first
     }
     static bool is_kw_tok(const Token& t, const char* s) {
-        return t.kind == TokKind::Ident && t.text == s;
+        return t.kind == TokKind::Ident && std::string_view(t.text) == s;
     }
     bool accept_sym(const char* s);
     bool accept_kw(const char* s);
@@ -369,7 +366,17 @@ class Parser {
     bool parse_statement(); // one top-level item; false at the end of the scene
 
     // ---- work ----
-    uint64_t steps_ = 0; // against kMaxParseSteps
+    uint64_t steps_ = 0; // against options_.limits.parse_steps
+    /// What the scene has used of options_.limits so far.
+    PovUsage usage() const { return {steps_, objects_made_, peak_data_bytes_, longest_loop_}; }
+    uint64_t longest_loop_ = 0; // the most runs of one loop, against limits.loop_iterations
+    size_t peak_data_bytes_ = 0;
+    /// The steps left before limits.parse_steps (for a function's evaluation to count down).
+    uint64_t steps_left() const {
+        return options_.limits.parse_steps - std::min(steps_, options_.limits.parse_steps);
+    }
+    /// One more object parsed (`count`: a sweep's pieces); an error at `at` past limits.objects.
+    void count_objects(const Token& at, size_t count = 1);
     [[noreturn]] void too_many_steps(const Token& at) const;
     int nesting_ = 0;
     /// One level of a nested construct, from `at` to the end of its scope; an error at `at`
@@ -395,7 +402,7 @@ class Parser {
     std::string scene_dir_;
     std::vector<std::string> file_names_;
     std::vector<uint64_t> rand_streams_;
-    size_t data_bytes_ = 0; // live arrays and strings, objects placed or in a CSG: kMaxDataBytes
+    size_t data_bytes_ = 0; // live arrays and strings, objects placed or in a CSG: limits.data_bytes
     void charge(size_t bytes, const Token& t);
 
     // ---- state ----

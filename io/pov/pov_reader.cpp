@@ -34,6 +34,7 @@ PovResult load_pov_scene(const std::string& path, const PovOptions& options) {
     r.assumed_gamma = build_scene(p, r.scene);
     r.version = p.model.version;
     r.warnings = std::move(p.warnings);
+    r.usage = p.usage();
     return r;
 }
 

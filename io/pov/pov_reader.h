@@ -10,6 +10,7 @@
 #include "io/image/raster.h"
 #include "io/image/texture_sampler.h"
 #include "io/pov/animation.h"
+#include "io/pov/limits.h"
 
 #include <string>
 #include <utility>
@@ -29,6 +30,7 @@ struct PovOptions {
     Clock clock;                               // clock, frame_number ... (animation.h)
     std::vector<std::pair<std::string, double>> declares; // POV-Ray's Declare=NAME=VALUE: floats
                                                           // declared before the scene's first line
+    PovLimits limits;
 };
 
 struct PovResult {
@@ -36,6 +38,7 @@ struct PovResult {
     std::vector<std::string> warnings;
     double version = 3.7;     // the scene's #version (the last one), 3.7 when none
     double assumed_gamma = 1; // the gamma the colours were decoded with
+    PovUsage usage;           // what the scene used of options.limits
 };
 
 /// Reads the scene at `path`. Throws SceneError on a syntax error, an #error directive, an

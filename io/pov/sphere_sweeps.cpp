@@ -125,9 +125,7 @@ bool Parser::parse_sphere_sweep(const Token& kw, PovObject& o) {
     o.kind = PovKind::Csg;
     o.op = CsgOp::Union;
     charge(path.size() * 2 * sizeof(PovObject), kw);
-    objects_made_ += path.size() * 2;
-    if (objects_made_ > kMaxObjects)
-        error_at(kw, "more than " + std::to_string(kMaxObjects) + " objects parsed");
+    count_objects(kw, path.size() * 2);
     for (size_t i = 0; i < path.size(); ++i) {
         o.children.push_back(sphere_piece(path[i]));
         o.children.back().where = kw;

@@ -83,10 +83,21 @@ void Parser::raise_pending(const Value& v) {
 }
 
 void Parser::charge(size_t bytes, const Token& t) {
-    if (data_bytes_ + bytes > kMaxDataBytes)
-        error_at(t,
-                 "the scene's data would exceed " + std::to_string(kMaxDataBytes >> 20) + " MiB");
+    const uint64_t limit = options_.limits.data_bytes;
+    if (bytes > limit || data_bytes_ > limit - bytes)
+        error_at(t, "the scene's data would exceed " + std::to_string(limit >> 20) +
+                        " MiB (arrays, strings and objects); if it is meant to, raise the limit: "
+                        "render --limit data_mib=N, load option limit.data_mib");
     data_bytes_ += bytes;
+    peak_data_bytes_ = std::max(peak_data_bytes_, data_bytes_);
+}
+
+void Parser::count_objects(const Token& at, size_t count) {
+    objects_made_ += count;
+    if (objects_made_ > options_.limits.objects)
+        error_at(at, "more than " + std::to_string(options_.limits.objects) +
+                         " objects parsed (an endless loop?); if it is meant to, raise the "
+                         "limit: render --limit objects=N, load option limit.objects");
 }
 
 std::shared_ptr<const TokenFile> Parser::load_tokens(const std::string& path, const Token* where) {
@@ -123,13 +134,14 @@ void Parser::pop_frame() {
 void Parser::advance() {
     Frame& f = frames_.back();
     if (f.file->tokens[f.pos].kind != TokKind::End) ++f.pos;
-    if (++steps_ > kMaxParseSteps) too_many_steps(f.file->tokens[f.pos]);
+    if (++steps_ > options_.limits.parse_steps) too_many_steps(f.file->tokens[f.pos]);
 }
 
 void Parser::too_many_steps(const Token& at) const {
-    error_at(at, "the scene takes more than " + std::to_string(kMaxParseSteps) +
+    error_at(at, "the scene takes more than " + std::to_string(options_.limits.parse_steps) +
                      " parse steps (tokens read and function terms evaluated): a macro or "
-                     "function that calls itself without end?");
+                     "function that calls itself without end? If it is meant to, raise the "
+                     "limit: render --limit parse_steps=N, load option limit.parse_steps");
 }
 
 const Token& Parser::peek() {
@@ -236,18 +248,24 @@ bool Parser::find_variable(const std::string& name, size_t top, size_t& scope,
     return false;
 }
 
-const Value* Parser::lookup(const std::string& name) const {
-    size_t scope;
-    std::string target;
-    if (!find_variable(name, scopes_.size() - 1, scope, target)) return nullptr;
-    return &scopes_[scope].find(target)->second;
+Value* Parser::lookup_mut(const std::string& name) {
+    // find_variable's walk, without copying the name and finding the variable twice: the
+    // reader looks up every identifier it reads, through every macro's scope it is in.
+    for (size_t i = scopes_.size(); i-- > 0;) {
+        if (!refs_[i].empty())
+            if (auto r = refs_[i].find(name); r != refs_[i].end()) {
+                auto& bound = scopes_[r->second.first];
+                auto v = bound.find(r->second.second);
+                return v == bound.end() ? nullptr : &v->second;
+            }
+        if (scopes_[i].empty()) continue;
+        if (auto v = scopes_[i].find(name); v != scopes_[i].end()) return &v->second;
+    }
+    return nullptr;
 }
 
-Value* Parser::lookup_mut(const std::string& name) {
-    size_t scope;
-    std::string target;
-    if (!find_variable(name, scopes_.size() - 1, scope, target)) return nullptr;
-    return &scopes_[scope].find(target)->second;
+const Value* Parser::lookup(const std::string& name) const {
+    return const_cast<Parser*>(this)->lookup_mut(name);
 }
 
 void Parser::declare(const std::string& name, Value v, bool local) {

@@ -36,8 +36,9 @@ SceneFile read_pov(const std::string& path, const SceneFileOptions& options) {
         throw SceneError(path + ": error: " + problem);
     po.clock = pov::clock_for(options.animation);
     po.declares = options.declares;
+    po.limits = options.limits;
     pov::PovResult r = pov::load_pov_scene(path, po);
-    return {std::move(r.scene), std::move(r.warnings)};
+    return {std::move(r.scene), std::move(r.warnings), pov::limit_uses(r.usage, po.limits)};
 }
 
 struct Reader {
@@ -66,7 +67,7 @@ std::string scene_file_extensions() {
 SceneFile load_scene_file(const std::string& path, const SceneFileOptions& options) {
     constexpr std::string_view kBuiltin = "builtin:";
     if (path.compare(0, kBuiltin.size(), kBuiltin) == 0)
-        return {make_builtin_scene(std::string_view(path).substr(kBuiltin.size())), {}};
+        return {make_builtin_scene(std::string_view(path).substr(kBuiltin.size())), {}, {}};
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw SceneError(path + ": is a directory, not a scene file");

@@ -6,6 +6,7 @@
 #include "io/image/raster.h"
 #include "io/image/texture_sampler.h"
 #include "io/pov/animation.h"
+#include "io/pov/limits.h"
 
 #include <string>
 #include <utility>
@@ -26,12 +27,15 @@ struct SceneFileOptions {
                                                // io::attach_texture_sampler, or none (an error)
     pov::Animation animation; // the frame a POV-Ray scene is read for (its clock, frame_number)
     std::vector<std::pair<std::string, double>> declares; // POV-Ray's Declare=NAME=VALUE
+    pov::PovLimits limits; // the POV-Ray reader's budgets of work and memory
 };
 
 struct SceneFile {
     Scene scene;
     /// "FILE:LINE:COL: warning: ..." lines: what was read but cannot be shown exactly.
     std::vector<std::string> warnings;
+    /// What the reader used of its limits (the POV-Ray reader's; none for other formats).
+    std::vector<pov::LimitUse> limits;
 };
 
 /// Reads `path`: "builtin:NAME", or a file whose extension picks the reader (.pov, .inc).

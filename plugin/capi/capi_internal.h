@@ -80,6 +80,7 @@ struct SheafSceneT : SheafRefCounted {
     bool subdivision_limit = false;
     int subdivision_boundary = 0; // sheaf::io::SubdivBoundary
     std::vector<std::string> warnings;
+    std::vector<sheaf::io::pov::LimitUse> limits; // what the last load used of the reader's limits
     /// The committed scene; null when never committed or changed since.
     std::shared_ptr<const sheaf::PreparedScene> prepared;
 

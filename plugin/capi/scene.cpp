@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -98,6 +99,7 @@ SHEAF_API SheafError sheafSceneLoadBuiltin(SheafScene scene, const char* name) {
         modify(scene, [&](sheaf::Scene& s) { s = std::move(loaded); });
         std::lock_guard<std::mutex> lock(scene->mutex);
         scene->warnings.clear();
+        scene->limits.clear();
     });
 }
 
@@ -117,6 +119,7 @@ SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path) {
         std::lock_guard<std::mutex> lock(s.mutex);
         s.scene = std::move(loaded.scene);
         s.warnings = std::move(loaded.warnings);
+        s.limits = std::move(loaded.limits);
         s.prepared.reset();
     });
 }
@@ -195,6 +198,30 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
                 throw InvalidArgument("load option 'declare': '" + v +
                                       "' is not allowed; expected NAME=NUMBER, e.g. Quality=2");
             s.load_options.declares.emplace_back(name, x);
+        } else if (k.compare(0, 6, "limit.") == 0) {
+            const std::string name = k.substr(6);
+            char* end = nullptr;
+            errno = 0;
+            const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
+            const bool number = !v.empty() && v[0] != '-' && *end == '\0' && errno == 0;
+            sheaf::io::pov::PovLimits limits = s.load_options.limits;
+            if (v.empty()) { // back to the default
+                const sheaf::io::pov::PovLimits defaults;
+                for (const auto& use : sheaf::io::pov::limit_uses({}, defaults))
+                    if (use.name == name)
+                        sheaf::io::pov::set_limit(limits, name, uint64_t(use.limit));
+            }
+            bool known = false;
+            for (const auto& use : sheaf::io::pov::limit_uses({}, limits)) known |= use.name == name;
+            if (!known)
+                throw InvalidArgument("unknown load option '" + k +
+                                      "'; known limits: limit.parse_steps, limit.objects, "
+                                      "limit.data_mib, limit.loop_iterations");
+            if (!v.empty() && (!number || !sheaf::io::pov::set_limit(limits, name, n)))
+                throw InvalidArgument("load option '" + k + "': '" + v +
+                                      "' is not allowed; expected an integer in 1..2^50, or \"\" "
+                                      "for the default");
+            s.load_options.limits = limits;
         } else if (k == "subdivision.limit") {
             if (v != "0" && v != "1")
                 throw InvalidArgument("option 'subdivision.limit': '" + v +
@@ -215,7 +242,8 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
                                   "'; known options: include_path, strict, image_width, "
                                   "image_height, initial_frame, final_frame, initial_clock, "
                                   "final_clock, cyclic_animation, frame, clock, declare, "
-                                  "subdivision.limit, subdivision.boundary");
+                                  "subdivision.limit, subdivision.boundary, limit.parse_steps, "
+                                  "limit.objects, limit.data_mib, limit.loop_iterations");
         }
     });
 }
@@ -238,6 +266,33 @@ SHEAF_API SheafError sheafSceneGetWarning(SheafScene scene, size_t index, const 
             throw InvalidArgument("warning " + std::to_string(index) + " does not exist (the scene has " +
                                   std::to_string(s.warnings.size()) + " warnings)");
         *message = s.warnings[index].c_str();
+    });
+}
+
+SHEAF_API SheafError sheafSceneGetLimitCount(SheafScene scene, size_t* count) {
+    return barrier([&] {
+        SheafSceneT& s = *require(scene, "scene");
+        require(count, "count");
+        std::lock_guard<std::mutex> lock(s.mutex);
+        *count = s.limits.size();
+    });
+}
+
+SHEAF_API SheafError sheafSceneGetLimitUse(SheafScene scene, size_t index, const char** name,
+                                           double* used, double* limit) {
+    return barrier([&] {
+        SheafSceneT& s = *require(scene, "scene");
+        require(name, "name");
+        require(used, "used");
+        require(limit, "limit");
+        std::lock_guard<std::mutex> lock(s.mutex);
+        if (index >= s.limits.size())
+            throw InvalidArgument("limit " + std::to_string(index) +
+                                  " does not exist (the last load has " +
+                                  std::to_string(s.limits.size()) + " limits)");
+        *name = s.limits[index].name.c_str();
+        *used = s.limits[index].used;
+        *limit = s.limits[index].limit;
     });
 }
 

@@ -1,6 +1,7 @@
 // The render tool's thin layer over the C ABI: errors, frame read-back, settings and scenes.
 #include "capi_util.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -83,6 +84,24 @@ int apply_settings(SheafRenderer renderer, const std::string& preset, const Comm
     return kOk;
 }
 
+std::string limits_used(SheafScene scene) {
+    size_t count = 0;
+    std::string text;
+    if (sheafSceneGetLimitCount(scene, &count) != SHEAF_OK) return text;
+    for (size_t i = 0; i < count; ++i) {
+        const char* name = nullptr;
+        double used = 0, limit = 0;
+        if (sheafSceneGetLimitUse(scene, i, &name, &used, &limit) != SHEAF_OK) continue;
+        char line[160];
+        std::snprintf(line, sizeof line, used == std::floor(used) ? "%s%s %.15g of %.15g (%.2g%%)"
+                                                                  : "%s%s %.3g of %.15g (%.2g%%)",
+                      text.empty() ? "" : ", ", name, used, limit,
+                      limit > 0 ? 100 * used / limit : 0.0);
+        text += line;
+    }
+    return text;
+}
+
 std::string scene_label(const std::string& path) {
     return path.empty() ? std::string("builtin:") + sheafGetDefaultSceneName() : path;
 }
@@ -119,6 +138,17 @@ int load_scene(SheafScene scene, const SceneSource& source) {
     for (const auto& [key, value] : animation)
         if (sheafSceneSetLoadOption(scene, key.c_str(), value.c_str()) != SHEAF_OK)
             return error(kUsage, last_error());
+    for (const std::string& limit : source.limits) {
+        const size_t eq = limit.find('=');
+        const std::string key = "limit." + limit.substr(0, std::min(eq, limit.size()));
+        const std::string value = eq == std::string::npos ? "" : limit.substr(eq + 1);
+        if (eq == std::string::npos || value.empty() ||
+            sheafSceneSetLoadOption(scene, key.c_str(), value.c_str()) != SHEAF_OK)
+            return error(kUsage, "--limit " + limit + ": " +
+                                     (eq == std::string::npos || value.empty()
+                                          ? std::string("expected NAME=N, e.g. parse_steps=1000000000")
+                                          : last_error()));
+    }
     if (const SheafError e = sheafSceneLoadFile(scene, label.c_str()); e != SHEAF_OK)
         return error(e == SHEAF_ERROR_INVALID_ARGUMENT ? kUsage : kScene, last_error());
     size_t warnings = 0;

@@ -72,10 +72,15 @@ struct SceneSource {
     std::optional<double> initial_clock, final_clock, clock;
     std::optional<bool> cyclic;
     std::vector<std::string> declares; ///< NAME=VALUE
+    std::vector<std::string> limits;   ///< NAME=N: the reader's limits (load options limit.*)
 };
 
 /// Loads and commits the scene, printing the reader's warnings on stderr. Returns an exit code.
 int load_scene(SheafScene scene, const SceneSource& source);
+
+/// What the scene's last load used of the reader's limits, "NAME USED of LIMIT (P%), ...";
+/// empty when the reader has none.
+std::string limits_used(SheafScene scene);
 
 /// The scene argument as shown: the default built-in scene when empty.
 std::string scene_label(const std::string& path);

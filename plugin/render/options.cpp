@@ -158,6 +158,12 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                    "(POV-Ray's Declare=); repeatable")
         ->allow_extra_args(false)
         ->type_name("NAME=NUMBER");
+    app.add_option("--limit", o.limits,
+                   "NAME=N: raise (or lower) one of the scene reader's limits: parse_steps, "
+                   "objects, data_mib, loop_iterations; repeatable (render --check prints "
+                   "what a scene uses of each)")
+        ->allow_extra_args(false)
+        ->type_name("NAME=N");
     for (CLI::Option* opt : {input_opt, output, default_out, w, h, t, preset, stats_json, report,
                              fi, ff, ic, fc, sf, ef, clock_opt})
         opt->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);

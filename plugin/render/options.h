@@ -34,6 +34,7 @@ struct Options {
     std::optional<double> initial_clock, final_clock, clock;
     std::optional<bool> cyclic;
     std::vector<std::string> declares;
+    std::vector<std::string> limits; // NAME=N
 
     /// Whether the frames differ (POV-Ray renders a sequence when final_frame != initial_frame).
     bool sequence() const { return initial_frame.value_or(1) != final_frame.value_or(1); }
@@ -65,6 +66,7 @@ inline SceneSource scene_source(const Options& o, std::optional<int> frame = std
     s.clock = o.clock;
     s.cyclic = o.cyclic;
     s.declares = o.declares;
+    s.limits = o.limits;
     return s;
 }
 

@@ -96,6 +96,8 @@ int run_check(const Options& o) {
         std::cout << scene_label(o.scene);
         if (f) std::cout << " (frame " << *f << ")";
         std::cout << ": usable, " << warnings << (warnings == 1 ? " warning\n" : " warnings\n");
+        if (const std::string used = limits_used(raw_scene); !used.empty())
+            std::cout << "  limits used: " << used << "\n";
     }
     return kOk;
 }

@@ -677,6 +677,69 @@ static void test_pov_animation(void) {
     OK(sheafSceneRelease(s));
 }
 
+/* ---- The reader's limits: set by load options, reported after each load ---- */
+
+static void test_reader_limits(void) {
+    SheafScene s = NULL;
+    size_t count = 0;
+    const char* name = NULL;
+    double used = 0, limit = 0;
+    write_text("capi_test_limits.pov",
+               "camera { location <0, 1, -9> look_at 0 }\n"
+               "light_source { <3, 5, -4> rgb 1 }\n"
+               "#for (I, 1, 30) sphere { <I / 10, 0, 0>, 0.1 } #end\n");
+    OK(sheafSceneNew(&s));
+    OK(sheafSceneGetLimitCount(s, &count));
+    CHECK(count == 0, "%zu limits before any load", count);
+    OK(sheafSceneLoadFile(s, "capi_test_limits.pov"));
+    OK(sheafSceneGetLimitCount(s, &count));
+    CHECK(count == 4, "%zu limits, expected 4", count);
+    OK(sheafSceneGetLimitUse(s, 3, &name, &used, &limit));
+    CHECK(strcmp(name, "loop_iterations") == 0 && used == 30 && limit == 1e6,
+          "limit 3: %s %g of %g, expected loop_iterations 30 of 1e6", name, used, limit);
+    OK(sheafSceneGetLimitUse(s, 1, &name, &used, &limit));
+    /* The 30 spheres and the light source. */
+    CHECK(strcmp(name, "objects") == 0 && used == 31, "limit 1: %s %g", name, used);
+    expect_error(sheafSceneGetLimitUse(s, 4, &name, &used, &limit), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "limit past the end", "does not exist", NULL);
+    expect_error(sheafSceneGetLimitUse(s, 0, NULL, &used, &limit), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "limit without a name pointer", "name", NULL);
+    /* Lowered below what the scene needs: an error at the loop; back to the default: loads. */
+    OK(sheafSceneSetLoadOption(s, "limit.loop_iterations", "20"));
+    expect_error(sheafSceneLoadFile(s, "capi_test_limits.pov"), SHEAF_ERROR_SCENE,
+                 "a loop past limit.loop_iterations", "capi_test_limits.pov:3:2",
+                 "more than 20 times");
+    OK(sheafSceneSetLoadOption(s, "limit.loop_iterations", ""));
+    OK(sheafSceneSetLoadOption(s, "limit.objects", "30"));
+    expect_error(sheafSceneLoadFile(s, "capi_test_limits.pov"), SHEAF_ERROR_SCENE,
+                 "objects past limit.objects", "more than 30 objects", NULL);
+    OK(sheafSceneSetLoadOption(s, "limit.objects", "31"));
+    OK(sheafSceneSetLoadOption(s, "limit.data_mib", "1"));
+    OK(sheafSceneSetLoadOption(s, "limit.parse_steps", "100000"));
+    OK(sheafSceneLoadFile(s, "capi_test_limits.pov"));
+    OK(sheafSceneGetLimitUse(s, 2, &name, &used, &limit));
+    CHECK(strcmp(name, "data_mib") == 0 && limit == 1 && used > 0 && used < 1,
+          "limit 2: %s %g of %g, expected data_mib under 1 of 1", name, used, limit);
+    /* Bad names and values are refused, and the limits stay as they were. */
+    expect_error(sheafSceneSetLoadOption(s, "limit.tokens", "5"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "unknown limit", "limit.parse_steps", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "limit.objects", "0"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "zero limit", "1..2^50", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "limit.objects", "-5"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "negative limit", "1..2^50", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "limit.objects", "99999999999999999999999"),
+                 SHEAF_ERROR_INVALID_ARGUMENT, "limit out of range", "1..2^50", NULL);
+    expect_error(sheafSceneSetLoadOption(s, "limit.objects", "12x"), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "limit not a number", "1..2^50", NULL);
+    OK(sheafSceneLoadFile(s, "capi_test_limits.pov"));
+    /* A built-in scene has no reader limits. */
+    OK(sheafSceneLoadBuiltin(s, "cornell"));
+    OK(sheafSceneGetLimitCount(s, &count));
+    CHECK(count == 0, "%zu limits after a built-in scene", count);
+    OK(sheafSceneRelease(s));
+    remove("capi_test_limits.pov");
+}
+
 /* ---- Object flags and the preset list ---- */
 
 static void test_flags_and_presets(void) {
@@ -743,6 +806,7 @@ int main(void) {
     test_write_image();
     test_scene_files();
     test_pov_animation();
+    test_reader_limits();
     test_flags_and_presets();
     CHECK(g_callback_calls == g_expected_errors, "error callback called %d times for %d errors",
           g_callback_calls, g_expected_errors);

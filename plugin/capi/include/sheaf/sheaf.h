@@ -110,6 +110,11 @@ SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);
  *   "clock"         a still's clock (POV-Ray's +K; clock_on is then 1); "" unsets it
  *   "declare"       "NAME=NUMBER": a float declared before the scene's first line (POV-Ray's
  *                   Declare=); appends, "" clears
+ *   "limit.parse_steps", "limit.objects", "limit.data_mib", "limit.loop_iterations"  the POV-Ray
+ *                   reader's budgets (an integer in 1..2^50; "" the default): tokens read and
+ *                   function terms evaluated, objects parsed, MiB of arrays, strings and objects
+ *                   held, runs of one loop. A scene past one fails with SHEAF_ERROR_SCENE at the
+ *                   place it did; docs/pov.md, "Limits", gives the defaults
  * For sheafSceneAddSubdivisionMesh:
  *   "subdivision.limit"     "1": every refined vertex moves onto the limit surface; "0" (default)
  *   "subdivision.boundary"  "edge_only" (default), "edge_and_corner" or "none" */
@@ -118,6 +123,13 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key, 
  * order; *message stays valid until the scene is loaded again or released. */
 SHEAF_API SheafError sheafSceneGetWarningCount(SheafScene scene, size_t* count);
 SHEAF_API SheafError sheafSceneGetWarning(SheafScene scene, size_t index, const char** message);
+/* What the last sheafSceneLoadFile used of the reader's limits (the load options limit.*), in
+ * order: the limit's name ("parse_steps", "objects", "data_mib", "loop_iterations"), the amount
+ * used (the data's peak, the longest loop) and the limit. None for formats without such limits
+ * or a built-in scene; *name stays valid until the scene is loaded again or released. */
+SHEAF_API SheafError sheafSceneGetLimitCount(SheafScene scene, size_t* count);
+SHEAF_API SheafError sheafSceneGetLimitUse(SheafScene scene, size_t index, const char** name,
+                                           double* used, double* limit);
 
 /* Ids count from 0 in the order of addition; out ids may be NULL. */
 SHEAF_API SheafError sheafSceneAddMaterial(SheafScene scene, const SheafMaterialDesc* desc,

@@ -1,0 +1,32 @@
+// The reader's limits by name (see limits.h).
+#include "io/pov/limits.h"
+
+namespace sheaf::io::pov {
+
+namespace {
+constexpr double kMiB = 1 << 20;
+} // namespace
+
+std::vector<LimitUse> limit_uses(const PovUsage& used, const PovLimits& limits) {
+    return {{"parse_steps", double(used.parse_steps), double(limits.parse_steps)},
+            {"objects", double(used.objects), double(limits.objects)},
+            {"data_mib", double(used.data_bytes) / kMiB, double(limits.data_bytes) / kMiB},
+            {"loop_iterations", double(used.loop_iterations), double(limits.loop_iterations)}};
+}
+
+bool set_limit(PovLimits& limits, const std::string& name, uint64_t value) {
+    if (value < 1 || value > (uint64_t(1) << 50)) return false;
+    if (name == "parse_steps")
+        limits.parse_steps = value;
+    else if (name == "objects")
+        limits.objects = value;
+    else if (name == "data_mib")
+        limits.data_bytes = value << 20 >> 20 == value ? value << 20 : UINT64_MAX;
+    else if (name == "loop_iterations")
+        limits.loop_iterations = value;
+    else
+        return false;
+    return true;
+}
+
+} // namespace sheaf::io::pov

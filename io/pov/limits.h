@@ -1,0 +1,44 @@
+// The POV-Ray reader's budgets of work and memory (PovLimits) and what a scene used of them
+// (PovUsage), apart from the reader so that the scene-file options and the C ABI can name them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sheaf::io::pov {
+
+/// The reader's budgets of work and memory. A scene that goes past one is an error at the place
+/// where it did (never a hang, nor memory without bound); one that means to go further raises
+/// it (the load options limit.*, render --limit). The defaults and what POV-Ray's example
+/// scenes use of each are in docs/pov.md, "Limits".
+struct PovLimits {
+    /// Tokens read (macro and loop bodies each time they run) and function terms evaluated.
+    uint64_t parse_steps = 400'000'000;
+    /// Objects parsed, temporaries and declarations included.
+    uint64_t objects = 200'000;
+    /// Live arrays and strings, and objects placed or held by a CSG, in bytes.
+    uint64_t data_bytes = uint64_t(256) << 20;
+    /// Runs of one #while or #for loop.
+    uint64_t loop_iterations = 1'000'000;
+};
+
+/// What a scene used of each budget of PovLimits: the total steps and objects, the peak of
+/// the data, the longest loop.
+struct PovUsage {
+    uint64_t parse_steps = 0, objects = 0, data_bytes = 0, loop_iterations = 0;
+};
+
+/// One limit as hosts see it (the load option limit.NAME): its name, the amount used and the
+/// limit, data in MiB.
+struct LimitUse {
+    std::string name;
+    double used = 0, limit = 0;
+};
+std::vector<LimitUse> limit_uses(const PovUsage& used, const PovLimits& limits);
+
+/// Sets limit `name` (parse_steps, objects, data_mib, loop_iterations) to `value`; false when
+/// the name is unknown or the value outside 1..2^50.
+bool set_limit(PovLimits& limits, const std::string& name, uint64_t value);
+
+} // namespace sheaf::io::pov

@@ -10,11 +10,16 @@ namespace {
 
 struct Job {
     const std::function<void()>* fn;
+    size_t bytes;
     std::exception_ptr error;
 };
 
+/// The stack this thread was started with by run_on_stack; 0 for any other thread.
+thread_local size_t t_stack_bytes = 0;
+
 void* run_job(void* p) {
     Job& job = *static_cast<Job*>(p);
+    t_stack_bytes = job.bytes;
     try {
         (*job.fn)();
     } catch (...) {
@@ -26,7 +31,11 @@ void* run_job(void* p) {
 } // namespace
 
 void run_on_stack(size_t bytes, const std::function<void()>& fn) {
-    Job job{&fn, nullptr};
+    if (t_stack_bytes >= bytes) { // already on such a stack (a reader inside the dispatcher)
+        fn();
+        return;
+    }
+    Job job{&fn, bytes, nullptr};
     pthread_attr_t attr;
     bool started = false;
     pthread_t thread;

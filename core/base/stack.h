@@ -14,7 +14,8 @@ namespace sheaf {
 constexpr size_t kReaderStackBytes = size_t(64) << 20;
 
 /// Runs fn() on a new thread with `bytes` of stack and waits for it; what fn throws is thrown
-/// here. Where the system refuses the thread, fn runs on the calling thread.
+/// here. On a thread run_on_stack started with at least `bytes`, or where the system refuses
+/// the thread, fn runs on the calling thread.
 void run_on_stack(size_t bytes, const std::function<void()>& fn);
 
 } // namespace sheaf

@@ -2,6 +2,7 @@
 #include "io/pov/pov_reader.h"
 
 #include "core/base/error.h"
+#include "core/base/stack.h"
 #include "io/pov/builder.h"
 #include "io/pov/parser.h"
 
@@ -23,18 +24,22 @@ PovResult load_pov_scene(const std::string& path, const PovOptions& options) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw SceneError(path + ": error: no such scene file");
-    Parser p(options);
-    try {
-        p.parse_scene(path);
-    } catch (const std::filesystem::filesystem_error& e) {
-        // A system call the reader did not expect to fail: still the scene's error.
-        throw SceneError(path + ": error: " + e.what());
-    }
     PovResult r;
-    r.assumed_gamma = build_scene(p, r.scene);
-    r.version = p.model.version;
-    r.warnings = std::move(p.warnings);
-    r.usage = p.usage();
+    // The parser recurses as deep as the scene nests (up to kMaxNesting): on a stack of known
+    // size, whoever calls (core/base/stack.h; load_scene_file is on one already).
+    run_on_stack(kReaderStackBytes, [&] {
+        Parser p(options);
+        try {
+            p.parse_scene(path);
+        } catch (const std::filesystem::filesystem_error& e) {
+            // A system call the reader did not expect to fail: still the scene's error.
+            throw SceneError(path + ": error: " + e.what());
+        }
+        r.assumed_gamma = build_scene(p, r.scene);
+        r.version = p.model.version;
+        r.warnings = std::move(p.warnings);
+        r.usage = p.usage();
+    });
     return r;
 }
 

@@ -106,6 +106,19 @@ inline void install_fault_handler() {
 
 } // namespace strict_detail
 
+/// Why seal_host cannot work in this build, or nullptr where it can. Under AddressSanitizer
+/// the anonymous writable mappings a sealed child closes include the sanitizer's shadow memory,
+/// which every instrumented load and store reads first, so the child faults on its first
+/// access whatever the launch does. Tests that seal skip with this reason in such a build
+/// (README, "What CI runs").
+inline const char* sealing_unavailable() {
+#if defined(__SANITIZE_ADDRESS__)
+    return "sealed launches cannot run under AddressSanitizer: sealing closes its shadow memory";
+#else
+    return nullptr;
+#endif
+}
+
 class StrictExec {
   public:
     static constexpr const char* kName = "strict";

@@ -341,6 +341,9 @@ TEST(PovLimits, BudgetsAreSetByTheHostAndReported) {
     EXPECT_FALSE(set_limit(l, "data_mib", 0));
     EXPECT_FALSE(set_limit(l, "tokens", 5));
     EXPECT_FALSE(set_limit(l, "objects", (uint64_t(1) << 50) + 1));
+    EXPECT_TRUE(reset_limit(l, "data_mib"));
+    EXPECT_EQ(l.data_bytes, PovLimits().data_bytes);
+    EXPECT_FALSE(reset_limit(l, "tokens"));
 }
 
 // The hostile scenes of tests/fuzz/regressions stop within the default budgets after little

@@ -29,4 +29,19 @@ bool set_limit(PovLimits& limits, const std::string& name, uint64_t value) {
     return true;
 }
 
+bool reset_limit(PovLimits& limits, const std::string& name) {
+    const PovLimits defaults;
+    if (name == "parse_steps")
+        limits.parse_steps = defaults.parse_steps;
+    else if (name == "objects")
+        limits.objects = defaults.objects;
+    else if (name == "data_mib")
+        limits.data_bytes = defaults.data_bytes;
+    else if (name == "loop_iterations")
+        limits.loop_iterations = defaults.loop_iterations;
+    else
+        return false;
+    return true;
+}
+
 } // namespace sheaf::io::pov

@@ -40,5 +40,7 @@ std::vector<LimitUse> limit_uses(const PovUsage& used, const PovLimits& limits);
 /// Sets limit `name` (parse_steps, objects, data_mib, loop_iterations) to `value`; false when
 /// the name is unknown or the value outside 1..2^50.
 bool set_limit(PovLimits& limits, const std::string& name, uint64_t value);
+/// Sets limit `name` back to its default; false when the name is unknown.
+bool reset_limit(PovLimits& limits, const std::string& name);
 
 } // namespace sheaf::io::pov

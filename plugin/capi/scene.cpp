@@ -205,15 +205,7 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
             const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
             const bool number = !v.empty() && v[0] != '-' && *end == '\0' && errno == 0;
             sheaf::io::pov::PovLimits limits = s.load_options.limits;
-            if (v.empty()) { // back to the default
-                const sheaf::io::pov::PovLimits defaults;
-                for (const auto& use : sheaf::io::pov::limit_uses({}, defaults))
-                    if (use.name == name)
-                        sheaf::io::pov::set_limit(limits, name, uint64_t(use.limit));
-            }
-            bool known = false;
-            for (const auto& use : sheaf::io::pov::limit_uses({}, limits)) known |= use.name == name;
-            if (!known)
+            if (!sheaf::io::pov::reset_limit(limits, name)) // "": the default
                 throw InvalidArgument("unknown load option '" + k +
                                       "'; known limits: limit.parse_steps, limit.objects, "
                                       "limit.data_mib, limit.loop_iterations");

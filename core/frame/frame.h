@@ -13,7 +13,10 @@
 namespace sheaf {
 
 struct Frame {
-    int width = 0, height = 0;
+    int width = 0, height = 0; // the image: the whole frame, or the region rendered (region.*)
+    /// Where the image lies in the whole frame (full_width x full_height): its first column
+    /// and row; 0, 0 and the image's size unless a region was rendered.
+    int x = 0, y = 0, full_width = 0, full_height = 0;
     std::vector<float> rgba;  // scene-linear combined pass, 4 floats per pixel, top row first
     std::vector<float> depth; // camera distance of the primary hit, +inf where nothing was hit
     std::vector<Vec3> normal; // world-space shading normal of the primary hit

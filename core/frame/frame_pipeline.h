@@ -58,7 +58,10 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const auto start = std::chrono::steady_clock::now();
         const int aa = s_.aa_samples;
         W_ = s_.width * aa, H_ = s_.height * aa;
-        const size_t samples = size_t(W_) * H_;
+        const RenderSettings::Rect region = s_.region();
+        win_ = SampleWindow::of_pixels(s_.width, aa, region.x, region.y, region.width,
+                                       region.height);
+        const size_t samples = win_.count(); // the buffers hold the region's samples only
         last_mark_ = start;
         const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
         mark("cull units");
@@ -156,17 +159,20 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     void limit_memory() {
         const int64_t available = available_memory_bytes();
         if (available <= 0) return; // unknown: no limit
-        const int64_t samples = int64_t(W_) * H_;
+        const int64_t samples = int64_t(win_.count());
         // What lives together at the primary stage: radiance, tests, depth, normal, albedo,
         // object id, the visibility buffer and its slots, the hits (as if every sample hit);
         // the frame's passes per pixel.
         const int64_t per_sample = sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t) * 3 +
                                    sizeof(uint64_t) + sizeof(SurfaceHit);
         const int64_t per_pixel = sizeof(float) * (4 + 1 + 3 + 3 + 1 + 1);
-        const int64_t fixed = samples * per_sample + int64_t(s_.width) * s_.height * per_pixel;
+        const RenderSettings::Rect region = s_.region();
+        const int64_t fixed =
+            samples * per_sample + int64_t(region.width) * region.height * per_pixel;
         const int64_t usable = available / 10 * 9; // the rest for what is not counted
         if (fixed > usable)
-            throw OutOfMemory("a " + std::to_string(s_.width) + "x" + std::to_string(s_.height) +
+            throw OutOfMemory("a " + std::to_string(region.width) + "x" +
+                              std::to_string(region.height) +
                               " frame with " + std::to_string(s_.aa_samples) + "x" +
                               std::to_string(s_.aa_samples) + " samples per pixel needs at least " +
                               std::to_string(fixed >> 20) + " MiB; this machine has " +
@@ -177,8 +183,8 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     // Projections no plane holds: every sample's camera ray is traced through the ray
     // hierarchy (objects without an image skipped), its closest hit the sample's visibility key.
     void trace_camera(const CameraFrame& cam, uint64_t* vis) {
-        const size_t samples = size_t(W_) * H_;
-        const int W = W_;
+        const size_t samples = win_.count();
+        const SampleWindow win = win_;
         clock_.start("ray_creation");
         fill(ex_, vis, samples, kEmptyPixel);
         DeviceBuffer<uint32_t, Exec> slot_buf(ex_, samples);
@@ -187,15 +193,15 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const uint32_t total = count_and_scan(
             ex_, "raygen.count", samples, slot, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t {
                 Ray r;
-                return camera_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), r) ? 1u : 0u;
+                return camera_ray(scene, cam, win.column(i), win.row(i), r) ? 1u : 0u;
             });
         DeviceBatch<Exec> b(ex_, RayType::Camera, total);
         const RaySlots slots = b.slots();
         ex_.launch("raygen.camera", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
             Ray r;
-            if (!primary_ray(scene, cam, int(i % size_t(W)), int(i / size_t(W)), r)) return;
+            if (!primary_ray(scene, cam, win.column(i), win.row(i), r)) return;
             slots.rays[slot[i]] = r;
-            slots.pixel[slot[i]] = uint32_t(i);
+            slots.pixel[slot[i]] = win.global(i);
             slots.weight[slot[i]] = Vec3(1.0f);
         });
         clock_.stop("ray_creation");
@@ -205,15 +211,16 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const uint32_t* pixel = b.pixel.data();
         const uint64_t* closest = r.closest.data();
         ex_.launch("raygen.camera_hits", b.n,
-                   [=] SHEAF_HD_LAMBDA(size_t i) { vis[pixel[i]] = closest[i]; });
+                   [=] SHEAF_HD_LAMBDA(size_t i) { vis[win.local(pixel[i])] = closest[i]; });
     }
 
     // Primary visibility, resolved to surface hits and the primary passes: rasterised with the
     // analytic objects merged in, or traced for the projections that need it.
     DeviceHits<Exec> primary() {
         const CameraFrame cam = make_camera_frame(host_.camera, W_, H_, s_.aa_samples);
-        const size_t samples = size_t(W_) * H_;
+        const size_t samples = win_.count();
         const int W = W_;
+        const SampleWindow win = win_;
         const SceneView scene = scene_;
         DeviceBuffer<uint64_t, Exec> vis_buf(ex_, samples);
         uint64_t* vis = vis_buf.data();
@@ -225,7 +232,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
             if constexpr (Exec::kHostMemory) {
                 // Binned into screen tiles, one task a tile, no atomics: faster on CPU cores
                 // (core/raster/rasterizer.cpp); the same minimum keys.
-                rasterize(host_, cam, vis);
+                rasterize(host_, cam, win, vis);
             } else if (fill(ex_, vis, samples, kEmptyPixel); tris > 0) {
                 const double near = raster_near(host_, cam);
                 DeviceBuffer<ScreenTri, Exec> screen_buf(ex_, 2 * tris);
@@ -234,6 +241,8 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
                     setup_triangle(scene.tris[p], uint32_t(p),
                                    scene.prim_flag(uint32_t(p), kNoImage), cam, near,
                                    &screen[2 * p]);
+                    clip_to_window(screen[2 * p], win);
+                    clip_to_window(screen[2 * p + 1], win);
                 });
                 // The pixel bounds cut into runs of kCoverRun pixels of a row, one thread
                 // each: a triangle as large as the screen is spread over many threads instead
@@ -266,14 +275,13 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
                     for (int x = xa; x <= xb; ++x) {
                         uint64_t key;
                         if (cover_pixel(s, x, y, cam.ortho, key))
-                            atomic_min_u64(&vis[size_t(y) * W + x], key);
+                            atomic_min_u64(&vis[win.at(x, y)], key);
                     }
                 });
             }
             if (scene.analytic_count > 0)
                 ex_.launch("raster.analytic", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
-                    vis[i] = cast_analytic_pixel(scene, cam, int(i % size_t(W)), int(i / size_t(W)),
-                                                 vis[i]);
+                    vis[i] = cast_analytic_pixel(scene, cam, win.column(i), win.row(i), vis[i]);
                 });
             clock_.stop("raster");
         }
@@ -301,7 +309,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         if (scatter_) segments_ = DeviceBuffer<MediaSegment, Exec>(ex_, samples);
         MediaSegment* segment = segments_.data();
         ex_.launch("gbuffer.resolve", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
-            const PrimarySample ps = primary_sample(scene, cam, W, i, vis[i]);
+            const PrimarySample ps = primary_sample(scene, cam, W, win.global(i), vis[i]);
             radiance[i] = ps.radiance;
             depth[i] = ps.depth;
             normal[i] = ps.normal;
@@ -323,6 +331,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const SurfaceHit* h = hits.h.data();
         const size_t n = hits.n;
         Vec3* radiance = radiance_.data();
+        const SampleWindow win = win_;
 
         DeviceBatch<Exec> shadow = shadow_rays(hits);
         DeviceBatch<Exec> ao(ex_, RayType::Ao, 0);
@@ -331,7 +340,8 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
             // Terms that need no ray: emission, ambient (unless AO traces it), shadowless lights.
             clock_.start("shading");
             accumulate_in_order(
-                ex_, n, radiance, [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return h[i].pixel; },
+                ex_, n, radiance,
+                [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return win.local(h[i].pixel); },
                 [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                     v = unshadowed_terms(scene, h[i], trace_ao, params);
                     return true;
@@ -466,9 +476,10 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const Vec3* weight = b.weight.data();
         const uint8_t* occluded = r.occluded.data();
         const uint64_t* pass_log = r.pass_log.data();
+        const SampleWindow win = win_;
         accumulate_in_order(
             ex_, b.n, radiance_.data(),
-            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
+            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return win.local(pixel[i]); },
             [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                 if (occluded[i]) return false;
                 v = pass_log ? weight[i] * pass_from_logs(&pass_log[3 * i]) : weight[i];
@@ -515,8 +526,9 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const uint32_t* pixel = b.pixel.data();
         const uint32_t* tests = r.tests.data();
         uint32_t* sample_tests = tests_.data();
+        const SampleWindow win = win_;
         ex_.launch("shade.tests", b.n, [=] SHEAF_HD_LAMBDA(size_t i) {
-            atomic_add_u32(&sample_tests[pixel[i]], tests[i]);
+            atomic_add_u32(&sample_tests[win.local(pixel[i])], tests[i]);
         });
     }
 
@@ -532,9 +544,10 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const uint32_t* pixel = b.pixel.data();
         const Vec3* weight = b.weight.data();
         const uint64_t* closest = r.closest.data();
+        const SampleWindow win = win_;
         accumulate_in_order(
             ex_, b.n, radiance_.data(),
-            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return pixel[i]; },
+            [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return win.local(pixel[i]); },
             [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
                 if (closest[i] != kNoHit) return false;
                 v = leave_scene(scene, rays[i].origin, rays[i].dir, weight[i], pixel[i]);
@@ -569,7 +582,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         if (host_.lights_the_way()) // in ray order: the same sums on every accel
             accumulate_in_order(
                 ex_, count, radiance_.data(),
-                [=] SHEAF_HD_LAMBDA(size_t k) -> uint32_t { return out[k].pixel; },
+                [=] SHEAF_HD_LAMBDA(size_t k) -> uint32_t { return win.local(out[k].pixel); },
                 [=] SHEAF_HD_LAMBDA(size_t k, Vec3 & v) -> bool {
                     v = fog[k];
                     return true;
@@ -583,7 +596,9 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     // results come back to the host.
     void resolve() {
         clock_.start("shading");
-        const int aa = s_.aa_samples, w = s_.width, h = s_.height, W = W_;
+        // The region's pixels from the region's samples (the whole frame by default).
+        const RenderSettings::Rect region = s_.region();
+        const int aa = s_.aa_samples, w = region.width, h = region.height, W = win_.width;
         const float gamma = scene_.working_gamma;
         const size_t pixels = size_t(w) * h;
         // Only the passes the frame keeps (output.passes) are resolved and read back.
@@ -601,6 +616,8 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         ex_.launch("resolve", pixels,
                    [=] SHEAF_HD_LAMBDA(size_t p) { resolve_pixel(p, w, aa, W, gamma, in, out); });
         f_.width = w, f_.height = h;
+        f_.x = region.x, f_.y = region.y;
+        f_.full_width = s_.width, f_.full_height = s_.height;
         f_.rgba = rgba.download();
         f_.depth = depth.download();
         f_.normal = normal.download();
@@ -622,7 +639,8 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     SceneView scene_;
     Tracer* tracer_ = nullptr;
     RayGenParams params_;
-    int W_ = 0, H_ = 0;
+    int W_ = 0, H_ = 0; // the whole frame's sample grid
+    SampleWindow win_;  // the region's part of it, which the per-sample buffers hold
     DeviceBuffer<Vec3, Exec> radiance_;
     DeviceBuffer<uint32_t, Exec> tests_;
     DeviceBuffer<float, Exec> depth_;

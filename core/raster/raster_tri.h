@@ -6,6 +6,7 @@
 #pragma once
 
 #include "core/raster/camera.h"
+#include "core/raster/sample_window.h"
 #include "core/scene/prepared_scene.h"
 
 #include <cfloat>
@@ -121,6 +122,17 @@ SHEAF_HD_INLINE void setup_triangle(const TriangleVerts& t, uint32_t prim, bool 
         }
         out[k] = s;
     }
+}
+
+/// Cuts s's pixel bounds to the window's samples (region.*): empty (x0 > x1 or y0 > y1) when
+/// the triangle covers none of them.
+SHEAF_HD_INLINE void clip_to_window(ScreenTri& s, const SampleWindow& w) {
+    if (s.x0 > s.x1 || s.y0 > s.y1) return;
+    s.x0 = s.x0 > w.x ? s.x0 : w.x;
+    s.y0 = s.y0 > w.y ? s.y0 : w.y;
+    s.x1 = s.x1 < w.x + w.width - 1 ? s.x1 : w.x + w.width - 1;
+    s.y1 = s.y1 < w.y + w.height - 1 ? s.y1 : w.y + w.height - 1;
+    if (s.x0 > s.x1 || s.y0 > s.y1) s.x0 = 1, s.x1 = 0, s.y0 = 1, s.y1 = 0;
 }
 
 /// Whether the centre of pixel (x, y) is inside s (top-left rule); if so `key` is its depth

@@ -28,34 +28,43 @@ void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<u
 }
 
 void rasterize(const PreparedScene& scene, const CameraFrame& cam, uint64_t* vis) {
-    const int W = cam.width, H = cam.height;
-    std::fill_n(vis, size_t(W) * H, kEmptyPixel);
+    rasterize(scene, cam, SampleWindow{cam.width, 0, 0, cam.width, cam.height}, vis);
+}
+
+void rasterize(const PreparedScene& scene, const CameraFrame& cam, const SampleWindow& win,
+               uint64_t* vis) {
+    const int W = win.width, H = win.height;
+    std::fill_n(vis, win.count(), kEmptyPixel);
     const size_t n = scene.triangle_count(); // analytic primitives are ray-cast by the caller
     if (n == 0) return;
 
     const double near = raster_near(scene, cam);
 
-    // 1. Set-up: camera space, near clip, projection. A clipped quad becomes two triangles.
+    // 1. Set-up: camera space, near clip, projection, pixel bounds cut to the window. A
+    //    clipped quad becomes two triangles.
     std::vector<ScreenTri> tris(2 * n);
     parallel_for("raster.setup", n, [&](size_t p) {
         setup_triangle(scene.tris[p], uint32_t(p), scene.prim_flag(uint32_t(p), kNoImage), cam,
                        near, &tris[2 * p]);
+        clip_to_window(tris[2 * p], win);
+        clip_to_window(tris[2 * p + 1], win);
     });
 
-    // 2. Binning into screen tiles.
+    // 2. Binning into screen tiles of the window.
     const int tx = (W + kTile - 1) / kTile, ty = (H + kTile - 1) / kTile;
     std::vector<std::vector<uint32_t>> bins(size_t(tx) * ty);
     for (uint32_t i = 0; i < tris.size(); ++i) {
         const ScreenTri& s = tris[i];
         if (s.x0 > s.x1 || s.y0 > s.y1) continue;
-        for (int by = s.y0 / kTile; by <= s.y1 / kTile; ++by)
-            for (int bx = s.x0 / kTile; bx <= s.x1 / kTile; ++bx)
+        for (int by = (s.y0 - win.y) / kTile; by <= (s.y1 - win.y) / kTile; ++by)
+            for (int bx = (s.x0 - win.x) / kTile; bx <= (s.x1 - win.x) / kTile; ++bx)
                 bins[size_t(by) * tx + bx].push_back(i);
     }
 
-    // 3. Coverage and depth, one tile per task: no two tasks write the same pixel.
+    // 3. Coverage and depth, one tile per task: no two tasks write the same pixel. Coverage is
+    //    tested at the whole grid's pixel, so a window's keys are the whole frame's.
     parallel_for("raster.tiles", bins.size(), [&](size_t b) {
-        const int bx = int(b % tx) * kTile, by = int(b / tx) * kTile;
+        const int bx = win.x + int(b % tx) * kTile, by = win.y + int(b / tx) * kTile;
         for (uint32_t i : bins[b]) {
             const ScreenTri& s = tris[i];
             const int x0 = std::max(s.x0, bx), x1 = std::min(s.x1, bx + kTile - 1);
@@ -64,7 +73,7 @@ void rasterize(const PreparedScene& scene, const CameraFrame& cam, uint64_t* vis
                 for (int x = x0; x <= x1; ++x) {
                     uint64_t key;
                     if (!cover_pixel(s, x, y, cam.ortho, key)) continue;
-                    uint64_t& dst = vis[size_t(y) * W + x];
+                    uint64_t& dst = vis[win.at(x, y)];
                     if (key < dst) dst = key;
                 }
         }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/raster/camera.h"
+#include "core/raster/sample_window.h"
 #include "core/scene/prepared_scene.h"
 
 #include <cstdint>
@@ -27,5 +28,9 @@ double raster_near(const PreparedScene& scene, const CameraFrame& camera);
 void rasterize(const PreparedScene& scene, const CameraFrame& camera, std::vector<uint64_t>& vis);
 /// The same into host memory the caller holds (width * height entries).
 void rasterize(const PreparedScene& scene, const CameraFrame& camera, uint64_t* vis);
+/// Only the samples of `window` (window.count() entries, its rows in order): each the same key
+/// as in the whole grid.
+void rasterize(const PreparedScene& scene, const CameraFrame& camera, const SampleWindow& window,
+               uint64_t* vis);
 
 } // namespace sheaf

@@ -104,6 +104,15 @@ const std::vector<SettingSpec>& setting_specs() {
          "where the frame is computed"},
         {"width", K::Int, "512", 1, 16384, {}, "image width in pixels"},
         {"height", K::Int, "512", 1, 16384, {}, "image height in pixels"},
+        {"region.x", K::Int, "0", 0, 16383, {},
+         "first column of the part of the frame rendered (0: the left edge); the pixels are "
+         "those of the whole frame, so tiles put together equal it byte for byte"},
+        {"region.y", K::Int, "0", 0, 16383, {},
+         "first row of the part of the frame rendered (0: the top row)"},
+        {"region.width", K::Int, "0", 0, 16384, {},
+         "columns of the part of the frame rendered, 0 for all from region.x to the right edge"},
+        {"region.height", K::Int, "0", 0, 16384, {},
+         "rows of the part of the frame rendered, 0 for all from region.y to the bottom edge"},
         {"aa.samples",
          K::Int,
          "1",
@@ -404,6 +413,19 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.backend = backend == "cpu" ? Backend::Cpu : backend == "cuda" ? Backend::Cuda : Backend::Auto;
     r.width = i("width");
     r.height = i("height");
+    r.region_x = i("region.x");
+    r.region_y = i("region.y");
+    r.region_width = i("region.width");
+    r.region_height = i("region.height");
+    const Rect g = r.region();
+    if (g.width <= 0 || g.x + g.width > r.width)
+        throw SettingsError("region.x=" + v.at("region.x") + ", region.width=" +
+                            v.at("region.width") + ": the region's columns must lie within width=" +
+                            v.at("width") + " (columns 0.." + std::to_string(r.width - 1) + ")");
+    if (g.height <= 0 || g.y + g.height > r.height)
+        throw SettingsError("region.y=" + v.at("region.y") + ", region.height=" +
+                            v.at("region.height") + ": the region's rows must lie within height=" +
+                            v.at("height") + " (rows 0.." + std::to_string(r.height - 1) + ")");
     r.aa_samples = i("aa.samples");
     r.threads = i("threads");
     r.ao_samples = i("ao.samples");

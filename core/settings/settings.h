@@ -88,6 +88,18 @@ struct RenderSettings {
     int trace_depth = 5;
     Backend backend = Backend::Auto;
     int width = 512, height = 512;
+    /// The part of the frame rendered (region.*), in the frame's pixels; a size of 0 reaches
+    /// the frame's edge. The frame's image is the region; each of its pixels is computed as in
+    /// the whole frame, so regions put together equal it exactly.
+    int region_x = 0, region_y = 0, region_width = 0, region_height = 0;
+    struct Rect {
+        int x, y, width, height;
+    };
+    /// The region, sizes resolved (the whole frame by default).
+    Rect region() const {
+        return {region_x, region_y, region_width > 0 ? region_width : width - region_x,
+                region_height > 0 ? region_height : height - region_y};
+    }
     int aa_samples = 1; // per axis: aa x aa samples per pixel
     int threads = 0;    // 0: all cores
     int ao_samples = 0;

@@ -1,11 +1,14 @@
 #include "core/stats/stats.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <cstdlib>
 
 namespace sheaf {
 
@@ -77,6 +80,47 @@ std::string Stats::to_json() const {
            << (i + 1 < entries_.size() ? ",\n" : "\n");
     os << "}\n";
     return os.str();
+}
+
+Stats Stats::from_json(std::string_view json) {
+    Stats out;
+    size_t i = 0;
+    auto skip = [&] {
+        while (i < json.size() && std::isspace(static_cast<unsigned char>(json[i]))) ++i;
+    };
+    auto fail = [&](const char* what) {
+        throw std::invalid_argument(std::string("statistics JSON: ") + what + " at offset " +
+                                    std::to_string(i));
+    };
+    skip();
+    if (i >= json.size() || json[i++] != '{') fail("expected '{'");
+    for (skip(); i < json.size() && json[i] != '}'; skip()) {
+        if (json[i++] != '"') fail("expected a key");
+        std::string key;
+        while (i < json.size() && json[i] != '"') {
+            if (json[i] == '\\' && i + 1 < json.size()) ++i;
+            key.push_back(json[i++]);
+        }
+        if (i++ >= json.size()) fail("unterminated key");
+        skip();
+        if (i >= json.size() || json[i++] != ':') fail("expected ':'");
+        skip();
+        const size_t end = json.find_first_of(",}", i);
+        if (end == std::string_view::npos) fail("unterminated object");
+        std::string text(json.substr(i, end - i));
+        while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+        double v = std::nan("");
+        if (text != "null") {
+            char* stop = nullptr;
+            v = std::strtod(text.c_str(), &stop);
+            if (text.empty() || *stop != '\0') fail("expected a number");
+        }
+        out.set(key, v);
+        i = end;
+        if (json[i] == ',') ++i;
+    }
+    if (i >= json.size()) fail("expected '}'");
+    return out;
 }
 
 std::string Stats::to_table() const {

@@ -21,6 +21,9 @@ class Stats {
 
     /// One flat JSON object, keys in insertion order, integers printed exactly.
     std::string to_json() const;
+    /// Reads what to_json wrote (a flat object of numbers; null as NaN). Throws
+    /// std::invalid_argument at the first thing that is not such an entry.
+    static Stats from_json(std::string_view json);
     /// The paper's tables as text: rays, tests per ray type and level, totals, time per phase.
     std::string to_table() const;
 

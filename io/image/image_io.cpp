@@ -121,6 +121,10 @@ void write_exr(const Frame& frame, const std::string& path) {
     io::ImageToWrite im;
     im.path = path;
     im.width = frame.width, im.height = frame.height, im.channels = nc;
+    if (frame.full_width > 0 && frame.full_height > 0) { // a part's place: the data window
+        im.x = frame.x, im.y = frame.y;
+        im.full_width = frame.full_width, im.full_height = frame.full_height;
+    }
     im.channel_names = names;
     im.types = formats;
     im.alpha_channel = 3;

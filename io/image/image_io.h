@@ -22,6 +22,12 @@ namespace sheaf {
 /// Throws RenderError naming the path for an unknown extension or a failed write.
 void write_image(const Frame& frame, const std::string& path);
 
+/// Reads back a frame that write_image wrote as OpenEXR with output.exr=float: every pass it
+/// holds, its place in the whole frame (the data window), its settings and statistics (the
+/// file's sheaf:settings and sheaf:stats). Throws RenderError naming the path when the file
+/// cannot be read, is not such a frame, or holds half floats (not the frame's values).
+Frame read_frame_image(const std::string& path);
+
 /// Writes one pass as an 8-bit false-colour picture: depth as grey (near is bright), normal as
 /// 0.5 + 0.5 n, albedo through the display transform, object ids as distinct colours, test
 /// counts as a heat map (log scale). "combined" is the display-referred image.

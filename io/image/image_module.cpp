@@ -58,6 +58,10 @@ void encode_image(const ImageToWrite& im) {
                             im.width,
                             im.height,
                             im.channels,
+                            im.x,
+                            im.y,
+                            im.full_width,
+                            im.full_height,
                             names.empty() ? nullptr : names.data(),
                             im.types.data(),
                             im.alpha_channel,
@@ -78,6 +82,16 @@ ImageReader::ImageReader(const std::string& path) : module_(image_module()) {
 
 ImageReader::~ImageReader() {
     if (reader_) module_.close(reader_);
+}
+
+std::optional<std::string> ImageReader::describe(int channel, const char* attribute) const {
+    if (!reader_) return std::nullopt;
+    const int n = module_.describe(reader_, channel, attribute, nullptr, 0);
+    if (n < 0) return std::nullopt;
+    std::string out(size_t(n) + 1, '\0');
+    module_.describe(reader_, channel, attribute, out.data(), out.size());
+    out.resize(size_t(n));
+    return out;
 }
 
 std::vector<float> ImageReader::read(int channels) {

@@ -5,6 +5,7 @@
 
 #include "io/image/image_module_abi.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,7 @@ const SheafImageModule& image_module();
 struct ImageToWrite {
     std::string path;
     int width = 0, height = 0, channels = 0;
+    int x = 0, y = 0, full_width = 0, full_height = 0; // a part's place in the whole; 0: none
     std::vector<std::string> channel_names; // empty: the format's defaults
     std::vector<int> types;                 // SheafPixelType per channel
     int alpha_channel = -1, z_channel = -1; // -1: the default names' (alpha 3 of RGBA)
@@ -39,6 +41,9 @@ class ImageReader {
     ImageReader& operator=(const ImageReader&) = delete;
 
     const SheafImageInfo& info() const { return info_; }
+    /// Channel `channel`'s name, or with channel < 0 the string attribute `attribute`; none
+    /// when the file has no such channel or attribute (or after read()).
+    std::optional<std::string> describe(int channel, const char* attribute = "") const;
     /// The first `channels` channels as floats, width x height x channels.
     std::vector<float> read(int channels);
 

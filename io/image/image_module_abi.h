@@ -12,7 +12,7 @@
 
 #include <stddef.h>
 
-#define SHEAF_IMAGE_MODULE_ABI 1
+#define SHEAF_IMAGE_MODULE_ABI 2
 #define SHEAF_IMAGE_MODULE_ENTRY "sheaf_image_module"
 #define SHEAF_IMAGE_MODULE_FILE "libsheaf_image.so.0"
 
@@ -32,7 +32,10 @@ enum SheafPixelType {
 /// What an image file says of itself.
 struct SheafImageInfo {
     int width, height, channels;
-    int type;             // SheafPixelType of its pixels
+    int type;             // SheafPixelType of its pixels (of the first channel)
+    int x, y;             // where the pixels lie in the whole image (OpenEXR's data window)
+    int full_width, full_height; // the whole image (OpenEXR's display window)
+    int all_float;        // 1 when every channel is stored as 32-bit float
     char colorspace[64];  // its "oiio:ColorSpace" attribute, empty when it names none
 };
 
@@ -41,6 +44,7 @@ struct SheafImageInfo {
 struct SheafImageWrite {
     const char* path;
     int width, height, channels;
+    int x, y, full_width, full_height; // the pixels' place in a whole image; 0 0 0 0: none
     const char* const* channel_names; // `channels` names, or null for the format's defaults
     const int* types;                 // `channels` SheafPixelType values
     int alpha_channel, z_channel;     // -1: as the default names say (RGBA: alpha 3)
@@ -61,6 +65,10 @@ struct SheafImageModule {
     /// x channels), then closes the reader.
     int (*read)(void* reader, int channels, float* out, char* error, size_t error_size);
     void (*close)(void* reader);
+    /// Channel `c`'s name (or the string attribute `name` when c < 0) of an open reader into
+    /// `out` (`size` bytes, terminated); returns the length it has, which may exceed size - 1,
+    /// or -1 when there is no such channel or attribute.
+    int (*describe)(void* reader, int c, const char* name, char* out, size_t size);
     /// Opens `path` for filtered sampling through OpenImageIO's texture cache (read again if
     /// it changed since an earlier open) and fills *info; *texture lives as long as the process.
     int (*texture_open)(const char* path, SheafImageInfo* info, const void** texture,

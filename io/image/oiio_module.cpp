@@ -48,6 +48,11 @@ void fill_info(const OIIO::ImageSpec& spec, SheafImageInfo* info) {
     case OIIO::TypeDesc::FLOAT: info->type = SHEAF_PIXEL_FLOAT; break;
     default: info->type = SHEAF_PIXEL_OTHER;
     }
+    info->x = spec.x, info->y = spec.y;
+    info->full_width = spec.full_width, info->full_height = spec.full_height;
+    info->all_float = 1;
+    for (int c = 0; c < spec.nchannels; ++c)
+        info->all_float &= spec.channelformat(c) == OIIO::TypeDesc::FLOAT ? 1 : 0;
     std::snprintf(info->colorspace, sizeof info->colorspace, "%s",
                   spec.get_string_attribute("oiio:ColorSpace").c_str());
 }
@@ -73,6 +78,10 @@ int write_image(const SheafImageWrite* im, char* error, size_t size) {
         } else {
             for (int c = 0; c < im->channels; ++c)
                 spec.channelformats.push_back(type_desc(im->types[c]));
+        }
+        if (im->full_width > 0 && im->full_height > 0) {
+            spec.x = im->x, spec.y = im->y;
+            spec.full_width = im->full_width, spec.full_height = im->full_height;
         }
         if (im->alpha_channel >= 0) spec.alpha_channel = im->alpha_channel;
         if (im->z_channel >= 0) spec.z_channel = im->z_channel;
@@ -111,6 +120,25 @@ int open_image(const char* path, SheafImageInfo* info, void** reader, char* erro
 }
 
 void close_image(void* reader) { delete static_cast<OIIO::ImageInput*>(reader); }
+
+int describe_image(void* reader, int c, const char* name, char* out, size_t size) {
+    try {
+        const OIIO::ImageSpec& spec = static_cast<OIIO::ImageInput*>(reader)->spec();
+        std::string text;
+        if (c >= 0) {
+            if (c >= spec.nchannels) return -1;
+            text = spec.channel_name(c);
+        } else {
+            const OIIO::ParamValue* p = spec.find_attribute(name, OIIO::TypeDesc::STRING);
+            if (!p) return -1;
+            text = p->get_string();
+        }
+        if (out && size > 0) std::snprintf(out, size, "%s", text.c_str());
+        return int(text.size());
+    } catch (...) {
+        return -1;
+    }
+}
 
 int read_image(void* reader, int channels, float* out, char* error, size_t size) {
     std::unique_ptr<OIIO::ImageInput> in(static_cast<OIIO::ImageInput*>(reader));
@@ -170,7 +198,8 @@ int texture_sample(const void* texture, float s, float t, int channels, float* o
 const SheafImageModule kModule = {
     SHEAF_IMAGE_MODULE_ABI, sheaf_image_layout(), "OpenImageIO " OIIO_VERSION_STRING,
     write_image,            open_image,           read_image,
-    close_image,            texture_open,         texture_sample,
+    close_image,            describe_image,       texture_open,
+    texture_sample,
 };
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "text_out.h"
 
 #include "core/base/error.h"
+#include "core/frame/assemble.h"
 #include "io/image/image_io.h"
 
 #include <algorithm>
@@ -40,6 +41,52 @@ SHEAF_API SheafError sheafFrameGetSize(SheafFrame frame, int* width, int* height
         require(height, "height");
         *width = f.width;
         *height = f.height;
+    });
+}
+
+SHEAF_API SheafError sheafFrameGetRegion(SheafFrame frame, int* x, int* y, int* full_width,
+                                         int* full_height) {
+    return barrier([&] {
+        const sheaf::Frame& f = frame_of(frame);
+        require(x, "x");
+        require(y, "y");
+        require(full_width, "full_width");
+        require(full_height, "full_height");
+        *x = f.x;
+        *y = f.y;
+        *full_width = f.full_width > 0 ? f.full_width : f.width;
+        *full_height = f.full_height > 0 ? f.full_height : f.height;
+    });
+}
+
+SHEAF_API SheafError sheafFrameLoadImage(const char* path, SheafFrame* out) {
+    return barrier([&] {
+        require(out, "out");
+        *out = nullptr;
+        auto frame = std::make_unique<SheafFrameT>();
+        const char* p = require(path, "path");
+        try {
+            frame->frame = sheaf::read_frame_image(p);
+        } catch (const sheaf::RenderError& e) {
+            throw IoError(e.what());
+        }
+        *out = frame.release();
+    });
+}
+
+SHEAF_API SheafError sheafFrameAssemble(const SheafFrame* parts, size_t count, SheafFrame* out) {
+    return barrier([&] {
+        require(out, "out");
+        *out = nullptr;
+        if (count > 0) require(parts, "parts");
+        std::vector<const sheaf::Frame*> frames;
+        for (size_t i = 0; i < count; ++i) {
+            if (!parts[i]) throw InvalidArgument("parts[" + std::to_string(i) + "] is null");
+            frames.push_back(&frame_of(parts[i]));
+        }
+        auto frame = std::make_unique<SheafFrameT>();
+        frame->frame = sheaf::assemble_frame(frames);
+        *out = frame.release();
     });
 }
 

@@ -118,6 +118,21 @@ SHEAF_API SheafError sheafRendererGetString(SheafRenderer renderer, const char* 
     });
 }
 
+SHEAF_API SheafError sheafRendererGetEffective(SheafRenderer renderer, SheafScene scene,
+                                               const char* key, char* buf, size_t size,
+                                               size_t* needed) {
+    return barrier([&] {
+        const SheafRendererT& r = renderer_of(renderer);
+        const std::string k = require(key, "key");
+        const std::shared_ptr<const sheaf::PreparedScene> prepared =
+            require(scene, "scene")->commit();
+        if (!sheaf::find_setting(k)) r.settings.get(k); // throws naming the unknown key
+        for (const auto& [name, value] :
+             sheaf::RenderSettings::effective(r.settings, prepared->settings))
+            if (name == k) return copy_text(value, buf, size, needed);
+    });
+}
+
 SHEAF_API SheafError sheafRendererLoadPreset(SheafRenderer renderer, const char* name_or_path) {
     return barrier([&] {
         SheafRendererT& r = renderer_of(renderer);

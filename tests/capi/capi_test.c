@@ -463,6 +463,93 @@ static void test_crsh_matches_brute(void) {
     OK(sheafSceneRelease(scene));
 }
 
+/* ---- Regions: parts of a frame saved, read back and put together ---- */
+
+static void test_regions(void) {
+    enum { W = 24, H = 18 };
+    SheafScene scene = NULL;
+    SheafRenderer r = NULL;
+    SheafFrame whole = NULL, parts[3] = {NULL, NULL, NULL}, loaded[3] = {NULL, NULL, NULL};
+    SheafFrame merged = NULL, bad = NULL, half = NULL;
+    const float plain = 0.5f;
+    const char* files[3] = {"capi_test_part0.exr", "capi_test_part1.exr", "capi_test_part2.exr"};
+    /* Three strips of rows: 0..6, 7..12, 13..17. */
+    const int y0[3] = {0, 7, 13}, rows[3] = {7, 6, 5};
+    int i, x = -1, y = -1, fw = 0, fh = 0, w = 0, h = 0;
+    double parts_stat = 0;
+
+    OK(sheafSceneNew(&scene));
+    OK(sheafSceneLoadBuiltin(scene, "office"));
+    OK(sheafRendererNew(&r));
+    OK(sheafRendererSetInt(r, "width", W));
+    OK(sheafRendererSetInt(r, "height", H));
+    OK(sheafRendererSetInt(r, "aa.samples", 2));
+    OK(sheafRendererSetString(r, "output.exr", "float"));
+    OK(sheafRender(r, scene, &whole));
+    for (i = 0; i < 3; ++i) {
+        OK(sheafRendererSetInt(r, "region.y", y0[i]));
+        OK(sheafRendererSetInt(r, "region.height", rows[i]));
+        OK(sheafRender(r, scene, &parts[i]));
+        if (!parts[i]) continue;
+        OK(sheafFrameGetSize(parts[i], &w, &h));
+        OK(sheafFrameGetRegion(parts[i], &x, &y, &fw, &fh));
+        CHECK(w == W && h == rows[i] && x == 0 && y == y0[i] && fw == W && fh == H,
+              "part %d: %dx%d at (%d, %d) of %dx%d", i, w, h, x, y, fw, fh);
+        OK(sheafFrameSaveImage(parts[i], files[i]));
+        OK(sheafFrameLoadImage(files[i], &loaded[i]));
+    }
+    /* Out of order: the parts say where they go. */
+    {
+        SheafFrame order[3];
+        order[0] = loaded[2], order[1] = loaded[0], order[2] = loaded[1];
+        OK(sheafFrameAssemble(order, 3, &merged));
+    }
+    if (whole && merged) {
+        float* a = (float*)malloc(sizeof(float) * 4 * W * H);
+        float* b = (float*)malloc(sizeof(float) * 4 * W * H);
+        OK(sheafFrameGetRegion(merged, &x, &y, &fw, &fh));
+        CHECK(x == 0 && y == 0 && fw == W && fh == H, "merged at (%d, %d) of %dx%d", x, y, fw, fh);
+        OK(sheafFrameGetPass(whole, "combined", a, (size_t)4 * W * H));
+        OK(sheafFrameGetPass(merged, "combined", b, (size_t)4 * W * H));
+        CHECK(memcmp(a, b, sizeof(float) * 4 * W * H) == 0,
+              "the parts saved, read back and put together differ from the whole frame");
+        OK(sheafFrameGetPass(whole, "depth", a, (size_t)W * H));
+        OK(sheafFrameGetPass(merged, "depth", b, (size_t)W * H));
+        CHECK(memcmp(a, b, sizeof(float) * W * H) == 0, "the merged depth pass differs");
+        OK(sheafFrameGetStatByName(merged, "frame.parts", &parts_stat));
+        CHECK(parts_stat == 3, "frame.parts %g", parts_stat);
+        free(a);
+        free(b);
+    }
+    /* Two parts leave rows uncovered; a missing file; a half-float EXR. */
+    expect_error(sheafFrameAssemble(loaded, 2, &bad), SHEAF_ERROR_RENDER,
+                 "sheafFrameAssemble of two of three parts", "uncovered", "(0, 13)");
+    expect_error(sheafFrameLoadImage("capi_test_no_such_part.exr", &bad), SHEAF_ERROR_IO,
+                 "sheafFrameLoadImage of a missing file", "capi_test_no_such_part.exr", NULL);
+    OK(sheafRendererSetString(r, "output.exr", "half"));
+    OK(sheafRender(r, scene, &half));
+    if (half) {
+        OK(sheafFrameSaveImage(half, "capi_test_half.exr"));
+        expect_error(sheafFrameLoadImage("capi_test_half.exr", &bad), SHEAF_ERROR_IO,
+                     "sheafFrameLoadImage of a half-float EXR", "32-bit floats", "output.exr=float");
+        sheafFrameRelease(half);
+    }
+    OK(sheafWriteImage("capi_test_plain.exr", 1, 1, 1, &plain, 0));
+    expect_error(sheafFrameLoadImage("capi_test_plain.exr", &bad), SHEAF_ERROR_IO,
+                 "sheafFrameLoadImage of an EXR not written from a frame", "sheaf:settings", NULL);
+    expect_error(sheafFrameAssemble(NULL, 1, &bad), SHEAF_ERROR_INVALID_ARGUMENT,
+                 "sheafFrameAssemble NULL parts", "parts", NULL);
+    CHECK(bad == NULL, "a failed call returned a frame");
+    for (i = 0; i < 3; ++i) {
+        if (parts[i]) sheafFrameRelease(parts[i]);
+        if (loaded[i]) sheafFrameRelease(loaded[i]);
+    }
+    if (merged) sheafFrameRelease(merged);
+    if (whole) sheafFrameRelease(whole);
+    OK(sheafRendererRelease(r));
+    OK(sheafSceneRelease(scene));
+}
+
 /* ---- sheafWriteImage ---- */
 
 /* Reads the first `n` bytes of a file; returns how many were read (0 when it cannot be opened). */
@@ -804,6 +891,7 @@ int main(void) {
     test_render_scene();
     test_crsh_matches_brute();
     test_write_image();
+    test_regions();
     test_scene_files();
     test_pov_animation();
     test_reader_limits();

@@ -266,6 +266,12 @@ SHEAF_API SheafError sheafRendererUnset(SheafRenderer renderer, const char* key)
  * bytes including the NUL; *needed (when not NULL) = length + 1; buf may be NULL when size is 0. */
 SHEAF_API SheafError sheafRendererGetString(SheafRenderer renderer, const char* key, char* buf,
                                             size_t size, size_t* needed);
+/* The value a render of `scene` with `renderer` uses: the renderer's explicit value, else the
+ * scene's own (what its file set), else the default. Commits the scene when needed.
+ * snprintf-style, as sheafRendererGetString. */
+SHEAF_API SheafError sheafRendererGetEffective(SheafRenderer renderer, SheafScene scene,
+                                               const char* key, char* buf, size_t size,
+                                               size_t* needed);
 /* Applies every value of a preset: a name (NAME.xml in $SHEAF_PRESET_PATH, ':'-separated, then
  * <libdir>/../share/sheaf/presets) or a path (containing '/' or ending in .xml). */
 SHEAF_API SheafError sheafRendererLoadPreset(SheafRenderer renderer, const char* name_or_path);
@@ -292,6 +298,24 @@ SHEAF_API SheafError sheafFrameRetain(SheafFrame frame);
 SHEAF_API SheafError sheafFrameRelease(SheafFrame frame);
 
 SHEAF_API SheafError sheafFrameGetSize(SheafFrame frame, int* width, int* height);
+/* Where the frame's image lies in the whole frame: its first column *x and row *y, and the
+ * whole frame's size. A frame rendered with the region.* settings holds only that part (its
+ * size is sheafFrameGetSize's); otherwise 0, 0 and the frame's own size. Every pixel of a part
+ * equals the same pixel of the whole frame, so parts put together give it exactly. */
+SHEAF_API SheafError sheafFrameGetRegion(SheafFrame frame, int* x, int* y, int* full_width,
+                                         int* full_height);
+/* Reads back a frame saved by sheafFrameSaveImage as OpenEXR with output.exr=float: its
+ * passes, its place in the whole frame (the file's data window), settings and statistics.
+ * *out receives a new reference. Fails naming the file when it is not such a frame (a half
+ * float EXR does not hold the frame's values). */
+SHEAF_API SheafError sheafFrameLoadImage(const char* path, SheafFrame* out);
+/* Puts the parts of one frame (rendered with region.* settings, in any order) together into
+ * the whole frame: every pass they keep, their settings without region.*, their statistics
+ * summed (frame.* and scene.* the whole frame's, memory.* the largest part's; frame.parts
+ * counts them). The result equals the frame rendered in one piece. Fails naming the part when
+ * parts are of different frames or settings, overlap, or leave pixels uncovered. *out
+ * receives a new reference. */
+SHEAF_API SheafError sheafFrameAssemble(const SheafFrame* parts, size_t count, SheafFrame* out);
 /* Copies a pass, top row first: "combined" (4 floats per pixel, scene-linear RGBA), "depth" (1,
  * +inf where nothing was hit), "normal" (3), "albedo" (3), "object_id" (1, -1 where nothing was
  * hit), "tests" (1, the exact ray-primitive tests of the pixel's secondary rays: where the

@@ -42,7 +42,7 @@ std::string number(double v) {
     if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 9.0e15)
         std::snprintf(buf, sizeof buf, "%.0f", v);
     else if (std::isfinite(v))
-        std::snprintf(buf, sizeof buf, "%.6g", v);
+        std::snprintf(buf, sizeof buf, "%.9g", v);
     else
         std::snprintf(buf, sizeof buf, "null");
     return buf;

@@ -7,10 +7,17 @@
 
 namespace render {
 
+namespace {
+std::string g_last_message; // the last error() printed, for a farm task's failure record
+} // namespace
+
 int error(int code, const std::string& message) {
     std::cerr << "render: error: " << message << "\n";
+    g_last_message = message;
     return code;
 }
+
+const std::string& last_printed_error() { return g_last_message; }
 
 std::string last_error() {
     const char* message = nullptr;

@@ -18,6 +18,9 @@ constexpr int kOk = 0, kUsage = 1, kScene = 2, kRender = 3;
 /// Prints "render: error: MESSAGE" on stderr and returns `code`.
 int error(int code, const std::string& message);
 
+/// The message the last error() printed (empty when none).
+const std::string& last_printed_error();
+
 /// The message of the C ABI's last error on this thread.
 std::string last_error();
 

@@ -31,6 +31,9 @@ POV-Ray switches (translated before parsing; no space between switch and value):
                    (render01.png ... render24.png); the scene's clock runs from +KI<v> (0)
                    to +KF<v> (1); +KC cyclic; +SF<n> +EF<n> render a subset of the frames
   +K0.5            the clock of a single image
+  +SR0.5 +ER1.0    a part of the image: start/end row (+SR +ER) and column (+SC +EC), each
+                   a number from 1 or a fraction from 0.0 to 1.0 (--start-row ...); the
+                   image written holds that part only
   scene.ini        POV-Ray's .ini file in place of the scene (also FILE.ini[Section]); its
                    Key=Value options (Width=, Input_File_Name=, Initial_Frame=, Declare= ...)
                    are also taken on the command line
@@ -50,6 +53,18 @@ Examples:
   render --sweep hierarchy.depth=1..4 hierarchy.arity=2,4,8,16 builtin:office --report sw
                                                  the grid's tests and times, the best named
   render scene.pov +KFI1 +KFF24 +Oframe.png      frame01.png ... frame24.png
+  render scene.pov +KFI1 +KFF24 +SF2 --frame-step 4
+                                                 frames 2, 6, 10, ... (one machine of four)
+  render scene.pov --tile 3/16 --set output.exr=float -o t3.exr
+                                                 tile 3 of a 4x4 grid, as an OpenEXR part
+  render --merge t*.exr -o frame.png             the tiles put together: the whole frame
+  render scene.pov +SR0.5 +ER1.0 -o lower.png    the lower half of the image (POV-Ray's
+                                                 +SR +ER +SC +EC: rows/columns or fractions)
+  render scene.pov -W 3840 -H 2160 --farm slurm --farm-tiles 16 --farm-dir /shared/job1 \
+      -o /shared/frame.png                       16 tiles as a Slurm job array, merged
+  render scene.pov +KFI1 +KFF240 --farm slurm --farm-dir /shared/anim --farm-throttle 32
+  render --farm-status --farm-dir /shared/job1 --farm-wait
+                                                 tasks done, running, failed; time left
   render p_skies.ini                             the .ini's scene, size and frames
   render --list-settings                         every key, its default and what it allows
 See docs/cli.md.)";
@@ -164,8 +179,92 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
                    "what a scene uses of each)")
         ->allow_extra_args(false)
         ->type_name("NAME=N");
+    std::string start_row, end_row, start_column, end_column, tile;
+    CLI::Option* sr = app.add_option("--start-row", start_row,
+                                     "render only a part of the image, from this row: a row from "
+                                     "1, or a fraction of the height from 0.0 to 1.0 (+SR)")
+                          ->type_name("ROW");
+    CLI::Option* er = app.add_option("--end-row", end_row,
+                                     "up to this row, included: a row, or a fraction 0.0 to 1.0 "
+                                     "(+ER)")
+                          ->type_name("ROW");
+    CLI::Option* sc = app.add_option("--start-column", start_column,
+                                     "from this column: a column from 1, or a fraction (+SC)")
+                          ->type_name("COLUMN");
+    CLI::Option* ec = app.add_option("--end-column", end_column,
+                                     "up to this column, included: a column, or a fraction (+EC)")
+                          ->type_name("COLUMN");
+    CLI::Option* tile_opt =
+        app.add_option("--tile", tile,
+                       "render tile I of N (from 1; N tiles in a grid as square as N allows, "
+                       "or I/CxR): the image holds that part only; render --merge puts the "
+                       "tiles back together, equal to the whole frame")
+            ->type_name("I/N");
+    CLI::Option* step =
+        app.add_option("--frame-step", o.frame_step,
+                       "render every Nth frame of the animation from the first (interleaving "
+                       "machines: +SF1, +SF2 ... with --frame-step N)")
+            ->check(CLI::Range(1, 1000000))
+            ->type_name("N");
+    CLI::Option* merge =
+        app.add_option("--merge", o.merge,
+                       "put the parts of a frame (OpenEXR files written with --tile or "
+                       "+SR/+ER/+SC/+EC and output.exr=float) together into -o FILE")
+            ->allow_extra_args(true)
+            ->type_name("PART.exr...");
+    CLI::Option* farm =
+        app.add_option("--farm", o.farm,
+                       "run the render, animation (a task per --farm-chunk frames), tiled frame "
+                       "(--farm-tiles) or --sweep (a task per point) on a cluster: slurm (a job "
+                       "array and a merge job after it); see docs/farm.md")
+            ->type_name("SCHEDULER");
+    CLI::Option* farm_dir = app.add_option(
+        "--farm-dir", o.farm_dir,
+        "the job's shared folder: its plan, the tasks' records and parts (--farm), or the job "
+        "--farm-task/--farm-merge/--farm-status work on");
+    farm_dir->type_name("DIR");
+    CLI::Option* farm_tiles =
+        app.add_option("--farm-tiles", o.farm_tiles,
+                       "with --farm: cut the frame into N tiles (or CxR), a task each; the merge "
+                       "job puts them together, equal to the whole frame")
+            ->type_name("N");
+    CLI::Option* farm_chunk =
+        app.add_option("--farm-chunk", o.farm_chunk, "with --farm: frames per task (1)")
+            ->check(CLI::Range(1, 1000000))
+            ->type_name("N");
+    CLI::Option* farm_throttle =
+        app.add_option("--farm-throttle", o.farm_throttle,
+                       "with --farm: at most N tasks running at once (Slurm's --array=...%N)")
+            ->check(CLI::Range(1, 1000000))
+            ->type_name("N");
+    CLI::Option* farm_sbatch =
+        app.add_option("--farm-sbatch", o.farm_sbatch,
+                       "with --farm slurm: more sbatch options for every job, e.g. "
+                       "\"--partition=gpu --gres=gpu:1 --time=2:00:00\"")
+            ->type_name("OPTIONS");
+    CLI::Option* farm_print =
+        app.add_flag("--farm-print", o.farm_print,
+                     "with --farm: write the plan, print the batch scripts and the commands that "
+                     "submit them; submit nothing");
+    int farm_task_index = 0;
+    CLI::Option* farm_task = app.add_option("--farm-task", farm_task_index,
+                                            "run task I (from 1) of the job in --farm-dir; "
+                                            "skipped when its outputs are complete")
+                                 ->type_name("I");
+    CLI::Option* farm_merge_opt =
+        app.add_flag("--farm-merge", o.farm_merge,
+                     "put the job's tiles (or sweep results) together once every task is done");
+    CLI::Option* farm_status_opt = app.add_flag(
+        "--farm-status", o.farm_status,
+        "the job's tasks: done, running, failed, waiting, and the time left");
+    CLI::Option* farm_wait = app.add_flag(
+        "--farm-wait", o.farm_wait,
+        "with --farm or --farm-status: show the progress until the job ends (exit 3 on a failed "
+        "task)");
     for (CLI::Option* opt : {input_opt, output, default_out, w, h, t, preset, stats_json, report,
-                             fi, ff, ic, fc, sf, ef, clock_opt})
+                             fi, ff, ic, fc, sf, ef, clock_opt, sr, er, sc, ec, tile_opt, step,
+                             farm, farm_dir, farm_tiles, farm_chunk, farm_throttle, farm_sbatch,
+                             farm_task})
         opt->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     bool no_display = false;
     app.add_flag("--no-display", no_display, "accepted for POV-Ray's -D; does nothing");
@@ -178,12 +277,16 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         ->excludes(stats_json)
         ->excludes(output);
     sweep->excludes(stats)->excludes(stats_json)->excludes(output);
+    farm->excludes(compare)->excludes(merge)->excludes(check)->excludes(stats)->excludes(stats_json);
     input_opt->excludes(scene);
     check->excludes(compare)->excludes(sweep)->excludes(stats)->excludes(stats_json)->excludes(output);
+    merge->excludes(compare)->excludes(sweep)->excludes(check)->excludes(scene)->excludes(input_opt);
+    for (CLI::Option* part : {sr, er, sc, ec, tile_opt})
+        part->excludes(compare)->excludes(sweep)->excludes(merge);
     try {
         std::reverse(args.begin(), args.end()); // CLI11 takes the arguments reversed
         app.parse(args);
-        if (report->count() && !compare->count() && !sweep->count())
+        if (report->count() && !compare->count() && !sweep->count() && !farm->count())
             throw CLI::ValidationError("--report", "needs --compare or --sweep");
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
@@ -201,6 +304,37 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
     if (ef->count()) o.subset_end = subset_end;
     if (clock_opt->count()) o.clock = clock;
     if (cyclic->count()) o.cyclic = cyclic_flag;
+    if (sr->count()) o.region.start_row = start_row;
+    if (er->count()) o.region.end_row = end_row;
+    if (sc->count()) o.region.start_column = start_column;
+    if (ec->count()) o.region.end_column = end_column;
+    if (tile_opt->count()) o.region.tile = tile;
+    try {
+        check_region_request(o.region);
+    } catch (const RegionError& e) {
+        return error(kUsage, std::string(e.what()) + " (see render --help)");
+    }
+    if (farm_task->count()) o.farm_task = farm_task_index;
+    const int farm_steps = int(farm->count() > 0) + int(farm_task->count() > 0) +
+                           int(farm_merge_opt->count() > 0) + int(farm_status_opt->count() > 0);
+    if (farm_steps > 1)
+        return error(kUsage, "--farm, --farm-task, --farm-merge and --farm-status are separate "
+                             "steps: give one (see render --help)");
+    if (farm_steps == 1 && !farm_dir->count())
+        return error(kUsage, "the farm's steps need --farm-dir DIR, the job's shared folder "
+                             "(see render --help)");
+    if (farm_steps == 0)
+        for (CLI::Option* only : {farm_dir, farm_tiles, farm_chunk, farm_throttle, farm_sbatch,
+                                  farm_print, farm_wait})
+            if (only->count())
+                return error(kUsage, only->get_name() + " goes with --farm (see render --help)");
+    if (farm->count() && o.sweep.size() > 0 && !report->count())
+        return error(kUsage, "--farm with --sweep needs --report DIR, where the merge job writes "
+                             "the results (see render --help)");
+    if (report->count() && farm->count() && o.sweep.empty())
+        return error(kUsage, "--report needs --compare or --sweep (see render --help)");
+    if (merge->count() && !output->count())
+        return error(kUsage, "--merge needs -o FILE, the whole frame to write (see render --help)");
     if (o.final_frame.value_or(1) < o.initial_frame.value_or(1))
         return error(kUsage, "--final-frame " + std::to_string(o.final_frame.value_or(1)) +
                                  " is below --initial-frame " +

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "capi_util.h"
+#include "region.h"
 
 #include <algorithm>
 #include <optional>
@@ -35,6 +36,15 @@ struct Options {
     std::optional<bool> cyclic;
     std::vector<std::string> declares;
     std::vector<std::string> limits; // NAME=N
+    RegionRequest region;            ///< +SR +ER +SC +EC, --tile: a part of the image
+    int frame_step = 1;              ///< --frame-step: every Nth frame of the subset
+    std::vector<std::string> merge;  ///< --merge: parts to put together into -o
+    /// A farm job (farm.h): --farm SCHEDULER plans and submits it into farm_dir; --farm-task,
+    /// --farm-merge and --farm-status run its steps.
+    std::string farm, farm_dir, farm_tiles, farm_sbatch;
+    bool farm_print = false, farm_merge = false, farm_status = false, farm_wait = false;
+    int farm_throttle = 0, farm_chunk = 1;
+    std::optional<int> farm_task;
 
     /// Whether the frames differ (POV-Ray renders a sequence when final_frame != initial_frame).
     bool sequence() const { return initial_frame.value_or(1) != final_frame.value_or(1); }
@@ -45,6 +55,12 @@ struct Options {
     }
     int last_frame() const {
         return std::min(final_frame.value_or(1), subset_end.value_or(final_frame.value_or(1)));
+    }
+    /// The frame numbers to render, in order: first_frame() to last_frame() by frame_step.
+    std::vector<int> frame_numbers() const {
+        std::vector<int> out;
+        for (int f = first_frame(); f <= last_frame(); f += frame_step) out.push_back(f);
+        return out;
     }
 };
 

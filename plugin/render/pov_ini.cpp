@@ -138,8 +138,6 @@ bool unused_but_harmless(const std::string& key, const std::string& value) {
     if (key == "field_render" || key == "grayscale_output" || key == "output_alpha" ||
         key == "radiosity_from_file" || key == "radiosity_to_file")
         return off;
-    if (key == "start_row" || key == "start_column") return std::strtod(v.c_str(), nullptr) == 0;
-    if (key == "end_row" || key == "end_column") return std::strtod(v.c_str(), nullptr) == 1;
     if (key == "quality") return std::strtod(v.c_str(), nullptr) >= 9;
     return false;
 }
@@ -189,6 +187,11 @@ bool translate_ini_option(const std::string& word, const std::string& where,
     } else if (key == "cyclic_animation") {
         out.push_back(parse_bool(shown, value, where) ? "--cyclic-animation"
                                                       : "--no-cyclic-animation");
+    } else if (key == "start_row" || key == "end_row" || key == "start_column" ||
+               key == "end_column") {
+        std::string option = "--" + key;
+        std::replace(option.begin(), option.end(), '_', '-');
+        out.insert(out.end(), {option, number(shown, value, where)});
     } else if (key == "declare") {
         out.insert(out.end(), {"--declare", value});
     } else if (silent_keys().count(key)) {
@@ -196,9 +199,7 @@ bool translate_ini_option(const std::string& word, const std::string& where,
     } else if (unused_but_harmless(key, value)) {
         // at its default: nothing to say
     } else if (key == "field_render" || key == "grayscale_output" || key == "output_alpha" ||
-               key == "radiosity_from_file" || key == "radiosity_to_file" || key == "start_row" ||
-               key == "start_column" || key == "end_row" || key == "end_column" ||
-               key == "quality") {
+               key == "radiosity_from_file" || key == "radiosity_to_file" || key == "quality") {
         std::cerr << "render: warning: " << where << ": " << shown << "=" << value
                   << " is not used (Sheaf renders the whole image at full quality)\n";
     } else {

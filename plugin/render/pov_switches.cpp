@@ -121,20 +121,34 @@ bool translate_switch(const std::string& word, std::vector<std::string>& out) {
         translate_clock_switch(word, out);
         return true;
     case 'S':
-    case 'E':
-        if (rest.empty() || std::toupper(static_cast<unsigned char>(rest[0])) != 'F') break;
+    case 'E': {
+        const char what = rest.empty() ? 0 : char(std::toupper(static_cast<unsigned char>(rest[0])));
+        if (what == 'R' || what == 'C') { // +SR +ER +SC +EC: a part of the image
+            if (!is_number(rest.substr(1)) || rest[1] == '-')
+                throw SwitchError("POV-Ray switch '" + word + "': expected +" + letter + what +
+                                  " followed by a " + (what == 'R' ? "row" : "column") +
+                                  " (from 1) or a fraction (0.0 to 1.0), e.g. +" + letter + what +
+                                  (letter == 'S' ? "0.5" : "1.0"));
+            out.insert(out.end(), {std::string("--") + (letter == 'S' ? "start-" : "end-") +
+                                       (what == 'R' ? "row" : "column"),
+                                   rest.substr(1)});
+            return true;
+        }
+        if (what != 'F') break;
         if (!is_integer(rest.substr(1)))
             throw SwitchError("POV-Ray switch '" + word + "': expected +" + letter +
                               "F followed by a frame number, e.g. +" + letter + "F2");
         out.insert(out.end(),
                    {letter == 'S' ? "--subset-start-frame" : "--subset-end-frame", rest.substr(1)});
         return true;
+    }
     default:
         break;
     }
     throw SwitchError("unknown POV-Ray switch '" + word +
                       "'; known: +W<n> +H<n> +O<file> +I<file> +A[threshold] -A +L<dir> +D -D "
-                      "+K<clock> +KFI<n> +KFF<n> +KI<clock> +KF<clock> +KC -KC +SF<n> +EF<n>");
+                      "+K<clock> +KFI<n> +KFF<n> +KI<clock> +KF<clock> +KC -KC +SF<n> +EF<n> "
+                      "+SR<r> +ER<r> +SC<c> +EC<c>");
 }
 
 std::vector<std::string> translate_args(const std::vector<std::string>& args) {

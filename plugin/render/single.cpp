@@ -5,6 +5,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <unistd.h>
+#include <cstdlib>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -14,18 +17,6 @@
 namespace render {
 
 namespace {
-
-/// FILE.EXT with the frame number before the extension, zero-padded to the digits of the last
-/// frame, as POV-Ray names an animation's images (render.png, frame 3 of 1..12: render03.png).
-std::string numbered(const std::string& file, int frame, int last) {
-    const size_t slash = file.find_last_of('/');
-    size_t dot = file.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) dot = file.size();
-    std::string n = std::to_string(frame);
-    const size_t digits = std::to_string(last).size();
-    if (frame >= 0 && n.size() < digits) n.insert(0, digits - n.size(), '0');
-    return file.substr(0, dot) + n + file.substr(dot);
-}
 
 /// Milliseconds since `start`.
 double ms_since(std::chrono::steady_clock::time_point start) {
@@ -38,7 +29,7 @@ int write_outputs(SheafFrame frame, const Options& o, const std::string& output,
                   const std::string& stats_json, double scene_ms, double ms) {
     int w = 0, h = 0;
     sheafFrameGetSize(frame, &w, &h);
-    if (sheafFrameSaveImage(frame, output.c_str()) != SHEAF_OK) return error(kRender, last_error());
+    if (int rc = save_image(frame, output)) return rc;
     if (!o.quiet) {
         char line[96];
         std::snprintf(line, sizeof line, "%dx%d, scene %.1f ms, frame %.1f ms", w, h, scene_ms, ms);
@@ -59,20 +50,84 @@ int write_outputs(SheafFrame frame, const Options& o, const std::string& output,
     return kOk;
 }
 
-/// The frames to read: the sequence's (cut to the subset), or one still (no frame number).
-std::vector<std::optional<int>> frames(const Options& o) {
-    if (!o.sequence()) return {std::nullopt};
-    std::vector<std::optional<int>> out;
-    for (int f = o.first_frame(); f <= o.last_frame(); ++f) out.push_back(f);
-    return out;
+} // namespace
+
+std::string numbered(const std::string& file, int frame, int last) {
+    const size_t slash = file.find_last_of('/');
+    size_t dot = file.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) dot = file.size();
+    std::string n = std::to_string(frame);
+    const size_t digits = std::to_string(last).size();
+    if (frame >= 0 && n.size() < digits) n.insert(0, digits - n.size(), '0');
+    return file.substr(0, dot) + n + file.substr(dot);
 }
 
-/// The last frame number as the scene sees it (one more when cyclic), for the names' digits.
+std::string partial_name(const std::string& file) {
+    const size_t slash = file.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "" : file.substr(0, slash + 1);
+    const std::string base = file.substr(dir.size());
+    const size_t dot = base.find_last_of('.');
+    const std::string ext = dot == std::string::npos ? "" : base.substr(dot);
+    return dir + "." + base + ".partial-" + std::to_string(getpid()) + ext;
+}
+
+int save_image(SheafFrame frame, const std::string& output) {
+    // Written under a temporary name, then renamed: a file of that name is always whole.
+    const std::string partial = partial_name(output);
+    if (sheafFrameSaveImage(frame, partial.c_str()) != SHEAF_OK) {
+        std::remove(partial.c_str());
+        // The message names the temporary file; say the one asked for.
+        std::string shown = last_error();
+        for (size_t at; (at = shown.find(partial)) != std::string::npos;)
+            shown.replace(at, partial.size(), output);
+        return error(kRender, shown);
+    }
+    if (std::rename(partial.c_str(), output.c_str()) != 0) {
+        std::remove(partial.c_str());
+        return error(kRender, output + ": cannot write the file (rename failed)");
+    }
+    return kOk;
+}
+
 int name_digits_frame(const Options& o) {
     return o.final_frame.value_or(1) + (o.cyclic.value_or(false) ? 1 : 0);
 }
 
+namespace {
+
+/// The frames to read: the sequence's (cut to the subset), or one still (no frame number).
+std::vector<std::optional<int>> frames(const Options& o) {
+    if (!o.sequence()) return {std::nullopt};
+    std::vector<std::optional<int>> out;
+    for (int f : o.frame_numbers()) out.push_back(f);
+    return out;
+}
+
 } // namespace
+
+int apply_region(SheafRenderer renderer, SheafScene scene, const RegionRequest& region) {
+    if (!region.any()) return kOk;
+    int size[2] = {0, 0};
+    const char* keys[2] = {"width", "height"};
+    for (int i = 0; i < 2; ++i) {
+        char text[32] = "";
+        if (sheafRendererGetEffective(renderer, scene, keys[i], text, sizeof text, nullptr) !=
+            SHEAF_OK)
+            return error(kScene, last_error());
+        size[i] = std::atoi(text);
+    }
+    PixelRect p;
+    try {
+        p = resolve_region(region, size[0], size[1]);
+    } catch (const RegionError& e) {
+        return error(kUsage, e.what());
+    }
+    const std::pair<const char*, int> values[] = {
+        {"region.x", p.x}, {"region.y", p.y}, {"region.width", p.width}, {"region.height", p.height}};
+    for (const auto& [key, value] : values)
+        if (sheafRendererSetInt(renderer, key, value) != SHEAF_OK) return error(kUsage, last_error());
+    return kOk;
+}
 
 void list_settings() {
     size_t count = 0;
@@ -120,6 +175,7 @@ int run_single(const Options& o) {
         if (int rc = load_scene(raw_scene, scene_source(o, f))) return rc;
         const double scene_ms = ms_since(load_start);
 
+        if (int rc = apply_region(raw_renderer, raw_scene, o.region)) return rc;
         std::string label = scene_label(o.scene);
         if (f) label += " frame " + std::to_string(*f);
         progress.start_run(raw_renderer, int(i), label);

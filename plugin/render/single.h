@@ -12,6 +12,25 @@ int run_single(const Options& o);
 /// 0 when the scene is usable.
 int run_check(const Options& o);
 
+/// Sets the renderer's region.* to the part `region` names of the frame `scene` renders at
+/// (its effective width and height); nothing when it names none. Returns an exit code.
+int apply_region(SheafRenderer renderer, SheafScene scene, const RegionRequest& region);
+
+/// FILE.EXT with the frame number before the extension, zero-padded to the digits of `last`,
+/// as POV-Ray names an animation's images (render.png, frame 3 of 1..12: render03.png).
+std::string numbered(const std::string& file, int frame, int last);
+
+/// The last frame number as the scene sees it (one more when cyclic), for the names' digits.
+int name_digits_frame(const Options& o);
+
+/// Where `file` is written before it is renamed to its name: DIR/.NAME.partial-PID.EXT (the
+/// extension kept: it picks the format).
+std::string partial_name(const std::string& file);
+
+/// Saves the frame to `output` through a temporary file renamed when whole; prints the error
+/// and returns its exit code on failure.
+int save_image(SheafFrame frame, const std::string& output);
+
 /// Prints every setting, its default, what it allows and its help.
 void list_settings();
 

@@ -33,11 +33,23 @@ int check_axes(const std::vector<Axis>& axes) {
 
 } // namespace
 
+std::vector<Axis> sweep_axes(const Options& o) {
+    std::vector<Axis> axes;
+    for (const std::string& spec : o.sweep) axes.push_back(parse_axis(spec));
+    return axes;
+}
+
+std::string point_name(const std::vector<std::pair<std::string, std::string>>& point) {
+    std::string name;
+    for (const auto& [key, value] : point) name += (name.empty() ? "" : " ") + key + "=" + value;
+    return name;
+}
+
 int run_sweep(const Options& o) {
     std::vector<Axis> axes;
     std::vector<std::vector<std::pair<std::string, std::string>>> points;
     try {
-        for (const std::string& spec : o.sweep) axes.push_back(parse_axis(spec));
+        axes = sweep_axes(o);
         points = grid_points(axes);
     } catch (const GridError& e) {
         return error(kUsage, e.what());
@@ -60,8 +72,7 @@ int run_sweep(const Options& o) {
     for (size_t i = 0; i < points.size(); ++i) {
         RunResult& r = results[i];
         r.grid = points[i];
-        for (const auto& [key, value] : r.grid)
-            r.name += (r.name.empty() ? "" : " ") + key + "=" + value;
+        r.name = point_name(r.grid);
         SheafRenderer raw = nullptr;
         if (sheafRendererNew(&raw) != SHEAF_OK) return error(kRender, last_error());
         Renderer renderer(raw);
@@ -75,6 +86,11 @@ int run_sweep(const Options& o) {
         if (rc) return rc;
     }
 
+    return report_sweep(o, axes, results);
+}
+
+int report_sweep(const Options& o, const std::vector<Axis>& axes,
+                 const std::vector<RunResult>& results) {
     if (!o.quiet) std::cerr << backend_summary(results) << "\n";
     const Best best = find_best(results);
     std::cout << sweep_table(results, best) << best_lines(results, best);

@@ -256,6 +256,62 @@ elif [ "$(grep -c '^backend: ' "$OUT/png.err")" != 1 ]; then
 else
     pass "no progress off a terminal, one backend line"
 fi
+# Parts of a frame: --tile I/N and +SR/+ER/+SC/+EC render a part; --merge puts OpenEXR parts
+# (output.exr=float) back together, equal to the whole frame pixel for pixel (idiff).
+mkdir -p "$OUT/tiles"
+T=(builtin:office -W 40 -H 30 +A --set output.exr=float -q)
+expect_rc tile_whole 0 "${T[@]}" -o "$OUT/tiles/whole.exr"
+expect_rc tile_whole_png 0 "${T[@]}" -o "$OUT/tiles/whole.png"
+tiles_ok=1
+for i in 1 2 3 4 5 6 7 8 9; do
+    "$RENDER" "${T[@]}" --tile "$i/9" -o "$OUT/tiles/t$i.exr" >/dev/null 2>&1 || tiles_ok=0
+done
+[ $tiles_ok = 1 ] && pass "--tile 1/9 ... 9/9" || fail "--tile: a tile failed"
+expect_rc tile_merge 0 --merge "$OUT"/tiles/t*.exr -o "$OUT/tiles/merged.png"
+expect_in "$OUT/tile_merge.out" "(40x30, 9 parts)" "--merge writes the whole frame"
+expect_rc tile_merge_exr 0 --merge "$OUT"/tiles/t*.exr -o "$OUT/tiles/merged.exr"
+if command -v idiff >/dev/null; then
+    idiff -a "$OUT/tiles/whole.png" "$OUT/tiles/merged.png" >"$OUT/tiles/idiff_png.out" 2>&1 &&
+        pass "9 tiles merged equal the whole frame (PNG)" ||
+        fail "9 tiles merged differ: $(tail -3 "$OUT/tiles/idiff_png.out")"
+    idiff -a "$OUT/tiles/whole.exr" "$OUT/tiles/merged.exr" >"$OUT/tiles/idiff_exr.out" 2>&1 &&
+        pass "9 tiles merged equal the whole frame (every pass of the EXR)" ||
+        fail "9 tiles merged differ (EXR): $(tail -3 "$OUT/tiles/idiff_exr.out")"
+fi
+# POV-Ray's rows and columns: fractions and pixel numbers (from 1, the end included).
+expect_rc rows_top 0 "${T[@]}" +SR0.0 +ER0.5 -o "$OUT/tiles/top.exr"
+expect_rc rows_bottom 0 "${T[@]}" +SR16 +ER30 +SC1 +EC1.0 -o "$OUT/tiles/bottom.exr"
+expect_rc rows_merge 0 --merge "$OUT/tiles/bottom.exr" "$OUT/tiles/top.exr" -o "$OUT/tiles/rows.exr"
+if command -v idiff >/dev/null; then
+    idiff -a "$OUT/tiles/whole.exr" "$OUT/tiles/rows.exr" >/dev/null 2>&1 &&
+        pass "+SR0.0 +ER0.5 and +SR16 +ER30 make the whole frame" ||
+        fail "+SR/+ER halves differ from the whole frame"
+fi
+expect_rc rows_png 0 builtin:office -W 40 -H 30 +SR0.5 -o "$OUT/tiles/half.png"
+expect_in "$OUT/rows_png.out" "wrote $OUT/tiles/half.png (40x15" "+SR0.5: the image holds the lower half"
+expect_rc rows_empty 1 "${T[@]}" +SR20 +ER10 -o "$OUT/tiles/x.exr"
+expect_in "$OUT/rows_empty.err" "the rows 20 to 10 (+SR +ER) leave nothing of the image" "+SR after +ER is refused"
+expect_rc rows_past 1 "${T[@]}" +EC41 -o "$OUT/tiles/x.exr"
+expect_in "$OUT/rows_past.err" "past the image's 40 columns" "+EC past the image is refused"
+expect_rc rows_bad 1 "${T[@]}" +SRx -o "$OUT/tiles/x.exr"
+expect_in "$OUT/rows_bad.err" "+SRx" "a malformed +SR names itself"
+expect_rc tile_bad 1 "${T[@]}" --tile 10/9 -o "$OUT/tiles/x.exr"
+expect_in "$OUT/tile_bad.err" "there are 9 tiles" "--tile past N is refused"
+expect_rc tile_and_rows 1 "${T[@]}" --tile 1/4 +SR0.5 -o "$OUT/tiles/x.exr"
+expect_in "$OUT/tile_and_rows.err" "give one" "--tile with +SR is refused"
+expect_rc merge_missing 3 --merge "$OUT"/tiles/t[1-8].exr -o "$OUT/tiles/hole.png"
+expect_in "$OUT/merge_missing.err" "uncovered" "a missing tile is named by its pixels"
+expect_rc merge_png 3 --merge "$OUT/tiles/whole.png" -o "$OUT/tiles/x.png"
+expect_in "$OUT/merge_png.err" "32-bit floats" "an 8-bit part is refused"
+expect_rc merge_no_output 1 --merge "$OUT/tiles/t1.exr"
+expect_in "$OUT/merge_no_output.err" "--merge needs -o" "--merge without -o is refused"
+# --frame-step: every Nth frame of the subset, for interleaving machines.
+expect_rc frame_step 0 "$OUT/anim/clock.pov" "${A[@]}" +KFI1 +KFF10 +SF2 --frame-step 4 \
+    -o "$OUT/anim/step.png"
+[ -f "$OUT/anim/step02.png" ] && [ -f "$OUT/anim/step06.png" ] && [ -f "$OUT/anim/step10.png" ] &&
+    [ ! -f "$OUT/anim/step03.png" ] && [ "$(ls "$OUT"/anim/step*.png | wc -l)" = 3 ] &&
+    pass "+SF2 --frame-step 4: frames 2, 6 and 10" || fail "--frame-step: $(ls "$OUT/anim")"
+
 # On a terminal (script(1) gives a pseudo-terminal): the bar with the time left.
 if command -v script >/dev/null; then
     script -qec "'$RENDER' builtin:cornell -W 32 -H 32 -o '$OUT/tty.png'" /dev/null \

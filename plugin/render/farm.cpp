@@ -236,9 +236,10 @@ int run_farm_status(const Options& o, const std::vector<std::string>& jobs) {
 }
 
 int run_farm_submit(const Options& o) {
-    if (o.farm != "slurm")
-        return error(kUsage, "--farm " + o.farm + ": the schedulers known are: slurm (others "
-                                                  "drive render --farm-task, docs/farm.md)");
+    if (o.farm != "slurm" && o.farm != "none")
+        return error(kUsage, "--farm " + o.farm + ": the schedulers known are: slurm, and none "
+                                                  "(the plan and its commands, for any other "
+                                                  "scheduler: docs/farm.md)");
     try {
         const FarmJob job = plan_job(o, o.farm_dir);
         write_or_check_job(job);
@@ -253,6 +254,14 @@ int run_farm_submit(const Options& o) {
                 std::cout << "nothing to do: all " << job.tasks.size() << " tasks of " << job.dir
                           << (job.has_merge() ? " and the merge" : "")
                           << " are complete\n";
+            return kOk;
+        }
+        if (o.farm == "none") { // the commands, one a line, for another scheduler to run
+            const std::string render = program_path();
+            for (int i : waiting)
+                std::cout << render << " --farm-dir " << job.dir << " --farm-task " << i << "\n";
+            if (merge_needed)
+                std::cout << render << " --farm-dir " << job.dir << " --farm-merge\n";
             return kOk;
         }
         const SlurmPlan plan =

@@ -216,7 +216,8 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         app.add_option("--farm", o.farm,
                        "run the render, animation (a task per --farm-chunk frames), tiled frame "
                        "(--farm-tiles) or --sweep (a task per point) on a cluster: slurm (a job "
-                       "array and a merge job after it); see docs/farm.md")
+                       "array and a merge job after it), or none (the plan, and its commands "
+                       "printed for another scheduler); see docs/farm.md")
             ->type_name("SCHEDULER");
     CLI::Option* farm_dir = app.add_option(
         "--farm-dir", o.farm_dir,

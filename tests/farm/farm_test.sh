@@ -145,12 +145,23 @@ check "the status shows the failure" grep -q "1 failed" "$OUT/broken.out"
 expect_rc farm_no_dir 1 builtin:cornell --farm slurm
 expect_in "$OUT/farm_no_dir.err" "--farm-dir" "--farm without --farm-dir is refused"
 expect_rc farm_bad 1 builtin:cornell --farm pbs --farm-dir "$OUT/x"
-expect_in "$OUT/farm_bad.err" "known are: slurm" "an unknown scheduler is named"
+expect_in "$OUT/farm_bad.err" "known are: slurm, and none" "an unknown scheduler is named"
 expect_rc farm_print 0 builtin:cornell --farm slurm --farm-tiles 4 --farm-dir "$OUT/print_job" \
     --farm-print -o "$OUT/print.png" --farm-throttle 2 --farm-sbatch "--partition=gpu --gres=gpu:1"
 expect_in "$OUT/farm_print.out" "--array=1-4%2" "--farm-print shows the throttled array"
 expect_in "$OUT/farm_print.out" "'--gres=gpu:1'" "--farm-sbatch options reach sbatch"
 expect_in "$OUT/farm_print.out" "--dependency=afterok" "the merge waits for the array"
+expect_rc farm_none 0 builtin:cornell -W 16 -H 16 --farm none --farm-tiles 2 --farm-dir "$OUT/none_job" \
+    -o "$OUT/none.png"
+expect_in "$OUT/farm_none.out" "--farm-task 2" "--farm none prints the tasks' commands"
+# Run as another scheduler would: each printed command, then the merge.
+none_ok=1
+while read -r line; do eval "$line" >/dev/null 2>&1 || none_ok=0; done <"$OUT/farm_none.out"
+[ $none_ok = 1 ] && [ -f "$OUT/none.png" ] && pass "the printed commands run the job" || fail "--farm none's commands failed"
+"$RENDER" builtin:cornell -W 16 -H 16 -q -o "$OUT/one/none.png"
+same_pixels "$OUT/one/none.png" "$OUT/none.png" "a job run by hand equals the one-process frame"
+expect_rc farm_status_none 0 --farm-dir "$OUT/none_job" --farm-status
+expect_in "$OUT/farm_status_none.out" "2 tasks: 2 done, 0 running, 0 failed, 0 waiting; merge done" "--farm-status counts the tasks"
 expect_rc farm_other_job 1 builtin:office --farm slurm --farm-tiles 4 --farm-dir "$OUT/print_job" \
     --farm-print -o "$OUT/print.png"
 expect_in "$OUT/farm_other_job.err" "holds another job" "a folder holding another job is refused"

@@ -53,6 +53,15 @@ Frame read_frame_image(const std::string& path) {
     const std::optional<std::string> settings = reader.describe(-1, "sheaf:settings");
     if (!settings)
         throw RenderError(path + ": not a frame written by Sheaf (no sheaf:settings attribute)");
+    // A frame is at most 16384 x 16384 (the width and height settings' range): a larger header
+    // is not a Sheaf frame, and is refused before its pixels are allocated.
+    constexpr int kMaxSide = 16384, kMaxChannels = 64;
+    if (info.width < 1 || info.height < 1 || info.width > kMaxSide || info.height > kMaxSide ||
+        info.channels < 1 || info.channels > kMaxChannels)
+        throw RenderError(path + ": " + std::to_string(info.width) + "x" +
+                          std::to_string(info.height) + " pixels of " +
+                          std::to_string(info.channels) + " channels is not a frame Sheaf wrote "
+                          "(at most 16384x16384, 64 channels)");
     if (!info.all_float)
         throw RenderError(path + ": does not hold the frame's values as 32-bit floats; write "
                                  "parts as .exr with output.exr=float to put them together "

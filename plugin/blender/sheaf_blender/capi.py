@@ -186,6 +186,8 @@ _PROTOTYPES = {
     "sheafFrameRetain": (c_enum, [SheafFrame]),
     "sheafFrameRelease": (c_enum, [SheafFrame]),
     "sheafFrameGetSize": (c_enum, [SheafFrame, POINTER(c_int), POINTER(c_int)]),
+    "sheafFrameGetRegion": (c_enum, [SheafFrame, POINTER(c_int), POINTER(c_int), POINTER(c_int),
+                                     POINTER(c_int)]),
     "sheafFrameGetPass": (c_enum, [SheafFrame, c_char_p, _f, c_size_t]),
     "sheafFrameGetStatCount": (c_enum, [SheafFrame, POINTER(c_size_t)]),
     "sheafFrameGetStat": (c_enum, [SheafFrame, c_size_t, POINTER(c_char_p), POINTER(c_double)]),
@@ -630,6 +632,14 @@ class Frame(_Handle):
         w, h = c_int(), c_int()
         self.lib.check(self.lib.sheafFrameGetSize(self.handle, byref(w), byref(h)))
         return w.value, h.value
+
+    def region(self):
+        """(x, y, full_width, full_height): where the frame lies in the whole image (y from
+        the top); (0, 0, width, height) unless the renderer's region.* asked for a part."""
+        x, y, fw, fh = c_int(), c_int(), c_int(), c_int()
+        self.lib.check(self.lib.sheafFrameGetRegion(self.handle, byref(x), byref(y), byref(fw),
+                                                    byref(fh)))
+        return x.value, y.value, fw.value, fh.value
 
     def get_pass(self, name):
         """The pass as float32 (height, width, channels), top row first."""

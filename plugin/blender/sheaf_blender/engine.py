@@ -3,6 +3,7 @@
 Every failure becomes self.report({'ERROR'}, ...); nothing raised here reaches Blender.
 """
 
+import math
 import re
 import time
 import traceback
@@ -82,10 +83,11 @@ def border_region(scene, width, height):
     r = scene.render
     if not r.use_border:
         return 0, 0, width, height
-    x0 = int(round(r.border_min_x * width))
-    x1 = int(round(r.border_max_x * width))
-    y0 = int(round(r.border_min_y * height))
-    y1 = int(round(r.border_max_y * height))
+    # As Blender rounds them (round_fl_to_int: halves up, not Python's round to even).
+    x0 = int(math.floor(r.border_min_x * width + 0.5))
+    x1 = int(math.floor(r.border_max_x * width + 0.5))
+    y0 = int(math.floor(r.border_min_y * height + 0.5))
+    y1 = int(math.floor(r.border_max_y * height + 0.5))
     return x0, y0, x1 - x0, y1 - y0
 
 
@@ -188,6 +190,13 @@ class SheafRenderEngine(bpy.types.RenderEngine):
             properties.apply_settings(renderer, scene)
             renderer.set("width", width)
             renderer.set("height", height)
+            if (bw, bh) != (width, height):
+                # Only the render region is computed (Sheaf's rows run from the top); its
+                # pixels are those of the whole image.
+                renderer.set("region.x", x0)
+                renderer.set("region.y", height - (y0 + bh))
+                renderer.set("region.width", bw)
+                renderer.set("region.height", bh)
             renderer.set("output.passes", ",".join(layer_passes(depsgraph.view_layer)))
             self.update_stats("", "Sheaf | preparing the scene")
             exported.scene.commit()
@@ -231,25 +240,30 @@ class SheafRenderEngine(bpy.types.RenderEngine):
         layer_name = depsgraph.view_layer.name
         passes = {"Combined": frame.get_pass("combined")}
         depth = frame.get_pass("depth")[:, :, 0]
+        place = frame.region()  # x, y (from the top), full width, full height
         if scene.render.film_transparent:
             empty = ~np.isfinite(depth)
             passes["Combined"][empty] = 0.0
-        result = self.begin_result(x0, y0, bw, bh, layer=layer_name)
+        # With a render region Blender's result is the region: its coordinates start there.
+        result = self.begin_result(0, 0, bw, bh, layer=layer_name)
         try:
             layer = result.layers[0]
             for p in layer.passes:
                 if p.name == "Combined":
                     data = passes["Combined"]
                 elif p.name == "Depth":
-                    data = exported.camera.axis_depth(depth)[:, :, None]
+                    data = exported.camera.axis_depth(depth, place)[:, :, None]
                 elif p.name == "Normal":
                     data = frame.get_pass("normal")
                 elif p.name == TESTS_PASS[0]:
                     data = frame.get_pass(TESTS_PASS[4])
                 else:
                     continue
-                # Sheaf's rows run top to bottom, Blender's bottom to top.
-                data = data[::-1][y0:y0 + bh, x0:x0 + bw]
+                # Sheaf's rows run top to bottom, Blender's bottom to top. A frame of the
+                # region holds just its pixels; a whole frame is cut to them.
+                data = data[::-1]
+                if data.shape[0] != bh or data.shape[1] != bw:
+                    data = data[y0:y0 + bh, x0:x0 + bw]
                 p.rect.foreach_set(np.ascontiguousarray(data, dtype=np.float32)
                                    .reshape(bw * bh, p.channels))
         except BaseException:

@@ -63,15 +63,17 @@ class CameraInfo:
         self.shift_x = shift_x  # image widths
         self.shift_y = shift_y  # image heights
 
-    def axis_depth(self, depth):
-        """depth: (h, w) Sheaf depth, top row first. Returns the view-axis depth with
-        BACKGROUND_DEPTH where nothing was hit."""
+    def axis_depth(self, depth, region=None):
+        """depth: (h, w) Sheaf depth, top row first: the whole image, or with `region`
+        (x, y, full_width, full_height: sheafFrameGetRegion, y from the top) a part of it.
+        Returns the view-axis depth with BACKGROUND_DEPTH where nothing was hit."""
         h, w = depth.shape
+        x0, y0, fw, fh = region if region is not None else (0, 0, w, h)
         out = depth.astype(np.float32, copy=True)
         if not self.ortho:
-            half_x = self.half_y * w / h
-            sx = (2.0 * (np.arange(w) + 0.5) / w - 1.0 + 2.0 * self.shift_x) * half_x
-            sy = (1.0 - 2.0 * (np.arange(h) + 0.5) / h + 2.0 * self.shift_y) * self.half_y
+            half_x = self.half_y * fw / fh
+            sx = (2.0 * (np.arange(x0, x0 + w) + 0.5) / fw - 1.0 + 2.0 * self.shift_x) * half_x
+            sy = (1.0 - 2.0 * (np.arange(y0, y0 + h) + 0.5) / fh + 2.0 * self.shift_y) * self.half_y
             cos = 1.0 / np.sqrt(1.0 + sx[None, :] ** 2 + sy[:, None] ** 2)
             out *= cos.astype(np.float32)
         out[~np.isfinite(out)] = BACKGROUND_DEPTH

@@ -14,16 +14,15 @@ int edge(const std::string& option, const std::string& text, int size, bool end)
     if (text.empty() || *stop != '\0' || !std::isfinite(v) || v < 0)
         throw RegionError(option + " " + text + ": expected a row or column from 1, or a "
                                                 "fraction from 0.0 to 1.0");
-    const bool fraction = v == 0 || (text.find('.') != std::string::npos && v <= 1.0);
-    if (fraction) return int(std::lround(v * size));
-    if (v != std::floor(v))
-        throw RegionError(option + " " + text + ": a value above 1.0 is a " +
-                          (option.find("row") != std::string::npos ? "row" : "column") +
-                          " number and must be whole");
-    if (v > size)
+    // As POV-Ray 3.7 reads them (checked against povray): a start below 1 and an end up to 1
+    // are fractions of the image, cut down to a whole pixel; other values are row or column
+    // numbers from 1 (+SR1 is the first row, +ER1 the whole image).
+    const bool fraction = end ? v <= 1.0 : v < 1.0;
+    if (fraction) return int(std::floor(v * size));
+    if (std::floor(v) > size)
         throw RegionError(option + " " + text + ": past the image's " + std::to_string(size) +
                           (option.find("row") != std::string::npos ? " rows" : " columns"));
-    return end ? int(v) : int(v) - 1;
+    return end ? int(v) : int(v) - 1; // POV-Ray drops a fraction of a row number
 }
 
 int positive(const std::string& text, const std::string& what) {

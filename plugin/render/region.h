@@ -28,10 +28,10 @@ struct RegionError : std::runtime_error {
 /// Checks the request's form (numbers, I/N) before any scene is read; throws RegionError.
 void check_region_request(const RegionRequest& r);
 
-/// The pixels of a `width` x `height` image the request names. POV-Ray's meaning: a whole
-/// number from 1 is a row or column (the end one included), a value with a decimal point from
-/// 0.0 to 1.0 a fraction of the image (0 the top or left edge, 1.0 the bottom or right; a
-/// fraction f is the edge round(f * size), so +SR0.5 starts where +ER0.5 ends). Tile I of N cuts
+/// The pixels of a `width` x `height` image the request names, as POV-Ray 3.7 reads them: a
+/// start below 1 and an end up to 1 are fractions of the image (a fraction f is the edge
+/// floor(f * size), so +SR0.5 starts where +ER0.5 ends); other values are rows or columns from
+/// 1, the end one included (+SR1 is the first row, +ER1 the whole image). Tile I of N cuts
 /// the image into C x R tiles (C * R = N, as square as N allows, C >= R; or as given by
 /// I/CxR), numbered from 1 along rows from the top left. Throws RegionError when the part is
 /// empty or leaves the image.

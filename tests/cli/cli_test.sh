@@ -289,6 +289,14 @@ if command -v idiff >/dev/null; then
 fi
 expect_rc rows_png 0 builtin:office -W 40 -H 30 +SR0.5 -o "$OUT/tiles/half.png"
 expect_in "$OUT/rows_png.out" "wrote $OUT/tiles/half.png (40x15" "+SR0.5: the image holds the lower half"
+# As povray 3.7 reads them on an 8x8 image: +SR0.3 +ER0.6 rows 3-4 (from 1), +SR2 +ER3 rows
+# 2-3, +SR1 +ER1 every row, +SR0.9 the last row.
+for case in "+SR0.3 +ER0.6:8x2" "+SR2 +ER3:8x2" "+SR1 +ER1:8x8" "+SR0.9:8x1" "+SC0.1 +EC0.3:2x8"; do
+    args=${case%%:*}
+    # shellcheck disable=SC2086
+    "$RENDER" builtin:cornell -W 8 -H 8 $args -o "$OUT/tiles/pov.png" >"$OUT/pov_rows.out" 2>&1
+    expect_in "$OUT/pov_rows.out" "(${case##*:}," "$args on 8x8 is ${case##*:}, as POV-Ray's"
+done
 expect_rc rows_empty 1 "${T[@]}" +SR20 +ER10 -o "$OUT/tiles/x.exr"
 expect_in "$OUT/rows_empty.err" "the rows 20 to 10 (+SR +ER) leave nothing of the image" "+SR after +ER is refused"
 expect_rc rows_past 1 "${T[@]}" +EC41 -o "$OUT/tiles/x.exr"

@@ -30,6 +30,8 @@ struct SampleWindow {
     }
     /// The window's index of the whole grid's sample g (which lies in the window).
     SHEAF_HD_INLINE uint32_t local(uint32_t g) const {
+        // A window of whole rows (the whole frame, a strip): no division on this hot path.
+        if (width == grid_width) return g - uint32_t(y) * uint32_t(width);
         return uint32_t(size_t(g / uint32_t(grid_width) - uint32_t(y)) * size_t(width) +
                         (g % uint32_t(grid_width) - uint32_t(x)));
     }

@@ -316,8 +316,7 @@ void write_or_check_job(const FarmJob& job) {
     write_atomically(path, text);
 }
 
-TaskStatus task_status(const FarmJob& job, int index) {
-    const std::string who = task_who(index);
+TaskStatus status_of(const FarmJob& job, const std::string& who) {
     if (const auto done = read_text(record_path(job, who, "done")))
         if (TaskStatus s = done_status(*done); s.state == TaskState::Done) return s;
     if (const auto failed = read_text(record_path(job, who, "failed")))
@@ -327,15 +326,9 @@ TaskStatus task_status(const FarmJob& job, int index) {
     return {};
 }
 
-TaskStatus merge_status(const FarmJob& job) {
-    if (const auto done = read_text(record_path(job, "merge", "done")))
-        if (TaskStatus s = done_status(*done); s.state == TaskState::Done) return s;
-    if (const auto failed = read_text(record_path(job, "merge", "failed")))
-        return {TaskState::Failed, 0, *failed};
-    if (const auto running = read_text(record_path(job, "merge", "running")))
-        return {TaskState::Running, 0, *running};
-    return {};
-}
+TaskStatus task_status(const FarmJob& job, int index) { return status_of(job, task_who(index)); }
+
+TaskStatus merge_status(const FarmJob& job) { return status_of(job, "merge"); }
 
 void mark_running(const FarmJob& job, const std::string& who) {
     char host[256] = "";

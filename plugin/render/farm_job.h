@@ -58,6 +58,9 @@ struct TaskStatus {
     std::string reason;  ///< Failed: the error; Running: where
 };
 
+/// The state the records of `who` (task_who(I), or "merge") say. Done only when every output
+/// is there with the size and hash recorded when it finished.
+TaskStatus status_of(const FarmJob& job, const std::string& who);
 /// The task's state. Done only when every output is there with the size and hash recorded
 /// when the task finished (a file changed or cut short since makes it Waiting again).
 TaskStatus task_status(const FarmJob& job, int index);

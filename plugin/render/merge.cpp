@@ -2,8 +2,6 @@
 
 #include "single.h"
 
-#include <cstdio>
-#include <fstream>
 #include <iostream>
 
 namespace render {
@@ -28,18 +26,7 @@ int run_merge(const Options& o) {
         std::cout << "wrote " << o.output << " (" << w << "x" << h << ", " << parts.size()
                   << (parts.size() == 1 ? " part)\n" : " parts)\n");
     }
-    if (o.stats) {
-        auto table = frame_text(whole.get(), "stats.table");
-        if (!table) return error(kRender, "--stats: " + last_error());
-        std::cout << *table;
-    }
-    if (!o.stats_json.empty()) {
-        const std::optional<std::string> json = frame_text(whole.get(), "stats.json");
-        std::ofstream out(o.stats_json);
-        if (!json || !(out << *json << "\n"))
-            return error(kRender, "--stats-json " + o.stats_json + ": cannot write the file");
-    }
-    return kOk;
+    return write_stats(whole.get(), o.stats, o.stats_json);
 }
 
 } // namespace render

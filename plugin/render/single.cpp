@@ -5,9 +5,8 @@
 
 #include <chrono>
 #include <cstdio>
-#include <unistd.h>
 #include <cstdlib>
-#include <cstdio>
+#include <unistd.h>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -35,19 +34,7 @@ int write_outputs(SheafFrame frame, const Options& o, const std::string& output,
         std::snprintf(line, sizeof line, "%dx%d, scene %.1f ms, frame %.1f ms", w, h, scene_ms, ms);
         std::cout << "wrote " << output << " (" << line << ")\n";
     }
-    if (o.stats) {
-        auto table = frame_text(frame, "stats.table");
-        if (!table) return error(kRender, "--stats: " + last_error());
-        std::cout << *table;
-    }
-    if (!stats_json.empty()) {
-        std::optional<std::string> json = frame_text(frame, "stats.json");
-        if (!json) return error(kRender, "--stats-json: " + last_error());
-        std::ofstream out(stats_json);
-        if (!(out << *json << "\n"))
-            return error(kRender, "--stats-json " + stats_json + ": cannot write the file");
-    }
-    return kOk;
+    return write_stats(frame, o.stats, stats_json);
 }
 
 } // namespace
@@ -85,6 +72,22 @@ int save_image(SheafFrame frame, const std::string& output) {
     if (std::rename(partial.c_str(), output.c_str()) != 0) {
         std::remove(partial.c_str());
         return error(kRender, output + ": cannot write the file (rename failed)");
+    }
+    return kOk;
+}
+
+int write_stats(SheafFrame frame, bool table, const std::string& stats_json) {
+    if (table) {
+        const std::optional<std::string> text = frame_text(frame, "stats.table");
+        if (!text) return error(kRender, "--stats: " + last_error());
+        std::cout << *text;
+    }
+    if (!stats_json.empty()) {
+        const std::optional<std::string> json = frame_text(frame, "stats.json");
+        if (!json) return error(kRender, "--stats-json: " + last_error());
+        std::ofstream out(stats_json);
+        if (!(out << *json << "\n"))
+            return error(kRender, "--stats-json " + stats_json + ": cannot write the file");
     }
     return kOk;
 }

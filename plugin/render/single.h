@@ -31,6 +31,10 @@ std::string partial_name(const std::string& file);
 /// and returns its exit code on failure.
 int save_image(SheafFrame frame, const std::string& output);
 
+/// --stats (the tables on stdout when `table`) and --stats-json FILE (when not empty) of the
+/// frame; prints the error and returns its exit code on failure.
+int write_stats(SheafFrame frame, bool table, const std::string& stats_json);
+
 /// Prints every setting, its default, what it allows and its help.
 void list_settings();
 

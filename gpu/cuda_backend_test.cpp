@@ -81,6 +81,7 @@ TEST(Cuda, BuiltinScenesMatchTheCpu) {
         const PreparedScene scene = prepare_scene(make_builtin_scene(name));
         for (const SettingList& kv :
              {SettingList{}, SettingList{{"accel", "rah"}}, SettingList{{"accel", "bvh"}},
+              SettingList{{"accel", "crsh-bvh"}}, SettingList{{"accel", "rah-bvh"}},
               SettingList{{"hash.mode", "hash192"}, {"ao.samples", "4"}},
               SettingList{{"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
               SettingList{{"aa.samples", "2"}, {"traversal.batch", "65536"}}})
@@ -95,6 +96,8 @@ TEST(Cuda, PipelineTestScenesMatchTheCpu) {
         {{"accel", "brute"}},
         {{"accel", "rah"}, {"cull.objects", "false"}},
         {{"accel", "bvh"}},
+        {{"accel", "crsh-bvh"}, {"traversal.batch", "1024"}},
+        {{"accel", "rah-bvh"}, {"hierarchy.depth", "3"}, {"hierarchy.arity", "4"}},
         {},
         {{"hash.mode", "hash32"}, {"sort.mode", "full"}, {"ao.samples", "3"}},
         {{"hash.mode", "hash192"}},
@@ -124,6 +127,7 @@ TEST(Cuda, SceneFilesMatchTheCpu) {
             }
             expect_cuda_matches_cpu(scene, name, {});
             expect_cuda_matches_cpu(scene, name, {{"accel", "bvh"}});
+            expect_cuda_matches_cpu(scene, name, {{"accel", "crsh-bvh"}});
         });
 }
 

@@ -139,6 +139,8 @@ TEST(Bvh, IsBuiltOncePerScene) {
     ASSERT_TRUE(a->bvh);
     EXPECT_EQ(a->bvh.get(), b->bvh.get());
     EXPECT_EQ(a->bvh.get(), bvh_for(scene).get());
+    s.accel = Accel::CrshBvh;
+    EXPECT_EQ(cull_units_for(scene, s)->bvh.get(), a->bvh.get());
     s.accel = Accel::Crsh;
     EXPECT_FALSE(cull_units_for(scene, s)->bvh);
 }
@@ -159,6 +161,16 @@ TEST(Bvh, FramesEqualEveryOtherMode) {
         EXPECT_LT(got.stats.get("tests.shadow.final.tests"),
                   got.stats.get("tests.shadow.brute_force") + 1)
             << name;
+        // The ray hierarchies over the BVH: the same frame on both pipelines.
+        for (const char* accel : {"crsh-bvh", "rah-bvh"}) {
+            const RenderSettings over = test::settings_for(scene, {{"accel", accel}}, 40, 30);
+            const Frame f = render_frame_cpu(scene, over);
+            test::expect_same_image(got, f, name + ", " + accel);
+            test::expect_same_image(f, render_frame_wavefront_cpu(scene, over),
+                                    name + ", " + accel + ", wavefront");
+            EXPECT_GT(f.stats.get("tests.shadow.nodes.tests"), 0.0) << name << " " << accel;
+            EXPECT_FALSE(f.stats.has("tests.shadow.objects.tests")) << name << " " << accel;
+        }
     }
 }
 

@@ -116,13 +116,30 @@ SHEAF_HD_INLINE float bvh_next_up(float x) {
     return x;
 }
 
-/// Ray i of a batch (r) through the BVH against `scene`: writes closest[i] for closest-hit
-/// queries (Any false), occluded[i] and the pass log for any-hit ones, as brute_trace_ray
-/// does. `skip`: primitive flags that are no candidates for this ray type.
+/// Entries of a traversal: an inner node (its index), a leaf (kBvhLeaf | node * 4 + slot:
+/// child `slot` of `node`), or one primitive (kBvhPrim | primitive). Inner node indices are
+/// below kBvhPrim, leaf nodes below 2^28.
+constexpr uint32_t kBvhLeaf = 0x80000000u;
+constexpr uint32_t kBvhPrim = 0x40000000u;
+
+/// The entry for child `slot` of node `node`: the child node, or the leaf.
+SHEAF_HD_INLINE uint32_t bvh_child_entry(const BvhNode& n, uint32_t node, int slot) {
+    return n.count[slot] > 0 ? kBvhLeaf | (node << 2 | uint32_t(slot)) : n.child[slot];
+}
+
+/// Ray i of a batch (r) through the part of the BVH under `start` (an entry; the root is 0),
+/// against `scene`, after the primitives without bounds when `unbounded`: records its hits as
+/// brute_trace_ray does (closest hits for closest-hit queries, Any false; occluded[i] and the
+/// pass log for any-hit ones). `shared`: other traversals record hits of the same ray (the
+/// ray hierarchy's entries, core/rsh/bvh_top.h), so a closest hit is an atomic minimum; each
+/// traversal prunes by its own best hit only, so its counts do not depend on the others'. (A
+/// flag, not a template parameter: each instance is another copy of the exact tests in the
+/// CUDA module, which ptxas takes minutes over.) `skip`: primitive flags that are no
+/// candidates for this ray type.
 template <bool Any>
-SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& scene,
-                                           const Ray& r, uint32_t i, bool shadow, uint8_t skip,
-                                           const HitSinks& out) {
+SHEAF_HD_INLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& scene, const Ray& r,
+                                         uint32_t i, uint32_t start, bool unbounded, bool shared,
+                                         bool shadow, uint8_t skip, const HitSinks& out) {
     BvhCounts c;
     uint64_t best = kNoHit;
     // The ray the triangles are tested with: a triangle's distance does not depend on tmax, so
@@ -152,7 +169,7 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& 
         ++c.prims.hits;
         if constexpr (Any) {
             if (passes(scene, shadow, p)) return record_pass(scene, out, i, r, t, p);
-            out.occluded[i] = 1;
+            store_flag(&out.occluded[i]);
             return false;
         } else {
             const uint64_t h = pack_hit(t, p);
@@ -165,23 +182,24 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& 
         }
     };
     bool done = false;
-    for (uint32_t k = 0; k < bvh.unbounded_count && !done; ++k) done = !test(bvh.unbounded[k]);
-    if (bvh.node_count > 0 && !done) {
+    if (unbounded)
+        for (uint32_t k = 0; k < bvh.unbounded_count && !done; ++k) done = !test(bvh.unbounded[k]);
+    if (start & kBvhPrim && !(start & kBvhLeaf)) {
+        test(start & ~kBvhPrim);
+    } else if (bvh.node_count > 0 && !done) {
         const Vec3 inv = bvh_inverse(r.dir);
         const BvhPlanes planes = bvh_planes(inv);
-        // Entries: a node (its index), or a leaf (kLeaf | node * 4 + slot); with the entry
-        // distance, so that a closest-hit ray drops what its best hit has passed. The entry
-        // in hand (e) is not on the stack: of a node's children met, the nearest is taken
-        // next and the others pushed, farthest first (any-hit rays: in order; the first
-        // opaque hit anywhere ends them).
-        constexpr uint32_t kLeaf = 0x80000000u;
+        // With each waiting entry its entry distance, so that a closest-hit ray drops what its
+        // best hit has passed. The entry in hand (e) is not on the stack: of a node's children
+        // met, the nearest is taken next and the others pushed, farthest first (any-hit rays:
+        // in order; the first opaque hit anywhere ends them).
         uint32_t stack[kBvhStack];
         float stack_t[kBvhStack];
         int sp = 0;
-        uint32_t e = 0;
+        uint32_t e = start;
         for (;;) {
-            if (e & kLeaf) {
-                const BvhNode& n = bvh.nodes[(e & ~kLeaf) >> 2];
+            if (e & kBvhLeaf) {
+                const BvhNode& n = bvh.nodes[(e & ~kBvhLeaf) >> 2];
                 const uint32_t slot = e & 3u, first = n.child[slot];
                 for (uint32_t k = first; k < first + n.count[slot] && !done; ++k)
                     done = !test(bvh.prims[k]);
@@ -204,12 +222,11 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& 
                     c.nodes.hits += uint64_t(hits);
                     for (int h = 0; h + 1 < hits; ++h) {
                         const int k = order[h];
-                        stack[sp] = n.count[k] > 0 ? kLeaf | (e << 2 | uint32_t(k)) : n.child[k];
+                        stack[sp] = bvh_child_entry(n, e, k);
                         if constexpr (!Any) stack_t[sp] = near[k];
                         ++sp;
                     }
-                    const int k = order[hits - 1];
-                    e = n.count[k] > 0 ? kLeaf | (e << 2 | uint32_t(k)) : n.child[k];
+                    e = bvh_child_entry(n, e, order[hits - 1]);
                     continue;
                 }
             }
@@ -219,8 +236,23 @@ SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& 
             e = stack[--sp];
         }
     }
-    if constexpr (!Any) out.closest[i] = best;
+    if constexpr (!Any) {
+        if (!shared)
+            out.closest[i] = best;
+        else if (best != kNoHit)
+            atomic_min_u64(&out.closest[i], best);
+    }
     return c;
+}
+
+/// Ray i of a batch (r) through the whole BVH against `scene`: writes closest[i] for
+/// closest-hit queries (Any false), occluded[i] and the pass log for any-hit ones, as
+/// brute_trace_ray does.
+template <bool Any>
+SHEAF_HD_INLINE BvhCounts bvh_trace_ray_as(const BvhView& bvh, const SceneView& scene, const Ray& r,
+                                           uint32_t i, bool shadow, uint8_t skip,
+                                           const HitSinks& out) {
+    return bvh_trace_from<Any>(bvh, scene, r, i, 0, true, false, shadow, skip, out);
 }
 
 /// bvh_trace_ray_as for a query chosen at run time.

@@ -74,11 +74,9 @@ void expect_parts_equal_whole(const PreparedScene& scene, const KeyValues& kv, i
         << what << ": depth";
     EXPECT_EQ(merged.object_id, whole.object_id) << what;
     // The tests pass counts the exact tests a ray's traversal left, which under a ray
-    // hierarchy (rah, crsh) depends on the rays grouped with it: the same only per ray.
-    const std::string accel = whole_settings.accel == Accel::Rah    ? "rah"
-                              : whole_settings.accel == Accel::Crsh ? "crsh"
-                                                                    : "";
-    if (accel.empty()) EXPECT_EQ(merged.tests, whole.tests) << what;
+    // hierarchy (rah, crsh and their BVH forms) depends on the rays grouped with it: the same only
+    // per ray.
+    if (!uses_ray_hierarchy(whole_settings.accel)) EXPECT_EQ(merged.tests, whole.tests) << what;
     EXPECT_EQ(0, std::memcmp(merged.normal.data(), whole.normal.data(),
                              whole.normal.size() * sizeof(Vec3)))
         << what << ": normal";
@@ -96,7 +94,7 @@ const Renderer kWavefront = [](const PreparedScene& s, const RenderSettings& r) 
 
 TEST(Region, PartsOfAFrameEqualTheWholeUnderEveryAccel) {
     const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
-    for (const char* accel : {"brute", "rah", "crsh", "bvh"})
+    for (const char* accel : {"brute", "rah", "crsh", "bvh", "crsh-bvh", "rah-bvh"})
         expect_parts_equal_whole(scene,
                                  {{"width", "37"},
                                   {"height", "29"},

@@ -13,6 +13,7 @@
 #include "core/frame/scene_copy.h"
 #include "core/hash/ray_hash.h"
 #include "core/rays/ray_gen.h"
+#include "core/rsh/bvh_top.h"
 #include "core/rsh/cpu_traversal.h"
 #include "core/rsh/hierarchy.h"
 #include "core/rsh/trace_kernels.h"
@@ -20,6 +21,7 @@
 #include <cfloat>
 #include <chrono>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -149,10 +151,16 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
 
         // Object and final tests count into this batch's slot, read with the others' by
         // flush().
-        const bool per_ray = s_.accel == Accel::Brute || s_.accel == Accel::Bvh;
-        const bool cull = !per_ray && s_.cull_objects;
+        const bool per_ray = !uses_ray_hierarchy(s_.accel);
+        // crsh-bvh and rah-bvh: the top nodes through the BVH, not the object spheres.
+        over_bvh_ = !per_ray && uses_bvh(s_.accel);
+        if (over_bvh_ && (cull_.bvh.node_count >= kBvhTopMaxNodes || prims >= kBvhTopMaxPrims))
+            throw std::runtime_error("accel=" + std::string(to_string(s_.accel)) +
+                                     " takes at most 2^28 BVH nodes and 2^30 primitives; use "
+                                     "accel=bvh for this scene");
+        const bool cull = !per_ray && !over_bvh_ && s_.cull_objects;
         const int depth = per_ray ? 0 : s_.hierarchy_depth;
-        const bool bvh = s_.accel == Accel::Bvh;
+        const bool bvh = uses_bvh(s_.accel);
         BatchCounts* slot = take_slot(p, cull, depth, bvh);
         objects_count_ = &slot->objects;
         final_count_ = &slot->final;
@@ -169,7 +177,7 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         }
 
         // Hash and order (crsh); rah keeps the generation order.
-        const HashMode hash = s_.accel == Accel::Crsh ? s_.hash : HashMode::None;
+        const HashMode hash = orders_rays(s_.accel) ? s_.hash : HashMode::None;
         DeviceBuffer<uint32_t, Exec> keys;
         int words = 0;
         clock_.start("hashing");
@@ -195,6 +203,7 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
                 double(node_count(s_.hierarchy_depth)));
 
         sinks_ = out.sinks();
+        ray_tests_ = out.tests.data();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>(ex_, node_count(1));
         fill(ex_, leaf_pairs_.data(), node_count(1), 0u);
         if constexpr (kTraversal == Traversal::Host) {
@@ -204,14 +213,19 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
             clock_.start("traversal");
             counters_ = DeviceBuffer<uint32_t, Exec>(ex_, size_t(depth) + 1);
             pair_bufs_.resize(size_t(depth) + 1);
-            traverse();
+            if (over_bvh_)
+                traverse_bvh();
+            else
+                traverse();
             pair_bufs_.clear();
             counters_ = DeviceBuffer<uint32_t, Exec>();
         }
-        spread_ray_tests(out.tests.data(), n);
+        if (!over_bvh_) spread_ray_tests(out.tests.data(), n); // over the BVH: counted per ray
         clock_.stop("traversal");
 
-        add_test_counts(st_, p, cull, {}, std::vector<TestCount>(size_t(depth) + 1), {});
+        const TestCount none;
+        add_test_counts(st_, p, cull, {}, std::vector<TestCount>(size_t(depth) + 1), {},
+                        over_bvh_ ? &none : nullptr);
         levels_.clear();
         sorted_ = DeviceBuffer<Ray, Exec>();
         leaf_pairs_ = DeviceBuffer<uint32_t, Exec>();
@@ -403,10 +417,11 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
             nodes[k] = levels_[k].data(), count[k + 1] = levels_[k].size();
         const LevelsView h{depth, s_.hierarchy_arity, nodes.data(), count.data()};
         TraversalCounts counts;
-        traverse_on_cpu(host_, units_, h, sorted_.data(), perm_, any_, shadow_, skip_, batch_,
-                        cull, ex_.memory(), sinks_, leaf_pairs_.data(), counts);
+        traverse_on_cpu(host_, units_, h, sorted_.data(), perm_, any_, shadow_, skip_, batch_, cull,
+                        ex_.memory(), sinks_, leaf_pairs_.data(), ray_tests_, counts);
         *objects_count_ = counts.objects;
         *final_count_ = counts.final;
+        *node_count_ = counts.nodes;
         for (size_t k = 1; k < counts.levels.size(); ++k) level_counts_[k] = counts.levels[k];
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -537,6 +552,56 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         }
     }
 
+    // crsh-bvh, rah-bvh: each top node through the BVH (core/rsh/bvh_top.h), in groups of
+    // nodes: one launch counts each node's references (and its tests), a scan places them,
+    // the host reads the total (its one wait a group), a second launch writes the (node,
+    // reference) pairs, which go down the levels as the flat top level's pairs do. The first
+    // group is sized for 64 references a node, each later one for traversal.batch at the rate
+    // the nodes before it found.
+    void traverse_bvh() {
+        const int top = s_.hierarchy_depth;
+        const size_t top_nodes = node_count(top);
+        const RayNode* nodes = levels_[size_t(top) - 1].data();
+        const BvhView bvh = cull_.bvh;
+        const SceneView scene = scene_;
+        const uint8_t skip = skip_;
+        size_t group = std::max<size_t>(1, batch_ / 64);
+        for (size_t g0 = 0; g0 < top_nodes;) {
+            const size_t gn = std::min(top_nodes - g0, group);
+            DeviceBuffer<uint64_t, Exec> off_buf(ex_, gn);
+            DeviceBuffer<TestCount, Exec> tests_buf(ex_, gn);
+            uint64_t* off = off_buf.data();
+            TestCount* tests = tests_buf.data();
+            ex_.launch("rsh.bvh_count", gn, [=] SHEAF_HD_LAMBDA(size_t x) {
+                TestCount c;
+                uint64_t refs = 0;
+                bvh_top_node(bvh, scene, nodes[g0 + x], skip, c, [&](uint32_t) { ++refs; });
+                off[x] = refs;
+                tests[x] = c;
+            });
+            ex_.reduce_into(
+                "rsh.bvh_top_counts", gn, level_counts_ + top, TestCount{},
+                [=] SHEAF_HD_LAMBDA(size_t x) -> TestCount { return tests[x]; }, SumCounts{});
+            const uint64_t total = ex_.exclusive_scan(off, gn);
+            if (total > 0) {
+                NodePrim* pairs = level_pairs(top, size_t(total));
+                ex_.launch("rsh.bvh_fill", gn, [=] SHEAF_HD_LAMBDA(size_t x) {
+                    TestCount c;
+                    uint64_t j = off[x];
+                    const uint32_t node = uint32_t(g0 + x);
+                    bvh_top_node(bvh, scene, nodes[g0 + x], skip, c, [&](uint32_t ref) {
+                        pairs[j++] = {node, ref};
+                    });
+                });
+                fill(ex_, counters_.data(), counters_.size(), 0u);
+                descend(top, pairs, size_t(total), LaunchCount{nullptr, size_t(total)});
+            }
+            g0 += gn;
+            const double rate = double(total) / double(gn);
+            group = std::max<size_t>(1, size_t(double(batch_) / std::max(rate, 1.0)));
+        }
+    }
+
     // Top candidates a chunk: as many as keep every level's pairs within traversal.batch while
     // the host waits for no count (each level expands a pair into at most arity), so at depth
     // 2 a chunk costs the host no wait; deeper, the chunk's count is read where a level would
@@ -615,13 +680,16 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         const size_t below = node_count(level - 1);
         const RayNode* children = levels_[size_t(level) - 2].data();
         const Sphere* spheres = scene_.prim_sphere;
+        const bool over_bvh = over_bvh_; // pairs name BVH slots or primitives (bvh_top.h)
+        const BvhView bvh = cull_.bvh;
+        const SceneView scene = scene_;
         NodePrim* next = level_pairs(level - 1, most * size_t(arity));
         uint32_t* found = counters_.data() + (level - 1);
         ex_.launch_compact(
             "rsh.level", most, count, found, level_counts_ + (level - 1),
             [=] SHEAF_HD_LAMBDA(size_t j) -> Compacted {
                 const NodePrim pr = in[j];
-                const Sphere s = spheres[pr.prim];
+                const Sphere s = over_bvh ? bvh_ref_sphere(bvh, scene, pr.prim) : spheres[pr.prim];
                 const size_t first = size_t(pr.node) * size_t(arity);
                 const size_t last = node_last_child(pr.node, arity, below);
                 uint64_t m = 0;
@@ -657,6 +725,28 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         const bool any = any_, shadow = shadow_;
         const HitSinks sinks = sinks_;
         TestCount* counts = final_count_;
+        if (over_bvh_) {
+            // Each ray of a level-1 node through what its node kept, on its own: exact tests
+            // into the slot's final counts, box tests added to its node counts.
+            const BvhView bvh = cull_.bvh;
+            const uint8_t skip = skip_;
+            uint32_t* ray_tests = ray_tests_;
+            TestCount* node_counts = node_count_;
+            ex_.launch_tally(
+                "rsh.final_bvh", most, count, counts, [=] SHEAF_HD_LAMBDA(size_t j) -> TestCount {
+                    const NodePrim pr = pairs[j];
+                    const size_t first = size_t(pr.node) * size_t(arity);
+                    const size_t last = node_last_child(pr.node, arity, rays_n);
+                    const BvhCounts c = bvh_ref_rays(bvh, scene, rays, perm, first, last, pr.prim,
+                                                     any, shadow, skip, sinks, ray_tests);
+                    atomic_add_u64(&node_counts->tests, c.nodes.tests);
+                    atomic_add_u64(&node_counts->hits, c.nodes.hits);
+                    return c.prims;
+                });
+            clock_.stop("final_tests");
+            clock_.start("traversal");
+            return;
+        }
         // Plain triangle pairs in one launch, the rest (analytic shapes, surfaces a shadow
         // passes) in another where the scene has any: the first kernel then needs few registers.
         ex_.launch_tally(
@@ -728,11 +818,13 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
     uint8_t flags_ = 0;        // every flag some primitive has
     // The batch being traced.
     bool any_ = false, shadow_ = false;
+    bool over_bvh_ = false; // crsh-bvh, rah-bvh: the top nodes through the BVH
     uint8_t skip_ = 0;
     DeviceBuffer<Ray, Exec> sorted_;
     const uint32_t* perm_ = nullptr;
     std::vector<DeviceBuffer<RayNode, Exec>> levels_;
     DeviceBuffer<uint32_t, Exec> leaf_pairs_;
+    uint32_t* ray_tests_ = nullptr; // the batch's per-ray exact tests (out.tests)
     // The traversal's pairs of nodes and primitives (index k: level k) and their counters.
     std::vector<DeviceBuffer<NodePrim, Exec>> pair_bufs_;
     DeviceBuffer<uint32_t, Exec> counters_;

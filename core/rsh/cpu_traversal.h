@@ -35,20 +35,25 @@ struct LevelsView {
 };
 
 /// What one traversal counted: tests and hits against object and unit spheres, per level
-/// (index k: level k), and exact tests; the exact tests' time apart.
+/// (index k: level k), the rays' own box tests (crsh-bvh, rah-bvh), and exact tests; the
+/// exact tests' time apart.
 struct TraversalCounts {
-    TestCount objects, final;
+    TestCount objects, final, nodes;
     std::vector<TestCount> levels;
     double final_ms = 0;
 };
 
 /// Traverses hierarchy `h` over `sorted` rays (sorted[j] is ray perm[j] of the batch) against
 /// the scene: results go to `sinks` by batch index, each level-1 node's candidate count to
-/// leaf_pairs[node] (zeroed by the caller). `cull`: cull.objects; `batch`: the candidate pairs
+/// leaf_pairs[node] (zeroed by the caller). When `units` carry a BVH (crsh-bvh, rah-bvh) the
+/// top nodes descend it instead of testing the object and unit spheres, and the rays of each
+/// level-1 node continue on their own into what their node kept (core/rsh/bvh_top.h), each
+/// ray's exact tests added to ray_tests[its batch index] (zeroed by the caller), leaf_pairs
+/// unused. `cull`: cull.objects (with no BVH); `batch`: the candidate pairs
 /// a level holds at once (traversal.batch); `skip`: primitive flags that are no candidates.
 void traverse_on_cpu(const PreparedScene& scene, const CullUnits& units, const LevelsView& h,
                      const Ray* sorted, const uint32_t* perm, bool any, bool shadow, uint8_t skip,
                      size_t batch, bool cull, MemoryTracker& memory, const HitSinks& sinks,
-                     uint32_t* leaf_pairs, TraversalCounts& counts);
+                     uint32_t* leaf_pairs, uint32_t* ray_tests, TraversalCounts& counts);
 
 } // namespace sheaf

@@ -61,7 +61,7 @@ CullUnits make_cull_units(const PreparedScene& scene, int cluster) {
 
 std::shared_ptr<const CullUnits> cull_units_for(const PreparedScene& scene,
                                                 const RenderSettings& settings) {
-    const bool bvh = settings.accel == Accel::Bvh;
+    const bool bvh = uses_bvh(settings.accel);
     const int cluster = settings.cull_objects && !bvh ? std::max(0, settings.cull_cluster) : 0;
     const auto make = [&] {
         CullUnits u = make_cull_units(scene, cluster);

@@ -26,8 +26,8 @@ struct CullUnits {
     std::vector<Sphere> sphere;         // per unit: encloses its primitives
     std::vector<uint32_t> object;       // per unit
     std::vector<uint32_t> object_units; // objects + 1 entries
-    /// accel=bvh: the scene's object-space hierarchy (bvh_for), which the traversal tests
-    /// instead of the units; null otherwise.
+    /// accel=bvh, crsh-bvh, rah-bvh: the scene's object-space hierarchy (bvh_for), which the
+    /// traversal tests instead of the units; null otherwise.
     std::shared_ptr<const Bvh> bvh;
     size_t count() const { return sphere.size(); }
     bool split(uint32_t o) const { return object_units[o + 1] - object_units[o] > 1; }

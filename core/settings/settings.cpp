@@ -22,13 +22,14 @@ const std::vector<SettingSpec>& setting_specs() {
          "bvh",
          0,
          0,
-         {"brute", "rah", "crsh", "bvh"},
+         {"brute", "rah", "crsh", "bvh", "crsh-bvh", "rah-bvh"},
          "how secondary rays find geometry: every ray against every primitive (brute), the ray "
          "hierarchy over "
          "rays in generation order (rah, Roger et al.) or over rays hashed and sorted by hash.mode "
          "and sort.mode "
-         "(crsh, paper 000), or each ray through a bounding volume hierarchy of the primitives "
-         "(bvh, SAH-built, four-wide)"},
+         "(crsh, paper 000), each ray through a bounding volume hierarchy of the primitives "
+         "(bvh, SAH-built, four-wide), or the ray hierarchy of crsh or rah with its top nodes "
+         "through that BVH instead of the object spheres (crsh-bvh, rah-bvh)"},
         {"hierarchy.depth",
          K::Int,
          "2",
@@ -104,14 +105,34 @@ const std::vector<SettingSpec>& setting_specs() {
          "where the frame is computed"},
         {"width", K::Int, "512", 1, 16384, {}, "image width in pixels"},
         {"height", K::Int, "512", 1, 16384, {}, "image height in pixels"},
-        {"region.x", K::Int, "0", 0, 16383, {},
+        {"region.x",
+         K::Int,
+         "0",
+         0,
+         16383,
+         {},
          "first column of the part of the frame rendered (0: the left edge); the pixels are "
          "those of the whole frame, so tiles put together equal it byte for byte"},
-        {"region.y", K::Int, "0", 0, 16383, {},
+        {"region.y",
+         K::Int,
+         "0",
+         0,
+         16383,
+         {},
          "first row of the part of the frame rendered (0: the top row)"},
-        {"region.width", K::Int, "0", 0, 16384, {},
+        {"region.width",
+         K::Int,
+         "0",
+         0,
+         16384,
+         {},
          "columns of the part of the frame rendered, 0 for all from region.x to the right edge"},
-        {"region.height", K::Int, "0", 0, 16384, {},
+        {"region.height",
+         K::Int,
+         "0",
+         0,
+         16384,
+         {},
          "rows of the part of the frame rendered, 0 for all from region.y to the bottom edge"},
         {"aa.samples",
          K::Int,
@@ -388,10 +409,12 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     auto choice = [&](const char* k) { return v.at(k); };
     RenderSettings r;
     const std::string accel = choice("accel");
-    r.accel = accel == "brute" ? Accel::Brute
-              : accel == "rah" ? Accel::Rah
-              : accel == "bvh" ? Accel::Bvh
-                               : Accel::Crsh;
+    r.accel = accel == "brute"      ? Accel::Brute
+              : accel == "rah"      ? Accel::Rah
+              : accel == "bvh"      ? Accel::Bvh
+              : accel == "crsh-bvh" ? Accel::CrshBvh
+              : accel == "rah-bvh"  ? Accel::RahBvh
+                                    : Accel::Crsh;
     r.hierarchy_depth = i("hierarchy.depth");
     r.hierarchy_arity = i("hierarchy.arity");
     const std::string hash = choice("hash.mode");
@@ -446,7 +469,21 @@ size_t device_batch_pairs(uint64_t device_bytes) {
 }
 
 const char* to_string(Accel a) {
-    return a == Accel::Brute ? "brute" : a == Accel::Rah ? "rah" : a == Accel::Bvh ? "bvh" : "crsh";
+    switch (a) {
+    case Accel::Brute:
+        return "brute";
+    case Accel::Rah:
+        return "rah";
+    case Accel::Bvh:
+        return "bvh";
+    case Accel::CrshBvh:
+        return "crsh-bvh";
+    case Accel::RahBvh:
+        return "rah-bvh";
+    case Accel::Crsh:
+        break;
+    }
+    return "crsh";
 }
 const char* to_string(HashMode h) {
     switch (h) {

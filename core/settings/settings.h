@@ -53,7 +53,20 @@ class Settings {
     std::map<std::string, std::string, std::less<>> values_;
 };
 
-enum class Accel { Brute, Rah, Crsh, Bvh };
+enum class Accel { Brute, Rah, Crsh, Bvh, CrshBvh, RahBvh };
+
+/// Whether `a` traces through a hierarchy of rays (rah, crsh and their forms over the BVH).
+inline bool uses_ray_hierarchy(Accel a) {
+    return a == Accel::Rah || a == Accel::Crsh || a == Accel::CrshBvh || a == Accel::RahBvh;
+}
+/// Whether `a` hashes and orders its rays before building the hierarchy (crsh, crsh-bvh).
+inline bool orders_rays(Accel a) {
+    return a == Accel::Crsh || a == Accel::CrshBvh;
+}
+/// Whether `a` tests the scene's BVH (bvh per ray; crsh-bvh and rah-bvh per top node).
+inline bool uses_bvh(Accel a) {
+    return a == Accel::Bvh || a == Accel::CrshBvh || a == Accel::RahBvh;
+}
 enum class HashMode { None, Crsh, Hash32, Hash192, Static1d, Static3d };
 enum class SortMode { None, Full, Csd };
 enum class SortAlgorithm { Radix, Bitonic };

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    // The default accel (bvh), then the ray hierarchies with their own settings.
+    // The default accel (bvh), then the ray hierarchies with their own settings, and over the BVH.
     const std::vector<test::SettingList> builtin_variants = {
         {},
         {{"accel", "brute"}},
@@ -104,7 +104,12 @@ int main(int argc, char** argv) {
         {{"accel", "crsh"}, {"hash.mode", "hash192"}, {"ao.samples", "2"}},
         {{"accel", "crsh"}, {"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
         {{"accel", "crsh"}, {"aa.samples", "2"}, {"traversal.batch", "4096"}},
-        {{"accel", "crsh"}, {"cull.cluster", "0"}, {"hierarchy.depth", "3"}, {"hierarchy.arity", "4"}},
+        {{"accel", "crsh"},
+         {"cull.cluster", "0"},
+         {"hierarchy.depth", "3"},
+         {"hierarchy.arity", "4"}},
+        {{"accel", "crsh-bvh"}},
+        {{"accel", "rah-bvh"}, {"traversal.batch", "4096"}},
         {{"output.passes", "combined"}},
     };
     for (const std::string& name : builtin_scene_names()) {

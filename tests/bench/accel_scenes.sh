@@ -39,13 +39,13 @@ for scene in "$here"/scenes/*.pov "$here"/scenes/*.xml "$here"/scenes/*.obj; do
     base=
     for m in $modes; do
         med=$(sort -n "$out/$m" | awk '{a[NR]=$1} END {if (NR) print a[int((NR+1)/2)]; else print "-"}')
-        eval "med_$m=\$med"
+        eval "med_$(echo "$m" | tr -c 'a-z0-9\n' _)=\$med"
         printf ' %s |' "$med"
         [ "$m" = "$first" ] && base=$med
     done
     for m in $modes; do
         [ "$m" = "$first" ] && continue
-        eval "v=\$med_$m"
+        eval "v=\$med_$(echo "$m" | tr -c 'a-z0-9\n' _)"
         awk -v a="$v" -v b="$base" 'BEGIN { if (b > 0 && a != "-") printf " %.2f |", a / b; else printf " - |" }'
     done
     printf '\n'

@@ -103,6 +103,43 @@ TEST(Rasterizer, AgreesWithRayCastingOnRandomTrianglesCrossingTheNearPlane) {
     compare(prepare_scene(s), 64, 48, "soup");
 }
 
+// More triangles than the rasterizer sets up at once (kChunk, 65,536): a tilted plane of
+// 151,250 small triangles filling the view, every chunk (a region of it: prepare_scene puts a
+// mesh's triangles in Morton order) drawing its own pixels, and a random cloud in front of it,
+// whose nearest triangle wins each pixel it covers whatever chunk it is in.
+TEST(Rasterizer, AgreesWithRayCastingOverManyChunksOfTriangles) {
+    Scene s;
+    s.add_material(Material{});
+    Mesh plane;
+    const int n = 275;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            const float x = -6.0f + 12.0f * float(i) / n, y = -5.0f + 10.0f * float(j) / n;
+            plane.positions.push_back(Vec3(x, y, -4.0f + 0.1f * x));
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const uint32_t a = uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n + 1);
+            for (uint32_t v : {a, b, c, b, c + 1, c}) plane.indices.push_back(v);
+        }
+    s.add_mesh_object("plane", std::move(plane), 0);
+    std::mt19937 g(5);
+    std::uniform_real_distribution<float> u(-1, 1);
+    Mesh cloud;
+    for (int t = 0; t < 2000; ++t) {
+        const Vec3 c(u(g) * 2.0f, u(g) * 1.5f, -2.5f + u(g));
+        for (int k = 0; k < 3; ++k) cloud.positions.push_back(c + Vec3(u(g), u(g), u(g)) * 0.2f);
+        for (int k = 0; k < 3; ++k)
+            cloud.indices.push_back(uint32_t(cloud.positions.size() - 3 + k));
+    }
+    s.add_mesh_object("cloud", std::move(cloud), 0);
+    s.camera.position = Vec3(0, 0, 1);
+    s.camera.look_at = Vec3(0, 0, -3);
+    const PreparedScene scene = prepare_scene(s);
+    ASSERT_GT(scene.triangle_count(), 2 * (size_t(1) << 16));
+    compare(scene, 32, 24, "plane and cloud");
+}
+
 TEST(Rasterizer, AgreesWithRayCastingThroughOrthographicAndShiftedCameras) {
     Scene s = make_builtin_scene("office");
     s.camera.shift_x = 0.2f, s.camera.shift_y = -0.1f;

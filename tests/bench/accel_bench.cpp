@@ -18,6 +18,7 @@
 #include "core/rsh/cull_units.h"
 
 #include <embree3/rtcore.h>
+#include <sys/resource.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -25,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -274,20 +276,36 @@ int embree_process(size_t n, int threads, int width) {
 
 // --process sheaf: the same scene rendered by Sheaf under `mode`, in a process of its own:
 // prepared, its structure built, one frame at width x width.
+// The process's peak resident memory so far, in MiB.
+double peak_mib() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_maxrss) / 1024.0;
+}
+
 int sheaf_process(size_t n, int threads, int width, const std::string& mode) {
     const auto t0 = Clock::now();
-    const PreparedScene prepared = prepare_scene(make_scene(n));
+    const double start = peak_mib();
+    std::optional<Scene> scene(make_scene(n));
+    const double made = peak_mib();
+    const PreparedScene prepared = prepare_scene(*scene);
+    const double ready = peak_mib();
+    scene.reset();
     Settings kv;
     kv.set("accel", mode);
     kv.set("width", std::to_string(width));
     kv.set("height", std::to_string(width));
     kv.set("threads", std::to_string(threads));
     const RenderSettings s = RenderSettings::resolve(kv);
+    const auto units = cull_units_for(prepared, s);
+    const double built = peak_mib();
     const Frame f = render_frame_cpu(prepared, s);
     std::printf("sheaf process: %zu triangles, accel=%s, scene and frame %.1f ms (frame %.1f ms), "
-                "peak tracked %.1f MiB\n",
+                "peak tracked %.1f MiB; peak resident: at start %.0f MiB, scene made %.0f, "
+                "prepared %.0f, structure built %.0f, after the frame %.0f\n",
                 prepared.tris.size(), mode.c_str(), ms(t0, Clock::now()),
-                f.stats.get("time_ms.frame"), f.stats.get("memory.peak_bytes") / 1048576.0);
+                f.stats.get("time_ms.frame"), f.stats.get("memory.peak_bytes") / 1048576.0, start,
+                made, ready, built, peak_mib());
     return 0;
 }
 

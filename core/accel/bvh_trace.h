@@ -133,11 +133,12 @@ SHEAF_HD_INLINE uint32_t bvh_child_entry(const BvhNode& n, uint32_t node, int sl
 /// pass log for any-hit ones). `shared`: other traversals record hits of the same ray (the
 /// ray hierarchy's entries, core/rsh/bvh_top.h), so a closest hit is an atomic minimum; each
 /// traversal prunes by its own best hit only, so its counts do not depend on the others'. (A
-/// flag, not a template parameter: each instance is another copy of the exact tests in the
-/// CUDA module, which ptxas takes minutes over.) `skip`: primitive flags that are no
+/// flag, not a template parameter, and not inlined on the device: each copy is another copy
+/// of the exact tests in the CUDA module, which ptxas takes minutes over; the bvh launch and
+/// the ray hierarchy's over the BVH call the same two.) `skip`: primitive flags that are no
 /// candidates for this ray type.
 template <bool Any>
-SHEAF_HD_INLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& scene, const Ray& r,
+SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& scene, const Ray& r,
                                          uint32_t i, uint32_t start, bool unbounded, bool shared,
                                          bool shadow, uint8_t skip, const HitSinks& out) {
     BvhCounts c;

@@ -97,6 +97,7 @@ void spatial_order(PreparedScene& p, size_t b, size_t e) {
     }
     std::sort(order.begin(), order.end());
     auto permute = [&](auto& v) {
+        if (v.empty()) return; // normals or texture coordinates no mesh has
         std::vector<std::decay_t<decltype(v[0])>> tmp(e - b);
         for (size_t k = 0; k < e - b; ++k) tmp[k] = v[order[k].second];
         std::copy(tmp.begin(), tmp.end(), v.begin() + std::ptrdiff_t(b));
@@ -179,8 +180,15 @@ PreparedScene prepare_scene(const Scene& scene) {
     PreparedScene p;
     const size_t n = scene.triangle_count();
     p.tris.resize(n);
-    p.normals.resize(n);
-    p.uvs.resize(n);
+    // Vertex normals and texture coordinates only where some mesh has them (96 bytes a
+    // triangle otherwise spent on zeros): empty arrays, null pointers in SceneView.
+    bool any_normals = false, any_uvs = false;
+    for (const Object& obj : scene.objects) {
+        any_normals = any_normals || !scene.meshes[obj.mesh].normals.empty();
+        any_uvs = any_uvs || !scene.meshes[obj.mesh].uvs.empty();
+    }
+    if (any_normals) p.normals.resize(n);
+    if (any_uvs) p.uvs.resize(n);
     p.prim_object.resize(n);
     p.prim_sphere.resize(n);
     p.object_begin.reserve(scene.objects.size() + 1);
@@ -207,12 +215,12 @@ PreparedScene prepare_scene(const Scene& scene) {
                 tn.nb = obj.transform.normal(mesh.normals[ix[1]]);
                 tn.nc = obj.transform.normal(mesh.normals[ix[2]]);
             }
-            p.normals[base + t] = tn;
+            if (any_normals) p.normals[base + t] = tn;
             TriangleUvs tu{};
             if (!mesh.uvs.empty())
                 for (int k = 0; k < 3; ++k)
                     tu.s[k] = mesh.uvs[2 * ix[k]], tu.t[k] = mesh.uvs[2 * ix[k] + 1];
-            p.uvs[base + t] = tu;
+            if (any_uvs) p.uvs[base + t] = tu;
         });
         spatial_order(p, base, base + tc);
         base += tc;

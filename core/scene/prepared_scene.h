@@ -51,8 +51,8 @@ struct PreparedScene {
     // Primitive ids: triangles first, [0, tris.size()); then analytic objects, one primitive
     // each (a shape or a CSG tree), [tris.size(), prim_count()).
     std::vector<TriangleVerts> tris;
-    std::vector<TriangleNormals> normals;
-    std::vector<TriangleUvs> uvs;
+    std::vector<TriangleNormals> normals; // empty when no mesh has vertex normals
+    std::vector<TriangleUvs> uvs;         // empty when no mesh has texture coordinates
     std::vector<uint32_t> prim_object;
     std::vector<Sphere> prim_sphere;
 

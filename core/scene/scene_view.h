@@ -16,8 +16,8 @@ namespace sheaf {
 struct SceneView : ShapeTables {
     // Primitives: triangles [0, tri_count), then one per analytic object.
     const TriangleVerts* tris = nullptr;
-    const TriangleNormals* normals = nullptr;
-    const TriangleUvs* uvs = nullptr;
+    const TriangleNormals* normals = nullptr; // null when no mesh has vertex normals
+    const TriangleUvs* uvs = nullptr;         // null when no mesh has texture coordinates
     uint32_t tri_count = 0;
     uint32_t analytic_count = 0;
     const uint32_t* prim_object = nullptr;
@@ -92,7 +92,8 @@ struct SceneView : ShapeTables {
                       {p.fn_programs.data(), p.fn_code.data(), p.fn_patterns.data(),
                        p.fn_pigments.data(), p.fn_pigment_entries.data(), p.warps.data()},
                       p.julias.data()},
-          tris(p.tris.data()), normals(p.normals.data()), uvs(p.uvs.data()),
+          tris(p.tris.data()), normals(p.normals.empty() ? nullptr : p.normals.data()),
+          uvs(p.uvs.empty() ? nullptr : p.uvs.data()),
           tri_count(uint32_t(p.tris.size())), analytic_count(uint32_t(p.analytic_root.size())),
           prim_object(p.prim_object.data()), prim_sphere(p.prim_sphere.data()),
           prim_flags(p.prim_flags.data()), prim_flag_count(uint32_t(p.prim_flags.size())),

@@ -103,18 +103,25 @@ SHEAF_HD_INLINE SurfaceHit make_surface_hit(const SceneView& scene, const Ray& r
     h.front = dot(gn, ray.dir) < 0;
     if (!h.front) gn = -gn;
     h.geo_normal = gn;
-    const TriangleNormals& tn = scene.normals[prim];
+    // Vertex normals and texture coordinates: none in the scene when no mesh has them.
     Vec3 n = gn;
-    if (tn.na.x != 0 || tn.na.y != 0 || tn.na.z != 0) {
-        n = normalize(tn.na * (1.0f - u - v) + tn.nb * u + tn.nc * v);
-        if (dot(n, gn) < 0) n = -n; // an interpolated normal on the far side is turned round
-        if (length_squared(n) == 0) n = gn;
+    if (scene.normals) {
+        const TriangleNormals& tn = scene.normals[prim];
+        if (tn.na.x != 0 || tn.na.y != 0 || tn.na.z != 0) {
+            n = normalize(tn.na * (1.0f - u - v) + tn.nb * u + tn.nc * v);
+            if (dot(n, gn) < 0) n = -n; // an interpolated normal on the far side is turned round
+            if (length_squared(n) == 0) n = gn;
+        }
     }
     h.normal = n;
-    const TriangleUvs& tu = scene.uvs[prim];
-    const float w = 1.0f - u - v;
-    surface_detail::finish_surface(scene, h, w * tu.s[0] + u * tu.s[1] + v * tu.s[2],
-                                   w * tu.t[0] + u * tu.t[1] + v * tu.t[2]);
+    float uv_s = 0, uv_t = 0;
+    if (scene.uvs) {
+        const TriangleUvs& tu = scene.uvs[prim];
+        const float w = 1.0f - u - v;
+        uv_s = w * tu.s[0] + u * tu.s[1] + v * tu.s[2];
+        uv_t = w * tu.t[0] + u * tu.t[1] + v * tu.t[2];
+    }
+    surface_detail::finish_surface(scene, h, uv_s, uv_t);
     return h;
 }
 

@@ -1,9 +1,9 @@
 // The ray hierarchy over the BVH (accel=crsh-bvh, rah-bvh): a top node's sphere and cone
 // descend the scene's BVH (core/accel/bvh.h) while they meet a child's bounds and the child is
 // much wider than the node where it lies (node_stops_at); where it is not (or at a leaf) the
-// descent stops and the (node, entry) pair goes down the ray levels, each child node keeping
-// the entries whose bounds it meets; finally each ray of a level-1 node continues into the
-// entries its node kept, on its own, as accel=bvh's rays do from the root
+// descent stops and the (node, reference) pair goes down the ray levels, each child node
+// keeping the references whose bounds it meets; finally each ray of a level-1 node continues
+// into the references its node kept, on its own, as accel=bvh's rays do from the root
 // (bvh_trace_from). The upper BVH levels are then tested once per top node instead of once
 // per ray. Host-and-device: the CPU traversal and the wavefront's launches run the same
 // functions.

@@ -26,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <optional>
 #include <string>
 #include <vector>
@@ -311,7 +312,7 @@ int sheaf_process(size_t n, int threads, int width, const std::string& mode) {
 
 } // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     std::vector<size_t> sizes = {10000, 100000, 1000000};
     int threads = 2, width = 512, rounds = 3;
     std::vector<std::string> modes = {"crsh", "bvh"};
@@ -321,7 +322,14 @@ int main(int argc, char** argv) {
         auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
         if (a == "--sizes") {
             sizes.clear();
-            for (const std::string& s : bench::split_list(next())) sizes.push_back(std::stoull(s));
+            for (const std::string& s : bench::split_list(next())) {
+                if (s.find_first_not_of("0123456789") != std::string::npos) {
+                    std::fprintf(stderr, "sheaf_accel_bench: --sizes: '%s' is not a count\n",
+                                 s.c_str());
+                    return 2;
+                }
+                sizes.push_back(std::stoull(s));
+            }
         } else if (a == "--threads") {
             threads = std::max(1, std::stoi(next()));
         } else if (a == "--width") {
@@ -337,6 +345,10 @@ int main(int argc, char** argv) {
                         "[--width 512] [--modes crsh,bvh] [--rounds 3] [--process embree|sheaf]\n");
             return a == "--help" || a == "-h" ? 0 : 2;
         }
+    }
+    if (sizes.empty() || modes.empty()) {
+        std::fprintf(stderr, "sheaf_accel_bench: --sizes and --modes need at least one value\n");
+        return 2;
     }
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
     if (process == "embree") return embree_process(sizes.at(0), threads, width);
@@ -540,4 +552,14 @@ int main(int argc, char** argv) {
     for (const Summary& x : summary)
         std::printf("| %zu | %.1f | %.1f ms |\n", x.tris, x.embree_bytes, x.primary_ms);
     return 0;
+}
+
+int main(int argc, char** argv) {
+    // A bad size or setting is an error message, not an abort.
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "sheaf_accel_bench: %s\n", e.what());
+        return 2;
+    }
 }

@@ -278,6 +278,7 @@ void Scene::validate() const {
         if (li.group > kMaxLightGroup)
             throw SceneError(name + ": a light group above " + std::to_string(kMaxLightGroup));
     }
+    if (!is_finite(background)) throw SceneError("the background colour is not finite");
     const Camera& c = camera;
     if (!is_finite(c.position) || !is_finite(c.look_at) || !is_finite(c.up))
         throw SceneError("the camera is not finite");
@@ -326,6 +327,16 @@ void Scene::validate() const {
                              " has a colour that is not finite or an ior <= 0");
     for (size_t m = 0; m < materials.size(); ++m) {
         const Material& mt = materials[m];
+        for (float v :
+             {mt.ambient, mt.diffuse, mt.specular, mt.phong_exponent, mt.mirror, mt.transmission,
+              mt.ior, mt.brilliance, mt.blinn, mt.blinn_exponent, mt.metallic, mt.mirror_min,
+              mt.mirror_falloff, mt.fade_distance, mt.fade_power})
+            if (!std::isfinite(v))
+                throw SceneError("material " + std::to_string(m) +
+                                 " has a finish or interior value that is not finite");
+        if (!is_finite(mt.mirror_color) || !is_finite(mt.fade_color))
+            throw SceneError("material " + std::to_string(m) +
+                             " has a reflection or fade colour that is not finite");
         if (!(mt.caustics >= 0) || !std::isfinite(mt.caustics))
             throw SceneError("material " + std::to_string(m) +
                              " has caustics that are not finite or < 0");

@@ -78,6 +78,22 @@ TEST(SceneValidate, LensesConicGlyphsAndCausticsAreChecked) {
     EXPECT_EQ(error_of(g), "material 0 has caustics that are not finite or < 0");
 }
 
+// Found by the C ABI fuzzer: an infinite background or finish value passed commit and put an
+// infinite pixel in the frame.
+TEST(SceneValidate, BackgroundAndFinishValuesThatAreNotFiniteAreErrors) {
+    const float inf = std::numeric_limits<float>::infinity();
+    Scene s = one_sphere({});
+    s.background = Vec3(0, inf, 0);
+    EXPECT_EQ(error_of(s), "the background colour is not finite");
+    s.background = Vec3(0.0f);
+    s.materials[0].diffuse = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_EQ(error_of(s), "material 0 has a finish or interior value that is not finite");
+    s.materials[0].diffuse = 0.7f, s.materials[0].mirror_color = Vec3(inf);
+    EXPECT_EQ(error_of(s), "material 0 has a reflection or fade colour that is not finite");
+    s.materials[0].mirror_color = Vec3(1.0f);
+    EXPECT_EQ(error_of(s), "");
+}
+
 // CSG is evaluated recursively on both backends: deeper than kMaxCsgNesting is an error (5,000
 // nested differences overflowed the CPU backend's stack).
 TEST(SceneValidate, CsgDeeperThanTheLimitIsAnError) {

@@ -406,6 +406,13 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     std::map<std::string, std::string> v;
     for (auto& [k, val] : effective(explicit_settings, scene)) v[k] = val;
     auto i = [&](const char* k) { return std::stoi(v.at(k)); };
+    // Not std::stof: it throws on a subnormal, which the settings' ranges may allow.
+    auto f = [&](const char* k) {
+        const std::string& text = v.at(k);
+        double d = 0;
+        std::from_chars(text.data(), text.data() + text.size(), d);
+        return float(d);
+    };
     auto choice = [&](const char* k) { return v.at(k); };
     RenderSettings r;
     const std::string accel = choice("accel");
@@ -452,10 +459,10 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.aa_samples = i("aa.samples");
     r.threads = i("threads");
     r.ao_samples = i("ao.samples");
-    r.ao_distance = std::stof(v.at("ao.distance"));
+    r.ao_distance = f("ao.distance");
     r.radiosity_samples = i("radiosity.samples");
     r.radiosity_depth = i("radiosity.depth");
-    r.radiosity_brightness = std::stof(v.at("radiosity.brightness"));
+    r.radiosity_brightness = f("radiosity.brightness");
     r.batch_pairs = std::stoll(v.at("traversal.batch"));
     r.passes = subset_bits(spec_or_throw("output.passes"), v.at("output.passes"));
     return r;

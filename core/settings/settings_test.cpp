@@ -215,6 +215,16 @@ TEST(RenderSettings, BatchPairsFollowTheBackendWhenZero) {
     EXPECT_EQ(device_batch_pairs(0), size_t(1) << 22);
 }
 
+// Found by the C ABI fuzzer: a subnormal is in radiosity.brightness's range, and std::stof
+// threw std::out_of_range on its canonical text.
+TEST(RenderSettings, ResolvesSubnormalFloats) {
+    Settings s;
+    s.set("radiosity.brightness", "1e-45");
+    const RenderSettings r = RenderSettings::resolve(s, {});
+    EXPECT_GE(r.radiosity_brightness, 0.0f);
+    EXPECT_LT(r.radiosity_brightness, 1e-37f);
+}
+
 TEST(RenderSettings, ExplicitBeatsSceneBeatsDefault) {
     Settings s;
     s.set("hierarchy.arity", "16");

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -60,6 +61,18 @@ void fill_info(const OIIO::ImageSpec& spec, SheafImageInfo* info) {
 /// Opens `path` and fills *info; null (the message in `error`) when it cannot be read.
 std::unique_ptr<OIIO::ImageInput> open_input(const char* path, SheafImageInfo* info, char* error,
                                              size_t size) {
+    // Only a regular file: OpenImageIO hands a folder to libheif, which then reads without end
+    // and takes gigabytes (found by the C ABI fuzzer with a texture path of "/"), and a device
+    // such as /dev/zero never ends.
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::is_regular_file(status)) {
+        put(error, size,
+            std::string(path) + (ec || !std::filesystem::exists(status)
+                                     ? ": no such file"
+                                     : ": not an image file (a folder or a device)"));
+        return nullptr;
+    }
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
     if (!in) put(error, size, OIIO::geterror());
     else fill_info(in->spec(), info);

@@ -120,5 +120,23 @@ TEST(Textures, AMissingTextureNamesTheFileAndThePlace) {
     }
 }
 
+// Found by the C ABI fuzzer: OpenImageIO handed the folder "/" to libheif, which read without
+// end and took gigabytes. A folder or a device is an error before any reader sees it.
+TEST(Textures, AFolderOrADeviceIsNotATexture) {
+    for (const char* path : {"/", "/dev/zero"}) {
+        Scene s = quad_scene(0);
+        s.textures.push_back(Texture{path, TextureMapping::Uv, {}, "", ""});
+        PreparedScene p = prepare_scene(s);
+        try {
+            io::attach_texture_sampler(p);
+            FAIL() << "expected an error for " << path;
+        } catch (const SceneError& e) {
+            EXPECT_NE(std::string(e.what()).find("not an image file (a folder or a device)"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+}
+
 } // namespace
 } // namespace sheaf

@@ -1,6 +1,7 @@
 // Runs saved fuzz inputs (files, or every file in the folders given) through the checks the
-// fuzzers make, each as the format of its extension: the regression test of what fuzzing
-// found, built with any compiler.
+// fuzzers make, each as the format of its extension (.capi: a host's C ABI calls): the
+// regression test of what fuzzing found, built with any compiler.
+#include "tests/fuzz/capi_input.h"
 #include "tests/fuzz/scene_input.h"
 
 #include <algorithm>
@@ -31,8 +32,8 @@ int main(int argc, char** argv) {
     }
     for (const fs::path& p : inputs) {
         const std::string ext = p.extension().string();
-        if (ext != ".pov" && ext != ".xml" && ext != ".obj" && ext != ".ply") {
-            std::fprintf(stderr, "%s: the extension says no format (.pov .xml .obj .ply)\n",
+        if (ext != ".pov" && ext != ".xml" && ext != ".obj" && ext != ".ply" && ext != ".capi") {
+            std::fprintf(stderr, "%s: the extension says no format (.pov .xml .obj .ply .capi)\n",
                          p.c_str());
             return 2;
         }
@@ -40,8 +41,11 @@ int main(int argc, char** argv) {
         const std::string bytes{std::istreambuf_iterator<char>(in), {}};
         std::printf("%s (%zu bytes)\n", p.filename().c_str(), bytes.size());
         std::fflush(stdout);
-        sheaf::fuzz::run_scene_input(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(),
-                                     ext.c_str(), stdout);
+        const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+        if (ext == ".capi")
+            sheaf::fuzz::run_capi_input(data, bytes.size(), stdout);
+        else
+            sheaf::fuzz::run_scene_input(data, bytes.size(), ext.c_str(), stdout);
     }
     std::printf("%zu inputs, no broken promise\n", inputs.size());
     return 0;

@@ -1,0 +1,20 @@
+// One fuzz input as a host's program: the bytes choose a sequence of C ABI calls that build a
+// scene and set a renderer (materials, meshes, objects, lights, cameras, textures,
+// subdivision cages, load options, settings), with the values a careless or hostile host
+// might pass: NaN and infinite floats, out-of-range ids, enums and flags, NULL pointers with
+// counts, settings out of their range. Then the scene is committed and rendered small.
+// Every failed call must return an error code with a message (promises.h); crashes,
+// sanitizer reports, hangs and runaway memory are the fuzzer's own findings.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+
+namespace sheaf::fuzz {
+
+/// Runs one input as a sequence of C ABI calls. Returns 0; aborts with a message when the
+/// library breaks a promise. With `log`, writes each failed call and the outcome there.
+int run_capi_input(const uint8_t* data, size_t size, std::FILE* log = nullptr);
+
+} // namespace sheaf::fuzz

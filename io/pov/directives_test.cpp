@@ -313,11 +313,13 @@ TEST(PovLimits, BudgetsAreSetByTheHostAndReported) {
     EXPECT_GT(r.usage.parse_steps, 100u * 10);
     EXPECT_GE(r.usage.data_bytes, 100 * sizeof(PovObject));
     const std::vector<LimitUse> uses = limit_uses(r.usage, PovOptions().limits);
-    ASSERT_EQ(uses.size(), 4u);
+    ASSERT_EQ(uses.size(), 6u);
     EXPECT_EQ(uses[0].name, "parse_steps");
     EXPECT_EQ(uses[3].name, "loop_iterations");
     EXPECT_EQ(uses[3].used, 100);
     EXPECT_EQ(uses[3].limit, 1e6);
+    EXPECT_EQ(uses[4].name, "macro_calls");
+    EXPECT_EQ(uses[5].name, "function_terms");
 
     PovOptions o;
     o.limits.loop_iterations = 50;
@@ -335,7 +337,26 @@ TEST(PovLimits, BudgetsAreSetByTheHostAndReported) {
     o.limits.data_bytes = 50 * sizeof(PovObject);
     EXPECT_NE(error_of(loop, o).find("error: the scene's data would exceed"), std::string::npos);
 
+    // Macro calls and the function terms evaluated while reading: each its own budget.
+    const std::string calls = "#macro One() 1 #end\n#declare F = function { x + y * z }\n"
+                              "#for (I, 1, 10)\n  #declare V = One() + F(I, 2, 3);\n#end";
+    const PovResult c = load_text(calls);
+    EXPECT_EQ(c.usage.macro_calls, 10u);
+    EXPECT_GE(c.usage.function_terms, 10u * 3);
+    o = {};
+    o.limits.macro_calls = 9;
+    EXPECT_NE(error_of(calls, o).find("scene.pov:4:16: error: more than 9 macro calls"),
+              std::string::npos);
+    o = {};
+    o.limits.function_terms = 20;
+    EXPECT_NE(error_of(calls, o).find("scene.pov:4:24: error: the scene evaluates more than 20 "
+                                      "function terms while it is read"),
+              std::string::npos);
+
     PovLimits l;
+    EXPECT_TRUE(set_limit(l, "macro_calls", 7));
+    EXPECT_EQ(l.macro_calls, 7u);
+    EXPECT_TRUE(reset_limit(l, "function_terms"));
     EXPECT_TRUE(set_limit(l, "data_mib", 3));
     EXPECT_EQ(l.data_bytes, uint64_t(3) << 20);
     EXPECT_FALSE(set_limit(l, "data_mib", 0));
@@ -355,7 +376,22 @@ TEST(PovLimits, RunawayScenesStopEarly) {
               std::string::npos);
     // A string doubled without end: one string may take a sixteenth of the data budget.
     EXPECT_NE(error_of("#declare S = \"ab\";\n#while (1)\n  #declare S = concat(S, S);\n#end")
-                  .find("scene.pov:3:16: error: a string longer than 16384 KiB"),
+                  .find("scene.pov:3:16: error: a string longer than 8192 KiB"),
+              std::string::npos);
+    // Macros that each call the one below twice (2^40 calls): the macro-call budget, long
+    // before the parse steps.
+    std::string doubling = "#macro M0() 1 #end\n";
+    for (int i = 1; i <= 40; ++i)
+        doubling += "#macro M" + std::to_string(i) + "() M" + std::to_string(i - 1) + "() + M" +
+                    std::to_string(i - 1) + "() #end\n";
+    EXPECT_NE(
+        error_of(doubling + "#declare Y = M40();").find("error: more than 5000000 macro calls"),
+        std::string::npos);
+    // A function redeclared as the sum of itself twice, 40 times over, evaluated once.
+    std::string sums = "#declare F = function { x }\n";
+    for (int i = 0; i < 40; ++i) sums += "#declare F = function { F(x,y,z) + F(x,y,z) }\n";
+    EXPECT_NE(error_of(sums + "#declare Y = F(1,1,1);")
+                  .find("error: the scene evaluates more than 50000000 function terms"),
               std::string::npos);
     // A mesh's triangles count against the data budget.
     PovOptions o;

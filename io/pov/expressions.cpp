@@ -527,14 +527,14 @@ Value Parser::call_function(const Token& t, const PovFunction& f) {
         for (int i = 0; i < 5; ++i) c[size_t(i)] = f.pigment->at(i, args[0], args[1], args[2]);
         return Value::color(c);
     }
-    uint64_t left = steps_left();
+    uint64_t left = function_terms_left();
     const uint64_t had = left;
     try {
         const double v = f.eval(args.data(), int(args.size()), left);
-        steps_ += had - left;
+        count_function_terms(had - left);
         return Value::number(v);
     } catch (const FnStepsExceeded&) {
-        too_many_steps(t);
+        too_many_function_terms(t);
     }
 }
 

@@ -49,7 +49,7 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
         }
         charge(size_t(w) * size_t(h) * sizeof(float), at);
         heights.resize(size_t(w) * size_t(h));
-        uint64_t left = steps_left();
+        uint64_t left = function_terms_left();
         const uint64_t had = left;
         try {
             for (int j = 0; j < h; ++j)
@@ -60,9 +60,9 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
                         float(fn->eval(args, fn->params.size() == 3 ? 3 : 0, left));
                 }
         } catch (const FnStepsExceeded&) {
-            too_many_steps(src);
+            too_many_function_terms(src);
         }
-        steps_ += had - left;
+        count_function_terms(had - left);
     } else {
         const Token type = peek();
         if (accept_kw("pot") || accept_kw("sys")) { // Fractint's and the system's formats

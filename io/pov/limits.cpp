@@ -11,7 +11,9 @@ std::vector<LimitUse> limit_uses(const PovUsage& used, const PovLimits& limits) 
     return {{"parse_steps", double(used.parse_steps), double(limits.parse_steps)},
             {"objects", double(used.objects), double(limits.objects)},
             {"data_mib", double(used.data_bytes) / kMiB, double(limits.data_bytes) / kMiB},
-            {"loop_iterations", double(used.loop_iterations), double(limits.loop_iterations)}};
+            {"loop_iterations", double(used.loop_iterations), double(limits.loop_iterations)},
+            {"macro_calls", double(used.macro_calls), double(limits.macro_calls)},
+            {"function_terms", double(used.function_terms), double(limits.function_terms)}};
 }
 
 bool set_limit(PovLimits& limits, const std::string& name, uint64_t value) {
@@ -24,6 +26,10 @@ bool set_limit(PovLimits& limits, const std::string& name, uint64_t value) {
         limits.data_bytes = value << 20 >> 20 == value ? value << 20 : UINT64_MAX;
     else if (name == "loop_iterations")
         limits.loop_iterations = value;
+    else if (name == "macro_calls")
+        limits.macro_calls = value;
+    else if (name == "function_terms")
+        limits.function_terms = value;
     else
         return false;
     return true;
@@ -39,6 +45,10 @@ bool reset_limit(PovLimits& limits, const std::string& name) {
         limits.data_bytes = defaults.data_bytes;
     else if (name == "loop_iterations")
         limits.loop_iterations = defaults.loop_iterations;
+    else if (name == "macro_calls")
+        limits.macro_calls = defaults.macro_calls;
+    else if (name == "function_terms")
+        limits.function_terms = defaults.function_terms;
     else
         return false;
     return true;

@@ -18,15 +18,23 @@ struct PovLimits {
     /// Objects parsed, temporaries and declarations included.
     uint64_t objects = 200'000;
     /// Live arrays and strings, and objects placed or held by a CSG, in bytes.
-    uint64_t data_bytes = uint64_t(256) << 20;
+    uint64_t data_bytes = uint64_t(128) << 20;
     /// Runs of one #while or #for loop.
     uint64_t loop_iterations = 1'000'000;
+    /// Macro calls. Each costs the reader far more than the few parse steps of its name and
+    /// arguments, so a macro that calls itself twice runs out of these long before parse_steps.
+    uint64_t macro_calls = 5'000'000;
+    /// Terms of functions evaluated while the scene is read (`#declare v = f(...)`, height
+    /// fields of a function); they also count as parse steps. A term is cheaper than a token,
+    /// so this budget is the smaller.
+    uint64_t function_terms = 50'000'000;
 };
 
 /// What a scene used of each budget of PovLimits: the total steps and objects, the peak of
-/// the data, the longest loop.
+/// the data, the longest loop, the total macro calls and function terms.
 struct PovUsage {
     uint64_t parse_steps = 0, objects = 0, data_bytes = 0, loop_iterations = 0;
+    uint64_t macro_calls = 0, function_terms = 0;
 };
 
 /// One limit as hosts see it (the load option limit.NAME): its name, the amount used and the
@@ -37,7 +45,8 @@ struct LimitUse {
 };
 std::vector<LimitUse> limit_uses(const PovUsage& used, const PovLimits& limits);
 
-/// Sets limit `name` (parse_steps, objects, data_mib, loop_iterations) to `value`; false when
+/// Sets limit `name` (parse_steps, objects, data_mib, loop_iterations, macro_calls,
+/// function_terms) to `value`; false when
 /// the name is unknown or the value outside 1..2^50.
 bool set_limit(PovLimits& limits, const std::string& name, uint64_t value);
 /// Sets limit `name` back to its default; false when the name is unknown.

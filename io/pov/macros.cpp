@@ -69,6 +69,11 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
     if (args.size() != params.size())
         error_at(name, "macro '" + name.text + "' takes " + std::to_string(params.size()) +
                            " arguments, not " + std::to_string(args.size()));
+    if (++macro_calls_ > options_.limits.macro_calls)
+        error_at(name, "more than " + std::to_string(options_.limits.macro_calls) +
+                           " macro calls (a macro that calls itself many times over?); if it is "
+                           "meant to, raise the limit: render --limit macro_calls=N, load option "
+                           "limit.macro_calls");
     if (macro_depth_ >= kMaxMacroDepth)
         error_at(name, "macro calls nested deeper than " + std::to_string(kMaxMacroDepth) +
                            " (endless recursion?)");

@@ -368,7 +368,12 @@ class Parser {
     // ---- work ----
     uint64_t steps_ = 0; // against options_.limits.parse_steps
     /// What the scene has used of options_.limits so far.
-    PovUsage usage() const { return {steps_, objects_made_, peak_data_bytes_, longest_loop_}; }
+    PovUsage usage() const {
+        return {steps_,        objects_made_, peak_data_bytes_,
+                longest_loop_, macro_calls_,  function_terms_};
+    }
+    uint64_t macro_calls_ = 0;    // against limits.macro_calls
+    uint64_t function_terms_ = 0; // against limits.function_terms (and parse_steps)
     uint64_t longest_loop_ = 0; // the most runs of one loop, against limits.loop_iterations
     size_t peak_data_bytes_ = 0;
     /// The steps left before limits.parse_steps (for a function's evaluation to count down).
@@ -378,6 +383,14 @@ class Parser {
     /// One more object parsed (`count`: a sweep's pieces); an error at `at` past limits.objects.
     void count_objects(const Token& at, size_t count = 1);
     [[noreturn]] void too_many_steps(const Token& at) const;
+    /// The terms a function evaluated while the scene is read may take: the fewer of the
+    /// parse steps and the function terms left.
+    uint64_t function_terms_left() const;
+    /// Counts `terms` evaluated, as function terms and as parse steps.
+    void count_function_terms(uint64_t terms) { steps_ += terms, function_terms_ += terms; }
+    /// The error at `at` when an evaluation ran out of function_terms_left(): names the limit
+    /// that ran out.
+    [[noreturn]] void too_many_function_terms(const Token& at) const;
     int nesting_ = 0;
     /// One level of a nested construct, from `at` to the end of its scope; an error at `at`
     /// past kMaxNesting.

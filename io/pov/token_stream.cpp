@@ -139,9 +139,23 @@ void Parser::advance() {
 
 void Parser::too_many_steps(const Token& at) const {
     error_at(at, "the scene takes more than " + std::to_string(options_.limits.parse_steps) +
-                     " parse steps (tokens read and function terms evaluated): a macro or "
-                     "function that calls itself without end? If it is meant to, raise the "
-                     "limit: render --limit parse_steps=N, load option limit.parse_steps");
+                     " parse steps (tokens read and function terms evaluated): loops within "
+                     "loops, or a macro that calls itself without end? If it is meant to, raise "
+                     "the limit: render --limit parse_steps=N, load option limit.parse_steps");
+}
+
+uint64_t Parser::function_terms_left() const {
+    const uint64_t limit = options_.limits.function_terms;
+    return std::min(steps_left(), limit - std::min(function_terms_, limit));
+}
+
+void Parser::too_many_function_terms(const Token& at) const {
+    const uint64_t limit = options_.limits.function_terms;
+    if (steps_left() < limit - std::min(function_terms_, limit)) too_many_steps(at);
+    error_at(at, "the scene evaluates more than " + std::to_string(limit) +
+                     " function terms while it is read: a function that calls itself many "
+                     "times over? If it is meant to, raise the limit: render --limit "
+                     "function_terms=N, load option limit.function_terms");
 }
 
 const Token& Parser::peek() {

@@ -208,7 +208,8 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
             if (!sheaf::io::pov::reset_limit(limits, name)) // "": the default
                 throw InvalidArgument("unknown load option '" + k +
                                       "'; known limits: limit.parse_steps, limit.objects, "
-                                      "limit.data_mib, limit.loop_iterations");
+                                      "limit.data_mib, limit.loop_iterations, "
+                                      "limit.macro_calls, limit.function_terms");
             if (!v.empty() && (!number || !sheaf::io::pov::set_limit(limits, name, n)))
                 throw InvalidArgument("load option '" + k + "': '" + v +
                                       "' is not allowed; expected an integer in 1..2^50, or \"\" "
@@ -235,7 +236,8 @@ SHEAF_API SheafError sheafSceneSetLoadOption(SheafScene scene, const char* key,
                                   "image_height, initial_frame, final_frame, initial_clock, "
                                   "final_clock, cyclic_animation, frame, clock, declare, "
                                   "subdivision.limit, subdivision.boundary, limit.parse_steps, "
-                                  "limit.objects, limit.data_mib, limit.loop_iterations");
+                                  "limit.objects, limit.data_mib, limit.loop_iterations, "
+                                  "limit.macro_calls, limit.function_terms");
         }
     });
 }

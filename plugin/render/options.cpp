@@ -175,7 +175,8 @@ std::optional<int> parse_options(int argc, char** argv, Options& o) {
         ->type_name("NAME=NUMBER");
     app.add_option("--limit", o.limits,
                    "NAME=N: raise (or lower) one of the scene reader's limits: parse_steps, "
-                   "objects, data_mib, loop_iterations; repeatable (render --check prints "
+                   "objects, data_mib, loop_iterations, macro_calls, function_terms; "
+                   "repeatable (render --check prints "
                    "what a scene uses of each)")
         ->allow_extra_args(false)
         ->type_name("NAME=N");

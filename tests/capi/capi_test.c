@@ -771,32 +771,40 @@ static void test_reader_limits(void) {
     size_t count = 0;
     const char* name = NULL;
     double used = 0, limit = 0;
-    write_text("capi_test_limits.pov",
-               "camera { location <0, 1, -9> look_at 0 }\n"
-               "light_source { <3, 5, -4> rgb 1 }\n"
-               "#for (I, 1, 30) sphere { <I / 10, 0, 0>, 0.1 } #end\n");
+    write_text("capi_test_limits.pov", "camera { location <0, 1, -9> look_at 0 }\n"
+                                       "light_source { <3, 5, -4> rgb 1 }\n"
+                                       "#macro Ball(I) sphere { <I / 10, 0, 0>, 0.1 } #end\n"
+                                       "#for (I, 1, 30) Ball(I) #end\n");
     OK(sheafSceneNew(&s));
     OK(sheafSceneGetLimitCount(s, &count));
     CHECK(count == 0, "%zu limits before any load", count);
     OK(sheafSceneLoadFile(s, "capi_test_limits.pov"));
     OK(sheafSceneGetLimitCount(s, &count));
-    CHECK(count == 4, "%zu limits, expected 4", count);
+    CHECK(count == 6, "%zu limits, expected 6", count);
     OK(sheafSceneGetLimitUse(s, 3, &name, &used, &limit));
     CHECK(strcmp(name, "loop_iterations") == 0 && used == 30 && limit == 1e6,
           "limit 3: %s %g of %g, expected loop_iterations 30 of 1e6", name, used, limit);
     OK(sheafSceneGetLimitUse(s, 1, &name, &used, &limit));
     /* The 30 spheres and the light source. */
     CHECK(strcmp(name, "objects") == 0 && used == 31, "limit 1: %s %g", name, used);
-    expect_error(sheafSceneGetLimitUse(s, 4, &name, &used, &limit), SHEAF_ERROR_INVALID_ARGUMENT,
+    OK(sheafSceneGetLimitUse(s, 4, &name, &used, &limit));
+    CHECK(strcmp(name, "macro_calls") == 0 && used == 30 && limit == 5e6,
+          "limit 4: %s %g of %g, expected macro_calls 30 of 5e6", name, used, limit);
+    expect_error(sheafSceneGetLimitUse(s, 6, &name, &used, &limit), SHEAF_ERROR_INVALID_ARGUMENT,
                  "limit past the end", "does not exist", NULL);
     expect_error(sheafSceneGetLimitUse(s, 0, NULL, &used, &limit), SHEAF_ERROR_INVALID_ARGUMENT,
                  "limit without a name pointer", "name", NULL);
     /* Lowered below what the scene needs: an error at the loop; back to the default: loads. */
     OK(sheafSceneSetLoadOption(s, "limit.loop_iterations", "20"));
     expect_error(sheafSceneLoadFile(s, "capi_test_limits.pov"), SHEAF_ERROR_SCENE,
-                 "a loop past limit.loop_iterations", "capi_test_limits.pov:3:2",
+                 "a loop past limit.loop_iterations", "capi_test_limits.pov:4:2",
                  "more than 20 times");
     OK(sheafSceneSetLoadOption(s, "limit.loop_iterations", ""));
+    OK(sheafSceneSetLoadOption(s, "limit.macro_calls", "29"));
+    expect_error(sheafSceneLoadFile(s, "capi_test_limits.pov"), SHEAF_ERROR_SCENE,
+                 "a macro call past limit.macro_calls", "capi_test_limits.pov:4:17",
+                 "more than 29 macro calls");
+    OK(sheafSceneSetLoadOption(s, "limit.macro_calls", ""));
     OK(sheafSceneSetLoadOption(s, "limit.objects", "30"));
     expect_error(sheafSceneLoadFile(s, "capi_test_limits.pov"), SHEAF_ERROR_SCENE,
                  "objects past limit.objects", "more than 30 objects", NULL);

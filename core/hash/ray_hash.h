@@ -28,11 +28,12 @@ SHEAF_HD_INLINE Vec3 translate_to_unit(const Aabb& box, Vec3 p) {
     return {f(p.x, box.lo.x, ext.x), f(p.y, box.lo.y, ext.y), f(p.z, box.lo.z, ext.z)};
 }
 
-/// Quantises v in [0, 1] to an integer in [0, 2^bits - 1].
+/// Quantises v in [0, 1] to an integer in [0, 2^bits - 1] (NaN to 0: converting it would be
+/// undefined).
 SHEAF_HD_INLINE uint32_t quantize(float v, int bits) {
     const uint32_t n = 1u << bits;
     const float q = v * float(n);
-    return q <= 0 ? 0u : (q >= float(n - 1) ? n - 1 : uint32_t(q));
+    return !(q > 0) ? 0u : (q >= float(n - 1) ? n - 1 : uint32_t(q));
 }
 
 /// Spreads the low 10 bits of x so that two zero bits separate each (3-D Morton order).

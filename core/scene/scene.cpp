@@ -61,6 +61,20 @@ namespace {
 std::string where(size_t mesh) {
     return "mesh " + std::to_string(mesh);
 }
+
+constexpr const char* kMaxCoordinateText = "1e12";
+
+/// Whether the mesh's bounding box, placed by `t`, lies within reach (kMaxCoordinate).
+bool object_within_reach(const Mesh& mesh, const Affine& t) {
+    if (mesh.positions.empty()) return true;
+    Vec3 lo = mesh.positions[0], hi = lo;
+    for (const Vec3& p : mesh.positions) lo = vmin(lo, p), hi = vmax(hi, p);
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
+        if (!within_reach(t.point(p))) return false;
+    }
+    return true;
+}
 } // namespace
 
 int csg_nesting(const ShapeObject& o) {
@@ -76,10 +90,14 @@ void validate_mesh(const Mesh& mesh, const std::string& what) {
     if (mesh.indices.size() % 3 != 0)
         throw SceneError(what + ": " + std::to_string(mesh.indices.size()) +
                          " triangle indices are not a multiple of 3");
-    for (size_t i = 0; i < mesh.positions.size(); ++i)
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
         if (!is_finite(mesh.positions[i]))
             throw SceneError(what + ": vertex " + std::to_string(i) +
                              " is not finite (NaN or infinity)");
+        if (!within_reach(mesh.positions[i]))
+            throw SceneError(what + ": vertex " + std::to_string(i) + " lies farther than " +
+                             kMaxCoordinateText + " from the origin");
+    }
     if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
         throw SceneError(what + ": " + std::to_string(mesh.normals.size()) + " normals for " +
                          std::to_string(mesh.positions.size()) + " vertices");
@@ -145,6 +163,9 @@ void Scene::validate() const {
             throw SceneError(name + " names material " + std::to_string(obj.material) +
                              ", which does not exist");
         if (!obj.transform.finite()) throw SceneError(name + " has a transform that is not finite");
+        if (!object_within_reach(meshes[obj.mesh], obj.transform))
+            throw SceneError(name + " reaches farther than " + kMaxCoordinateText +
+                             " from the origin once placed");
     }
     for (size_t o = 0; o < shape_objects.size(); ++o) {
         const ShapeObject& so = shape_objects[o];
@@ -267,6 +288,9 @@ void Scene::validate() const {
             !std::isfinite(li.spot_tightness) || !std::isfinite(li.fade_distance) ||
             !std::isfinite(li.fade_power))
             throw SceneError(name + " is not finite");
+        if (!within_reach(li.position) || !within_reach(li.direction))
+            throw SceneError(name + "'s position or direction lies farther than " +
+                             kMaxCoordinateText + " from the origin");
         if (li.type != LightType::Point && length(li.direction) <= 0)
             throw SceneError(name + " has no direction");
         if (li.type == LightType::Spot &&
@@ -282,6 +306,9 @@ void Scene::validate() const {
     const Camera& c = camera;
     if (!is_finite(c.position) || !is_finite(c.look_at) || !is_finite(c.up))
         throw SceneError("the camera is not finite");
+    if (!within_reach(c.position) || !within_reach(c.look_at) || !within_reach(c.up))
+        throw SceneError(std::string("the camera's position, look_at or up lies farther than ") +
+                         kMaxCoordinateText + " from the origin");
     if (length(c.look_at - c.position) <= 0)
         throw SceneError("the camera looks at its own position");
     if (length(cross(c.look_at - c.position, c.up)) <= 0)

@@ -8,6 +8,7 @@
 #include "core/scene/pattern.h"
 #include "core/scene/photon_settings.h"
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -23,6 +24,17 @@ struct Mesh {
     std::vector<float> uvs;        // empty, or two per position (texture coordinates)
     size_t triangle_count() const { return indices.size() / 3; }
 };
+
+/// How far from the origin a mesh's vertex (in its object's place), a light and the camera may
+/// lie: the squares of their differences stay far within a float's range, so no direction or
+/// distance between them overflows to infinity and then NaN (found by the C ABI fuzzer: a point
+/// light at 1e30 made every shadow ray's direction NaN).
+constexpr float kMaxCoordinate = 1e12f;
+/// Whether each coordinate of `p` lies within ±kMaxCoordinate (false for NaN).
+inline bool within_reach(Vec3 p) {
+    return std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate &&
+           std::fabs(p.z) <= kMaxCoordinate;
+}
 
 /// Throws SceneError "WHAT: ..." naming the first vertex, normal, texture coordinate or index
 /// of `mesh` that is wrong, or that it has no faces: Scene::validate's check of each mesh, and

@@ -94,6 +94,34 @@ TEST(SceneValidate, BackgroundAndFinishValuesThatAreNotFiniteAreErrors) {
     EXPECT_EQ(error_of(s), "");
 }
 
+// Found by the C ABI fuzzer: a point light at 1e30 passed commit, and every shadow ray's
+// direction overflowed to NaN. Lights, the camera and placed meshes lie within kMaxCoordinate.
+TEST(SceneValidate, PositionsBeyondReachAreErrors) {
+    Scene s;
+    Mesh quad;
+    quad.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+    quad.indices = {0, 1, 2};
+    s.add_mesh(quad);
+    s.add_material(Material{});
+    Object o;
+    s.add_object(o);
+    s.add_light(Light{});
+    EXPECT_EQ(error_of(s), "");
+    s.lights[0].position = Vec3(1e30f, 0, 0);
+    EXPECT_EQ(error_of(s),
+              "light 0's position or direction lies farther than 1e12 from the origin");
+    s.lights[0].position = Vec3(0.0f);
+    s.camera.look_at = Vec3(0, 0, -2e12f);
+    EXPECT_NE(error_of(s).find("the camera's position, look_at or up lies farther"),
+              std::string::npos);
+    s.camera = Camera{};
+    s.objects[0].transform = Affine::scale(Vec3(1e13f));
+    EXPECT_EQ(error_of(s), "object 0 reaches farther than 1e12 from the origin once placed");
+    s.objects[0].transform = Affine{};
+    s.meshes[0].positions[1] = Vec3(-5e12f, 0, 0);
+    EXPECT_EQ(error_of(s), "mesh 0: vertex 1 lies farther than 1e12 from the origin");
+}
+
 // CSG is evaluated recursively on both backends: deeper than kMaxCsgNesting is an error (5,000
 // nested differences overflowed the CPU backend's stack).
 TEST(SceneValidate, CsgDeeperThanTheLimitIsAnError) {

@@ -53,7 +53,8 @@ bool Parser::parse_blob(const Token& kw, PovObject& o) {
         if (accept_kw("threshold")) {
             const Token at = peek();
             const double v = parse_float();
-            if (!(v > 0)) error_at(at, "a blob's threshold must be a positive number");
+            if (!(v > 0) || !std::isfinite(v))
+                error_at(at, "a blob's threshold must be a positive, finite number");
             blob->threshold = float(v);
         } else if (accept_kw("sphere")) {
             expect_sym("{");

@@ -277,7 +277,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
             return true;
         }
         if (args[0].type != VType::Object) error_expected(at[0], "an object identifier");
-        const ObjectProbe& q = probe(args[0]);
+        const ObjectProbe& q = probe(args[0], t);
         if (n == "inside") {
             out = Value::number(probe_inside(q, vec(1)) ? 1 : 0);
         } else {
@@ -293,7 +293,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
     return true;
 }
 
-const ObjectProbe& Parser::probe(const Value& v) {
+const ObjectProbe& Parser::probe(const Value& v, const Token& at) {
     for (auto it = probes_.begin(); it != probes_.end(); ++it)
         if (it->first == v.ptr) {
             std::rotate(it, it + 1, probes_.end()); // most recent last
@@ -301,7 +301,7 @@ const ObjectProbe& Parser::probe(const Value& v) {
         }
     constexpr size_t kMaxProbes = 8; // the objects a loop queries in turn
     if (probes_.size() == kMaxProbes) probes_.erase(probes_.begin());
-    probes_.emplace_back(v.ptr, make_probe(*this, v.as<PovObject>()));
+    probes_.emplace_back(v.ptr, make_probe(*this, v.as<PovObject>(), at));
     return *probes_.back().second;
 }
 

@@ -778,7 +778,10 @@ TEST(PovObjects, BlobComponentTexturesAndErrors) {
               std::string::npos)
         << r.warnings[0];
     EXPECT_EQ(error_of("blob { threshold 0 sphere { 0, 1, 1 } }"),
-              "scene.pov:1:18: error: a blob's threshold must be a positive number");
+              "scene.pov:1:18: error: a blob's threshold must be a positive, finite number");
+    // Found by the POV fuzzer: 0.1e3086 is infinite.
+    EXPECT_EQ(error_of("blob { threshold 0.1e3086 sphere { 0, 1, 1 } }"),
+              "scene.pov:1:18: error: a blob's threshold must be a positive, finite number");
     EXPECT_EQ(error_of("blob { sphere { 0, -1, 1 } }"),
               "scene.pov:1:8: error: a blob component's radius must be a positive number");
     EXPECT_EQ(error_of("blob { sphere { 0, 1, 1 matrix <1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0> } }"),

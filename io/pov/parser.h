@@ -263,7 +263,7 @@ class Parser {
     /// built from (held, so that its address is not reused by another).
     std::vector<std::pair<std::shared_ptr<void>, std::shared_ptr<const ObjectProbe>>> probes_;
     /// The probe of object value `v` (built on its first query).
-    const ObjectProbe& probe(const Value& v);
+    const ObjectProbe& probe(const Value& v, const Token& at); // for trace() and inside() at `at`
     void parse_triangle(const Token& kw, PovObject& o, bool smooth);
     void parse_mesh(const Token& kw, PovObject& o);
     void parse_mesh2(const Token& kw, PovObject& o);

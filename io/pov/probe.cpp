@@ -1,5 +1,6 @@
 #include "io/pov/probe.h"
 
+#include "core/base/error.h"
 #include "core/geometry/ray_triangle.h"
 #include "core/scene/analytic.h"
 #include "io/pov/builder.h"
@@ -9,10 +10,14 @@
 
 namespace sheaf::io::pov {
 
-std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o) {
+std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o, const Token& at) {
     auto q = std::make_shared<ObjectProbe>();
     build_object_geometry(p, o, q->scene);
-    q->prepared = prepare_scene(q->scene);
+    try {
+        q->prepared = prepare_scene(q->scene);
+    } catch (const SceneError& e) {
+        p.error_at(at, at.text + "() cannot trace this object: " + e.what());
+    }
     return q;
 }
 

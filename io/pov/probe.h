@@ -17,7 +17,9 @@ struct ObjectProbe {
 };
 
 /// The probe of object `o` (its geometry in Sheaf's world space).
-std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o);
+/// What Scene::validate refuses in the object is an error at `at`, the call that asked (found
+/// by the POV fuzzer: a blob of infinite threshold was reported with no place).
+std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o, const Token& at);
 
 /// Whether the point (POV-Ray coordinates) lies inside the object's solids. Meshes and
 /// triangles enclose nothing (as in POV-Ray without inside_vector).

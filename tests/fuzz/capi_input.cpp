@@ -168,7 +168,8 @@ class Host {
             check("sheafSceneCommit", sheafSceneCommit(scene_));
             break;
         case 18:
-            render_small(scene_, log_, renderer_);
+            // A few renders an input: more find nothing new and slow the fuzzer down.
+            if (renders_ < 3) ++renders_, render_small(scene_, log_, renderer_);
             break;
         default:
             query();
@@ -480,6 +481,7 @@ class Host {
     SheafScene scene_ = nullptr;
     SheafRenderer renderer_ = nullptr;
     uint32_t materials_ = 0, meshes_ = 0, objects_ = 0, textures_ = 0;
+    int renders_ = 0;
     std::vector<uint32_t> mesh_vertices_;
 };
 

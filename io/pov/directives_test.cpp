@@ -507,6 +507,15 @@ TEST(PovLimits, NamesTooLongForTheSystem) {
               std::string::npos);
 }
 
+// Found by the POV fuzzer: "woods.inc" followed by NUL bytes included woods.inc (the system
+// reads a name up to its NUL), and an error's message ended at the NUL, before its place.
+TEST(PovLimits, NulBytesInNamesAndMessages) {
+    const std::string nul("a\0b", 3);
+    EXPECT_EQ(error_of("#include \"colors.inc" + nul + "\""),
+              "scene.pov:1:2: error: the include file's name contains a NUL character");
+    EXPECT_EQ(error_of("#declare S = \"x" + nul + "\";\n#error S"), "scene.pov:2:2: error: xa\\0b");
+}
+
 TEST(PovLimits, ArrayDimensions) {
     EXPECT_EQ(error_of("#declare A = array[1][1][1][1][1][1];"),
               "scene.pov:1:35: error: an array has at most 5 dimensions");

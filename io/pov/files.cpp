@@ -44,6 +44,9 @@ std::string Parser::find_include(const std::string& name, const Token& where) co
 
 std::string Parser::find_file(const std::string& name, const Token& where, const std::string& what,
                               const std::vector<std::string>& extensions) const {
+    // The system would read the name only up to the NUL, and so find another file.
+    if (name.find('\0') != std::string::npos)
+        error_at(where, "the " + what + "'s name contains a NUL character");
     std::vector<fs::path> dirs;
     auto add = [&](const fs::path& d) { // each folder once, in the order first named
         if (std::find(dirs.begin(), dirs.end(), d.lexically_normal()) == dirs.end())

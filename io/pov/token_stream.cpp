@@ -59,7 +59,12 @@ void Parser::error_expected(const Token& found, const std::string& expected) con
 }
 
 void Parser::error_at(const Token& t, const std::string& msg) const {
-    throw SceneError(where(t) + ": error: " + msg + context());
+    // A scene's string may hold a NUL byte, which would end the message a host reads (the C
+    // ABI's messages are C strings) before the place and the reason (found by the POV fuzzer).
+    std::string text = where(t) + ": error: " + msg + context();
+    for (size_t i = 0; (i = text.find('\0', i)) != std::string::npos; i += 2)
+        text.replace(i, 1, "\\0");
+    throw SceneError(text);
 }
 
 void Parser::warn(const Token& t, const std::string& msg) {

@@ -115,10 +115,13 @@ SHEAF_HD_INLINE void setup_triangle(const TriangleVerts& t, uint32_t prim, bool 
                          maxx = dmax(dmax(s.x[0], s.x[1]), s.x[2]);
             const double miny = dmin(dmin(s.y[0], s.y[1]), s.y[2]),
                          maxy = dmax(dmax(s.y[0], s.y[1]), s.y[2]);
-            s.x0 = int(dmax(0.0, floor(minx - 0.5)));
-            s.x1 = int(dmin(double(W - 1), ceil(maxx - 0.5)));
-            s.y0 = int(dmax(0.0, floor(miny - 0.5)));
-            s.y1 = int(dmin(double(H - 1), ceil(maxy - 0.5)));
+            // Clamped on both sides before the conversion: a triangle far off the screen has
+            // bounds beyond int's range, whose conversion is undefined (found by the C ABI
+            // fuzzer: -2.8e18). Off the screen, x0 > x1 or y0 > y1: empty.
+            s.x0 = int(dmin(dmax(0.0, floor(minx - 0.5)), double(W)));
+            s.x1 = int(dmax(dmin(double(W - 1), ceil(maxx - 0.5)), -1.0));
+            s.y0 = int(dmin(dmax(0.0, floor(miny - 0.5)), double(H)));
+            s.y1 = int(dmax(dmin(double(H - 1), ceil(maxy - 0.5)), -1.0));
         }
         out[k] = s;
     }

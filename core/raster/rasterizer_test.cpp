@@ -103,6 +103,24 @@ TEST(Rasterizer, AgreesWithRayCastingOnRandomTrianglesCrossingTheNearPlane) {
     compare(prepare_scene(s), 64, 48, "soup");
 }
 
+// Found by the C ABI fuzzer: under a narrow field of view a triangle off to the side projects
+// to screen bounds beyond int's range, whose conversion was undefined behaviour. Such a
+// triangle covers nothing; the one in view is drawn as before.
+TEST(Rasterizer, TrianglesProjectingFarOffTheScreenCoverNothing) {
+    Scene s;
+    s.add_material(Material{});
+    Mesh m;
+    m.positions = {{1000, 0, -3},        {1000, 1, -3},       {1001, 0, -3},
+                   {-1001, 0, -3},       {-1000, 1, -3},      {-1000, 0, -3},
+                   {-1e-5f, -1e-5f, -3}, {1e-5f, -1e-5f, -3}, {0, 1e-5f, -3}};
+    m.indices = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+    s.add_mesh_object("far", std::move(m), 0);
+    s.camera.position = Vec3(0.0f);
+    s.camera.look_at = Vec3(0, 0, -1);
+    s.camera.fov_y_degrees = 1e-4f; // 1000 to the side is 6e9 pixels off the screen
+    compare(prepare_scene(s), 32, 24, "far");
+}
+
 // More triangles than the rasterizer sets up at once (kChunk, 65,536): a tilted plane of
 // 151,250 small triangles filling the view, every chunk (a region of it: prepare_scene puts a
 // mesh's triangles in Morton order) drawing its own pixels, and a random cloud in front of it,

@@ -165,6 +165,21 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
                                   "property list uchar int vertex_indices\nend_header\n"
                                   "0 0 0\n1 0 0\n0 1 0\n0\n3 0 1 2\n"));
     EXPECT_NE(e.find("face 0 of mesh 0 has no vertices"), std::string::npos) << e;
+    // A value that is not a number in an ASCII body: Assimp leaked what it had read and read
+    // on (found by fuzz_ply under LeakSanitizer).
+    e = error_of(test::write_text(dir / "word.ply",
+                                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                  "property float y\nproperty float z\nelement face 1\n"
+                                  "property list uchar int vertex_indices\nend_header\n"
+                                  "0 0 0\n1 0x runtime_error\n0 1 0\n3 0 1 2\n"));
+    EXPECT_NE(e.find("word.ply:11: a value of the PLY data is not a number"), std::string::npos)
+        << e;
+    // A header line Assimp does not know, or a format version that is not a number: it leaked.
+    e = error_of(
+        test::write_text(dir / "line.ply", "ply\nformat ascii 1.0\nprope x\nend_header\n"));
+    EXPECT_NE(e.find("line.ply:3: not a line of a PLY header"), std::string::npos) << e;
+    e = error_of(test::write_text(dir / "version.ply", "ply\nformat ascii 1.0?\nend_header\n"));
+    EXPECT_NE(e.find("version.ply:2: the PLY format line is not"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "garbage.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));
     EXPECT_NE(e.find("garbage.glb"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "garbage.gltf", "{\"asset\": [1, 2"));

@@ -17,9 +17,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
+#include <string>
 #include <tuple>
+#include <vector>
 
 namespace sheaf::io {
 namespace {
@@ -79,6 +82,29 @@ void check_ply_header(const std::string& path, uintmax_t file_size) {
             throw SceneError(path + ":" + std::to_string(n + 1) +
                              ": not a line of a PLY header (ply, format, comment, obj_info, "
                              "element, property, end_header)");
+        if (keyword == "property") {
+            // property TYPE NAME, or property list COUNT_TYPE ITEM_TYPE NAME: anything else
+            // (a missing name, an unknown type) made Assimp free what it had not allocated
+            // (found by the PLY fuzzer under AddressSanitizer).
+            static const char* const kTypes[] = {
+                "char", "uchar", "short", "ushort", "int",   "uint",   "float",   "double",
+                "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+            auto type = [](const std::string& t) {
+                return std::find(std::begin(kTypes), std::end(kTypes), t) != std::end(kTypes);
+            };
+            std::vector<std::string> w;
+            for (std::string x; words >> x;) w.push_back(x);
+            const bool ok =
+                !w.empty() && (w[0] == "list" ? w.size() == 4 && type(w[1]) && type(w[2])
+                                              : w.size() == 2 && type(w[0]));
+            if (!ok)
+                throw SceneError(path + ":" + std::to_string(n + 1) +
+                                 ": a PLY property is 'property TYPE NAME' or 'property list "
+                                 "TYPE TYPE NAME', TYPE one of PLY's number types");
+        }
+        if (keyword == "format" && n != 1)
+            throw SceneError(path + ":" + std::to_string(n + 1) +
+                             ": a PLY header has one format line, its second");
         if (keyword == "format") {
             std::string version;
             words >> name >> version;

@@ -180,6 +180,15 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
     EXPECT_NE(e.find("line.ply:3: not a line of a PLY header"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "version.ply", "ply\nformat ascii 1.0?\nend_header\n"));
     EXPECT_NE(e.find("version.ply:2: the PLY format line is not"), std::string::npos) << e;
+    // A property without a name, or a second format line: Assimp freed what it had not
+    // allocated (found by fuzz_ply under AddressSanitizer).
+    e = error_of(test::write_text(dir / "prop.ply",
+                                  "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\n"
+                                  "end_header\n0\n"));
+    EXPECT_NE(e.find("prop.ply:4: a PLY property is"), std::string::npos) << e;
+    e = error_of(test::write_text(dir / "twice.ply",
+                                  "ply\nformat ascii 1.0\nformat ascii 1.0\nend_header\n"));
+    EXPECT_NE(e.find("twice.ply:3: a PLY header has one format line"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "garbage.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));
     EXPECT_NE(e.find("garbage.glb"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "garbage.gltf", "{\"asset\": [1, 2"));

@@ -64,11 +64,21 @@ std::string where(size_t mesh) {
 
 constexpr const char* kMaxCoordinateText = "1e12";
 
+/// A mesh's bounding box: lo > hi when it has no vertex.
+struct MeshBox {
+    Vec3 lo{1.0f}, hi{-1.0f};
+};
+MeshBox box_of(const Mesh& mesh) {
+    if (mesh.positions.empty()) return {};
+    MeshBox b{mesh.positions[0], mesh.positions[0]};
+    for (const Vec3& p : mesh.positions) b.lo = vmin(b.lo, p), b.hi = vmax(b.hi, p);
+    return b;
+}
+
 /// Whether the mesh's bounding box, placed by `t`, lies within reach (kMaxCoordinate).
-bool object_within_reach(const Mesh& mesh, const Affine& t) {
-    if (mesh.positions.empty()) return true;
-    Vec3 lo = mesh.positions[0], hi = lo;
-    for (const Vec3& p : mesh.positions) lo = vmin(lo, p), hi = vmax(hi, p);
+bool object_within_reach(const MeshBox& box, const Affine& t) {
+    if (box.lo.x > box.hi.x) return true;
+    const Vec3 lo = box.lo, hi = box.hi;
     for (int corner = 0; corner < 8; ++corner) {
         const Vec3 p(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z);
         if (!within_reach(t.point(p))) return false;
@@ -152,6 +162,10 @@ void validate_mesh_camera(const Camera& c, const std::vector<CameraMesh>& meshes
 
 void Scene::validate() const {
     for (size_t m = 0; m < meshes.size(); ++m) validate_mesh(meshes[m], where(m));
+    // Each mesh's box once: many objects may place one mesh.
+    std::vector<MeshBox> boxes;
+    if (!objects.empty())
+        for (const Mesh& m : meshes) boxes.push_back(box_of(m));
     for (size_t o = 0; o < objects.size(); ++o) {
         const Object& obj = objects[o];
         const std::string name =
@@ -163,7 +177,7 @@ void Scene::validate() const {
             throw SceneError(name + " names material " + std::to_string(obj.material) +
                              ", which does not exist");
         if (!obj.transform.finite()) throw SceneError(name + " has a transform that is not finite");
-        if (!object_within_reach(meshes[obj.mesh], obj.transform))
+        if (!object_within_reach(boxes[obj.mesh], obj.transform))
             throw SceneError(name + " reaches farther than " + kMaxCoordinateText +
                              " from the origin once placed");
     }

@@ -43,17 +43,26 @@ std::string lower_extension(const std::string& path) {
 // the PLY fuzzer: LeakSanitizer, each malformed file), and reads on: every value of an ASCII
 // body must be a number. `in` stands after the header's end_header line.
 void check_ply_ascii_body(const std::string& path, std::istream& in, int header_lines) {
-    std::string line;
-    for (long n = header_lines + 1; std::getline(in, line); ++n) {
-        std::istringstream words(line);
-        std::string word;
-        while (words >> word) {
+    // One read and one pass of strtod over the body: a stream per line cost a fifth of the
+    // load of a large file.
+    const std::string body{std::istreambuf_iterator<char>(in), {}};
+    const char* p = body.c_str();
+    long line = header_lines + 1;
+    for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') line += *p++ == '\n';
+        if (*p == '\0') {
+            if (p == body.c_str() + body.size()) return;
+        } else {
             char* end = nullptr;
-            std::strtod(word.c_str(), &end);
-            if (end != word.c_str() + word.size())
-                throw SceneError(path + ":" + std::to_string(n) +
-                                 ": a value of the PLY data is not a number");
+            std::strtod(p, &end);
+            if (end != p && (*end == ' ' || *end == '\t' || *end == '\r' || *end == '\n' ||
+                             end == body.c_str() + body.size())) {
+                p = end;
+                continue;
+            }
         }
+        throw SceneError(path + ":" + std::to_string(line) +
+                         ": a value of the PLY data is not a number");
     }
 }
 

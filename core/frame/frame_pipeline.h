@@ -234,7 +234,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
                 // (core/raster/rasterizer.cpp); the same minimum keys.
                 rasterize(host_, cam, win, vis);
             } else if (fill(ex_, vis, samples, kEmptyPixel); tris > 0) {
-                const double near = raster_near(host_, cam);
+                const double near = raster_near(cam);
                 DeviceBuffer<ScreenTri, Exec> screen_buf(ex_, 2 * tris);
                 ScreenTri* screen = screen_buf.data();
                 ex_.launch("raster.setup", tris, [=] SHEAF_HD_LAMBDA(size_t p) {

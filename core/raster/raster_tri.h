@@ -67,7 +67,7 @@ template <class T> SHEAF_HD_INLINE void swap_values(T& a, T& b) {
 } // namespace raster_detail
 
 /// Triangle `prim` set up for the screen: out[0] and out[1] (a quad clipped by the near plane
-/// becomes two); an entry with x0 > x1 covers nothing.
+/// becomes two); an entry with x0 > x1 covers nothing. `near` is raster_near's.
 SHEAF_HD_INLINE void setup_triangle(const TriangleVerts& t, uint32_t prim, bool hidden,
                                     const CameraFrame& cam, double near, ScreenTri out[2]) {
     using namespace raster_detail;
@@ -84,8 +84,14 @@ SHEAF_HD_INLINE void setup_triangle(const TriangleVerts& t, uint32_t prim, bool 
                 dx * cam.up.x + dy * cam.up.y + dz * cam.up.z,
                 dx * cam.forward.x + dy * cam.forward.y + dz * cam.forward.z};
     }
+    // The near plane, per triangle: 1e-7 of its farthest vertex's distance, no nearer (a
+    // vertex clipped nearer would project so far off the screen that the edge functions lose
+    // the pixels), and never nearer than `near`. A scene's far geometry clips nothing near.
+    double extent = 0;
+    for (int i = 0; i < 3; ++i)
+        extent = dmax(extent, dmax(fabs(c[i].x), dmax(fabs(c[i].y), fabs(c[i].z))));
     D3 poly[4];
-    const int m = clip_near(c, near, poly);
+    const int m = clip_near(c, cam.ortho ? near : dmax(near, 1e-7 * extent), poly);
     for (int k = 0; k + 2 < m; ++k) {
         const D3 q[3] = {poly[0], poly[k + 1], poly[k + 2]};
         ScreenTri s;

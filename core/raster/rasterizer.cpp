@@ -16,12 +16,11 @@ constexpr size_t kChunk = size_t(1) << 16;
 
 } // namespace
 
-double raster_near(const PreparedScene& scene, const CameraFrame& cam) {
-    double extent = 1.0 + length(cam.origin);
-    for (const Sphere& s : scene.object_sphere) // unbounded objects (planes) do not count
-        if (std::isfinite(s.radius)) extent = std::max(extent, double(s.radius) + length(s.center));
-    // Orthographic views start at the camera plane; perspective ones just in front of the eye.
-    return cam.ortho ? 0.0 : 1e-7 * extent;
+double raster_near(const CameraFrame& cam) {
+    // Orthographic views start at the camera plane. Perspective ones just in front of the eye:
+    // nothing nearer than its own float precision (1e-7 of its distance from the origin) is
+    // told apart from it, and each triangle's set-up keeps its own precision too (raster_tri.h).
+    return cam.ortho ? 0.0 : std::max(1e-30, 1e-7 * length(cam.origin));
 }
 
 void rasterize(const PreparedScene& scene, const CameraFrame& cam, std::vector<uint64_t>& vis) {
@@ -40,7 +39,7 @@ void rasterize(const PreparedScene& scene, const CameraFrame& cam, const SampleW
     const size_t n = scene.triangle_count(); // analytic primitives are ray-cast by the caller
     if (n == 0) return;
 
-    const double near = raster_near(scene, cam);
+    const double near = raster_near(cam);
 
     // The triangles go in chunks of kChunk: each chunk is set up, binned and drawn before the
     // next, so the set-up records (104 bytes each, two a triangle) take a few MiB, not 208

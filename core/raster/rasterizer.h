@@ -18,9 +18,10 @@ SHEAF_HD_INLINE uint32_t vis_prim(uint64_t v) {
     return uint32_t(v & 0xFFFFFFFFu);
 }
 
-/// The near clipping distance of the set-up (core/raster/raster_tri.h): just in front of the
-/// eye, relative to the scene's extent; 0 for orthographic views.
-double raster_near(const PreparedScene& scene, const CameraFrame& camera);
+/// The least near clipping distance of the set-up (core/raster/raster_tri.h, which also keeps
+/// each triangle's near plane within its own precision): just in front of the eye, relative
+/// to the eye's distance from the origin; 0 for orthographic views.
+double raster_near(const CameraFrame& camera);
 
 /// Fills `vis` (width * height entries, top row first). Triangles are clipped against a near
 /// plane, covered at pixel centres with the top-left fill rule, and depth-tested on the

@@ -121,6 +121,29 @@ TEST(Rasterizer, TrianglesProjectingFarOffTheScreenCoverNothing) {
     compare(prepare_scene(s), 32, 24, "far");
 }
 
+// Found while testing a C ABI fuzzer finding: the near plane lay at 1e-7 of the scene's
+// extent, so one mesh at 1e11 clipped every triangle nearer than 1e4 to the eye: the triangle
+// at 3 units was lost. Each triangle's near plane now follows its own extent.
+TEST(Rasterizer, FarGeometryClipsNothingNearTheEye) {
+    Scene s;
+    s.add_material(Material{});
+    Mesh m;
+    m.positions = {{-1, -1, -3},        {1, -1, -3},        {0, 1, -3},
+                   {-1e11f, 0, -1e11f}, {1e11f, 0, -1e11f}, {0, 1e11f, -1e11f}};
+    m.indices = {0, 1, 2, 3, 4, 5};
+    s.add_mesh_object("near and far", std::move(m), 0);
+    s.camera.position = Vec3(0.0f);
+    s.camera.look_at = Vec3(0, 0, -1);
+    const PreparedScene scene = prepare_scene(s);
+    const CameraFrame cam = make_camera_frame(scene.camera, 32, 24);
+    std::vector<uint64_t> vis;
+    rasterize(scene, cam, vis);
+    const uint64_t centre = vis[size_t(12) * 32 + 16];
+    ASSERT_NE(centre, kEmptyPixel);
+    EXPECT_TRUE(scene.tris[vis_prim(centre)].a.z == -3.0f);
+    compare(scene, 32, 24, "near and far");
+}
+
 // More triangles than the rasterizer sets up at once (kChunk, 65,536): a tilted plane of
 // 151,250 small triangles filling the view, every chunk (a region of it: prepare_scene puts a
 // mesh's triangles in Morton order) drawing its own pixels, and a random cloud in front of it,

@@ -56,7 +56,11 @@ std::vector<std::string> base_args(const Options& o) {
     return a;
 }
 
+// Only a regular file has a hash: a device or a pipe named in a record could be read without
+// end (or block opening).
 std::string file_hash(const std::string& path, uintmax_t& size) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) return {};
     std::ifstream in(path, std::ios::binary);
     if (!in) return {};
     uint64_t h = 1469598103934665603ull; // FNV-1a, 64 bits
@@ -93,7 +97,18 @@ void write_atomically(const std::string& path, const std::string& text) {
     }
 }
 
+// The text of job.txt or a record, or nothing when there is no such file. Throws FarmError
+// when it is not a regular file or outgrows what a job writes (a device, a pipe, or a damaged
+// folder would otherwise be read without end).
 std::optional<std::string> read_text(const std::string& path) {
+    constexpr uintmax_t kMostBytes = uintmax_t(64) << 20;
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (!fs::exists(status)) return std::nullopt;
+    if (!fs::is_regular_file(status))
+        throw FarmError(path + ": not a regular file (a farm job writes only files)");
+    if (fs::file_size(path, ec) > kMostBytes)
+        throw FarmError(path + ": over 64 MiB, more than a farm job writes");
     std::ifstream in(path);
     if (!in) return std::nullopt;
     std::ostringstream s;
@@ -121,6 +136,9 @@ TaskStatus done_status(const std::string& record) {
             std::string hash, path;
             in >> size >> hash;
             std::getline(in >> std::ws, path);
+            // The size first: a file that has changed is not read.
+            std::error_code ec;
+            if (fs::file_size(path, ec) != size || ec) return {};
             if (file_hash(path, actual) != hash || actual != size) return {};
             any = true;
         }

@@ -6,7 +6,8 @@
 #  - a 2x2 sweep: the merged results.json equal to a one-process sweep's (times aside);
 #  - a task killed midway: requeued by Slurm, and the result still exact;
 #  - a second submission of a finished job: no task runs;
-#  - a task failing in the scene: the job stops with that reason.
+#  - a task failing in the scene: the job stops with that reason;
+#  - a state record that is a device: --farm-status refuses it rather than read it.
 # Usage: farm_test.sh PATH/TO/render OUTPUT_DIR. Exits 77 (skip) without Slurm and munge.
 set -u
 
@@ -162,6 +163,10 @@ while read -r line; do eval "$line" >/dev/null 2>&1 || none_ok=0; done <"$OUT/fa
 same_pixels "$OUT/one/none.png" "$OUT/none.png" "a job run by hand equals the one-process frame"
 expect_rc farm_status_none 0 --farm-dir "$OUT/none_job" --farm-status
 expect_in "$OUT/farm_status_none.out" "2 tasks: 2 done, 0 running, 0 failed, 0 waiting; merge done" "--farm-status counts the tasks"
+# A damaged folder: a record that is a device is refused, not read without end.
+ln -sf /dev/zero "$OUT/none_job/state/task-2.done"
+expect_rc farm_status_device 1 --farm-dir "$OUT/none_job" --farm-status
+expect_in "$OUT/farm_status_device.err" "not a regular file" "a record that is a device is refused"
 expect_rc farm_other_job 1 builtin:office --farm slurm --farm-tiles 4 --farm-dir "$OUT/print_job" \
     --farm-print -o "$OUT/print.png"
 expect_in "$OUT/farm_other_job.err" "holds another job" "a folder holding another job is refused"

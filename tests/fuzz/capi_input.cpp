@@ -92,9 +92,15 @@ class Bytes {
 /// Calls the C ABI and checks the promise of a failed call.
 class Host {
   public:
-    Host(Bytes& in, std::FILE* log) : in_(in), log_(log) {
+    Host(Bytes& in, std::FILE* log, CapiMode mode) : in_(in), log_(log), mode_(mode) {
         if (sheafSceneNew(&scene_) != SHEAF_OK) broken("sheafSceneNew failed");
         if (sheafRendererNew(&renderer_) != SHEAF_OK) broken("sheafRendererNew failed");
+        if (mode_ == CapiMode::Accels) {
+            const float eye[3] = {2, 4, -11}, at[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+            const float light[3] = {-6, 12, -9}, white[3] = {1, 1, 1};
+            check("sheafSceneSetCamera", sheafSceneSetCamera(scene_, eye, at, up, 50));
+            check("sheafSceneAddPointLight", sheafSceneAddPointLight(scene_, light, white));
+        }
     }
     ~Host() {
         sheafRendererRelease(renderer_);
@@ -102,7 +108,9 @@ class Host {
     }
 
     void step() {
-        switch (in_.u8() % 20) {
+        const uint8_t op = in_.u8();
+        if (mode_ == CapiMode::Accels && op >= 160) return add_lattice_mesh();
+        switch (op % 20) {
         case 0:
             add_material();
             break;
@@ -178,8 +186,33 @@ class Host {
     }
 
     void finish() {
-        if (check("sheafSceneCommit", sheafSceneCommit(scene_)))
+        if (!check("sheafSceneCommit", sheafSceneCommit(scene_))) return;
+        if (mode_ == CapiMode::Calls) {
             render_small(scene_, log_, renderer_);
+            return;
+        }
+        // Every accel finds brute force's hits (ties to the lower primitive), so the images
+        // are equal; a render that fails must fail under all of them.
+        static const char* const accels[] = {"brute", "crsh", "rah", "bvh", "crsh-bvh", "rah-bvh"};
+        std::vector<float> first;
+        for (const char* accel : accels) {
+            if (sheafRendererSetString(renderer_, "accel", accel) != SHEAF_OK)
+                broken(std::string("accel=") + accel + " was refused");
+            const std::vector<float> image = render_small(scene_, log_, renderer_);
+            if (accel == accels[0]) {
+                first = image;
+            } else if (image.empty() != first.empty()) {
+                broken(std::string("accel=") + accel + (image.empty() ? " failed" : " rendered") +
+                       " where accel=brute " + (first.empty() ? "failed" : "rendered"));
+            } else if (!image.empty() &&
+                       std::memcmp(image.data(), first.data(), image.size() * sizeof(float))) {
+                size_t i = 0;
+                while (image[i] == first[i]) ++i;
+                broken(std::string("accel=") + accel + ": pixel " + std::to_string(i / 4) +
+                       " channel " + std::to_string(i % 4) + " is " + std::to_string(image[i]) +
+                       ", " + std::to_string(first[i]) + " under accel=brute");
+            }
+        }
     }
 
   private:
@@ -240,6 +273,35 @@ class Host {
             ++meshes_;
             mesh_vertices_.push_back(vertices);
         }
+    }
+
+    /// A mesh on a lattice of 1/16 from -8 to 8, with a material (mirror, glass or matte) and
+    /// placed as it is.
+    void add_lattice_mesh() {
+        const uint32_t triangles = 1 + in_.u8();
+        std::vector<float> positions(size_t(triangles) * 9);
+        for (float& f : positions) f = float(int(in_.u8()) - 128) / 16.0f;
+        std::vector<uint32_t> indices(size_t(triangles) * 3);
+        for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+        uint32_t mesh = 0, material = 0, object = 0;
+        if (!check("sheafSceneAddMesh",
+                   sheafSceneAddMesh(scene_, positions.data(), triangles * 3, indices.data(),
+                                     triangles, nullptr, &mesh)))
+            return;
+        ++meshes_;
+        mesh_vertices_.push_back(triangles * 3);
+        SheafMaterialDesc d;
+        sheafMaterialDescInit(&d);
+        const uint8_t kind = in_.u8();
+        d.color[0] = 0.3f + 0.1f * float(kind & 7);
+        d.color[1] = 0.3f + 0.1f * float((kind >> 3) & 7);
+        if (kind % 3 == 1) d.mirror = 0.8f;
+        if (kind % 3 == 2) d.transmission = 0.7f, d.ior = 1.5f;
+        if (!check("sheafSceneAddMaterial", sheafSceneAddMaterial(scene_, &d, &material))) return;
+        ++materials_;
+        if (check("sheafSceneAddObject",
+                  sheafSceneAddObject(scene_, mesh, material, nullptr, nullptr, &object)))
+            ++objects_;
     }
 
     void add_object() {
@@ -478,6 +540,7 @@ class Host {
 
     Bytes& in_;
     std::FILE* log_;
+    CapiMode mode_;
     SheafScene scene_ = nullptr;
     SheafRenderer renderer_ = nullptr;
     uint32_t materials_ = 0, meshes_ = 0, objects_ = 0, textures_ = 0;
@@ -487,9 +550,9 @@ class Host {
 
 } // namespace
 
-int run_capi_input(const uint8_t* data, size_t size, std::FILE* log) {
+int run_capi_input(const uint8_t* data, size_t size, std::FILE* log, CapiMode mode) {
     Bytes in(data, size);
-    Host host(in, log);
+    Host host(in, log, mode);
     // At most 64 calls: an input is one host's short session, not a stress test.
     for (int calls = 0; calls < 64 && !in.done(); ++calls) host.step();
     host.finish();

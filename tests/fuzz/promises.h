@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace sheaf::fuzz {
 
@@ -16,9 +17,13 @@ namespace sheaf::fuzz {
 /// sheafGetLastError disagrees with `code` or the failed call left no message.
 std::string failure(const char* call, SheafError code);
 
-/// Renders `scene` small (24×16) on the CPU with one thread, after applying `renderer`'s own
-/// settings when one is given (otherwise with the defaults). A frame that renders must have
-/// that size and finite pixels. With `log`, writes the outcome there in one line.
-void render_small(SheafScene scene, std::FILE* log, SheafRenderer renderer = nullptr);
+/// Renders `scene` small (24×16) on the CPU with one thread, with `renderer`'s own settings
+/// when one is given (otherwise the defaults), its region.* included. A frame that renders must
+/// have finite pixels and the size asked for: the whole frame's, or its region's, which lies
+/// inside the whole frame. A region is then rendered whole (region.* set to 0, and left so),
+/// and its pixels must equal the whole frame's bit for bit (docs/settings.md, region.x). With
+/// `log`, writes the outcome there. Returns the whole frame's combined pass (RGBA), or nothing
+/// when the render failed.
+std::vector<float> render_small(SheafScene scene, std::FILE* log, SheafRenderer renderer = nullptr);
 
 } // namespace sheaf::fuzz

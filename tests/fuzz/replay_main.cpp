@@ -1,7 +1,9 @@
 // Runs saved fuzz inputs (files, or every file in the folders given) through the checks the
-// fuzzers make, each as the format of its extension (.capi: a host's C ABI calls): the
-// regression test of what fuzzing found, built with any compiler.
+// fuzzers make, each as the format of its extension (.capi: a host's C ABI calls; .accel:
+// lattice meshes under every accel; .farm: a farm job's folder): the regression test of what
+// fuzzing found, built with any compiler.
 #include "tests/fuzz/capi_input.h"
+#include "tests/fuzz/farm_input.h"
 #include "tests/fuzz/scene_input.h"
 
 #include <algorithm>
@@ -32,8 +34,11 @@ int main(int argc, char** argv) {
     }
     for (const fs::path& p : inputs) {
         const std::string ext = p.extension().string();
-        if (ext != ".pov" && ext != ".xml" && ext != ".obj" && ext != ".ply" && ext != ".capi") {
-            std::fprintf(stderr, "%s: the extension says no format (.pov .xml .obj .ply .capi)\n",
+        if (ext != ".pov" && ext != ".xml" && ext != ".obj" && ext != ".ply" && ext != ".capi" &&
+            ext != ".accel" && ext != ".farm") {
+            std::fprintf(stderr,
+                         "%s: the extension says no format (.pov .xml .obj .ply .capi .accel "
+                         ".farm)\n",
                          p.c_str());
             return 2;
         }
@@ -44,6 +49,10 @@ int main(int argc, char** argv) {
         const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
         if (ext == ".capi")
             sheaf::fuzz::run_capi_input(data, bytes.size(), stdout);
+        else if (ext == ".farm")
+            sheaf::fuzz::run_farm_input(data, bytes.size(), stdout);
+        else if (ext == ".accel")
+            sheaf::fuzz::run_capi_input(data, bytes.size(), stdout, sheaf::fuzz::CapiMode::Accels);
         else
             sheaf::fuzz::run_scene_input(data, bytes.size(), ext.c_str(), stdout);
     }

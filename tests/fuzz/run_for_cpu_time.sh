@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs one fuzzer for a given amount of CPU time, as docs/fuzzing.md's figures were taken:
 #   tests/fuzz/run_for_cpu_time.sh BUILD_DIR FORMAT CPU_SECONDS WORK_DIR
-# FORMAT is pov, xml, obj, ply or capi. In WORK_DIR/FORMAT: seeds/ (filled here once from the
+# FORMAT is pov, xml, obj, ply, capi, accel or farm. In WORK_DIR/FORMAT: seeds/ (filled here once from the
 # sample scenes and the regressions), corpus/, artifacts/ (what it finds: crash-*, timeout-*,
 # oom-*, leak-*), log.txt (libFuzzer's), cpu.txt (wall and CPU seconds so far).
 # libFuzzer runs in fork mode and keeps going after a finding (-ignore_crashes and the like), so
@@ -21,12 +21,14 @@ if [ -z "$(ls -A "$work/seeds")" ]; then
     obj) cp "$src"/scenes/*.obj "$src"/tests/fuzz/regressions/*.obj "$work/seeds/" ;;
     ply) cp "$src"/tests/fuzz/regressions/*.ply "$work/seeds/" ;;
     capi) cp "$src"/tests/fuzz/regressions/*.capi "$work/seeds/" ;;
-    *) echo "unknown format $fmt (pov, xml, obj, ply, capi)" >&2; exit 2 ;;
+    accel) cp "$src"/tests/fuzz/regressions/*.accel "$work/seeds/" ;;
+    farm) cp "$src"/tests/fuzz/regressions/*.farm "$work/seeds/" ;;
+    *) echo "unknown format $fmt (pov, xml, obj, ply, capi, accel, farm)" >&2; exit 2 ;;
   esac
 fi
 extra=()
 [ "$fmt" = pov ] && extra+=("-dict=$src/tests/fuzz/pov.dict")
-maxlen=65536; [ "$fmt" = capi ] && maxlen=4096
+maxlen=65536; [ "$fmt" = capi ] && maxlen=4096; [ "$fmt" = accel ] && maxlen=8192
 cd "$work"
 start=$(date +%s)
 nice -n 10 "$fuzzer" "${extra[@]}" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \

@@ -5,6 +5,7 @@
 #include "plugin/render/options.h"
 #include "tests/fuzz/promises.h"
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>

@@ -13,14 +13,17 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -142,6 +145,116 @@ void check_ply_header(const std::string& path, uintmax_t file_size) {
                          : std::string(" (the file ends first)")));
 }
 
+// Assimp 5.2's OBJ reader leaks the meshes it has built when a face names a vertex, texture
+// coordinate or normal that does not exist (found by the OBJ fuzzer: LeakSanitizer, when the
+// face is in a second object), and names no line. Every index of a face, line or point
+// element is checked first, as Assimp reads it: an integer other than 0, up to the count of
+// its kind in the file, or negative, back from the count so far (a relative index). Texture
+// coordinate and normal indices count only in a file that has some (Assimp ignores them
+// otherwise). So that the counts are Assimp's, the file is text (no NUL byte) and each
+// v, vt and vn line holds only the numbers Assimp reads.
+void check_obj_indices(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string text{std::istreambuf_iterator<char>(in), {}};
+    const char* const end = text.c_str() + text.size();
+    // Assimp reads the text up to a NUL byte (the rest would be counted otherwise than here).
+    if (const size_t nul = text.find('\0'); nul != std::string::npos) {
+        const long nul_line = long(std::count(text.begin(), text.begin() + long(nul), '\n')) + 1;
+        const size_t from = text.rfind('\n', nul);
+        throw SceneError(path + ":" + std::to_string(nul_line) + ":" +
+                         std::to_string(from == std::string::npos ? nul + 1 : nul - from) +
+                         ": a NUL byte; an OBJ file is text");
+    }
+    static const char* const kinds[3] = {"vertex", "texture coordinate", "normal"};
+    static const char* const plurals[3] = {"vertices", "texture coordinates", "normals"};
+    struct Place {
+        long index = 0, line = 0, col = 0;
+    };
+    long counts[3] = {0, 0, 0};
+    Place highest[3];  // the highest index, where it first appears
+    Place backward[3]; // the first relative index reaching back beyond the start
+    auto error = [&](const Place& at, const std::string& what) {
+        return SceneError(path + ":" + std::to_string(at.line) + ":" + std::to_string(at.col) +
+                          ": " + what);
+    };
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    long line = 1;
+    for (const char* p = text.c_str(); p < end; ++line) {
+        const char* const line_start = p;
+        const char* eol = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)));
+        if (!eol) eol = end;
+        while (p < eol && blank(*p)) ++p;
+        const char* const key = p;
+        while (p < eol && !blank(*p)) ++p;
+        const std::string_view keyword(key, size_t(p - key));
+        if (keyword == "v" || keyword == "vt" || keyword == "vn") {
+            // Numbers only, as many as Assimp reads from the line: it reads on into the next
+            // line for missing ones, and then counts otherwise than the file says.
+            const int kind = keyword == "v" ? 0 : keyword == "vt" ? 1 : 2;
+            const int least[3] = {3, 1, 3}, most[3] = {7, 3, 3};
+            int numbers = 0;
+            for (;;) {
+                while (p < eol && blank(*p)) ++p;
+                if (p == eol || *p == '#') break;
+                char* after = nullptr;
+                std::strtod(p, &after);
+                if (after == p || after > eol || (after < eol && !blank(*after) && *after != '#'))
+                    throw error({0, line, long(p - line_start) + 1}, "expected a number");
+                p = after;
+                ++numbers;
+            }
+            if (numbers < least[kind] || numbers > most[kind])
+                throw error(
+                    {0, line, long(key - line_start) + 1},
+                    "a " + std::string(kinds[kind]) + " line has " + std::to_string(least[kind]) +
+                        (least[kind] == most[kind] ? "" : " to " + std::to_string(most[kind])) +
+                        " numbers, not " + std::to_string(numbers));
+            ++counts[kind];
+        } else if (keyword == "f" || keyword == "l" || keyword == "p") {
+            for (;;) {
+                while (p < eol && blank(*p)) ++p;
+                if (p == eol || *p == '#' || *p == '\\') break; // a comment, a continued line
+                const long col = long(p - line_start) + 1;
+                for (int kind = 0; kind < 3; ++kind) {
+                    if (kind > 0) {
+                        if (p == eol || *p != '/') break;
+                        ++p;
+                        if (p == eol || *p == '/' || blank(*p)) continue; // 1//3: no coordinate
+                    }
+                    char* after = nullptr;
+                    errno = 0;
+                    const long i = std::strtol(p, &after, 10);
+                    if (after == p || after > eol) break;
+                    p = after;
+                    if (i == 0 || errno == ERANGE)
+                        throw error({i, line, col}, "the " + std::string(kinds[kind]) + " index " +
+                                                        std::to_string(i) +
+                                                        " is not an index (1 is the first)");
+                    if (i > highest[kind].index) highest[kind] = {i, line, col};
+                    if (i < 0 && -i > counts[kind] && backward[kind].index == 0)
+                        backward[kind] = {i, line, col};
+                }
+                if (p < eol && !blank(*p))
+                    throw error({0, line, col}, "expected vertex indices (I, I/T, I//N or I/T/N)");
+            }
+        }
+        p = eol + 1;
+    }
+    for (int kind = 0; kind < 3; ++kind) {
+        if (kind > 0 && counts[kind] == 0) continue;
+        const std::string k = kinds[kind];
+        if (backward[kind].index != 0)
+            throw error(backward[kind], "the " + k + " index " +
+                                            std::to_string(backward[kind].index) +
+                                            " reaches back before the first " + k);
+        if (highest[kind].index > counts[kind])
+            throw error(highest[kind],
+                        "the " + k + " index " + std::to_string(highest[kind].index) +
+                            " is out of range (the file has " + std::to_string(counts[kind]) + " " +
+                            plurals[kind] + ")");
+    }
+}
+
 /// Faces as the post-processing steps assume them: each with a vertex or more, and each mesh's
 /// primitive types those of its faces (types are set again from the faces: a reader's wrong
 /// types make Triangulate assert).
@@ -175,6 +288,7 @@ const aiScene* import(Assimp::Importer& importer, const std::string& path, unsig
     const uintmax_t size = fs::file_size(path, ec);
     if (ec) throw SceneError(path + ": cannot read the file (" + ec.message() + ")");
     if (lower_extension(path) == ".ply") check_ply_header(path, size);
+    if (lower_extension(path) == ".obj") check_obj_indices(path);
     // Points and lines are not surfaces: SortByPType removes them.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);

@@ -211,9 +211,12 @@ void check_obj_indices(const std::string& path) {
                         " numbers, not " + std::to_string(numbers));
             ++counts[kind];
         } else if (keyword == "f" || keyword == "l" || keyword == "p") {
-            for (;;) {
+            int corners = 0;
+            bool continued = false;
+            for (;; ++corners) {
                 while (p < eol && blank(*p)) ++p;
-                if (p == eol || *p == '#' || *p == '\\') break; // a comment, a continued line
+                continued = p < eol && *p == '\\';
+                if (p == eol || *p == '#' || continued) break; // a comment, a continued line
                 const long col = long(p - line_start) + 1;
                 for (int kind = 0; kind < 3; ++kind) {
                     if (kind > 0) {
@@ -237,6 +240,12 @@ void check_obj_indices(const std::string& path) {
                 if (p < eol && !blank(*p))
                     throw error({0, line, col}, "expected vertex indices (I, I/T, I//N or I/T/N)");
             }
+            // Assimp's validation would refuse a face of one or two corners with a message
+            // about its own structures.
+            if (keyword == "f" && corners < 3 && !continued)
+                throw error({0, line, long(key - line_start) + 1},
+                            "a face has 3 corners or more, this one " + std::to_string(corners) +
+                                " (a line is an l line, a point a p line)");
         }
         p = eol + 1;
     }

@@ -210,6 +210,9 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
     EXPECT_NE(e.find("uv.obj:6:7: the texture coordinate index 2 is out of range"),
               std::string::npos)
         << e;
+    e = error_of(test::write_text(dir / "line.obj", tri + "f 2 3\n"));
+    EXPECT_NE(e.find("line.obj:5:1: a face has 3 corners or more, this one 2"), std::string::npos)
+        << e;
     e = error_of(test::write_text(dir / "word.obj", tri + "f 1 2 x\n"));
     EXPECT_NE(e.find("word.obj:5:7: expected vertex indices"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "short.obj", "v 0 0 0\nv 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));

@@ -392,12 +392,13 @@ void Parser::end_directive(const Token& where) {
         f.conds.pop_back();
         return;
     }
-    if (++c.iterations >= options_.limits.loop_iterations)
-        error_at(c.where, "this loop ran more than " +
+    ++c.iterations;
+    if (++loop_runs_ > options_.limits.loop_iterations)
+        error_at(c.where, "the scene's loops ran more than " +
                               std::to_string(options_.limits.loop_iterations) +
-                              " times; if it is meant to, raise the limit: render --limit "
+                              " times in all (this one " + std::to_string(c.iterations) +
+                              "); if they are meant to, raise the limit: render --limit "
                               "loop_iterations=N, load option limit.loop_iterations");
-    longest_loop_ = std::max(longest_loop_, uint64_t(c.iterations));
     if (c.kind == Cond::While) {
         const Token loop = c.where;
         f.pos = c.pos;

@@ -296,9 +296,9 @@ TEST(PovLimits, EndlessWhile) {
     std::string e;
     const double s =
         seconds([&] { e = error_of("#declare I = 0;\n#while (1)\n  #declare I = I + 1;\n#end"); });
-    EXPECT_EQ(e, "scene.pov:2:2: error: this loop ran more than 1000000 times; if it is meant "
-                 "to, raise the limit: render --limit loop_iterations=N, load option "
-                 "limit.loop_iterations");
+    EXPECT_EQ(e, "scene.pov:2:2: error: the scene's loops ran more than 4000000 times in all "
+                 "(this one 4000001); if they are meant to, raise the limit: render --limit "
+                 "loop_iterations=N, load option limit.loop_iterations");
     EXPECT_LT(s, 60);
 }
 
@@ -317,13 +317,21 @@ TEST(PovLimits, BudgetsAreSetByTheHostAndReported) {
     EXPECT_EQ(uses[0].name, "parse_steps");
     EXPECT_EQ(uses[3].name, "loop_iterations");
     EXPECT_EQ(uses[3].used, 100);
-    EXPECT_EQ(uses[3].limit, 1e6);
+    EXPECT_EQ(uses[3].limit, 4e6);
     EXPECT_EQ(uses[4].name, "macro_calls");
     EXPECT_EQ(uses[5].name, "function_terms");
 
     PovOptions o;
     o.limits.loop_iterations = 50;
-    EXPECT_NE(error_of(loop, o).find("scene.pov:2:2: error: this loop ran more than 50 times"),
+    EXPECT_NE(error_of(loop, o).find("scene.pov:2:2: error: the scene's loops ran more than 50 "
+                                     "times in all"),
+              std::string::npos);
+    // All loops together: two nested loops of 10 runs each run 110 times (10 outer, 100
+    // inner).
+    const std::string nested = "#for (I, 1, 10)\n  #for (J, 1, 10)\n  #end\n#end";
+    EXPECT_EQ(load_text(nested).usage.loop_iterations, 110u);
+    o.limits.loop_iterations = 109;
+    EXPECT_NE(error_of(nested, o).find("the scene's loops ran more than 109 times in all"),
               std::string::npos);
     o = {};
     o.limits.objects = 99;

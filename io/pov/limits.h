@@ -19,8 +19,9 @@ struct PovLimits {
     uint64_t objects = 200'000;
     /// Live arrays and strings, and objects placed or held by a CSG, in bytes.
     uint64_t data_bytes = uint64_t(128) << 20;
-    /// Runs of one #while or #for loop.
-    uint64_t loop_iterations = 1'000'000;
+    /// Runs of #while and #for loop bodies, all loops together: loops within loops stop here
+    /// long before parse_steps (a run of a small body is a dozen steps).
+    uint64_t loop_iterations = 4'000'000;
     /// Macro calls. Each costs the reader far more than the few parse steps of its name and
     /// arguments, so a macro that calls itself twice runs out of these long before parse_steps.
     uint64_t macro_calls = 5'000'000;
@@ -31,7 +32,7 @@ struct PovLimits {
 };
 
 /// What a scene used of each budget of PovLimits: the total steps and objects, the peak of
-/// the data, the longest loop, the total macro calls and function terms.
+/// the data, the total loop runs, macro calls and function terms.
 struct PovUsage {
     uint64_t parse_steps = 0, objects = 0, data_bytes = 0, loop_iterations = 0;
     uint64_t macro_calls = 0, function_terms = 0;

@@ -370,11 +370,11 @@ class Parser {
     /// What the scene has used of options_.limits so far.
     PovUsage usage() const {
         return {steps_,        objects_made_, peak_data_bytes_,
-                longest_loop_, macro_calls_,  function_terms_};
+                loop_runs_,    macro_calls_,  function_terms_};
     }
     uint64_t macro_calls_ = 0;    // against limits.macro_calls
     uint64_t function_terms_ = 0; // against limits.function_terms (and parse_steps)
-    uint64_t longest_loop_ = 0; // the most runs of one loop, against limits.loop_iterations
+    uint64_t loop_runs_ = 0; // runs of all loops together, against limits.loop_iterations
     size_t peak_data_bytes_ = 0;
     /// The steps left before limits.parse_steps (for a function's evaluation to count down).
     uint64_t steps_left() const {

@@ -782,8 +782,8 @@ static void test_reader_limits(void) {
     OK(sheafSceneGetLimitCount(s, &count));
     CHECK(count == 6, "%zu limits, expected 6", count);
     OK(sheafSceneGetLimitUse(s, 3, &name, &used, &limit));
-    CHECK(strcmp(name, "loop_iterations") == 0 && used == 30 && limit == 1e6,
-          "limit 3: %s %g of %g, expected loop_iterations 30 of 1e6", name, used, limit);
+    CHECK(strcmp(name, "loop_iterations") == 0 && used == 30 && limit == 4e6,
+          "limit 3: %s %g of %g, expected loop_iterations 30 of 4e6", name, used, limit);
     OK(sheafSceneGetLimitUse(s, 1, &name, &used, &limit));
     /* The 30 spheres and the light source. */
     CHECK(strcmp(name, "objects") == 0 && used == 31, "limit 1: %s %g", name, used);

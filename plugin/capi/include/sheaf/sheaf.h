@@ -113,7 +113,7 @@ SHEAF_API SheafError sheafSceneLoadFile(SheafScene scene, const char* path);
  *   "limit.parse_steps", "limit.objects", "limit.data_mib", "limit.loop_iterations",
  *   "limit.macro_calls", "limit.function_terms"  the POV-Ray reader's budgets (an integer in
  *                   1..2^50; "" the default): tokens read and function terms evaluated, objects
- *                   parsed, MiB of arrays, strings and objects held, runs of one loop, macro
+ *                   parsed, MiB of arrays, strings and objects held, runs of all loops, macro
  *                   calls, function terms evaluated while the file is read. A scene past one
  *                   fails with SHEAF_ERROR_SCENE at the place it did; docs/pov.md, "Limits",
  *                   gives the defaults
@@ -127,7 +127,7 @@ SHEAF_API SheafError sheafSceneGetWarningCount(SheafScene scene, size_t* count);
 SHEAF_API SheafError sheafSceneGetWarning(SheafScene scene, size_t index, const char** message);
 /* What the last sheafSceneLoadFile used of the reader's limits (the load options limit.*), in
  * order: the limit's name ("parse_steps", "objects", "data_mib", "loop_iterations",
- * "macro_calls", "function_terms"), the amount used (the data's peak, the longest loop) and the
+ * "macro_calls", "function_terms"), the amount used (the data's peak, the others' totals) and the
  * limit. None for formats without such limits
  * or a built-in scene; *name stays valid until the scene is loaded again or released. */
 SHEAF_API SheafError sheafSceneGetLimitCount(SheafScene scene, size_t* count);

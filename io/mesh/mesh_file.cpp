@@ -24,6 +24,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <strings.h>
 #include <tuple>
 #include <vector>
 
@@ -147,17 +148,24 @@ void check_ply_header(const std::string& path, uintmax_t file_size) {
 
 // Assimp 5.2's OBJ reader leaks the meshes it has built when a face names a vertex, texture
 // coordinate or normal that does not exist (found by the OBJ fuzzer: LeakSanitizer, when the
-// face is in a second object), and names no line. Every index of a face, line or point
-// element is checked first, as Assimp reads it: an integer other than 0, up to the count of
-// its kind in the file, or negative, back from the count so far (a relative index). Texture
-// coordinate and normal indices count only in a file that has some (Assimp ignores them
-// otherwise). So that the counts are Assimp's, the file is text (no NUL byte) and each
-// v, vt and vn line holds only the numbers Assimp reads.
+// face is in a second object), and names no line. So every index is checked here first, with
+// its place, against counts taken as Assimp takes them (a count here must never exceed
+// Assimp's, or an index it refuses would pass):
+// - lines end at '\n', '\r' and '\f' (no NUL byte: Assimp stops there); a line holding a
+//   backslash joins the next to it, so the next starts no statement, and a statement line
+//   with one is an error;
+// - a statement is its line's first character: `v` then a blank is a vertex of 3, 4 (w not
+//   0) or 6 numbers; any line from `vt` a texture coordinate, from `vn` a normal (each must be
+//   `vt` of 2 or 3 numbers, `vn` of 3); `f`, `l` or `p` a face, line or point whose first
+//   word is followed by indices; between `cstype` and `end`, nothing. A line starting with a
+//   blank is nothing to Assimp;
+// - a number starts with a digit or a sign, or is nan or inf (Assimp counts no other);
+// - an index is I, I/T, I//N or I/T/N: not 0, up to the file's count of its kind, or negative
+//   back from the count so far; T names a normal where no texture coordinate but a normal
+//   came before (as Assimp reads it); T and N count only in a file that has some.
 void check_obj_indices(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     const std::string text{std::istreambuf_iterator<char>(in), {}};
-    const char* const end = text.c_str() + text.size();
-    // Assimp reads the text up to a NUL byte (the rest would be counted otherwise than here).
     if (const size_t nul = text.find('\0'); nul != std::string::npos) {
         const long nul_line = long(std::count(text.begin(), text.begin() + long(nul), '\n')) + 1;
         const size_t from = text.rfind('\n', nul);
@@ -177,76 +185,108 @@ void check_obj_indices(const std::string& path) {
         return SceneError(path + ":" + std::to_string(at.line) + ":" + std::to_string(at.col) +
                           ": " + what);
     };
-    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    auto line_end = [](char c) { return c == '\n' || c == '\r' || c == '\f'; };
+    const char* const end = text.c_str() + text.size();
     long line = 1;
-    for (const char* p = text.c_str(); p < end; ++line) {
-        const char* const line_start = p;
-        const char* eol = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)));
-        if (!eol) eol = end;
-        while (p < eol && blank(*p)) ++p;
-        const char* const key = p;
-        while (p < eol && !blank(*p)) ++p;
-        const std::string_view keyword(key, size_t(p - key));
-        if (keyword == "v" || keyword == "vt" || keyword == "vn") {
-            // Numbers only, as many as Assimp reads from the line: it reads on into the next
-            // line for missing ones, and then counts otherwise than the file says.
-            const int kind = keyword == "v" ? 0 : keyword == "vt" ? 1 : 2;
-            const int least[3] = {3, 1, 3}, most[3] = {7, 3, 3};
-            int numbers = 0;
+    bool joined = false, cstype = false;
+    const char* p = text.c_str();
+    if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) p += 3; // a BOM
+    while (p < end) {
+        const char* const start = p;
+        const char* eol = p;
+        while (eol < end && !line_end(*eol)) ++eol;
+        const bool backslash = std::memchr(start, '\\', size_t(eol - start)) != nullptr;
+        const bool continuation = joined;
+        joined = backslash;
+        auto col = [&](const char* at) { return long(at - start) + 1; };
+        auto number = [&](const char*& q) {
+            const bool nan_inf = (end - q >= 3) && (strncasecmp(q, "nan", 3) == 0 ||
+                                                    strncasecmp(q, "inf", 3) == 0);
+            char* after = nullptr;
+            const double v = std::strtod(q, &after);
+            if (!(std::isdigit(static_cast<unsigned char>(*q)) || *q == '-' || *q == '+' ||
+                  nan_inf) ||
+                after == q || after > eol || (after < eol && !blank(*after) && *after != '#'))
+                throw error({0, line, col(q)}, "expected a number");
+            q = after;
+            return v;
+        };
+        const char c0 = start < eol ? *start : '\n', c1 = start + 1 < eol ? start[1] : '\n';
+        if (continuation) {
+            // Part of the line before: no statement.
+        } else if (cstype) {
+            if (c0 == 'e' && std::string_view(start, size_t(eol - start)).substr(0, 3) == "end")
+                cstype = false;
+        } else if (c0 == 'c') {
+            cstype = std::string_view(start, size_t(eol - start)).substr(0, 6) == "cstype";
+        } else if (c0 == 'v' && (blank(c1) || c1 == 't' || c1 == 'n')) {
+            const int kind = blank(c1) ? 0 : c1 == 't' ? 1 : 2;
+            const char* q = start + (kind == 0 ? 1 : 2);
+            if (backslash) throw error({0, line, 1}, "a line continued with \\ is not read here");
+            if (kind > 0 && (q == eol || !blank(*q)))
+                throw error({0, line, 1}, std::string("expected ") + (kind == 1 ? "vt" : "vn") +
+                                              " and a blank");
+            std::vector<double> v;
             for (;;) {
-                while (p < eol && blank(*p)) ++p;
-                if (p == eol || *p == '#') break;
-                char* after = nullptr;
-                std::strtod(p, &after);
-                if (after == p || after > eol || (after < eol && !blank(*after) && *after != '#'))
-                    throw error({0, line, long(p - line_start) + 1}, "expected a number");
-                p = after;
-                ++numbers;
+                while (q < eol && blank(*q)) ++q;
+                if (q == eol || *q == '#') break;
+                v.push_back(number(q));
             }
-            if (numbers < least[kind] || numbers > most[kind])
-                throw error(
-                    {0, line, long(key - line_start) + 1},
-                    "a " + std::string(kinds[kind]) + " line has " + std::to_string(least[kind]) +
-                        (least[kind] == most[kind] ? "" : " to " + std::to_string(most[kind])) +
-                        " numbers, not " + std::to_string(numbers));
+            const size_t n = v.size();
+            const bool fits = kind == 0 ? n == 3 || n == 6 || (n == 4 && v[3] != 0)
+                              : kind == 1 ? n == 2 || n == 3
+                                          : n == 3;
+            if (!fits)
+                throw error({0, line, 1},
+                            kind == 0 ? "a vertex is 3 numbers, 4 (w not 0) or 6 (a colour), not " +
+                                            std::to_string(n) + (n == 4 ? " with w 0" : "")
+                            : kind == 1 ? "a texture coordinate is 2 or 3 numbers, not " +
+                                              std::to_string(n)
+                                        : "a normal is 3 numbers, not " + std::to_string(n));
             ++counts[kind];
-        } else if (keyword == "f" || keyword == "l" || keyword == "p") {
+        } else if (c0 == 'f' || c0 == 'l' || c0 == 'p') {
+            if (backslash) throw error({0, line, 1}, "a line continued with \\ is not read here");
+            const char* q = start;
+            while (q < eol && !blank(*q)) ++q; // the statement's word
             int corners = 0;
-            bool continued = false;
             for (;; ++corners) {
-                while (p < eol && blank(*p)) ++p;
-                continued = p < eol && *p == '\\';
-                if (p == eol || *p == '#' || continued) break; // a comment, a continued line
-                const long col = long(p - line_start) + 1;
-                for (int kind = 0; kind < 3; ++kind) {
-                    if (kind > 0) {
-                        if (p == eol || *p != '/') break;
-                        ++p;
-                        if (p == eol || *p == '/' || blank(*p)) continue; // 1//3: no coordinate
+                while (q < eol && blank(*q)) ++q;
+                if (q == eol || *q == '#') break;
+                const Place at{0, line, col(q)};
+                for (int pos = 0; pos < 3; ++pos) {
+                    if (pos > 0) {
+                        if (q == eol || *q != '/') break;
+                        ++q;
+                        if (q == eol || *q == '/' || blank(*q)) continue; // 1//3
                     }
+                    if (!std::isdigit(static_cast<unsigned char>(*q)) && *q != '-' && *q != '+')
+                        break;
                     char* after = nullptr;
                     errno = 0;
-                    const long i = std::strtol(p, &after, 10);
-                    if (after == p || after > eol) break;
-                    p = after;
+                    const long i = std::strtol(q, &after, 10);
+                    q = after;
+                    // A second index names a normal where no texture coordinate but a
+                    // normal came before.
+                    const int kind = pos == 1 && counts[1] == 0 && counts[2] > 0 ? 2 : pos;
                     if (i == 0 || errno == ERANGE)
-                        throw error({i, line, col}, "the " + std::string(kinds[kind]) + " index " +
-                                                        std::to_string(i) +
-                                                        " is not an index (1 is the first)");
-                    if (i > highest[kind].index) highest[kind] = {i, line, col};
+                        throw error(at, "the " + std::string(kinds[kind]) + " index " +
+                                            std::to_string(i) + " is not an index (1 is the first)");
+                    if (i > highest[kind].index) highest[kind] = {i, line, at.col};
                     if (i < 0 && -i > counts[kind] && backward[kind].index == 0)
-                        backward[kind] = {i, line, col};
+                        backward[kind] = {i, line, at.col};
                 }
-                if (p < eol && !blank(*p))
-                    throw error({0, line, col}, "expected vertex indices (I, I/T, I//N or I/T/N)");
+                if (q < eol && !blank(*q))
+                    throw error(at, "expected vertex indices (I, I/T, I//N or I/T/N)");
             }
             // Assimp's validation would refuse a face of one or two corners with a message
             // about its own structures.
-            if (keyword == "f" && corners < 3 && !continued)
-                throw error({0, line, long(key - line_start) + 1},
-                            "a face has 3 corners or more, this one " + std::to_string(corners) +
-                                " (a line is an l line, a point a p line)");
+            if (c0 == 'f' && corners < 3)
+                throw error({0, line, 1}, "a face has 3 corners or more, this one " +
+                                              std::to_string(corners) +
+                                              " (a line is an l line, a point a p line)");
         }
+        if (eol < end && *eol == '\n') ++line;
         p = eol + 1;
     }
     for (int kind = 0; kind < 3; ++kind) {
@@ -257,10 +297,11 @@ void check_obj_indices(const std::string& path) {
                                             std::to_string(backward[kind].index) +
                                             " reaches back before the first " + k);
         if (highest[kind].index > counts[kind])
-            throw error(highest[kind],
-                        "the " + k + " index " + std::to_string(highest[kind].index) +
-                            " is out of range (the file has " + std::to_string(counts[kind]) + " " +
-                            plurals[kind] + ")");
+            throw error(highest[kind], "the " + k + " index " +
+                                           std::to_string(highest[kind].index) +
+                                           " is out of range (the file has " +
+                                           std::to_string(counts[kind]) + " " + plurals[kind] +
+                                           ")");
     }
 }
 

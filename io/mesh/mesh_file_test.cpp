@@ -216,7 +216,19 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
     e = error_of(test::write_text(dir / "word.obj", tri + "f 1 2 x\n"));
     EXPECT_NE(e.find("word.obj:5:7: expected vertex indices"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "short.obj", "v 0 0 0\nv 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
-    EXPECT_NE(e.find("short.obj:2:1: a vertex line has 3 to 7 numbers, not 1"), std::string::npos)
+    EXPECT_NE(e.find("short.obj:2:1: a vertex is 3 numbers, 4 (w not 0) or 6 (a colour), not 1"),
+              std::string::npos)
+        << e;
+    // Assimp counts no number that starts otherwise than with a digit, a sign, nan or inf.
+    e = error_of(test::write_text(dir / "dot.obj", "v .5 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    EXPECT_NE(e.find("dot.obj:1:3: expected a number"), std::string::npos) << e;
+    // A second index names a normal where no texture coordinate but a normal came before.
+    e = error_of(test::write_text(dir / "asnormal.obj", tri + "vn 0 0 1\nf 1/1 2/1 3/2\n"));
+    EXPECT_NE(e.find("asnormal.obj:6:11: the normal index 2 is out of range"), std::string::npos)
+        << e;
+    // What follows a backslash is the line before to Assimp: a vertex there is none.
+    e = error_of(test::write_text(dir / "joined.obj", "g a\\\nv 0 0 0\n" + tri + "f 4 1 2\n"));
+    EXPECT_NE(e.find("joined.obj:7:3: the vertex index 4 is out of range"), std::string::npos)
         << e;
     e = error_of(test::write_text(dir / "nul.obj", tri + std::string("v 0 \0 1\n", 8)));
     EXPECT_NE(e.find("nul.obj:5:5: a NUL byte"), std::string::npos) << e;
@@ -225,7 +237,10 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
     EXPECT_EQ(io::read_mesh_file(test::write_text(dir / "fine.obj",
                                                   "v 0 0 0 # a comment\nv 1 0 0 1\nv 0 1 0 "
                                                   "0.5 0.5 0.5\nvn 0 0 1\nf 1//1 -2//1 3//-1\n"
-                                                  "f 1/7 2/8 3/9\n"))
+                                                  "  v 9 9 9\nvp 1 2\n"))
+                  .indices.size(),
+              3u);
+    EXPECT_EQ(io::read_mesh_file(test::write_text(dir / "no_uv.obj", tri + "f 1/7 2/8 3/9\n"))
                   .indices.size(),
               6u);
     e = error_of(test::write_text(dir / "garbage.glb", std::string("glTF\x02\0\0\0\xff\xff", 10)));

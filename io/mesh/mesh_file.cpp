@@ -162,7 +162,8 @@ void check_ply_header(const std::string& path, uintmax_t file_size) {
 // - a number starts with a digit or a sign, or is nan or inf (Assimp counts no other);
 // - an index is I, I/T, I//N or I/T/N: not 0, up to the file's count of its kind, or negative
 //   back from the count so far; T names a normal where no texture coordinate but a normal
-//   came before (as Assimp reads it); T and N count only in a file that has some.
+//   came before (as Assimp reads it); T and N count only in a file that has some;
+// - a face has 3 corners or more, a line 2 points or more.
 void check_obj_indices(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     const std::string text{std::istreambuf_iterator<char>(in), {}};
@@ -285,6 +286,11 @@ void check_obj_indices(const std::string& path) {
                 throw error({0, line, 1}, "a face has 3 corners or more, this one " +
                                               std::to_string(corners) +
                                               " (a line is an l line, a point a p line)");
+            // A line of one point is no segment: a mesh of only such lines has no vertices,
+            // and Assimp leaks the meshes before it (found by the OBJ fuzzer).
+            if (c0 == 'l' && corners == 1)
+                throw error({0, line, 1}, "a line has 2 points or more, this one 1 (a point "
+                                          "is a p line)");
         }
         if (eol < end && *eol == '\n') ++line;
         p = eol + 1;

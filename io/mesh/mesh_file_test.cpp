@@ -213,6 +213,10 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
     e = error_of(test::write_text(dir / "line.obj", tri + "f 2 3\n"));
     EXPECT_NE(e.find("line.obj:5:1: a face has 3 corners or more, this one 2"), std::string::npos)
         << e;
+    e = error_of(test::write_text(dir / "point_line.obj", tri + "g a\nl 1\n"));
+    EXPECT_NE(e.find("point_line.obj:6:1: a line has 2 points or more, this one 1"),
+              std::string::npos)
+        << e;
     e = error_of(test::write_text(dir / "word.obj", tri + "f 1 2 x\n"));
     EXPECT_NE(e.find("word.obj:5:7: expected vertex indices"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "short.obj", "v 0 0 0\nv 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));

@@ -187,10 +187,10 @@ class Host {
 
     void finish() {
         if (!check("sheafSceneCommit", sheafSceneCommit(scene_))) return;
-        if (mode_ == CapiMode::Calls) {
-            render_small(scene_, log_, renderer_);
-            return;
-        }
+        // The renderer as the calls left it, region.* included (render_small then sets the
+        // whole frame, for what follows).
+        render_small(scene_, log_, renderer_);
+        if (mode_ == CapiMode::Calls) return;
         // Every accel finds brute force's hits (ties to the lower primitive), so the images
         // are equal; a render that fails must fail under all of them.
         static const char* const accels[] = {"brute", "crsh", "rah", "bvh", "crsh-bvh", "rah-bvh"};

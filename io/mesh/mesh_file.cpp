@@ -80,6 +80,11 @@ void check_ply_header(const std::string& path, uintmax_t file_size) {
     bool ascii = false;
     for (int n = 0; n < kMaxHeaderLines && std::getline(in, line); ++n) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
+        // Assimp reads a header line up to a NUL and the rest as a line of its own: after a
+        // comment, "ver list undice" made it loop without end (found by the PLY fuzzer).
+        if (line.find('\0') != std::string::npos)
+            throw SceneError(path + ":" + std::to_string(n + 1) +
+                             ": a NUL byte in the PLY header, which is text");
         if (line == "end_header") {
             if (ascii) check_ply_ascii_body(path, in, n + 1);
             return;

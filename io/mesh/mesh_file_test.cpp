@@ -186,6 +186,11 @@ TEST(MeshFile, BadFilesAreErrorsNotCrashes) {
                                   "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\n"
                                   "end_header\n0\n"));
     EXPECT_NE(e.find("prop.ply:4: a PLY property is"), std::string::npos) << e;
+    // A NUL in a header line: Assimp read on past it and looped without end (found by
+    // fuzz_ply: a timeout).
+    e = error_of(test::write_text(
+        dir / "nul.ply", std::string("ply\nformat ascii 1.0\ncomment x\0ver list undice\nend_header", 57)));
+    EXPECT_NE(e.find("nul.ply:3: a NUL byte in the PLY header"), std::string::npos) << e;
     e = error_of(test::write_text(dir / "twice.ply",
                                   "ply\nformat ascii 1.0\nformat ascii 1.0\nend_header\n"));
     EXPECT_NE(e.find("twice.ply:3: a PLY header has one format line"), std::string::npos) << e;

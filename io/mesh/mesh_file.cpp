@@ -233,14 +233,15 @@ void check_obj_indices(const std::string& path) {
             if (kind > 0 && (q == eol || !blank(*q)))
                 throw error({0, line, 1}, std::string("expected ") + (kind == 1 ? "vt" : "vn") +
                                               " and a blank");
-            std::vector<double> v;
+            size_t n = 0;
+            double w = 1; // a vertex's fourth number
             for (;;) {
                 while (q < eol && blank(*q)) ++q;
                 if (q == eol || *q == '#') break;
-                v.push_back(number(q));
+                const double value = number(q);
+                if (++n == 4) w = value;
             }
-            const size_t n = v.size();
-            const bool fits = kind == 0 ? n == 3 || n == 6 || (n == 4 && v[3] != 0)
+            const bool fits = kind == 0 ? n == 3 || n == 6 || (n == 4 && w != 0)
                               : kind == 1 ? n == 2 || n == 3
                                           : n == 3;
             if (!fits)

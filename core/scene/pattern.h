@@ -58,7 +58,8 @@ enum class PatternKind : uint8_t {
 /// Discrete patterns choose an entry; continuous ones give a value.
 /// The band patterns POV-Ray bends by its scalar turbulence inside the pattern (marble, wood,
 /// agate, the spirals): their classic turbulence is theirs alone, where the other patterns'
-/// moves the point their maps' entries are evaluated at too.
+/// moves the point their maps' entries are evaluated at too. (Of these, POV-Ray also moves the
+/// pattern's own point by it for agate and the spirals, not for marble and wood.)
 SHEAF_HD_INLINE bool bends_by_own_turbulence(PatternKind k) {
     return k == PatternKind::Marble || k == PatternKind::Wood || k == PatternKind::Agate ||
            k == PatternKind::Spiral1 || k == PatternKind::Spiral2;
@@ -188,6 +189,9 @@ struct Pattern {
     Wave wave = Wave::Ramp;
     int8_t octaves = 6; // turbulence
     bool has_turbulence = false;
+    // POV-Ray's noise_generator for the noise patterns and turbulence (core/texture/pov_noise.h):
+    // 1 the original, 2 range-corrected (POV-Ray's default), 3 Perlin's.
+    uint8_t noise_generator = 2;
     // World -> pattern space (uv: texture coordinates -> pattern space), or with warps world
     // -> the space of the last warp declared; then Scene::warps [warp_first, warp_first +
     // warp_count), the last declared first, each warping and mapping on by its to_inner.

@@ -1,14 +1,17 @@
 // Evaluating a Pattern (core/scene/pattern.h) at a world point: the point moves into pattern
 // space, turbulence displaces it, then a continuous pattern gives a value in [0, 1] (after
 // frequency, phase and the wave) and a list pattern gives the index of an entry.
-// The shapes follow POV-Ray 3.7's descriptions; the noise is Sheaf's own (noise.h), so noise
-// patterns look alike but are not POV-Ray's pixel for pixel.
+// The shapes follow POV-Ray 3.7's descriptions. The noise patterns (bozo, spotted, bumps,
+// granite, agate, wrinkles, dents), turbulence and the band patterns' own turbulence (marble,
+// wood, agate, the spirals) are POV-Ray's, in double precision (pov_noise.h); crackle and cells
+// are Sheaf's own cells (noise.h), alike but not POV-Ray's point for point.
 #pragma once
 
 #include "core/math/hd_math.h"
 #include "core/scene/pattern.h"
 #include "core/texture/fractal_pattern.h"
 #include "core/texture/noise.h"
+#include "core/texture/pov_noise.h"
 
 namespace sheaf {
 
@@ -34,39 +37,73 @@ SHEAF_HD_INLINE Vec3 wave_source(int k) {
            Vec3(1.0f);
 }
 
-// The wave shapes a value in [0, 1].
-SHEAF_HD_INLINE float apply_wave(const Pattern& pt, float v) {
+// POV-Ray's sine of a fraction of a turn (its `cycloidal`), odd about 0.
+SHEAF_HD_INLINE double cycloidal(double v) {
+    constexpr double kTurn = 6.283185307179586476925286766559;
+    if (v >= 0.0) return hdm::sin((v - ::floor(v)) * 50000.0 / 50000.0 * kTurn);
+    return -hdm::sin((-(v + ::floor(-v))) * 50000.0 / 50000.0 * kTurn);
+}
+
+// POV-Ray's triangle wave: 0 at whole numbers, 1 halfway.
+SHEAF_HD_INLINE double triangle_wave(double v) {
+    const double offset = v >= 0.0 ? v - ::floor(v) : v + 1.0 + ::floor(fabs(v));
+    return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+// The wave shapes a value in [0, 1], as POV-Ray's do.
+SHEAF_HD_INLINE double apply_wave(const Pattern& pt, double v) {
     switch (pt.wave) {
     case Wave::Ramp:
         return v;
     case Wave::Triangle:
-        return v < 0.5f ? 2.0f * v : 2.0f - 2.0f * v;
+        return triangle_wave(v);
     case Wave::Sine:
-        return 0.5f + 0.5f * hdm::sinf(2.0f * kPi * v);
+        return (1.0 + cycloidal(v)) * 0.5;
     case Wave::Scallop:
-        return fabsf(hdm::sinf(kPi * v));
+        return fabs(cycloidal(v * 0.5));
     case Wave::Cubic:
-        return v * v * (3.0f - 2.0f * v);
+        return v * v * (-2.0 * v + 3.0);
     case Wave::Poly:
-        return hdm::powf(v, pt.wave_exponent);
+        return hdm::pow(v, double(pt.wave_exponent));
     }
     return v;
 }
 
+// POV-Ray's scalar turbulence of the pattern (its octaves, omega, lambda and generator).
+SHEAF_HD_INLINE double own_turbulence(const Pattern& pt, DVec3 p) {
+    return pov_turbulence(p, pt.octaves, double(pt.omega), double(pt.lambda), pt.noise_generator);
+}
+
+// 2 noise - 0.5 clamped to [0, 1]: how generators 2 and 3 take an octave in wrinkles.
+SHEAF_HD_INLINE double stretched_noise(DVec3 p, int gen) {
+    return pov_noise_detail::clamp01(pov_noise(p, gen) * 2.0 - 0.5);
+}
+
 // The raw value of a continuous pattern at pattern-space point p, before frequency, phase and
-// the wave; some leave [0, 1] (gradient, onion, wood ...) and wrap.
-SHEAF_HD_NOINLINE float raw_value(const Pattern& pt, Vec3 p) {
+// the wave, as POV-Ray's pattern gives it; some leave [0, 1] (marble, wood, spiral1 ...).
+SHEAF_HD_NOINLINE double raw_value(const Pattern& pt, Vec3 p) {
+    const DVec3 d(p);
+    const int gen = pt.noise_generator;
     switch (pt.kind) {
     case PatternKind::Gradient: {
         const float l = length(pt.vector);
-        return l > 0 ? dot(p, pt.vector) / l : 0.0f;
+        const double r = l > 0 ? double(dot(p, pt.vector)) / double(l) : 0.0;
+        return r > 1.0 ? ::fmod(r, 1.0) : r;
     }
-    case PatternKind::Marble:
-        return p.x;
-    case PatternKind::Wood:
-        return sqrtf(p.x * p.x + p.y * p.y);
+    case PatternKind::Marble: // the band bent by the scalar turbulence
+        return d.x + (pt.has_turbulence ? double(pt.turbulence.x) * own_turbulence(pt, d) : 0.0);
+    case PatternKind::Wood: {
+        // Rings about z, the point pushed by the vector turbulence through a sine of it.
+        double x = d.x, y = d.y;
+        if (pt.has_turbulence) {
+            const DVec3 t = pov_dturbulence(d, pt.octaves, double(pt.omega), double(pt.lambda));
+            x += cycloidal((d.x + t.x) * double(pt.turbulence.x));
+            y += cycloidal((d.y + t.y) * double(pt.turbulence.y));
+        }
+        return ::sqrt(x * x + y * y);
+    }
     case PatternKind::Onion:
-        return length(p);
+        return ::fmod(::sqrt(d.x * d.x + d.y * d.y + d.z * d.z), 1.0);
     case PatternKind::Radial:
         return hdm::atan2f(p.x, -p.z) / (2.0f * kPi) + 0.5f;
     case PatternKind::Spherical:
@@ -78,34 +115,41 @@ SHEAF_HD_NOINLINE float raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Boxed:
         return 1.0f - clamp01(hdm::fmaxf(fabsf(p.x), hdm::fmaxf(fabsf(p.y), fabsf(p.z))));
     case PatternKind::Leopard: {
-        const float s = (hdm::sinf(p.x) + hdm::sinf(p.y) + hdm::sinf(p.z)) / 3.0f;
+        const double s = (hdm::sin(d.x) + hdm::sin(d.y) + hdm::sin(d.z)) / 3.0;
         return s * s;
     }
     case PatternKind::Bozo:
-        return noise01(p);
-    case PatternKind::Granite: {
-        float sum = 0, f = 1;
-        for (int i = 0; i < 6; ++i) {
-            sum += fabsf(gradient_noise(p * (4.0f * f))) / f;
-            f *= 2.0f;
+        return pov_noise(d, gen);
+    case PatternKind::Granite: { // six octaves of |1 - 2 noise| (the original: |0.5 - noise|)
+        double sum = 0.0, freq = 1.0;
+        const DVec3 q = d * 4.0;
+        for (int i = 0; i < 6; freq *= 2.0, ++i) {
+            const double n = pov_noise(q * freq, gen);
+            const double t =
+                gen == 1 ? fabs(0.5 - n) : (fabs(1.0 - 2.0 * n) > 0.5 ? 0.5 : fabs(1.0 - 2.0 * n));
+            sum += t / freq;
         }
-        return clamp01(sum * 0.9f);
+        return sum;
     }
-    case PatternKind::Agate: {
-        const float turb = turbulence(p, 7, 0.5f, 2.0f) * (pt.param[0] > 0 ? pt.param[0] : 1.0f);
-        const float v = 0.5f + 0.5f * hdm::cosf((p.z + 2.0f * turb) * 2.0f * kPi * 0.5f);
-        return clamp01(hdm::powf(v, 0.5f));
+    case PatternKind::Agate: { // bands along z bent by the scalar turbulence times agate_turb
+        const double scale = pt.param[0] > 0 ? double(pt.param[0]) : 1.0;
+        const double turb = scale * own_turbulence(pt, d);
+        const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * d.z) + 1.0);
+        return v < 0.0 ? 0.0 : hdm::pow(v > 1.0 ? 1.0 : v, 0.77);
     }
-    case PatternKind::Wrinkles: {
-        float sum = 0, f = 1;
-        for (int i = 0; i < 10; ++i) {
-            sum += gradient_noise(p * (f * kPatternNoiseScale)) / f;
-            f *= 2.0f;
+    case PatternKind::Wrinkles: { // ten octaves of noise, halved
+        double v = gen > 1 ? stretched_noise(d, gen) : pov_noise(d, gen);
+        double lambda = 2.0, omega = 0.5;
+        for (int i = 1; i < 10; ++i) {
+            const DVec3 q = d * lambda;
+            v += omega * (gen > 1 ? stretched_noise(q, gen) : pov_noise(q, gen));
+            lambda *= 2.0;
+            omega *= 0.5;
         }
-        return clamp01(0.5f + 0.5f * sum);
+        return v / 2.0;
     }
     case PatternKind::Dents: {
-        const float n = noise01(p);
+        const double n = pov_noise(d, gen);
         return n * n * n;
     }
     case PatternKind::Crackle: {
@@ -121,9 +165,9 @@ SHEAF_HD_NOINLINE float raw_value(const Pattern& pt, Vec3 p) {
         // The mean of ten cosine waves; waves weigh near sources more.
         float sum = 0, weight = 0;
         for (int k = 0; k < 10; ++k) {
-            const float d = length(p - wave_source(k));
-            const float w = pt.kind == PatternKind::Waves ? 1.0f / (1.0f + d) : 1.0f;
-            sum += w * hdm::cosf(2.0f * kPi * (d * pt.frequency + pt.phase));
+            const float dist = length(p - wave_source(k));
+            const float w = pt.kind == PatternKind::Waves ? 1.0f / (1.0f + dist) : 1.0f;
+            sum += w * hdm::cosf(2.0f * kPi * (dist * pt.frequency + pt.phase));
             weight += w;
         }
         return clamp01(0.5f + 0.5f * sum / weight);
@@ -131,17 +175,19 @@ SHEAF_HD_NOINLINE float raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Spiral1:
     case PatternKind::Spiral2: {
         // POV-Ray's: the arms turn about z, the angle counted from -y towards +x; spiral2
-        // adds rings of the distance, each triangle-waved.
-        const float arms = pt.param[0] != 0 ? pt.param[0] : 1.0f;
-        const float r = sqrtf(p.x * p.x + p.y * p.y);
-        const float a = r > 0 ? hdm::atan2f(p.x, -p.y) / (2.0f * kPi) : 0.0f;
-        const float s = p.z + r + arms * a;
+        // adds rings of the distance, each triangle-waved. Turbulence bends the arms.
+        const double arms = pt.param[0] != 0 ? double(pt.param[0]) : 1.0;
+        const double r = ::sqrt(d.x * d.x + d.y * d.y);
+        constexpr double kHalfPi = 1.5707963267948966192313216916398;
+        const double phi = r == 0.0  ? 0.0
+                           : d.x < 0 ? 3.0 * kHalfPi - hdm::asin(d.y / r)
+                                     : kHalfPi + hdm::asin(d.y / r);
+        const double a = phi / 6.283185307179586476925286766559;
+        const double turb =
+            pt.has_turbulence ? double(pt.turbulence.x) * own_turbulence(pt, d) : 0.0;
+        const double s = d.z + r + arms * a + turb;
         if (pt.kind == PatternKind::Spiral1) return s;
-        auto triangle = [](float x) {
-            x = frac(x);
-            return x < 0.5f ? 2.0f * x : 2.0f - 2.0f * x;
-        };
-        return triangle(s) + triangle(r);
+        return triangle_wave(s) + triangle_wave(r);
     }
     case PatternKind::Quilted: {
         const Vec3 q(frac(p.x + 0.5f) - 0.5f, frac(p.y + 0.5f) - 0.5f, frac(p.z + 0.5f) - 0.5f);
@@ -152,32 +198,23 @@ SHEAF_HD_NOINLINE float raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Julia:
         return fractal_value(pt.fractal, pt.kind == PatternKind::Julia, p);
     default:
-        return 0.0f;
+        return 0.0;
     }
 }
 
-// Frequency and phase, then the value wraps into [0, 1) when it left [0, 1] or was modified
-// (an unmodified 1 stays 1), then the wave. Ripples and waves use frequency and phase inside.
-SHEAF_HD_INLINE float shape_value(const Pattern& pt, float raw) {
+// As POV-Ray: with a frequency, the value times it plus the phase, modulo 1.00001 (POV-Ray's
+// constant); a negative value wraps into [0, 1); then the wave. Ripples and waves use frequency
+// and phase inside.
+SHEAF_HD_INLINE float shape_value(const Pattern& pt, double raw) {
     if (pt.kind == PatternKind::Ripples || pt.kind == PatternKind::Waves)
-        return apply_wave(pt, raw);
-    float v = raw * pt.frequency + pt.phase;
-    if (v < 0.0f || v > 1.0f || pt.frequency != 1.0f || pt.phase != 0.0f) v = frac(v);
-    return apply_wave(pt, v);
+        return float(apply_wave(pt, raw));
+    double v = raw;
+    if (pt.frequency != 0.0f) v = ::fmod(v * double(pt.frequency) + double(pt.phase), 1.00001);
+    if (v < 0.0) v -= ::floor(v);
+    return float(apply_wave(pt, v));
 }
 
 } // namespace pattern_detail
-
-/// Classic turbulence displaces a pattern's point by its amount times the fractal vector noise
-/// (POV-Ray's DTurbulence, whose length vturbulence gives), as POV-Ray displaces it, and
-/// warp { turbulence } likewise. POV-Ray's marble, wood, agate and spirals instead bend their
-/// bands by the scalar turbulence inside the pattern; Sheaf displaces their point by this
-/// factor more, which bends them about as far.
-constexpr float kBandTurbulenceScale = 4.0f;
-
-SHEAF_HD_INLINE float turbulence_scale(PatternKind k) {
-    return bends_by_own_turbulence(k) ? kBandTurbulenceScale : 1.0f;
-}
 
 namespace pattern_detail {
 
@@ -206,8 +243,10 @@ SHEAF_HD_INLINE float dist_factor(float dist, float exponent) {
 SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
     using namespace pattern_detail;
     switch (w.kind) {
-    case WarpKind::Turbulence:
-        return p + w.a * vector_turbulence(p, w.octaves, w.f[0], w.f[1]);
+    case WarpKind::Turbulence: {
+        const DVec3 t = pov_dturbulence(DVec3(p), w.octaves, double(w.f[0]), double(w.f[1]));
+        return Vec3(float(p.x + w.a.x * t.x), float(p.y + w.a.y * t.y), float(p.z + w.a.z * t.z));
+    }
     case WarpKind::Repeat: {
         const float width = w.f[0];
         const float block = floorf(p[w.axis] / width);
@@ -287,16 +326,20 @@ SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
 
 /// The pattern-space point of world point `world`: through the pattern's transforms and
 /// warps (`warps`: the scene's warp array, read when the pattern has any; none without it),
-/// then its turbulence.
+/// then its classic turbulence.
 SHEAF_HD_NOINLINE Vec3 pattern_point(const Pattern& pt, Vec3 world, const Warp* warps) {
     Vec3 p = pt.to_pattern.point(world);
     for (uint32_t i = 0; warps && i < pt.warp_count; ++i) {
         const Warp& w = warps[pt.warp_first + i];
         p = w.to_inner.point(warp_point(w, p));
     }
-    if (pt.has_turbulence)
-        p += pt.turbulence * vector_turbulence(p, pt.octaves, pt.omega, pt.lambda) *
-             turbulence_scale(pt.kind);
+    // POV-Ray's classic turbulence moves the point by DTurbulence times the amount, but for
+    // marble and wood, which bend their bands by it themselves (raw_value).
+    if (pt.has_turbulence && pt.kind != PatternKind::Marble && pt.kind != PatternKind::Wood) {
+        const DVec3 t = pov_dturbulence(DVec3(p), pt.octaves, double(pt.omega), double(pt.lambda));
+        p = Vec3(float(p.x + pt.turbulence.x * t.x), float(p.y + pt.turbulence.y * t.y),
+                 float(p.z + pt.turbulence.z * t.z));
+    }
     return p;
 }
 

@@ -295,8 +295,13 @@ void Parser::parse_global_settings() {
             model.irid_wavelength = {c[0], c[1], c[2]};
         } else if (k == "charset") {
             next();
-        } else if (k == "adc_bailout" || k == "number_of_waves" || k == "noise_generator" ||
-                   k == "max_intersections" || k == "hf_gray_16" || k == "mm_per_unit") {
+        } else if (k == "noise_generator") { // as POV-Ray: 1, 2 or 3
+            const Token at = peek();
+            const double g = parse_float();
+            if (!(g >= 1 && g < 4)) error_at(at, "global noise_generator must be 1, 2 or 3");
+            model.noise_generator = int(g);
+        } else if (k == "adc_bailout" || k == "number_of_waves" || k == "max_intersections" ||
+                   k == "hf_gray_16" || k == "mm_per_unit") {
             if (starts_expression(peek())) parse_expr();
         } else {
             error_expected(t, "a global setting (assumed_gamma, max_trace_level ...)");

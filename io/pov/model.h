@@ -70,6 +70,7 @@ struct PovPattern {
     Vec3 turbulence{0, 0, 0};
     int octaves = 6;
     double omega = 0.5, lambda = 2;
+    int noise_generator = 0; // 1..3; 0: the scene's (PovModel::scene_noise_generator)
     double frequency = 1, phase = 0, wave_exponent = 1;
     Vec3 vector{0, 1, 0}; // gradient
     double param[4] = {0, 0, 0, 0};
@@ -278,6 +279,12 @@ struct PovModel {
     double assumed_gamma = 0; // 0: not given
     double version = 3.7;
     bool version_given = false;
+    int noise_generator = 0; // global_settings' (1..3); 0: not given
+    /// The generator of patterns that name none: global_settings', else as POV-Ray 3.7
+    /// defaults it, 1 before #version 3.5 and 2 from it.
+    int scene_noise_generator() const {
+        return noise_generator ? noise_generator : version < 3.5 ? 1 : 2;
+    }
     std::array<double, 3> ambient_light{1, 1, 1};
     std::array<double, 3> irid_wavelength{0.25, 0.18, 0.14};
     int max_trace_level = -1;

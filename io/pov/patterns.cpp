@@ -209,9 +209,15 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
     } else if (k == "exponent" || k == "interior" || k == "exterior") {
         advance();
         parse_fractal_modifier(t, pt.fractal);
-    } else if (k == "noise_generator" || k == "form" || k == "metric" || k == "offset" ||
-               k == "control0" || k == "control1" || k == "orientation" || k == "dist_exp" ||
-               k == "accuracy" || k == "max_iteration" || k == "interpolate") {
+    } else if (k == "noise_generator") { // 0: the scene's, as POV-Ray reads it
+        advance();
+        const Token at = peek();
+        const double g = parse_float();
+        if (!(g >= 0 && g < 4)) error_at(at, "noise_generator must be 0, 1, 2 or 3");
+        pt.noise_generator = int(g);
+    } else if (k == "form" || k == "metric" || k == "offset" || k == "control0" ||
+               k == "control1" || k == "orientation" || k == "dist_exp" || k == "accuracy" ||
+               k == "max_iteration" || k == "interpolate") {
         // Shape details of patterns Sheaf draws its own way: read and not used.
         advance();
         if (starts_expression(peek())) parse_expr();

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <string_view>
 
 namespace sheaf {
 
@@ -307,9 +308,27 @@ SHEAF_HD_INLINE float slope_map_height(const SlopeEntry* e, uint32_t count, floa
 /// entries around the pattern's value blended (continuous patterns, entries sorted by
 /// value), the entry a list pattern indexes, or with `average` the mean of all the entries'
 /// normals weighted by their values (POV-Ray's normal_map, normal lists and average).
+/// How POV-Ray tilts a normal by its pattern: bumps, dents, wrinkles, ripples and waves have
+/// normal functions of their own (core/shading/surface_texture.h); every other pattern tilts
+/// it by its slope, sampled `delta` (POV-Ray's accuracy) around the point.
+enum class NormalForm : uint8_t { Slope, Bumps, Dents, Wrinkles, Ripples, Waves };
+
+/// The form POV-Ray gives a normal pattern named `name` (bumps, dents ...; others Slope).
+inline NormalForm normal_form_of(std::string_view name) {
+    if (name == "bumps") return NormalForm::Bumps;
+    if (name == "dents") return NormalForm::Dents;
+    if (name == "wrinkles") return NormalForm::Wrinkles;
+    if (name == "ripples") return NormalForm::Ripples;
+    if (name == "waves") return NormalForm::Waves;
+    return NormalForm::Slope;
+}
+
 struct NormalPattern {
     Pattern pattern;
-    float amount = 0.5f;
+    float amount = 0.5f; // POV-Ray's bump size
+    NormalForm form = NormalForm::Slope;
+    bool no_bump_scale = false; // POV-Ray's no_bump_scale: the normal not made unit in between
+    float delta = 0.02f;        // Slope: POV-Ray's accuracy
     uint32_t slope_first = 0, slope_count = 0;
     uint32_t map_first = 0, map_count = 0;
     bool average = false;

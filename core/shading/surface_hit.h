@@ -24,10 +24,9 @@ SHEAF_HD_NOINLINE void finish_surface(const SceneView& scene, SurfaceHit& h, flo
     h.material = resolve_material(scene, h.material, h.position, h.normal, uv_s, uv_t);
     const Material& m = scene.materials[h.material];
     if (m.normal >= 0) {
-        Vec3 n = perturb_normal(scene, uint32_t(m.normal), h.position, h.normal);
-        // A tilted normal never turns away from the side the ray came from.
-        if (dot(n, h.geo_normal) <= 0) n = h.normal;
-        h.normal = n;
+        // As in POV-Ray, a normal tilted past the surface stays as tilted (it faces away from
+        // the lights and the eye, so that point is shaded dark).
+        h.normal = perturb_normal(scene, uint32_t(m.normal), h.position, h.normal);
     }
     if (m.pigment >= 0) {
         const SurfaceColor c =

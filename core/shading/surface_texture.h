@@ -324,38 +324,116 @@ SHEAF_HD_INLINE Vec3 facets_normal(const Pattern& pt, Vec3 q, Vec3 n) {
     return length_squared(out) > 0 ? normalize(out) : n;
 }
 
-/// The unit shading normal n tilted by the slope of normal pattern np (its map aside).
-SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p, Vec3 n) {
+// POV-Ray's four directions its slope normal samples a pattern along (a tetrahedron's).
+SHEAF_HD_INLINE DVec3 pyramid_direction(int i) {
+    switch (i) {
+    case 0:
+        return {0.942809041, -0.333333333, 0.0};
+    case 1:
+        return {-0.471404521, -0.333333333, 0.816496581};
+    case 2:
+        return {-0.471404521, -0.333333333, -0.816496581};
+    default:
+        return {0.0, 1.0, 0.0};
+    }
+}
+
+// The displacement POV-Ray's normal pattern np adds to the unit normal in pattern space at
+// pattern-space point q (p the world point, n its normal facing the ray, for slope patterns).
+SHEAF_HD_INLINE DVec3 normal_displacement(const SceneView& scene, const NormalPattern& np, Vec3 q,
+                                          Vec3 p, Vec3 n) {
     const Pattern& pt = np.pattern;
-    if (pt.kind == PatternKind::Image) return bump_map_normal(scene, np, p, n);
-    if (pt.kind == PatternKind::Facets)
-        return facets_normal(pt, pattern_point(pt, p, scene.warps), n);
-    const Vec3 q = pattern_point(pt, p, scene.warps);
-    // The height: the pattern's value, through the slope map when there is one.
+    const DVec3 d(q);
+    const double amount = np.amount;
+    switch (np.form) {
+    case NormalForm::Bumps: // the vector noise
+        return pov_dnoise(d) * amount;
+    case NormalForm::Dents: // the vector noise times the noise cubed
+    {
+        const double v = pov_noise(d, pt.noise_generator);
+        return pov_dnoise(d) * (v * v * v * amount);
+    }
+    case NormalForm::Wrinkles: { // ten octaves of the vector noise's size, component by component
+        DVec3 r;
+        double scale = 1.0;
+        for (int i = 0; i < 10; scale *= 2.0, ++i) {
+            const DVec3 v = pov_dnoise(d * scale);
+            r = r + DVec3(fabs(v.x / scale), fabs(v.y / scale), fabs(v.z / scale));
+        }
+        return r * amount;
+    }
+    case NormalForm::Ripples:
+    case NormalForm::Waves: { // towards each wave's centre by the sine of its distance
+        DVec3 r;
+        for (int i = 0; i < kPovWaves; ++i) {
+            const DVec3 s = pov_wave_source(i);
+            const DVec3 v(d.x - s.x, d.y - s.y, d.z - s.z);
+            double len = ::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+            if (len == 0.0) len = 1.0;
+            double scalar;
+            if (np.form == NormalForm::Waves) {
+                const double f = pov_wave_frequency(i);
+                scalar =
+                    pattern_detail::cycloidal(len * double(pt.frequency) * f + double(pt.phase)) *
+                    amount / f;
+            } else {
+                scalar = pattern_detail::cycloidal(len * double(pt.frequency) + double(pt.phase)) *
+                         amount;
+            }
+            r = r + v * (scalar / (len * kPovWaves));
+        }
+        return r;
+    }
+    case NormalForm::Slope:
+        break;
+    }
+    // Every other pattern: its heights (through the slope map) at four points around q, each
+    // pushing the normal against its direction.
     auto height = [&](Vec3 at) {
         const float v = slope_value(scene, pt, at, p, n);
         return np.slope_count > 0
                    ? slope_map_height(scene.slope_entries + np.slope_first, np.slope_count, v)
                    : v;
     };
-    // Its slope in pattern space, by central differences 0.02 apart, POV-Ray's default
-    // normal accuracy: steps (list patterns, pigment patterns of them) become grooves that
-    // wide, as in POV-Ray, rather than lines nothing shows.
-    const float h = 0.02f;
-    const Vec3 g((height(q + Vec3(h, 0, 0)) - height(q - Vec3(h, 0, 0))) / (2 * h),
-                 (height(q + Vec3(0, h, 0)) - height(q - Vec3(0, h, 0))) / (2 * h),
-                 (height(q + Vec3(0, 0, h)) - height(q - Vec3(0, 0, h))) / (2 * h));
-    const float slope = length(g);
-    if (!(slope > 0) || !(slope <= FLT_MAX)) return n; // zero, NaN or infinite
-    // Its direction in the world (gradients transform by the transpose of world -> pattern),
-    // its size as in pattern space, so a scaled pattern is finer, not steeper.
-    const Vec3 gw = pattern_gradient_to_world(pt, scene.warps, g);
-    Vec3 tangent = gw - n * dot(gw, n);
-    const float tl = length(tangent);
-    if (!(tl > 0)) return n;
-    tangent = tangent * (slope / tl);
-    const Vec3 out = normalize(n - tangent * np.amount);
-    return length_squared(out) > 0 ? out : n;
+    const double delta = np.delta;
+    const double scaled = amount * -5.0 * (0.02 / delta);
+    DVec3 r;
+    for (int i = 0; i < 4; ++i) {
+        const DVec3 dir = pyramid_direction(i);
+        const Vec3 at(float(d.x + delta * dir.x), float(d.y + delta * dir.y),
+                      float(d.z + delta * dir.z));
+        r = r + dir * (double(height(at)) * scaled);
+    }
+    return r;
+}
+
+/// The unit shading normal n tilted by normal pattern np (its map aside), as POV-Ray tilts it:
+/// the normal taken into the pattern's space (by the inverse transpose of its transforms, made
+/// unit length unless no_bump_scale), displaced there (normal_displacement), and taken back.
+SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& np, Vec3 p,
+                                   Vec3 n) {
+    const Pattern& pt = np.pattern;
+    if (pt.kind == PatternKind::Image) return bump_map_normal(scene, np, p, n);
+    if (pt.kind == PatternKind::Facets)
+        return facets_normal(pt, pattern_point(pt, p, scene.warps), n);
+    const Vec3 q = pattern_point(pt, p, scene.warps);
+    // Pattern space to the world for normals: the transposes of the pattern's transforms
+    // (columns a0, a1, a2); the world's normal goes the other way by its inverse.
+    const Vec3 a0 = pattern_gradient_to_world(pt, scene.warps, Vec3(1, 0, 0));
+    const Vec3 a1 = pattern_gradient_to_world(pt, scene.warps, Vec3(0, 1, 0));
+    const Vec3 a2 = pattern_gradient_to_world(pt, scene.warps, Vec3(0, 0, 1));
+    const Vec3 c0 = cross(a1, a2), c1 = cross(a2, a0), c2 = cross(a0, a1);
+    const float det = dot(a0, c0);
+    if (!(fabsf(det) > 0) || !(fabsf(det) <= FLT_MAX)) return n;
+    DVec3 t(dot(n, c0) / det, dot(n, c1) / det, dot(n, c2) / det);
+    if (!np.no_bump_scale) {
+        const double l = ::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
+        if (!(l > 0)) return n;
+        t = t * (1.0 / l);
+    }
+    t = t + normal_displacement(scene, np, q, p, n);
+    const Vec3 out = normalize(a0 * float(t.x) + a1 * float(t.y) + a2 * float(t.z));
+    return length_squared(out) > 0 && length_squared(out) <= FLT_MAX ? out : n;
 }
 
 } // namespace texture_detail

@@ -178,16 +178,23 @@ TEST(SurfaceTexture, TextureMapsPickTheNearerMaterial) {
     EXPECT_EQ(resolve_material(p, 2, Vec3(0.9f, 0, 0)), 2u); // a plain material stays
 }
 
+// POV-Ray's slope normal samples the pattern at four points around the point (a tetrahedron
+// 0.02 across) and pushes the unit normal against the rise by 5 * 0.02 * 4/3 = 2/15 of the
+// bump size times the slope: a bump size of 3.75 pushes by half the slope.
 TEST(SurfaceTexture, NormalsTiltAlongTheSlope) {
     PreparedScene p;
     NormalPattern np;
     np.pattern = gradient_x(); // value rises along +x with slope 1
-    np.amount = 0.5f;
+    np.amount = 3.75f;
     p.normal_patterns.push_back(np);
     const Vec3 n = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
     EXPECT_NEAR(length(n), 1.0f, 1e-5);
-    EXPECT_LT(n.x, -0.3f); // tilted against the rising value
+    EXPECT_NEAR(n.x, normalize(Vec3(-0.5f, 1, 0)).x, 1e-4); // tilted against the rising value
     EXPECT_NEAR(n.z, 0.0f, 1e-5);
+    // POV-Ray's accuracy: sampled further apart, the same slope tilts as far.
+    p.normal_patterns[0].delta = 0.1f;
+    EXPECT_NEAR(perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0)).x, n.x, 1e-4);
+    p.normal_patterns[0].delta = 0.02f;
     // A slope along the normal itself tilts nothing.
     const Vec3 m = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(1, 0, 0));
     EXPECT_NEAR(m.x, 1.0f, 1e-5);
@@ -214,7 +221,7 @@ TEST(SurfaceTexture, SlopeMapsShapeTheTilt) {
     PreparedScene p;
     NormalPattern np;
     np.pattern = gradient_x();
-    np.amount = 0.5f;
+    np.amount = 3.75f;
     p.normal_patterns.push_back(np);
     const Vec3 plain = perturb_normal(p, 0, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
     // A map falling from height 1 to 0 (slope -1): the same slope, turned the other way.
@@ -234,7 +241,7 @@ TEST(SurfaceTexture, NormalMapsBlendPickAndAverageTheirEntries) {
     NormalPattern tilt; // entry 0: tilts along x
     tilt.pattern = gradient_x();
     tilt.pattern.to_pattern = Affine::scale(Vec3(0.5f)); // stays in 0..1 over the points used
-    tilt.amount = 0.5f;
+    tilt.amount = 3.75f;
     p.normal_patterns.push_back(tilt);
     const Vec3 up(0, 1, 0), at(0.6f, 0, 0.3f);
     const Vec3 tilted = perturb_normal(p, 0, at, up);

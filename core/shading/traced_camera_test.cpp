@@ -55,7 +55,7 @@ TEST(TracedCamera, ACameraNormalTiltsThePrimaryRays) {
     tilt.pattern.kind = PatternKind::Gradient;
     tilt.pattern.vector = Vec3(1, 0, 0);
     tilt.pattern.to_pattern = Affine::translate(Vec3(0.5f, 0, 0)); // u + 1/2 stays in 0..1
-    tilt.amount = 0.5f;
+    tilt.amount = 3.75f; // POV-Ray's slope normal: 2/15 of it, half the slope
     s.normal_patterns.push_back(tilt);
     s.camera.normal = int32_t(s.normal_patterns.size() - 1);
     const PreparedScene p = prepare_scene(s);

@@ -29,14 +29,6 @@ SHEAF_HD_INLINE int imod(int a, int n) {
     return r < 0 ? r + n : r;
 }
 
-// The ten fixed sources of ripples and waves, inside the unit cube around the origin.
-SHEAF_HD_INLINE Vec3 wave_source(int k) {
-    const uint32_t h = lattice_hash(k, 17, 29, 11);
-    return Vec3(hash_unit(h), hash_unit(h * 0x2545f491u + 3), hash_unit(h * 0x9e3779b9u + 5)) *
-               2.0f -
-           Vec3(1.0f);
-}
-
 // POV-Ray's sine of a fraction of a turn (its `cycloidal`), odd about 0.
 SHEAF_HD_INLINE double cycloidal(double v) {
     constexpr double kTurn = 6.283185307179586476925286766559;
@@ -67,6 +59,25 @@ SHEAF_HD_INLINE double apply_wave(const Pattern& pt, double v) {
         return hdm::pow(v, double(pt.wave_exponent));
     }
     return v;
+}
+
+// POV-Ray's ripples (the mean of the waves' sines of distance times frequency plus phase,
+// from 0..1) and waves (each wave at its own frequency, weighted by its inverse).
+SHEAF_HD_INLINE double pov_waves_value(DVec3 p, bool waves, double frequency, double phase) {
+    double sum = 0.0;
+    for (int i = 0; i < kPovWaves; ++i) {
+        const DVec3 s = pov_wave_source(i);
+        const double dx = p.x - s.x, dy = p.y - s.y, dz = p.z - s.z;
+        double len = ::sqrt(dx * dx + dy * dy + dz * dz);
+        if (len == 0.0) len = 1.0;
+        if (waves) {
+            const double f = pov_wave_frequency(i);
+            sum += cycloidal(len * frequency * f + phase) / f;
+        } else {
+            sum += cycloidal(len * frequency + phase);
+        }
+    }
+    return waves ? 0.2 * (2.5 + sum / kPovWaves) : 0.5 * (1.0 + sum / kPovWaves);
 }
 
 // POV-Ray's scalar turbulence of the pattern (its octaves, omega, lambda and generator).
@@ -161,17 +172,9 @@ SHEAF_HD_NOINLINE double raw_value(const Pattern& pt, Vec3 p) {
     case PatternKind::Cells:
         return hash_unit(lattice_hash(floor_int(p.x), floor_int(p.y), floor_int(p.z), 3));
     case PatternKind::Ripples:
-    case PatternKind::Waves: {
-        // The mean of ten cosine waves; waves weigh near sources more.
-        float sum = 0, weight = 0;
-        for (int k = 0; k < 10; ++k) {
-            const float dist = length(p - wave_source(k));
-            const float w = pt.kind == PatternKind::Waves ? 1.0f / (1.0f + dist) : 1.0f;
-            sum += w * hdm::cosf(2.0f * kPi * (dist * pt.frequency + pt.phase));
-            weight += w;
-        }
-        return clamp01(0.5f + 0.5f * sum / weight);
-    }
+    case PatternKind::Waves: // POV-Ray's ten sources; waves weigh each by its own frequency
+        return pov_waves_value(d, pt.kind == PatternKind::Waves, double(pt.frequency),
+                               double(pt.phase));
     case PatternKind::Spiral1:
     case PatternKind::Spiral2: {
         // POV-Ray's: the arms turn about z, the angle counted from -y towards +x; spiral2
@@ -203,11 +206,9 @@ SHEAF_HD_NOINLINE double raw_value(const Pattern& pt, Vec3 p) {
 }
 
 // As POV-Ray: with a frequency, the value times it plus the phase, modulo 1.00001 (POV-Ray's
-// constant); a negative value wraps into [0, 1); then the wave. Ripples and waves use frequency
-// and phase inside.
+// constant); a negative value wraps into [0, 1); then the wave. (Ripples and waves use
+// frequency and phase inside too, and then again here, as in POV-Ray.)
 SHEAF_HD_INLINE float shape_value(const Pattern& pt, double raw) {
-    if (pt.kind == PatternKind::Ripples || pt.kind == PatternKind::Waves)
-        return float(apply_wave(pt, raw));
     double v = raw;
     if (pt.frequency != 0.0f) v = ::fmod(v * double(pt.frequency) + double(pt.phase), 1.00001);
     if (v < 0.0) v -= ::floor(v);

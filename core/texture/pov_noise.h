@@ -236,6 +236,25 @@ SHEAF_HD_INLINE DVec3 pov_dturbulence(DVec3 p, int octaves, double omega, double
     return r;
 }
 
+/// The centre of POV-Ray's wave i (ripples and waves): the vector noise at (i, 0, 0), made
+/// unit length.
+SHEAF_HD_INLINE DVec3 pov_wave_source(int i) {
+    const DVec3 d = pov_dnoise(DVec3(double(i), 0.0, 0.0));
+    const double l = ::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+    return l > 0 ? DVec3(d.x / l, d.y / l, d.z / l) : d;
+}
+
+/// The relative frequency of POV-Ray's wave i (the waves pattern), in [0.01, 1.01]: the i-th
+/// draw of the classic generator from POV-Ray's seed.
+SHEAF_HD_INLINE double pov_wave_frequency(int i) {
+    uint32_t state = uint32_t(-560851967);
+    for (int k = 0; k <= i; ++k) state = state * 1812433253u + 12345u;
+    return double((state >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
+}
+
+/// POV-Ray's number of waves (global_settings' number_of_waves, 10 unless set).
+constexpr int kPovWaves = 10;
+
 #undef SHEAF_POV_TABLE
 
 } // namespace sheaf

@@ -170,7 +170,10 @@ int32_t MaterialBuilder::normal(const PovNormal& n, const Affine& eff) {
     std::vector<NormalMapEntry> map;
     for (const auto& [value, entry] : n.map)
         map.push_back({float(value), entry ? normal(*entry, eff * n.local) : -1});
-    NormalPattern np{pattern(n.pattern, eff * n.local), float(n.amount * n.slope_scale)};
+    NormalPattern np{pattern(n.pattern, eff * n.local), float(n.amount)};
+    np.form = n.form;
+    np.delta = float(n.accuracy);
+    np.no_bump_scale = n.no_bump_scale;
     if (n.pattern.kind == PatternKind::Image && n.pattern.image)
         np.pattern.image = image(*n.pattern.image, np.pattern.to_pattern, "data");
     np.average = n.average;

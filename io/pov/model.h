@@ -118,10 +118,11 @@ struct PovPigment {
 struct PovNormal {
     PovPattern pattern;
     double amount = 0.5;
-    /// POV-Ray draws bumps, dents, ripples, waves and wrinkles with normal functions of their
-    /// own and every other pattern by its slope, much flatter; Sheaf tilts every normal by the
-    /// pattern's slope, scaled by this to look as strong (calibrated against povray).
-    double slope_scale = 0.15;
+    /// Bumps, dents, wrinkles, ripples and waves: POV-Ray's own normal functions; every other
+    /// pattern tilts by its slope, sampled `accuracy` around the point.
+    NormalForm form = NormalForm::Slope;
+    double accuracy = 0.02;
+    bool no_bump_scale = false;
     /// Bumps, dents, ripples, waves, wrinkles, quilted and facets: POV-Ray draws them with
     /// their own normal functions, which ignore a slope map.
     bool own_normal = false;

@@ -11,17 +11,6 @@ namespace sheaf::io::pov {
 
 namespace {
 
-// How strongly a normal pattern tilts, relative to its slope: measured as the spread of a lit
-// plane's shading against povray's (normal { NAME 0.5 }, 128x128, tests in docs/pov.md).
-double normal_slope_scale(const std::string& name) {
-    if (name == "bumps") return 1.0;
-    if (name == "waves") return 0.8;
-    if (name == "ripples") return 0.35;
-    if (name == "wrinkles") return 0.28;
-    if (name == "dents") return 0.3;
-    return 0.15; // every other pattern: POV-Ray's generic slope normal
-}
-
 // The patterns POV-Ray draws with normal functions of their own, which ignore a slope map.
 bool has_own_normal(const std::string& name) {
     return name == "bumps" || name == "dents" || name == "ripples" || name == "waves" ||
@@ -74,7 +63,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
         if (parse_pattern_name(n.pattern, list, supported)) {
             if (!supported) unsupported(t, "normal pattern '" + t.text + "' (no normal change)");
             have = supported;
-            n.slope_scale = normal_slope_scale(t.text);
+            n.form = normal_form_of(t.text);
             n.own_normal = has_own_normal(t.text);
             n.average = false;
             n.map.clear();
@@ -107,8 +96,14 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
             have = true;
         } else if (k == "uv_mapping") {
             unsupported(t, "uv_mapping of a normal (the normal pattern is evaluated in space)");
-        } else if (k == "accuracy" || k == "no_bump_scale") {
-            if (starts_expression(peek())) parse_expr();
+        } else if (k == "accuracy") { // how far apart the slope is sampled
+            const Token at = peek();
+            n.accuracy = parse_float();
+            if (!(n.accuracy > 0 && std::isfinite(n.accuracy)))
+                error_at(at, "accuracy must be a positive number");
+        } else if (k == "no_bump_scale") {
+            n.no_bump_scale = true;
+            if (starts_expression(peek()) && parse_float() == 0) n.no_bump_scale = false;
         } else {
             error_expected(t, "a normal item (bumps, ripples, bump_size, turbulence ...)");
         }
@@ -139,7 +134,7 @@ void Parser::parse_bump_map(const Token& kw, PovNormal& n) {
     n.pattern.kind = PatternKind::Image;
     n.pattern.bump_map = true;
     n.pattern.image = img;
-    n.slope_scale = 1; // the image's heights tilt the normal as POV-Ray's do
+    n.form = NormalForm::Slope; // the image's heights tilt the normal (bump_map_normal)
     n.own_normal = true;
 }
 

@@ -216,8 +216,8 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         if (!(g >= 0 && g < 4)) error_at(at, "noise_generator must be 0, 1, 2 or 3");
         pt.noise_generator = int(g);
     } else if (k == "form" || k == "metric" || k == "offset" || k == "control0" ||
-               k == "control1" || k == "orientation" || k == "dist_exp" || k == "accuracy" ||
-               k == "max_iteration" || k == "interpolate") {
+               k == "control1" || k == "orientation" || k == "dist_exp" || k == "max_iteration" ||
+               k == "interpolate") {
         // Shape details of patterns Sheaf draws its own way: read and not used.
         advance();
         if (starts_expression(peek())) parse_expr();

@@ -272,7 +272,8 @@ TEST(PovTextures, SlopePatternsTakeTheirArguments) {
     EXPECT_EQ(towards.vector.z, -3.0f);
     const NormalPattern& bumps = r.scene.normal_patterns[size_t(shape_material(r, 3).normal)];
     EXPECT_EQ(bumps.pattern.kind, PatternKind::Slope);
-    EXPECT_FLOAT_EQ(bumps.amount, 0.5f * 0.15f);     // the bump size times the slope scale
+    EXPECT_FLOAT_EQ(bumps.amount, 0.5f); // the bump size
+    EXPECT_EQ(bumps.form, NormalForm::Slope);
     EXPECT_EQ(bumps.pattern.slope.altitude.z, 1.0f); // pattern space: not mirrored
     EXPECT_NO_THROW(r.scene.validate());
     // A sphere's top is white and its side grey where the slope points up.
@@ -821,11 +822,12 @@ TEST(PovTextures, PigmentPatternsUseAPigmentsGrey) {
     EXPECT_NEAR(white.rgb.y, 1.0f, 1e-5);
     EXPECT_NEAR(white.rgb.x, 0.0f, 1e-5);
     EXPECT_NEAR(black.rgb.x, 1.0f, 1e-5);
-    // A gradient x ramp's grey tilts the normal along x, by the generic slope normal's 0.15
-    // per unit of slope.
+    // A gradient x ramp's grey tilts the normal along x, by POV-Ray's slope normal's 2/15 of
+    // the bump size (1 here) per unit of slope.
     const uint32_t normal = uint32_t(shape_material(r, 1).normal);
     const Vec3 n = perturb_normal(v, normal, Vec3(0.3f, 0, 0), Vec3(0, 1, 0));
-    EXPECT_NEAR(n.x, -0.15f / std::sqrt(1 + 0.15f * 0.15f), 1e-3);
+    const float k = 2.0f / 15.0f;
+    EXPECT_NEAR(n.x, -k / std::sqrt(1 + k * k), 1e-3);
     // A warped pigment inside: its entries follow its chain in the pattern's own space (POV-Ray
     // z, no mirror): at POV-Ray's (0.8, 0.5, 0.25) the checker's first entry, gradient z, is
     // 0.25.
@@ -901,7 +903,7 @@ TEST(PovTextures, NormalMapsListsAndAverages) {
     EXPECT_FLOAT_EQ(be[0].value, 0.3f);
     const NormalPattern& marble = s.normal_patterns[size_t(be[0].normal)];
     EXPECT_EQ(marble.pattern.kind, PatternKind::Marble);
-    EXPECT_FLOAT_EQ(marble.amount, 1.5f * 0.15f); // the bump size times the slope scale
+    EXPECT_FLOAT_EQ(marble.amount, 1.5f); // the bump size
     EXPECT_EQ(marble.map_count, 0u);
     EXPECT_NEAR(marble.pattern.to_pattern.point(Vec3(2, 0, 0)).x, 1.0f, 1e-6);
     EXPECT_FALSE(blend.average);
@@ -910,6 +912,7 @@ TEST(PovTextures, NormalMapsListsAndAverages) {
     EXPECT_EQ(list.pattern.kind, PatternKind::Checker);
     ASSERT_EQ(le.size(), 2u);
     EXPECT_EQ(s.normal_patterns[size_t(le[0].normal)].pattern.kind, PatternKind::Bozo);
+    EXPECT_EQ(s.normal_patterns[size_t(le[0].normal)].form, NormalForm::Bumps);
     EXPECT_EQ(le[1].normal, -1);
     // An average: weights in the order given, 1 where left out.
     const auto [avg, ae] = map(2);
@@ -917,7 +920,7 @@ TEST(PovTextures, NormalMapsListsAndAverages) {
     ASSERT_EQ(ae.size(), 2u);
     EXPECT_FLOAT_EQ(ae[0].value, 1.0f);
     EXPECT_FLOAT_EQ(ae[1].value, 3.0f);
-    EXPECT_FLOAT_EQ(s.normal_patterns[size_t(ae[0].normal)].amount, -5 * 0.15f);
+    EXPECT_FLOAT_EQ(s.normal_patterns[size_t(ae[0].normal)].amount, -5.0f);
     EXPECT_EQ(s.normal_patterns[size_t(ae[0].normal)].pattern.wave, Wave::Scallop);
 
     // A map inside a map is warned and left out.
@@ -979,7 +982,7 @@ TEST(PovTextures, ACameraNormalTiltsThePrimaryRays) {
     ASSERT_GE(r.scene.camera.normal, 0);
     const NormalPattern& n = r.scene.normal_patterns[size_t(r.scene.camera.normal)];
     EXPECT_EQ(n.pattern.kind, PatternKind::Crackle);
-    EXPECT_FLOAT_EQ(n.amount, 0.1f * 0.15f); // the bump size times the slope scale
+    EXPECT_FLOAT_EQ(n.amount, 0.1f); // the bump size
     // Screen space: scaled by its own transforms, not turned with the camera.
     EXPECT_NEAR(n.pattern.to_pattern.point(Vec3(0.2f, 0, 0)).x, 1.0f, 1e-5);
     // Its gradient is a world vector in POV-Ray's world, whose z is Sheaf's -z.

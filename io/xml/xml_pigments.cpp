@@ -175,7 +175,10 @@ void SceneReader::read_normal(const pugi::xml_node& node) {
                   "an average=\"true\" <normal> averages its entries; it has no pattern");
     const PatternKind kind =
         np.average ? PatternKind::Gradient : pattern_kind(a, PatternUse::Normal);
-    if (!np.average) np.pattern = read_pattern(a, kind);
+    if (!np.average) {
+        np.pattern = read_pattern(a, kind);
+        np.form = normal_form_of(node.attribute("pattern").value());
+    }
     if (np.pattern.uv)
         ctx_.fail(node, node.attribute("mapping"),
                   "attribute 'mapping' of " + tag(node) +

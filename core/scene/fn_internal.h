@@ -1,12 +1,11 @@
 // POV-Ray's internal functions (functions.inc's `internal(N)`) that Sheaf evaluates, on both
 // backends: the shapes isosurfaces are made of and the fractal noises of terrains and water.
-// Each takes x, y, z and then its parameters. The noises are Sheaf's (noise01, as the bozo
-// pattern's): the fractals are built as POV-Ray builds them, over another noise, so they look
-// alike without matching point for point; the generator parameter is read and ignored.
+// Each takes x, y, z and then its parameters. The noises are POV-Ray's (pov_noise.h) under the
+// generator their parameter names, and the fractals are built as POV-Ray builds them.
 #pragma once
 
 #include "core/math/hd_math.h"
-#include "core/texture/noise.h"
+#include "core/texture/pov_noise.h"
 
 #include <cstdint>
 
@@ -64,8 +63,13 @@ SHEAF_HD_INLINE double sq(double v) {
     return v * v;
 }
 
-SHEAF_HD_INLINE double noise(double x, double y, double z) {
-    return noise01(Vec3(float(x), float(y), float(z)));
+/// POV-Ray's noise under generator `gen` (a parameter: its whole part's last two bits, as
+/// POV-Ray reads it; 0 and 1 the original).
+SHEAF_HD_INLINE double noise(double x, double y, double z, int gen) {
+    return pov_noise(DVec3(x, y, z), gen);
+}
+SHEAF_HD_INLINE int generator(double p) {
+    return p > -1e9 && p < 1e9 ? int(p) & 3 : 0;
 }
 
 /// How many whole octaves of `octaves` run, within [0, kFnMaxOctaves].
@@ -114,11 +118,12 @@ SHEAF_HD_INLINE double helix1(double x, double y, double z, const double* p) {
 SHEAF_HD_INLINE double hetero_mf(double x, double y, double z, const double* p) {
     const double h = p[0], lacunarity = p[1], octaves = p[2], offset = p[3];
     const int power = p[4] > 0 ? (p[4] < 16 ? int(p[4]) : 16) : 0;
+    const int gen = generator(p[5]);
     const double fade = hdm::pow(lacunarity, -h);
-    double signal = 2 * noise(x, y, z) - 1 + offset;
+    double signal = 2 * noise(x, y, z, gen) - 1 + offset;
     double f = lacunarity, weight = fade;
     for (int i = 1; i < kFnMaxOctaves && double(i) < octaves; ++i) {
-        double step = (2 * noise(x * f, y * f, z * f) - 1 + offset) * weight;
+        double step = (2 * noise(x * f, y * f, z * f, gen) - 1 + offset) * weight;
         for (int k = 0; k < power; ++k) step *= signal;
         signal += step;
         f *= lacunarity;
@@ -126,7 +131,7 @@ SHEAF_HD_INLINE double hetero_mf(double x, double y, double z, const double* p) 
     }
     const double rest = octaves - double(whole_octaves(octaves));
     if (rest > 0 && rest < 1)
-        signal += rest * signal * (2 * noise(x * f, y * f, z * f) - 1 + offset) * weight;
+        signal += rest * signal * (2 * noise(x * f, y * f, z * f, gen) - 1 + offset) * weight;
     return signal;
 }
 
@@ -136,7 +141,8 @@ SHEAF_HD_INLINE double ridge(double x, double y, double z, const double* p) {
     const double lambda = p[0], octaves = p[1], omega = p[2], offset = p[3], ridge = p[4];
     const double across = 1.0 / (ridge > 1 - ridge ? ridge : 1 - ridge);
     const double scale = 1.0 / (offset > 1 - offset ? offset : 1 - offset);
-    auto octave = [&](double f) { return fabs(noise(x * f, y * f, z * f) - ridge) * across; };
+    const int gen = generator(p[5]);
+    auto octave = [&](double f) { return fabs(noise(x * f, y * f, z * f, gen) - ridge) * across; };
     double value = octave(1.0) - offset, total = 1;
     double f = lambda, w = omega;
     const int whole = whole_octaves(octaves);
@@ -158,7 +164,10 @@ SHEAF_HD_INLINE double ridge(double x, double y, double z, const double* p) {
 /// the previous octave times `gain` (clamped to [0, 1]) and by lacunarity^-H per octave.
 SHEAF_HD_INLINE double ridged_mf(double x, double y, double z, const double* p) {
     const double h = p[0], lacunarity = p[1], octaves = p[2], offset = p[3], gain = p[4];
-    auto crest = [&](double f) { return sq(offset - fabs(2 * noise(x * f, y * f, z * f) - 1)); };
+    const int gen = generator(p[5]);
+    auto crest = [&](double f) {
+        return sq(offset - fabs(2 * noise(x * f, y * f, z * f, gen) - 1));
+    };
     double signal = crest(1.0), result = signal;
     const double fade = hdm::pow(lacunarity, -h);
     double f = 1, weight = 1;
@@ -214,9 +223,10 @@ SHEAF_HD_INLINE double fn_internal(int id, double x, double y, double z, const d
         return hdm::atan2(x, z);
     case FnInternal::Torus:
         return sqrt(sq(sqrt(x * x + z * z) - p[0]) + y * y) - p[1];
-    case FnInternal::Noise3d:
+    case FnInternal::Noise3d: // the default generator: a scene's global one does not reach it
+        return fn_internal_detail::noise(x, y, z, kPovDefaultNoiseGenerator);
     case FnInternal::NoiseGenerator:
-        return fn_internal_detail::noise(x, y, z);
+        return fn_internal_detail::noise(x, y, z, fn_internal_detail::generator(p[0]));
     }
     return 0;
 }

@@ -85,14 +85,20 @@ TEST(Function, InternalHelixSuperellipsoidAndFractalNoises) {
     const std::vector<double> square = {1, 1, 0.2, 1, 1, 0, 45};
     EXPECT_NEAR(f(FnInternal::Helix1, -1.1, 0, 0, square), -0.2 + 0.1 * std::sqrt(0.5), 1e-9);
 
-    // One octave of each fractal is its noise n, as its definition shapes it.
+    // One octave of each fractal is its noise n, as its definition shapes it, under the
+    // generator its last parameter names (f_noise3d: POV-Ray's default, 2; 0 and 1 the
+    // original).
     const double x = 0.3, y = 1.7, z = -2.2;
     const double n = fn_internal(int(FnInternal::Noise3d), x, y, z, nullptr);
     EXPECT_NEAR(f(FnInternal::NoiseGenerator, x, y, z, {2}), n, 0);
-    EXPECT_NEAR(f(FnInternal::RidgedMf, x, y, z, {0.5, 2, 1, 1, 2, 0}),
+    EXPECT_EQ(f(FnInternal::NoiseGenerator, x, y, z, {1}), pov_noise(DVec3(x, y, z), 1));
+    EXPECT_EQ(f(FnInternal::NoiseGenerator, x, y, z, {0}), pov_noise(DVec3(x, y, z), 1));
+    EXPECT_EQ(f(FnInternal::NoiseGenerator, x, y, z, {7}), pov_noise(DVec3(x, y, z), 3));
+    EXPECT_EQ(f(FnInternal::NoiseGenerator, x, y, z, {std::nan("")}), pov_noise(DVec3(x, y, z), 1));
+    EXPECT_NEAR(f(FnInternal::RidgedMf, x, y, z, {0.5, 2, 1, 1, 2, 2}),
                 (1 - std::fabs(2 * n - 1)) * (1 - std::fabs(2 * n - 1)), 1e-6);
-    EXPECT_NEAR(f(FnInternal::HeteroMf, x, y, z, {0.5, 2, 1, 0.3, 1, 0}), 2 * n - 1 + 0.3, 1e-6);
-    EXPECT_NEAR(f(FnInternal::Ridge, x, y, z, {2, 1, 0.5, 0.2, 0.4, 0}),
+    EXPECT_NEAR(f(FnInternal::HeteroMf, x, y, z, {0.5, 2, 1, 0.3, 1, 2}), 2 * n - 1 + 0.3, 1e-6);
+    EXPECT_NEAR(f(FnInternal::Ridge, x, y, z, {2, 1, 0.5, 0.2, 0.4, 2}),
                 (std::fabs(n - 0.4) / 0.6 - 0.2) / 0.8, 1e-6);
     // More octaves add detail: a gain of 0 silences the ridged octaves after the first; the
     // heterogeneous one adds weight^k times the signal per octave.

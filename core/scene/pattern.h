@@ -30,7 +30,9 @@ enum class PatternKind : uint8_t {
     Agate,          // noise-bent bands
     Wrinkles,       // fractal sum of noise
     Dents,          // noise cubed
-    Crackle,        // cells of random points: second nearest minus nearest distance
+    Crackle,        // cells of random points: `vector` (the form) weighs the nearest three
+                    // distances under metric param[0], each raised by param[1] (the offset);
+                    // param[2] 1: solid, each cell the noise at its point (POV-Ray's crackle)
     Cells,          // a random value per unit cube
     Ripples,        // concentric waves from fixed random centres
     Waves,          // like ripples, with amplitude falling with distance
@@ -220,6 +222,13 @@ struct Pattern {
     FractalParams fractal; // Mandel, Julia
     SlopeParams slope;     // Slope
 };
+
+/// POV-Ray's crackle as it starts: form <-1, 1, 0> (the second nearest distance less the
+/// nearest), metric 2, offset 0, not solid.
+inline void set_crackle_defaults(Pattern& pt) {
+    pt.vector = Vec3(-1, 1, 0);
+    pt.param[0] = 2, pt.param[1] = 0, pt.param[2] = 0;
+}
 
 /// Sets `pt` to POV-Ray's slope pattern: `direction`'s and `altitude`'s lengths weigh the two
 /// parts; (lo, hi) ranges remap them (hi == lo: left as they are). False when both

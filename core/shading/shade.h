@@ -46,13 +46,14 @@ SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
 
 /// Iridescence (POV-Ray's thin film): the factor per channel for light leaving the surface at
 /// h towards the viewer after arriving along unit `to_light` (a light, or the mirror
-/// direction). The film's thickness varies with turbulence (5 octaves, as POV-Ray's) at the
-/// point; the noise is Sheaf's own.
+/// direction). The film's thickness varies with POV-Ray's turbulence (5 octaves, omega 0.5,
+/// lambda 2, the default noise generator) at the point in POV-Ray's world (Sheaf's, z mirrored).
 SHEAF_HD_INLINE Vec3 irid_factor(const Material& m, const SurfaceHit& h, Vec3 to_light) {
     float film = m.irid_thickness;
     if (m.irid_turbulence != 0.0f) {
-        const float noise = turbulence(h.position, 5, 0.5f, 2.0f);
-        film *= 1.0f + (2.0f * noise - 1.0f) * m.irid_turbulence;
+        const DVec3 at(h.position.x, h.position.y, -h.position.z);
+        const double noise = pov_turbulence(at, 5, 0.5, 2.0, kPovDefaultNoiseGenerator);
+        film *= float(1.0 + (2.0 * noise - 1.0) * double(m.irid_turbulence));
     }
     const float phase =
         2.0f * kPi * film * (fabsf(dot(h.normal, to_light)) + fabsf(dot(h.normal, h.incoming)));

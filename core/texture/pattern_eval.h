@@ -80,6 +80,81 @@ SHEAF_HD_INLINE double pov_waves_value(DVec3 p, bool waves, double frequency, do
     return waves ? 0.2 * (2.5 + sum / kPovWaves) : 0.5 * (1.0 + sum / kPovWaves);
 }
 
+// Coordinates kept within +-1e9 (NaN as 0), where whole cell numbers still fit an int.
+SHEAF_HD_INLINE DVec3 clamp_coords(DVec3 p) {
+    auto c = [](double v) { return !(v > -1e9) ? (v != v ? 0.0 : -1e9) : v > 1e9 ? 1e9 : v; };
+    return {c(p.x), c(p.y), c(p.z)};
+}
+
+// POV-Ray's crackle: one random point per unit cell (pov_cell_point); the distances (under
+// `metric`, param[0]) to the nearest three of the points in the 81 cells around p, each raised
+// by `offset` (param[1]), weighted by `form` (vector) and summed; or, `solid` (param[2]), the
+// noise at the nearest point. Clamped to [0, 1].
+SHEAF_HD_NOINLINE double pov_crackle(const Pattern& pt, DVec3 p) {
+    p = clamp_coords(p);
+    const double metric = pt.param[0];
+    const bool square = metric == 2.0, unity = metric == 1.0;
+    auto dist = [&](DVec3 q) {
+        const double dx = q.x - p.x, dy = q.y - p.y, dz = q.z - p.z;
+        if (square) return dx * dx + dy * dy + dz * dz;
+        if (unity) return fabs(dx) + fabs(dy) + fabs(dz);
+        return hdm::pow(fabs(dx), metric) + hdm::pow(fabs(dy), metric) + hdm::pow(fabs(dz), metric);
+    };
+    const int fx = int(::floor(p.x - 1e-10)), fy = int(::floor(p.y - 1e-10)),
+              fz = int(::floor(p.z - 1e-10));
+    double m1 = 0, m2 = 0, m3 = 0;
+    DVec3 nearest, first[3];
+    int seen = 0;
+    // The cells at most two away along each axis, and two away along one axis at most, in
+    // POV-Ray's order (which settles ties).
+    for (int ax = -2; ax <= 2; ++ax)
+        for (int ay = -2; ay <= 2; ++ay)
+            for (int az = -2; az <= 2; ++az) {
+                if ((ax == 2 || ax == -2) + (ay == 2 || ay == -2) + (az == 2 || az == -2) > 1)
+                    continue;
+                const DVec3 q = pov_cell_point(fx + ax, fy + ay, fz + az);
+                const double s = dist(q);
+                if (seen < 3) { // the first three, then sorted as POV-Ray sorts them
+                    first[seen] = q;
+                    (seen == 0 ? m1 : seen == 1 ? m2 : m3) = s;
+                    if (++seen == 3) {
+                        int idx = 0;
+                        double t;
+                        if (m2 < m1) t = m1, m1 = m2, m2 = t, idx = 1;
+                        if (m3 < m1) t = m1, m1 = m3, m3 = t, idx = 2;
+                        if (m3 < m2) t = m2, m2 = m3, m3 = t;
+                        nearest = first[idx];
+                    }
+                    continue;
+                }
+                if (s < m1) {
+                    m3 = m2, m2 = m1, m1 = s;
+                    nearest = q;
+                } else if (s < m2) {
+                    m3 = m2, m2 = s;
+                } else if (s < m3) {
+                    m3 = s;
+                }
+            }
+    const double offset = pt.param[1];
+    if (offset != 0) {
+        const double o = square ? offset * offset : unity ? offset : hdm::pow(offset, metric);
+        m1 += o, m2 += o, m3 += o;
+    }
+    double v;
+    if (pt.param[2] != 0) {
+        v = pov_noise(nearest, pt.noise_generator);
+    } else if (square) {
+        v = pt.vector.x * ::sqrt(m1) + pt.vector.y * ::sqrt(m2) + pt.vector.z * ::sqrt(m3);
+    } else if (unity) {
+        v = pt.vector.x * m1 + pt.vector.y * m2 + pt.vector.z * m3;
+    } else {
+        v = pt.vector.x * hdm::pow(m1, 1.0 / metric) + pt.vector.y * hdm::pow(m2, 1.0 / metric) +
+            pt.vector.z * hdm::pow(m3, 1.0 / metric);
+    }
+    return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
+}
+
 // POV-Ray's scalar turbulence of the pattern (its octaves, omega, lambda and generator).
 SHEAF_HD_INLINE double own_turbulence(const Pattern& pt, DVec3 p) {
     return pov_turbulence(p, pt.octaves, double(pt.omega), double(pt.lambda), pt.noise_generator);
@@ -163,14 +238,14 @@ SHEAF_HD_NOINLINE double raw_value(const Pattern& pt, Vec3 p) {
         const double n = pov_noise(d, gen);
         return n * n * n;
     }
-    case PatternKind::Crackle: {
-        float f1, f2;
-        uint32_t id;
-        cell_distances(p, f1, f2, id);
-        return clamp01(f2 - f1);
+    case PatternKind::Crackle:
+        return pov_crackle(pt, d);
+    case PatternKind::Cells: { // a random value per unit cube
+        const DVec3 c = clamp_coords(d);
+        const double v = pov_pattern_rand(pov_hash3(
+            int(::floor(c.x + 1e-10)), int(::floor(c.y + 1e-10)), int(::floor(c.z + 1e-10))));
+        return v < 1.0 ? v : 1.0;
     }
-    case PatternKind::Cells:
-        return hash_unit(lattice_hash(floor_int(p.x), floor_int(p.y), floor_int(p.z), 3));
     case PatternKind::Ripples:
     case PatternKind::Waves: // POV-Ray's ten sources; waves weigh each by its own frequency
         return pov_waves_value(d, pt.kind == PatternKind::Waves, double(pt.frequency),

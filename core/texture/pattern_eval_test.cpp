@@ -289,3 +289,31 @@ TEST(Noise, CellDistancesAreOrdered) {
 
 } // namespace
 } // namespace sheaf
+
+namespace sheaf {
+namespace {
+
+// POV-Ray's cells and crackle (default; metric 1, offset 0.1, form <0.5, 0.3, 0.2>; solid)
+// at four points, as povray 3.7.0.10 evaluates `function { pattern { ... } }` there.
+TEST(Patterns, CellsAndCrackleArePovRays) {
+    const double want[4][4] = {
+        {0.39901996450498700, 0.08676050859337586, 0.77447832572832698, 0.77237578689026376},
+        {0.52463734569028020, 0.34518710392702778, 1.00000000000000000, 0.49430087288027696},
+        {0.67901675496250391, 0.48237545345591054, 1.00000000000000000, 0.80495245791649772},
+        {0.39232046902179718, 0.54412552966243477, 0.90342817318625734, 0.48555898345455134}};
+    Pattern cells = make(PatternKind::Cells), crackle = make(PatternKind::Crackle);
+    set_crackle_defaults(crackle);
+    Pattern metric = crackle, solid = crackle;
+    metric.param[0] = 1, metric.param[1] = 0.1f, metric.vector = Vec3(0.5f, 0.3f, 0.2f);
+    solid.param[2] = 1;
+    for (int i = 0; i < 4; ++i) {
+        const Vec3 p(0.37f + i * 1.3f, -2.11f + i * 0.7f, 5.3f - i * 2.9f);
+        EXPECT_NEAR(pattern_value_at(cells, p), want[i][0], 1e-6) << i;
+        EXPECT_NEAR(pattern_value_at(crackle, p), want[i][1], 1e-5) << i;
+        EXPECT_NEAR(pattern_value_at(metric, p), want[i][2], 1e-5) << i;
+        EXPECT_NEAR(pattern_value_at(solid, p), want[i][3], 1e-5) << i;
+    }
+}
+
+} // namespace
+} // namespace sheaf

@@ -35,11 +35,13 @@ inline constexpr uint16_t kHashHost[4096] = {SHEAF_POV_NOISE_HASH};
 inline constexpr double kValuesHost[267] = {SHEAF_POV_NOISE_VALUES};
 inline constexpr uint16_t kSolidPermHost[2048] = {SHEAF_POV_NOISE_SOLID_PERM};
 inline constexpr int16_t kSolidGradHost[2048 * 3] = {SHEAF_POV_NOISE_SOLID_GRAD};
+inline constexpr uint32_t kRandsHost[4098] = {SHEAF_POV_PATTERN_RANDS};
 #if defined(__CUDACC__)
 static __device__ const uint16_t kHashDevice[4096] = {SHEAF_POV_NOISE_HASH};
 static __device__ const double kValuesDevice[267] = {SHEAF_POV_NOISE_VALUES};
 static __device__ const uint16_t kSolidPermDevice[2048] = {SHEAF_POV_NOISE_SOLID_PERM};
 static __device__ const int16_t kSolidGradDevice[2048 * 3] = {SHEAF_POV_NOISE_SOLID_GRAD};
+static __device__ const uint32_t kRandsDevice[4098] = {SHEAF_POV_PATTERN_RANDS};
 #endif
 
 #if defined(__CUDA_ARCH__)
@@ -250,6 +252,25 @@ SHEAF_HD_INLINE double pov_wave_frequency(int i) {
     uint32_t state = uint32_t(-560851967);
     for (int k = 0; k <= i; ++k) state = state * 1812433253u + 12345u;
     return double((state >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
+}
+
+/// POV-Ray's hash of a lattice cell (each coordinate modulo 4096), 0..4095: the cells and
+/// crackle patterns' seed.
+SHEAF_HD_INLINE int pov_hash3(int x, int y, int z) {
+    using pov_noise_detail::hash;
+    return hash(hash(hash(x & 0xFFF) ^ (y & 0xFFF)) ^ (z & 0xFFF));
+}
+
+/// POV-Ray's pattern random number `seed` (0..4097) in [0, 1].
+SHEAF_HD_INLINE double pov_pattern_rand(int seed) {
+    return double(SHEAF_POV_TABLE(pov_noise_detail::kRands)[seed]) / 4294967295.0;
+}
+
+/// The random point POV-Ray's crackle (and facets) place in unit cell (x, y, z).
+SHEAF_HD_INLINE DVec3 pov_cell_point(int x, int y, int z) {
+    const int seed = pov_hash3(x, y, z);
+    return {x + pov_pattern_rand(seed), y + pov_pattern_rand(seed + 1),
+            z + pov_pattern_rand(seed + 2)};
 }
 
 /// POV-Ray's number of waves (global_settings' number_of_waves, 10 unless set).

@@ -4,7 +4,7 @@
 #include "io/pov/parser.h"
 
 #include "core/base/error.h"
-#include "core/texture/noise.h"
+#include "core/texture/pov_noise.h"
 #include "io/pov/probe.h"
 
 #include <algorithm>
@@ -163,10 +163,14 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         out = vout(Affine::rotate(vec(1), float(num(2) * M_PI / 180)).vector(vec(0)));
     } else if (n == "vturbulence") { // vturbulence(lambda, omega, octaves, point)
         need(4);
-        // Sheaf's fractal vector noise: not POV-Ray's values, but as long on average (a
-        // mean length of 0.49 over a grid of 400 points where povray's is 0.47).
+        // POV-Ray's DTurbulence, its omega and lambda in single precision as POV-Ray keeps them.
         const int octaves = std::isfinite(num(2)) ? int(std::clamp(num(2), 1.0, 10.0)) : 6;
-        out = vout(vector_turbulence(vec(3), octaves, float(num(1)), float(num(0))));
+        const Value& p = args[3];
+        if (!p.numeric()) error_expected(at[3], "a vector");
+        const DVec3 q = p.type == VType::Float ? DVec3(p.v[0], p.v[0], p.v[0])
+                                               : DVec3(p.v[0], p.v[1], p.dim > 2 ? p.v[2] : 0);
+        const DVec3 t = pov_dturbulence(q, octaves, double(float(num(1))), double(float(num(0))));
+        out = Value::vec3(t.x, t.y, t.z);
     } else if (n == "concat") {
         // A string lives in the variables and values that hold it, which the data budget does
         // not follow: one string may take a sixteenth of the budget, checked before it is built.
@@ -227,16 +231,21 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         out = Value::number(e);
     } else if (n == "seed") {
         need(1);
-        rand_streams_.push_back(uint64_t(int64_t(num(0))) * 2654435761ull + 1);
+        // POV-Ray's stream: the seed's whole part as 32 bits of state; one out of an int's
+        // range (or NaN) becomes INT_MIN, as POV-Ray's conversion gives on x86.
+        const double s = num(0);
+        const int32_t seed = s > -2147483649.0 && s < 2147483648.0 ? int32_t(s) : INT32_MIN;
+        rand_streams_.push_back(uint32_t(seed));
         out = Value::number(double(rand_streams_.size() - 1));
     } else if (n == "rand") {
         need(1);
         const double s = num(0);
         if (s < 0 || size_t(s) >= rand_streams_.size())
             error_at(at[0], "rand of a stream that seed() did not make");
-        uint64_t& x = rand_streams_[size_t(s)]; // 64-bit LCG, top 53 bits
-        x = x * 6364136223846793005ull + 1442695040888963407ull;
-        out = Value::number(double(x >> 11) / double(1ull << 53));
+        // POV-Ray's generator: the classic 32-bit step, the state over 2^32 - 1.
+        uint32_t& x = rand_streams_[size_t(s)];
+        x = x * 1812433253u + 12345u;
+        out = Value::number(double(x) / 4294967295.0);
     } else if (n == "dimension_size" || n == "dimensions") {
         if (args.empty() || args[0].type != VType::Array) error_expected(at[0], "an array");
         const ArrayValue& a = args[0].as<ArrayValue>();

@@ -56,6 +56,10 @@ TEST(PovExpressions, VturbulenceDisplacesAsTurbulenceDoes) {
     EXPECT_NE(num("vturbulence(2, 0.5, 6, <0.3, 0, 1.7>).x"),
               num("vturbulence(2, 0.5, 6, <2.3, 0, 1.7>).x"));
     EXPECT_NE(error_of("#declare V = vturbulence(2, 0.5, 6);").find("error"), std::string::npos);
+    // POV-Ray's own values (povray 3.7.0.10 wrote them).
+    EXPECT_NEAR(num("vturbulence(2, 0.5, 6, <0.3, 0.2, 1.7>).x"), -0.06545461124767413, 1e-12);
+    EXPECT_NEAR(num("vturbulence(2, 0.5, 6, <0.3, 0.2, 1.7>).y"), 0.32538894209024261, 1e-12);
+    EXPECT_NEAR(num("vturbulence(2, 0.5, 6, <0.3, 0.2, 1.7>).z"), -0.02376730271848233, 1e-12);
 }
 
 TEST(PovExpressions, Colors) {
@@ -129,6 +133,15 @@ TEST(PovExpressions, RandomStreamsAreDeterministic) {
     EXPECT_LT(a, 1);
     EXPECT_NE(a, b);
     EXPECT_EQ(a, declared(s, "A").v[0]);
+    // POV-Ray's streams, value for value (povray 3.7.0.10 wrote them): the classic 32-bit step
+    // from the seed, over 2^32 - 1; a seed beyond an int's range starts from INT_MIN.
+    const std::string p = "#declare S = seed(12345); #declare A = rand(S); #declare B = rand(S);"
+                          "#declare T = seed(-7); #declare C = rand(T);"
+                          "#declare U = seed(3000000000); #declare D = rand(U);";
+    EXPECT_DOUBLE_EQ(declared(p, "A").v[0], 0.46656368450880137);
+    EXPECT_DOUBLE_EQ(declared(p, "B").v[0], 0.24907022883395438);
+    EXPECT_DOUBLE_EQ(declared(p, "C").v[0], 0.04607286817535592);
+    EXPECT_DOUBLE_EQ(declared(p, "D").v[0], 0.50000287441071189);
 }
 
 TEST(PovExpressions, MinAndMaxExtent) {

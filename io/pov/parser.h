@@ -414,7 +414,7 @@ class Parser {
     // ---- files and random streams ----
     std::string scene_dir_;
     std::vector<std::string> file_names_;
-    std::vector<uint64_t> rand_streams_;
+    std::vector<uint32_t> rand_streams_; // seed() streams: POV-Ray's 32-bit state
     size_t data_bytes_ = 0; // live arrays and strings, objects placed or in a CSG: limits.data_bytes
     void charge(size_t bytes, const Token& t);
 

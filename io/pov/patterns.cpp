@@ -88,6 +88,10 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
                           ? Wave::Triangle
                           : Wave::Ramp;
         if (k == "gradient") pt.vector = parse_vector();
+        if (k == "crackle") { // POV-Ray's defaults: form <-1, 1, 0>, metric 2, offset 0
+            pt.vector = Vec3(-1, 1, 0);
+            pt.param[0] = 2, pt.param[1] = 0, pt.param[2] = 0;
+        }
         if (k == "function") { // its body, or a declared function called over x, y, z
             const Value f = parse_function(t);
             pt.function = std::static_pointer_cast<const PovFunction>(f.ptr);
@@ -215,14 +219,31 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         const double g = parse_float();
         if (!(g >= 0 && g < 4)) error_at(at, "noise_generator must be 0, 1, 2 or 3");
         pt.noise_generator = int(g);
+    } else if (pt.kind == PatternKind::Crackle && (k == "form" || k == "metric")) {
+        advance(); // form: the weights of the nearest three distances; metric: its x
+        const Value v = parse_expr();
+        if (v.type != VType::Float && v.type != VType::Vector)
+            error_expected(t, "a number or a vector after '" + k + "'");
+        const Vec3 w = v.type == VType::Float ? Vec3(float(v.v[0]))
+                                              : Vec3(float(v.v[0]), float(v.v[1]), float(v.v[2]));
+        if (k == "form")
+            pt.vector = w;
+        else
+            pt.param[0] = w.x;
+        if (k == "metric" && !(w.x > 0 && std::isfinite(w.x)))
+            error_at(t, "crackle's metric must be a positive number");
+    } else if (pt.kind == PatternKind::Crackle && k == "offset") {
+        advance();
+        pt.param[1] = parse_float();
     } else if (k == "form" || k == "metric" || k == "offset" || k == "control0" ||
                k == "control1" || k == "orientation" || k == "dist_exp" || k == "max_iteration" ||
                k == "interpolate") {
         // Shape details of patterns Sheaf draws its own way: read and not used.
         advance();
         if (starts_expression(peek())) parse_expr();
-    } else if (k == "solid") {
+    } else if (k == "solid") { // crackle: each cell one value, the noise at its point
         advance();
+        if (pt.kind == PatternKind::Crackle) pt.param[2] = 1;
     } else {
         return false;
     }

@@ -105,6 +105,7 @@ Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
                       kind == PatternKind::Spiral1 || kind == PatternKind::Spiral2
                   ? Wave::Triangle
                   : Wave::Ramp;
+    if (kind == PatternKind::Crackle) set_crackle_defaults(pt); // the nearest two's difference
     // mapping="uv": the pattern reads the surface's texture coordinates (u, v, 0).
     int mapping = 0;
     if (a.get("mapping", mapping, {"space", "uv"})) pt.uv = mapping == 1;

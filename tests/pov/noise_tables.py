@@ -6,7 +6,8 @@
 - The lattice hash (4096 entries) and the tables of noise_generator 3 (2048 permutation entries
   and 2048 gradients) come from POV-Ray's documented generator, the C library's classic linear
   congruential step `r = r * 1812433253 + 12345` on 32 bits, whose bits 16..30 are the draw; they
-  are computed here.
+  are computed here. So are the cells and crackle patterns' random numbers, the Mersenne
+  Twister's draws from its default seed.
 - The 267 random values that noise_generator 1 and 2 and the vector noise (DNoise) weight are
   measured from POV-Ray itself: `vturbulence(L, O, 1, P)` is one octave of the vector noise. At
   a lattice point each component is half of one value; just beside a lattice point the
@@ -62,6 +63,31 @@ def solid_tables():
     for i in range(n + 2):
         perm[n + i] = perm[i]
     return perm[:n], grads
+
+
+def mt19937(seed, count):
+    """The first `count` outputs of the Mersenne Twister MT19937 seeded with init_genrand(seed)
+    (the C++ and Boost engines' default seed is 5489)."""
+    n, m = 624, 397
+    mt = [0] * n
+    mt[0] = seed & MASK32
+    for i in range(1, n):
+        mt[i] = (1812433253 * (mt[i - 1] ^ (mt[i - 1] >> 30)) + i) & MASK32
+    out, idx = [], n
+    while len(out) < count:
+        if idx >= n:
+            for i in range(n):
+                y = (mt[i] & 0x80000000) | (mt[(i + 1) % n] & 0x7FFFFFFF)
+                mt[i] = mt[(i + m) % n] ^ (y >> 1) ^ (0x9908B0DF if y & 1 else 0)
+            idx = 0
+        y = mt[idx]
+        idx += 1
+        y ^= y >> 11
+        y ^= (y << 7) & 0x9D2C5680
+        y ^= (y << 15) & 0xEFC60000
+        y ^= y >> 18
+        out.append(y)
+    return out
 
 
 NOISE_MIN = -10000
@@ -240,6 +266,11 @@ def main():
 // ... and the gradients' numerators over 2048, normalised where they are read.
 #define SHEAF_POV_NOISE_SOLID_GRAD \\
 {c_list([c for g in grads for c in g], 15, str)}
+
+// The random numbers of the cells and crackle patterns: MT19937's first 4098 draws from its
+// default seed, each over 2^32 - 1 (the lattice hash reaches no further).
+#define SHEAF_POV_PATTERN_RANDS \\
+{c_list(mt19937(5489, 4098), 8, str)}
 '''
     with open(args.out, 'w') as f:
         f.write(text)

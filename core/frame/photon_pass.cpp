@@ -4,12 +4,12 @@
 #include "core/base/parallel.h"
 #include "core/base/timer.h"
 #include "core/frame/frame_stats.h"
-#include "core/rays/ray_gen.h"
 #include "core/frame/host_tracer.h"
+#include "core/rays/ray_gen.h"
 #include "core/scene/scene_view.h"
 #include "core/shading/shade.h"
 #include "core/shading/surface_hit.h"
-#include "core/texture/noise.h"
+#include "core/texture/lattice_hash.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@
 #include "core/math/hd_math.h"
 #include "core/scene/fn_internal.h"
 #include "core/scene/pattern.h"
-#include "core/texture/noise.h"
 #include "core/texture/pattern_eval.h"
+#include "core/texture/pov_noise.h"
 
 #include <cstdint>
 #include <string>

@@ -8,7 +8,7 @@
 #include "core/scene/prepared_scene.h"
 #include "core/shading/surface.h"
 #include "core/shading/surface_hit.h"
-#include "core/texture/noise.h"
+#include "core/texture/pov_noise.h"
 
 namespace sheaf {
 

@@ -307,21 +307,43 @@ SHEAF_HD_INLINE Vec3 bump_map_normal(const SceneView& scene, const NormalPattern
 #endif
 }
 
-/// POV-Ray's facets: cells of size param[0] over the unit normal n itself (the normal turned
-/// to the nearest cell point: flat facets on a curved surface), or with `coords` (param[1])
-/// over the pattern-space point q, each cell tilting n by that much of a noise vector taken
-/// at its point.
-SHEAF_HD_INLINE Vec3 facets_normal(const Pattern& pt, Vec3 q, Vec3 n) {
-    const float size = hdm::fmaxf(pt.param[0], 1e-6f), coords = pt.param[1];
-    float f1, f2;
-    uint32_t id;
-    Vec3 cell(0.0f);
-    cell_distances((coords != 0 ? q : n) / size, f1, f2, id, &cell);
-    if (coords == 0) return length_squared(cell) > 0 ? normalize(cell) : n;
-    Vec3 pert = vector_noise(cell);
-    pert = pert - n * dot(pert, n);
-    const Vec3 out = n + pert * coords;
-    return length_squared(out) > 0 ? normalize(out) : n;
+/// POV-Ray's facets, in the pattern's space: one random point per unit cell (pov_cell_point)
+/// of space scaled by 1 / size (param[0]); the cell points around the unit normal t (or, with
+/// `coords`, param[1], around the point q) are measured under metric param[2], and the nearest
+/// becomes the normal (with coords: t tilted by coords times POV-Ray's vector noise at that
+/// point, less its part along t). Not yet unit length.
+SHEAF_HD_INLINE DVec3 facets_normal(const Pattern& pt, Vec3 q, DVec3 t) {
+    const double size = pt.param[0], coords = pt.param[1];
+    const double metric = pt.param[2] > 0 ? double(pt.param[2]) : 2.0;
+    const double scale = size < 1e-6 ? 1e6 : 1.0 / size;
+    const DVec3 tv = (coords != 0 ? DVec3(q) : t) * scale;
+    // As POV-Ray: the metric 1 sum has no absolute values.
+    auto dist = [&](DVec3 c) {
+        const double dx = c.x - tv.x, dy = c.y - tv.y, dz = c.z - tv.z;
+        if (metric == 2.0) return dx * dx + dy * dy + dz * dz;
+        if (metric == 1.0) return dx + dy + dz;
+        return hdm::pow(fabs(dx), metric) + hdm::pow(fabs(dy), metric) + hdm::pow(fabs(dz), metric);
+    };
+    DVec3 nearest;
+    double best = 0;
+    bool first = true;
+    for (int ax = -2; ax <= 2; ++ax)
+        for (int ay = -2; ay <= 2; ++ay)
+            for (int az = -2; az <= 2; ++az) {
+                if ((ax == 2 || ax == -2) + (ay == 2 || ay == -2) + (az == 2 || az == -2) > 1)
+                    continue;
+                const DVec3 sv = pattern_detail::clamp_coords(tv + DVec3(ax, ay, az));
+                const DVec3 c =
+                    pov_cell_point(int(::floor(sv.x - 1e-10)), int(::floor(sv.y - 1e-10)),
+                                   int(::floor(sv.z - 1e-10)));
+                const double d = dist(c);
+                if (first || d < best) best = d, nearest = c, first = false;
+            }
+    if (coords == 0) return nearest;
+    DVec3 pert = pov_dnoise(nearest);
+    const double along = pert.x * t.x + pert.y * t.y + pert.z * t.z;
+    pert = pert + t * -along;
+    return t + pert * coords;
 }
 
 // POV-Ray's four directions its slope normal samples a pattern along (a tetrahedron's).
@@ -414,8 +436,6 @@ SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& 
                                    Vec3 n) {
     const Pattern& pt = np.pattern;
     if (pt.kind == PatternKind::Image) return bump_map_normal(scene, np, p, n);
-    if (pt.kind == PatternKind::Facets)
-        return facets_normal(pt, pattern_point(pt, p, scene.warps), n);
     const Vec3 q = pattern_point(pt, p, scene.warps);
     // Pattern space to the world for normals: the transposes of the pattern's transforms
     // (columns a0, a1, a2); the world's normal goes the other way by its inverse.
@@ -431,7 +451,13 @@ SHEAF_HD_NOINLINE Vec3 tilt_normal(const SceneView& scene, const NormalPattern& 
         if (!(l > 0)) return n;
         t = t * (1.0 / l);
     }
-    t = t + normal_displacement(scene, np, q, p, n);
+    if (pt.kind == PatternKind::Facets) {
+        const double l = ::sqrt(t.x * t.x + t.y * t.y + t.z * t.z); // POV-Ray makes it unit
+        if (!(l > 0)) return n;
+        t = facets_normal(pt, q, t * (1.0 / l));
+    } else {
+        t = t + normal_displacement(scene, np, q, p, n);
+    }
     const Vec3 out = normalize(a0 * float(t.x) + a1 * float(t.y) + a2 * float(t.z));
     return length_squared(out) > 0 && length_squared(out) <= FLT_MAX ? out : n;
 }

@@ -10,7 +10,7 @@
 #include "core/math/hd_math.h"
 #include "core/scene/pattern.h"
 #include "core/texture/fractal_pattern.h"
-#include "core/texture/noise.h"
+#include "core/texture/lattice_hash.h"
 #include "core/texture/pov_noise.h"
 
 namespace sheaf {

@@ -132,6 +132,28 @@ TEST(PovNoise, ScalarTurbulenceSumsOctavesAsPovRay) {
     EXPECT_DOUBLE_EQ(pov_turbulence(p, 1, 0.5, 2.0, 2), first);
 }
 
+// Over many points: smooth, within [0, 1], centred about where POV-Ray's comments say.
+TEST(PovNoise, SmoothAndInTheUnitInterval) {
+    uint32_t state = 1;
+    auto u = [&]() { // a uniform value in [-50, 50)
+        state = state * 1664525u + 1013904223u;
+        return double(state >> 8) / double(1u << 24) * 100.0 - 50.0;
+    };
+    for (int gen = 1; gen <= 3; ++gen) {
+        double sum = 0;
+        const int n = 20000;
+        for (int i = 0; i < n; ++i) {
+            const DVec3 p(u(), u(), u());
+            const double a = pov_noise(p, gen), b = pov_noise(p + DVec3(1e-3, 0, 0), gen);
+            EXPECT_LT(std::fabs(a - b), 0.01) << gen;
+            ASSERT_GE(a, 0.0);
+            ASSERT_LE(a, 1.0);
+            sum += a;
+        }
+        EXPECT_NEAR(sum / n, 0.5, 0.06) << gen;
+    }
+}
+
 TEST(PovNoise, BadCoordinatesGiveValuesNotUndefinedBehaviour) {
     const double bad[] = {1e300, -1e300, std::nan(""), 3e9, -3e9};
     for (double b : bad) {

@@ -103,8 +103,8 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (k == "pigment_pattern") pt.pigment = parse_pigment(PovPigment{});
         if (k == "image_pattern") pt.image = parse_image_pattern(t);
         if (k == "density_file") pt.density = parse_density_file(t);
-        if (k == "facets") { // POV-Ray's defaults: size 0.1, over the normal
-            pt.param[0] = 0.1;
+        if (k == "facets") { // POV-Ray's defaults: size 0.1, over the normal, metric 2
+            pt.param[0] = 0.1, pt.param[2] = 2;
             for (;;) {
                 const Token m = peek();
                 if (accept_kw("coords")) {
@@ -112,6 +112,12 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
                 } else if (accept_kw("size")) {
                     pt.param[0] = parse_float();
                     if (!(pt.param[0] > 0)) error_at(m, "a facets size must be above 0");
+                } else if (accept_kw("metric")) { // a vector, of which POV-Ray takes x
+                    const Value v = parse_expr();
+                    if (!v.numeric()) error_expected(m, "a number or a vector after 'metric'");
+                    pt.param[2] = v.v[0];
+                    if (!(pt.param[2] > 0 && std::isfinite(pt.param[2])))
+                        error_at(m, "facets' metric must be a positive number");
                 } else {
                     break;
                 }

@@ -34,11 +34,14 @@ float geometry_extent(const PreparedScene& scene) {
 
 RayGenParams frame_ray_params(const PreparedScene& scene, const RenderSettings& s) {
     RayGenParams p;
-    // Rays that leave surfaces start on the objects, so their rounding grows with the objects
-    // and the camera: a light far away must not push them past surfaces 0.001 apart. Shadow
-    // rays start at the lights, so their end keeps the offset of the whole scene.
-    p.epsilon = 1e-5f * geometry_extent(scene);
-    p.shadow_epsilon = 1e-5f * scene_extent(scene);
+    // Rays that leave surfaces start off them by the rounding of the hit point, which grows
+    // with the point's coordinates (surface_offset) and the camera's distance: neither a light
+    // far away nor a sky sphere of radius 1e5 pushes them past surfaces 0.001 apart. Shadow
+    // rays start at the lights, so their end keeps the lights' offset too.
+    p.epsilon = kRelativeOffset * std::max(length(scene.camera.position), 1e-3f);
+    float lights = 1e-3f;
+    for (const Light& l : scene.lights) lights = std::max(lights, length(l.position));
+    p.shadow_epsilon = kRelativeOffset * lights;
     p.far = 4.0f * scene_extent(scene);
     p.ao_samples = s.ao_samples;
     p.ao_distance = s.ao_distance;

@@ -18,10 +18,17 @@
 
 namespace sheaf {
 
+/// Offsets from surfaces, relative to the coordinates' size (float rounding is about 1e-7 of
+/// it, so a hundred times that).
+constexpr float kRelativeOffset = 1e-5f;
+
 struct RayGenParams {
-    float epsilon = 1e-4f; // offset from surfaces of the rays that leave them, in scene units
-    // Where shadow rays end above surfaces: they start at the lights, so the rounding of their
-    // end grows with the lights' distance too.
+    // Rays that leave a surface start this far off it (surface_offset), at least: a hit's
+    // rounding grows with its distance from the origin and the camera's, so the offset is
+    // kRelativeOffset times the larger (`epsilon` holds the camera's part).
+    float epsilon = 1e-4f;
+    // Where shadow rays end above surfaces, at least: they start at the lights, so the
+    // rounding of their end grows with the lights' distance too.
     float shadow_epsilon = 1e-4f;
     float far = 1e4f;      // beyond the scene: where parallel lights' shadow rays start
     int ao_samples = 0;
@@ -31,6 +38,14 @@ struct RayGenParams {
     int radiosity_depth = 2;   // diffuse bounces of a gathered path
     float radiosity_brightness = 1.0f;
 };
+
+/// How far off a surface at `pos` the rays leaving it start: the camera's part of the offset
+/// or kRelativeOffset of the point's largest coordinate, whichever is more. A large object far
+/// away (a sky sphere) does not push the rays of small ones near the origin off their surfaces.
+SHEAF_HD_INLINE float surface_offset(const RayGenParams& p, Vec3 pos) {
+    const float m = hdm::fmaxf(fabsf(pos.x), hdm::fmaxf(fabsf(pos.y), fabsf(pos.z)));
+    return hdm::fmaxf(p.epsilon, kRelativeOffset * m);
+}
 
 /// Where generated rays go: structure-of-arrays slots (light only for shadow rays).
 struct RaySlots {
@@ -163,7 +178,8 @@ SHEAF_HD_INLINE void shadow_ray_write(const SceneView& scene, const SurfaceHit* 
     const SurfaceHit& h = hits[hit];
     const Light& l = scene.lights[li];
     // The ray starts at the light and ends just above the surface.
-    const Vec3 target = h.position + h.geo_normal * p.shadow_epsilon;
+    const Vec3 target =
+        h.position + h.geo_normal * hdm::fmaxf(p.shadow_epsilon, surface_offset(p, h.position));
     const LightSample ls = sample_light(l, target, p.far);
     Ray r;
     r.origin = ls.origin;
@@ -200,7 +216,7 @@ SHEAF_HD_INLINE void ao_ray_fill(const SceneView& scene, const SurfaceHit& h, ui
     for (uint32_t s = 0; s < n; ++s) {
         // Cosine-weighted hemisphere from the Halton points (bases 2 and 3).
         Ray ray;
-        ray.origin = h.position + h.geo_normal * p.epsilon;
+        ray.origin = h.position + h.geo_normal * surface_offset(p, h.position);
         ray.dir = raygen_detail::cosine_direction(h.geo_normal, t, b, h.pixel * n + s + 1, 2, 3);
         ray.tmin = 0.0f;
         ray.tmax = p.ao_distance;
@@ -221,7 +237,7 @@ SHEAF_HD_INLINE Vec3 mirror_direction(const SurfaceHit& h) {
 /// +1 above, -1 below), unbounded.
 SHEAF_HD_INLINE Ray bounce_ray(const SurfaceHit& h, Vec3 dir, float side, const RayGenParams& p) {
     Ray r;
-    r.origin = h.position + h.geo_normal * (side * p.epsilon);
+    r.origin = h.position + h.geo_normal * (side * surface_offset(p, h.position));
     r.dir = dir;
     r.tmin = 0.0f;
     r.tmax = FLT_MAX;
@@ -346,7 +362,7 @@ SHEAF_HD_INLINE void diffuse_ray_fill(const SceneView& scene, const SurfaceHit& 
         const uint32_t sample = depth == 0 ? s : h.gather >> 8;
         const uint32_t index = h.pixel * uint32_t(p.radiosity_samples) + sample + 1;
         Ray ray;
-        ray.origin = h.position + h.geo_normal * p.epsilon;
+        ray.origin = h.position + h.geo_normal * surface_offset(p, h.position);
         ray.dir = raygen_detail::cosine_direction(h.geo_normal, t, b, index, b1, b2);
         ray.tmin = 0.0f;
         ray.tmax = FLT_MAX;

@@ -327,6 +327,11 @@ TEST(ProceduralShading, FogAndFadeFollowPovRay) {
     EXPECT_NEAR(interior_fade(m, 2).x, std::exp(-0.5f), 1e-6);
     m.fade_distance = 0;
     EXPECT_EQ(interior_fade(m, 5).x, 1.0f);
+    // fade_power 0 (POV-Ray's default): a refracted ray keeps half at any depth (1 / (1 + 1)),
+    // a shadow ray all of it, as in POV-Ray.
+    m.fade_distance = 2, m.fade_power = 0, m.fade_color = Vec3(0.0f);
+    EXPECT_NEAR(interior_fade(m, 7).y, 0.5f, 1e-6);
+    EXPECT_EQ(interior_fade(m, 7, true).y, 1.0f);
 }
 
 } // namespace

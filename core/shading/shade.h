@@ -147,11 +147,13 @@ SHEAF_HD_INLINE Vec3 ambient_light(const Material& m, const SurfaceHit& h) {
 }
 
 /// What light keeps after travelling d inside a material that fades it (POV-Ray's interior
-/// fade_distance, fade_power, fade_color).
-/// A fade_power of 1000 or more is POV-Ray's exponential absorption instead:
-/// exp(-(1 - fade_color) d / fade_distance) per channel.
-SHEAF_HD_INLINE Vec3 interior_fade(const Material& m, float d) {
-    if (!(m.fade_distance > 0) || !(m.fade_power > 0)) return Vec3(1.0f);
+/// fade_distance, fade_power, fade_color): fade_color + (1 - fade_color) / (1 + (d /
+/// fade_distance)^fade_power). A fade_power of 1000 or more is POV-Ray's exponential absorption
+/// instead: exp(-(1 - fade_color) d / fade_distance) per channel. As in POV-Ray, a fade_power
+/// of 0 halves what a refracted ray carries, and leaves shadow rays (`shadow`) as they are.
+SHEAF_HD_INLINE Vec3 interior_fade(const Material& m, float d, bool shadow = false) {
+    if (!(m.fade_distance > 0) || !(m.fade_power > 0 || (!shadow && m.fade_power == 0)))
+        return Vec3(1.0f);
     if (m.fade_power >= 1000.0f) {
         const float k = d / m.fade_distance;
         return Vec3(hdm::expf(-(1.0f - m.fade_color.x) * k),

@@ -78,7 +78,7 @@ SHEAF_HD_NOINLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const 
         const uint32_t leaf = span.a.leaf != 0xFFFFFFFFu ? span.a.leaf : span.b.leaf;
         const float inside = hdm::fminf(span.b.t, ray.tmax) - hdm::fmaxf(span.a.t, ray.tmin);
         if (inside > 0 && leaf != 0xFFFFFFFFu)
-            pass = pass * interior_fade(scene.materials[scene.shape_material[leaf]], inside);
+            pass = pass * interior_fade(scene.materials[scene.shape_material[leaf]], inside, true);
     }
     return pass;
 }

@@ -465,12 +465,19 @@ SHEAF_HD_NOINLINE float slope_raw(const Pattern& pt, Vec3 q, Vec3 world, Vec3 n)
 /// A list pattern's entry (0 .. entries-1) at pattern-space point p.
 SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
     using namespace pattern_detail;
-    const float e = 1e-4f; // keeps faces lying on integer planes on one side
+    // 1e-4 world units along each pattern axis: keeps faces lying on the cells' planes on one
+    // side (a float hit point strays from them), without moving the planes of cells scaled
+    // large (a checker 32000 wide keeps its edge at 0, as in POV-Ray).
+    const Affine& m = pt.to_pattern;
+    auto row = [&](int r) {
+        return 1e-4f * sqrtf(m.m[r][0] * m.m[r][0] + m.m[r][1] * m.m[r][1] + m.m[r][2] * m.m[r][2]);
+    };
+    const Vec3 e(row(0), row(1), row(2));
     switch (pt.kind) {
     case PatternKind::Checker:
-        return imod(floor_int(p.x + e) + floor_int(p.y + e) + floor_int(p.z + e), 2);
+        return imod(floor_int(p.x + e.x) + floor_int(p.y + e.y) + floor_int(p.z + e.z), 2);
     case PatternKind::Square:
-        return imod(floor_int(p.x + e), 2) + 2 * imod(floor_int(p.z + e), 2);
+        return imod(floor_int(p.x + e.x), 2) + 2 * imod(floor_int(p.z + e.z), 2);
     case PatternKind::Hexagon:
     case PatternKind::Triangular: {
         // Axial coordinates of hexagons of unit side in the x-z plane, flat sides along x.
@@ -498,7 +505,7 @@ SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
                         pt.param[2] > 0 ? pt.param[2] : 4.5f);
         const float mortar = pt.param[3] > 0 ? pt.param[3] : 0.5f;
         // Nudged as checker is, so a face lying on a course boundary takes one side.
-        const Vec3 q = p + Vec3(e);
+        const Vec3 q = p + e;
         const int course = floor_int(q.y / size.y);
         const float shift = (course & 1) ? 0.5f : 0.0f;
         const float fx = frac(q.x / size.x + shift) * size.x;

@@ -111,6 +111,8 @@ void SceneReader::read_material(const pugi::xml_node& node) {
                           " is not allowed; expected a number " + (f.positive ? "> 0" : ">= 0"));
         m.*f.number = v;
     }
+    // This format's fade_power 0 is no fading (the core's, POV-Ray's, halves refracted light).
+    if (m.fade_power == 0) m.fade_distance = 0;
     reference("texture", textures_, "texture", m.texture);
     reference("pigment", pigments_, "pigment", m.pigment);
     reference("normal", normals_, "normal", m.normal);

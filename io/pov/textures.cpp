@@ -110,6 +110,8 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
             if (parse_pattern_modifier(tx.map_pattern, tx.local)) continue;
         } else if (Affine m; parse_transform_item(m)) {
             tx.local = m * tx.local;
+            // A declared layered texture's layers below move with it, as in POV-Ray.
+            for (PovTextureRef& layer : tx.below) layer = transformed(layer, m);
             continue;
         }
         if (t.kind != TokKind::Ident) error_expected(t, "pigment, normal, finish or '}'");

@@ -195,6 +195,25 @@ TEST(PovTextures, LayersTextureMapsAndNormals) {
     EXPECT_NO_THROW(r.scene.validate());
 }
 
+// A declared layered texture moved by transforms moves every layer (woods.inc's T_Wood35 with
+// a scale: povray's picture, within one 8-bit level, where the layer below stayed unscaled).
+TEST(PovTextures, TransformsMoveEveryLayerOfADeclaredTexture) {
+    const PovResult r = load_text(
+        "#declare T = texture { pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+        "  texture { pigment { gradient y color_map { [0 rgbt 1] [1 rgbt <0, 0, 0, 0.5>] } } }\n"
+        "sphere { 0, 1 texture { T scale 0.25 } }\n");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    const Pigment& layers = r.scene.pigments[size_t(shape_material(r, 0).pigment)];
+    ASSERT_TRUE(layers.layers);
+    ASSERT_EQ(layers.count, 2u);
+    for (uint32_t i = 0; i < 2; ++i) { // both layers: 0.1 in the world is 0.4 in pattern space
+        const Pattern& pt =
+            r.scene.pigments[size_t(r.scene.pigment_entries[layers.first + i].pigment)].pattern;
+        const Vec3 q = pt.to_pattern.point(Vec3(0.1f, 0.1f, 0));
+        EXPECT_NEAR(std::max(q.x, q.y), 0.4f, 1e-5) << i;
+    }
+}
+
 // tiles { texture tile2 texture } is a checker of the two textures (each may be layered),
 // placed by the transforms after it.
 TEST(PovTextures, TilesAreACheckerOfTwoTextures) {

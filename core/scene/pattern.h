@@ -59,13 +59,12 @@ enum class PatternKind : uint8_t {
 };
 
 /// Discrete patterns choose an entry; continuous ones give a value.
-/// The band patterns POV-Ray bends by its scalar turbulence inside the pattern (marble, wood,
-/// agate, the spirals): their classic turbulence is theirs alone, where the other patterns'
-/// moves the point their maps' entries are evaluated at too. (Of these, POV-Ray also moves the
-/// pattern's own point by it for agate and the spirals, not for marble and wood.)
+/// The patterns whose classic turbulence bends them inside the pattern instead of moving the
+/// point (marble, wood): POV-Ray skips their turbulence when it warps the point, so neither
+/// their own point nor their maps' entries move by it. (Agate and the spirals bend inside
+/// too, but POV-Ray also moves their point, and their entries', as every other pattern's.)
 SHEAF_HD_INLINE bool bends_by_own_turbulence(PatternKind k) {
-    return k == PatternKind::Marble || k == PatternKind::Wood || k == PatternKind::Agate ||
-           k == PatternKind::Spiral1 || k == PatternKind::Spiral2;
+    return k == PatternKind::Marble || k == PatternKind::Wood;
 }
 
 /// The entries a list pattern picks from by tile (checker and brick 2, hexagon 3, square 4,

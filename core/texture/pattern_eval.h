@@ -411,7 +411,7 @@ SHEAF_HD_NOINLINE Vec3 pattern_point(const Pattern& pt, Vec3 world, const Warp* 
     }
     // POV-Ray's classic turbulence moves the point by DTurbulence times the amount, but for
     // marble and wood, which bend their bands by it themselves (raw_value).
-    if (pt.has_turbulence && pt.kind != PatternKind::Marble && pt.kind != PatternKind::Wood) {
+    if (pt.has_turbulence && !bends_by_own_turbulence(pt.kind)) {
         const DVec3 t = pov_dturbulence(DVec3(p), pt.octaves, double(pt.omega), double(pt.lambda));
         p = Vec3(float(p.x + pt.turbulence.x * t.x), float(p.y + pt.turbulence.y * t.y),
                  float(p.z + pt.turbulence.z * t.z));

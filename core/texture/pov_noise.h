@@ -141,30 +141,46 @@ SHEAF_HD_INLINE double clamp01(double v) {
 
 } // namespace pov_noise_detail
 
+namespace pov_noise_detail {
+
+// The lattice cell around a point, as POV-Ray's noise and vector noise both set it up: the
+// offsets from its low corner (0) and high corner (1) along each axis, the S-curve weights
+// towards the high corners (s) and the low ones (t), and the xy hashes of its four columns.
+struct Cell {
+    int iz;
+    double x0, y0, z0, x1, y1, z1;
+    double sx, sy, sz, tx, ty, tz;
+    int h00, h10, h01, h11;
+    SHEAF_HD_INLINE explicit Cell(DVec3 p) {
+        int ix, iy;
+        locate(p.x, ix, x0);
+        locate(p.y, iy, y0);
+        locate(p.z, iz, z0);
+        x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
+        sx = scurve(x0), sy = scurve(y0), sz = scurve(z0);
+        tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
+        h00 = hash2(ix, iy), h10 = hash2(ix + 1, iy);
+        h01 = hash2(ix, iy + 1), h11 = hash2(ix + 1, iy + 1);
+    }
+};
+
+} // namespace pov_noise_detail
+
 /// POV-Ray's scalar noise at p under `generator` (2 range-corrected, 3 Perlin, any other the
 /// original), in [0, 1]: the bozo, spotted and bumps patterns' value and `f_noise3d`'s.
 SHEAF_HD_INLINE double pov_noise(DVec3 p, int generator) {
     using namespace pov_noise_detail;
     if (generator == 3) return clamp01(0.5 * (1.59 * solid_noise(p) + 0.985));
-    int ix, iy, iz;
-    double x0, y0, z0;
-    locate(p.x, ix, x0);
-    locate(p.y, iy, y0);
-    locate(p.z, iz, z0);
-    const double x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
-    const double sx = scurve(x0), sy = scurve(y0), sz = scurve(z0);
-    const double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
-    const double txty = tx * ty, sxty = sx * ty, txsy = tx * sy, sxsy = sx * sy;
-    const int h00 = hash2(ix, iy), h10 = hash2(ix + 1, iy);
-    const int h01 = hash2(ix, iy + 1), h11 = hash2(ix + 1, iy + 1);
-    double sum = corner(slot(h00, iz), txty * tz, x0, y0, z0);
-    sum += corner(slot(h10, iz), sxty * tz, x1, y0, z0);
-    sum += corner(slot(h01, iz), txsy * tz, x0, y1, z0);
-    sum += corner(slot(h11, iz), sxsy * tz, x1, y1, z0);
-    sum += corner(slot(h00, iz + 1), txty * sz, x0, y0, z1);
-    sum += corner(slot(h10, iz + 1), sxty * sz, x1, y0, z1);
-    sum += corner(slot(h01, iz + 1), txsy * sz, x0, y1, z1);
-    sum += corner(slot(h11, iz + 1), sxsy * sz, x1, y1, z1);
+    const Cell c(p);
+    const double txty = c.tx * c.ty, sxty = c.sx * c.ty, txsy = c.tx * c.sy, sxsy = c.sx * c.sy;
+    double sum = corner(slot(c.h00, c.iz), txty * c.tz, c.x0, c.y0, c.z0);
+    sum += corner(slot(c.h10, c.iz), sxty * c.tz, c.x1, c.y0, c.z0);
+    sum += corner(slot(c.h01, c.iz), txsy * c.tz, c.x0, c.y1, c.z0);
+    sum += corner(slot(c.h11, c.iz), sxsy * c.tz, c.x1, c.y1, c.z0);
+    sum += corner(slot(c.h00, c.iz + 1), txty * c.sz, c.x0, c.y0, c.z1);
+    sum += corner(slot(c.h10, c.iz + 1), sxty * c.sz, c.x1, c.y0, c.z1);
+    sum += corner(slot(c.h01, c.iz + 1), txsy * c.sz, c.x0, c.y1, c.z1);
+    sum += corner(slot(c.h11, c.iz + 1), sxsy * c.sz, c.x1, c.y1, c.z1);
     if (generator != 2) return clamp01(sum + 0.5);
     // Generator 2 stretches the original's range (about -1.05 .. 0.99) over [0, 1].
     return clamp01((sum + 1.05242) * 0.48985582);
@@ -174,30 +190,21 @@ SHEAF_HD_INLINE double pov_noise(DVec3 p, int generator) {
 /// generator.
 SHEAF_HD_INLINE DVec3 pov_dnoise(DVec3 p) {
     using namespace pov_noise_detail;
-    int ix, iy, iz;
-    double x0, y0, z0;
-    locate(p.x, ix, x0);
-    locate(p.y, iy, y0);
-    locate(p.z, iz, z0);
-    const double x1 = x0 - 1, y1 = y0 - 1, z1 = z0 - 1;
-    const double sx = scurve(x0), sy = scurve(y0), sz = scurve(z0);
-    const double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
-    const int h00 = hash2(ix, iy), h10 = hash2(ix + 1, iy);
-    const int h01 = hash2(ix, iy + 1), h11 = hash2(ix + 1, iy + 1);
+    const Cell c(p);
     DVec3 r;
     auto add = [&](int j, double w, double x, double y, double z) {
         r.x += corner(j, w, x, y, z);
         r.y += corner(j + 4, w, x, y, z);
         r.z += corner(j + 8, w, x, y, z);
     };
-    add(slot(h00, iz), tx * ty * tz, x0, y0, z0);
-    add(slot(h10, iz), sx * ty * tz, x1, y0, z0);
-    add(slot(h11, iz), sx * sy * tz, x1, y1, z0);
-    add(slot(h01, iz), tx * sy * tz, x0, y1, z0);
-    add(slot(h01, iz + 1), tx * sy * sz, x0, y1, z1);
-    add(slot(h11, iz + 1), sx * sy * sz, x1, y1, z1);
-    add(slot(h10, iz + 1), sx * ty * sz, x1, y0, z1);
-    add(slot(h00, iz + 1), tx * ty * sz, x0, y0, z1);
+    add(slot(c.h00, c.iz), c.tx * c.ty * c.tz, c.x0, c.y0, c.z0);
+    add(slot(c.h10, c.iz), c.sx * c.ty * c.tz, c.x1, c.y0, c.z0);
+    add(slot(c.h11, c.iz), c.sx * c.sy * c.tz, c.x1, c.y1, c.z0);
+    add(slot(c.h01, c.iz), c.tx * c.sy * c.tz, c.x0, c.y1, c.z0);
+    add(slot(c.h01, c.iz + 1), c.tx * c.sy * c.sz, c.x0, c.y1, c.z1);
+    add(slot(c.h11, c.iz + 1), c.sx * c.sy * c.sz, c.x1, c.y1, c.z1);
+    add(slot(c.h10, c.iz + 1), c.sx * c.ty * c.sz, c.x1, c.y0, c.z1);
+    add(slot(c.h00, c.iz + 1), c.tx * c.ty * c.sz, c.x0, c.y0, c.z1);
     return r;
 }
 
@@ -239,9 +246,12 @@ SHEAF_HD_INLINE DVec3 pov_dturbulence(DVec3 p, int octaves, double omega, double
 }
 
 /// The centre of POV-Ray's wave i (ripples and waves): the vector noise at (i, 0, 0), made
-/// unit length.
+/// unit length. At a lattice point only the low corner weighs, so the vector noise there is
+/// half its three values (the same bits pov_dnoise gives, without its eight corners).
 SHEAF_HD_INLINE DVec3 pov_wave_source(int i) {
-    const DVec3 d = pov_dnoise(DVec3(double(i), 0.0, 0.0));
+    using namespace pov_noise_detail;
+    const int j = slot(hash2((i + 10000) & 0xFFF, 10000 & 0xFFF), 10000 & 0xFFF);
+    const DVec3 d(0.5 * value(j), 0.5 * value(j + 4), 0.5 * value(j + 8));
     const double l = ::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
     return l > 0 ? DVec3(d.x / l, d.y / l, d.z / l) : d;
 }

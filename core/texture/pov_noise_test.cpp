@@ -154,6 +154,18 @@ TEST(PovNoise, SmoothAndInTheUnitInterval) {
     }
 }
 
+// The wave centres take a lattice shortcut: the same bits as the vector noise made unit.
+TEST(PovNoise, WaveSourcesAreTheUnitVectorNoiseAtTheirLatticePoints) {
+    for (int i = 0; i < kPovWaves; ++i) {
+        const DVec3 d = pov_dnoise(DVec3(i, 0, 0));
+        const double l = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        const DVec3 s = pov_wave_source(i);
+        EXPECT_EQ(s.x, d.x / l) << i;
+        EXPECT_EQ(s.y, d.y / l) << i;
+        EXPECT_EQ(s.z, d.z / l) << i;
+    }
+}
+
 TEST(PovNoise, BadCoordinatesGiveValuesNotUndefinedBehaviour) {
     const double bad[] = {1e300, -1e300, std::nan(""), 3e9, -3e9};
     for (double b : bad) {

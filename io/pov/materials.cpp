@@ -308,8 +308,7 @@ int32_t MaterialBuilder::pigment(const PovPigment& pg, const Affine& outer) {
     out.pattern = pattern(pg.pattern, eff);
     // Entries before the pigment itself: a pigment names only earlier pigments. They are
     // evaluated through this pigment's warps and its classic turbulence (the last stage of
-    // POV-Ray's warp list, which marble, wood, agate and the spirals keep to themselves), as
-    // POV-Ray does.
+    // POV-Ray's warp list, which marble and wood keep to themselves), as POV-Ray does.
     std::vector<PigmentEntry> entries;
     {
         const Pattern& pp = out.pattern;

@@ -733,7 +733,7 @@ TEST(PovTextures, UnsupportedPatternsWarn) {
 }
 
 // POV-Ray evaluates a pigment map's entries at the point its pattern's warps and classic
-// turbulence moved; marble, wood, agate and the spirals keep their turbulence to themselves.
+// turbulence moved; marble and wood keep their turbulence to themselves.
 TEST(PovTextures, MapEntriesInheritClassicTurbulence) {
     for (const char* kind : {"bozo", "marble"}) {
         const PovResult r = load_text(std::string("plane { y, 0 pigment { ") + kind +

@@ -144,11 +144,7 @@ def main():
         print(f"skipped: {a.examples} is not installed")
         return 77
     k, n = (int(x) for x in a.share.split("/"))
-    root = os.path.join(os.path.abspath(a.workdir), "scenes")
-    shutil.rmtree(root, ignore_errors=True)
-    shutil.copytree(a.examples, root, symlinks=False)
-    scenes = sorted(os.path.relpath(os.path.join(d, f), root)
-                    for d, _, files in os.walk(root) for f in files if f.endswith(".pov"))
+    root, scenes = corpus_check.copy_corpus(a.examples, a.workdir)
     scenes = scenes[k::n]
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         checked = list(pool.map(lambda s: corpus_check.check(render, root, s, a.timeout), scenes))

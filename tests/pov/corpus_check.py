@@ -55,6 +55,16 @@ def limits_used(stdout):
     return used
 
 
+def copy_corpus(examples, workdir):
+    """A fresh writable copy of the examples under WORKDIR/scenes, and its .pov scenes (paths
+    relative to it, sorted)."""
+    root = os.path.join(os.path.abspath(workdir), "scenes")
+    shutil.rmtree(root, ignore_errors=True)
+    shutil.copytree(examples, root, symlinks=False)
+    return root, sorted(os.path.relpath(os.path.join(d, f), root)
+                        for d, _, files in os.walk(root) for f in files if f.endswith(".pov"))
+
+
 def check(render, root, scene, timeout):
     """(scene, 'ok'|'error'|'timeout', warnings, message, limits used)."""
     folder = os.path.join(root, os.path.dirname(scene))
@@ -96,11 +106,7 @@ def main():
     if not os.path.isdir(a.examples):
         print(f"skipped: {a.examples} is not installed (apt-get install povray-examples)")
         return 77
-    root = os.path.join(os.path.abspath(a.workdir), "scenes")
-    shutil.rmtree(root, ignore_errors=True)
-    shutil.copytree(a.examples, root, symlinks=False)
-    scenes = sorted(os.path.relpath(os.path.join(d, f), root)
-                    for d, _, files in os.walk(root) for f in files if f.endswith(".pov"))
+    root, scenes = copy_corpus(a.examples, a.workdir)
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         results = list(pool.map(lambda s: check(a.render, root, s, a.timeout), scenes))
 

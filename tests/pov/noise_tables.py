@@ -115,24 +115,34 @@ def probe_points(H):
     return first
 
 
-def run_povray(povray, points):
-    # Each probe: the point, then the vector noise's three components there.
+def write_line(values):
+    """A scene line writing `values` (expressions) to the probe file, 17 decimals each."""
+    return ('#write(F, ' + ', " ", '.join('str(%s, 0, 17)' % v for v in values) +
+            ', "\\n")')
+
+
+def povray_rows(povray, body):
+    """Renders a 1x1 image of a scene whose lines `body` write rows to the probe file F, and
+    returns the rows, each a list of words."""
     lines = ['#version 3.7;', 'global_settings { assumed_gamma 1 }',
-             'camera { location <0, 0, -1> look_at 0 }',
-             '#fopen F "probes.txt" write']
-    for p in points:
-        v = '<%r, %r, %r>' % p
-        lines.append('#declare V = vturbulence(2, 0.5, 1, %s);' % v)
-        lines.append('#write(F, str(V.x, 0, 17), " ", str(V.y, 0, 17), " ", '
-                     'str(V.z, 0, 17), "\\n")')
-    lines.append('#fclose F')
+             'camera { location <0, 0, -1> look_at 0 }', '#fopen F "probes.txt" write']
+    lines += body + ['#fclose F']
     with tempfile.TemporaryDirectory() as d:
         with open(os.path.join(d, 'probe.pov'), 'w') as f:
             f.write('\n'.join(lines) + '\n')
         subprocess.run([povray, '+Iprobe.pov', '+W1', '+H1', '-D', '-GA', '+O-', '-F'],
                        cwd=d, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         with open(os.path.join(d, 'probes.txt')) as f:
-            return [tuple(float(t) for t in line.split()) for line in f if line.strip()]
+            return [line.split() for line in f if line.strip()]
+
+
+def run_povray(povray, points):
+    # Each probe: the point, then the vector noise's three components there.
+    lines = []
+    for p in points:
+        lines.append('#declare V = vturbulence(2, 0.5, 1, <%r, %r, %r>);' % p)
+        lines.append(write_line(['V.x', 'V.y', 'V.z']))
+    return [tuple(float(t) for t in row) for row in povray_rows(povray, lines)]
 
 
 def scurve(t):
@@ -198,26 +208,15 @@ def print_golden(povray):
     pts = [(0.5, 0.25, 0.125), (-0.5, -1.75, 2.0), (3.0, 4.0, -5.0), (1e-11, -1e-11, 0.0),
            (-2.00000000001, 7.3, 1.1), (1234.567, -8901.234, 42.0)]
     pts += [tuple(round(rng.uniform(-40, 40), 6) for _ in range(3)) for _ in range(14)]
-    lines = ['#version 3.7;', '#include "functions.inc"',
-             'global_settings { assumed_gamma 1 }', 'camera { location <0, 0, -1> look_at 0 }',
-             '#fopen F "golden.txt" write']
+    lines = ['#include "functions.inc"']
     for p in pts:
-        v = '<%r, %r, %r>' % p
-        lines.append('#declare P = %s;' % v)
+        lines.append('#declare P = <%r, %r, %r>;' % p)
         lines.append('#declare D = vturbulence(2, 0.5, 1, P);')
         lines.append('#declare T = vturbulence(2.1, 0.45, 6, P);')
         vals = ['f_noise_generator(P.x, P.y, P.z, %d)' % g for g in (1, 2, 3)]
         vals += ['D.x', 'D.y', 'D.z', 'T.x', 'T.y', 'T.z']
-        lines.append('#write(F, ' + ', " ", '.join('str(%s, 0, 17)' % v for v in vals) +
-                     ', "\\n")')
-    lines.append('#fclose F')
-    with tempfile.TemporaryDirectory() as d:
-        with open(os.path.join(d, 'probe.pov'), 'w') as f:
-            f.write('\n'.join(lines) + '\n')
-        subprocess.run([povray, '+Iprobe.pov', '+W1', '+H1', '-D', '-GA', '+O-', '-F'],
-                       cwd=d, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        with open(os.path.join(d, 'golden.txt')) as f:
-            rows = [line.split() for line in f if line.strip()]
+        lines.append(write_line(vals))
+    rows = povray_rows(povray, lines)
     for p, r in zip(pts, rows):
         print('    {{%r, %r, %r}, {%s}},' % (p + (', '.join(r),)))
 
@@ -250,6 +249,7 @@ def main():
 // and generator 3's tables follow POV-Ray's generator; the 267 values were measured from
 // POV-Ray 3.7 by the script's probes.
 #pragma once
+// clang-format off
 
 // The lattice hash: a permutation of 0..4095 (read modulo 4096).
 #define SHEAF_POV_NOISE_HASH \\
@@ -271,6 +271,7 @@ def main():
 // default seed, each over 2^32 - 1 (the lattice hash reaches no further).
 #define SHEAF_POV_PATTERN_RANDS \\
 {c_list(mt19937(5489, 4098), 8, str)}
+// clang-format on
 '''
     with open(args.out, 'w') as f:
         f.write(text)

@@ -66,7 +66,11 @@ struct Bvh {
 
 /// The BVH of every primitive of `scene`: each primitive with finite bounds in exactly one
 /// leaf, the others in `unbounded`. Multithreaded (oneTBB); the same tree for the same scene.
-Bvh build_bvh(const PreparedScene& scene);
+/// `chunk` > 0: every range of at most `chunk` triangles a leaf and every larger range split,
+/// the heuristic choosing only where (the top level of accel=strips, core/accel/strips.h);
+/// ranges with analytic shapes, and every range when `chunk` is 0: leaves of at most 8, where
+/// the heuristic finds them cheaper than a split.
+Bvh build_bvh(const PreparedScene& scene, uint32_t chunk = 0);
 
 /// The scene's BVH, built on first use and kept with the scene (PreparedScene's cache) for
 /// every later frame, comparison and sweep.

@@ -89,7 +89,9 @@ bool finite_box(const Box& b) {
 
 class Builder {
   public:
-    Builder(const PreparedScene& scene, Bvh& out) : scene_(scene), out_(out) {}
+    /// `chunk` > 0: every range of at most `chunk` triangles a leaf, every larger one split.
+    Builder(const PreparedScene& scene, Bvh& out, uint32_t chunk)
+        : scene_(scene), out_(out), chunk_(chunk) {}
 
     void run() {
         const uint32_t n = uint32_t(scene_.prim_count());
@@ -204,6 +206,15 @@ class Builder {
         return r;
     }
 
+    // Whether r is one leaf of `chunk_` (only triangles: analytic shapes stay in leaves of
+    // kMaxLeaf, where the heuristic puts them).
+    bool chunk_leaf(const Range& r) const {
+        if (r.size() > chunk_) return false;
+        for (uint32_t i = r.begin; i < r.end; ++i)
+            if (!scene_.is_triangle(out_.prims[i])) return false;
+        return true;
+    }
+
     // Half the range by count along the centroids' widest axis (nth_element): the split of
     // ranges whose centroids coincide, where a split must be made, and below kBvhSahDepth.
     Split median(const Range& r) {
@@ -226,7 +237,7 @@ class Builder {
     // more than any split (and it fits a leaf), else the cheapest split of binned centroids.
     Split split_range(const Range& r, int depth) {
         Split s;
-        if (r.size() <= 1) return s;
+        if (r.size() <= 1 || chunk_leaf(r)) return s;
         if (depth >= kBvhSahDepth) {
             if (r.size() <= kMaxLeaf) return s;
             return median(r);
@@ -362,6 +373,7 @@ class Builder {
 
     const PreparedScene& scene_;
     Bvh& out_;
+    uint32_t chunk_;
     std::vector<Box> boxes_;
     std::vector<Vec3> centers_;
     std::unique_ptr<BvhNode[]> pool_;
@@ -379,9 +391,9 @@ struct BvhCache {
 
 std::shared_ptr<BvhCache> new_bvh_cache() { return std::make_shared<BvhCache>(); }
 
-Bvh build_bvh(const PreparedScene& scene) {
+Bvh build_bvh(const PreparedScene& scene, uint32_t chunk) {
     Bvh bvh;
-    Builder(scene, bvh).run();
+    Builder(scene, bvh, chunk).run();
     return bvh;
 }
 

@@ -127,46 +127,60 @@ SHEAF_HD_INLINE uint32_t bvh_child_entry(const BvhNode& n, uint32_t node, int sl
     return n.count[slot] > 0 ? kBvhLeaf | (node << 2 | uint32_t(slot)) : n.child[slot];
 }
 
-/// Ray i of a batch (r) through the part of the BVH under `start` (an entry; the root is 0),
-/// against `scene`, after the primitives without bounds when `unbounded`: records its hits as
-/// brute_trace_ray does (closest hits for closest-hit queries, Any false; occluded[i] and the
-/// pass log for any-hit ones). `shared`: other traversals record hits of the same ray (the
-/// ray hierarchy's entries, core/rsh/bvh_top.h), so a closest hit is an atomic minimum; each
-/// traversal prunes by its own best hit only, so its counts do not depend on the others'. (A
-/// flag, not a template parameter, and not inlined on the device: each copy is another copy
-/// of the exact tests in the CUDA module, which ptxas takes minutes over; the bvh launch and
-/// the ray hierarchy's over the BVH call the same two.) `skip`: primitive flags that are no
-/// candidates for this ray type.
-template <bool Any>
-SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& scene, const Ray& r,
-                                         uint32_t i, uint32_t start, bool unbounded, bool shared,
-                                         bool shadow, uint8_t skip, const HitSinks& out) {
-    BvhCounts c;
+/// One ray's exact tests and what they record, as brute_trace_ray does (closest hits for
+/// closest-hit queries, Any false; occluded[i] and the pass log for any-hit ones), shared by
+/// the traversals of accel=bvh and accel=strips. `far`: what a closest-hit ray still looks for,
+/// up to its best hit.
+template <bool Any> struct BvhHitTest {
+    const SceneView& scene;
+    const Ray& r;
+    uint32_t i;
+    bool shadow;
+    uint8_t skip;
+    const HitSinks& out;
+    BvhCounts& c;
     uint64_t best = kNoHit;
     // The ray the triangles are tested with: a triangle's distance does not depend on tmax, so
     // the best hit bounds their tests (equal distances still pass: the lower primitive wins
     // the tie). Analytic shapes take the ray as given.
-    Ray bounded = r;
-    float far = r.tmax; // what a closest-hit ray still looks for: up to its best hit
-    // One primitive's exact test: false when the ray is finished (an opaque any hit).
-    const auto test = [&](uint32_t p) {
-        if (skip && scene.prim_flag(p, skip)) return true;
-        float t;
+    Ray bounded;
+    float far;
+
+    SHEAF_HD_INLINE BvhHitTest(const SceneView& scene_, const Ray& r_, uint32_t i_, bool shadow_,
+                               uint8_t skip_, const HitSinks& out_, BvhCounts& c_)
+        : scene(scene_), r(r_), i(i_), shadow(shadow_), skip(skip_), out(out_), c(c_), bounded(r_),
+          far(r_.tmax) {}
+
+    /// Whether primitive p is no candidate for this ray type.
+    SHEAF_HD_INLINE bool skipped(uint32_t p) const { return skip && scene.prim_flag(p, skip); }
+
+    /// Primitive p's exact test, counted: false when the ray is finished (an opaque any hit).
+    SHEAF_HD_INLINE bool operator()(uint32_t p) {
+        if (skipped(p)) return true;
         if (scene.is_triangle(p)) {
             ++c.prims.tests;
-            const TriangleVerts& tri = scene.tris[p];
-            TriangleHit h;
-            if (!intersect_triangle(bounded, tri.a, tri.b, tri.c, h)) return true;
-            t = h.t;
-        } else {
-            // An analytic shape's exact test costs many triangles': its bounding sphere first
-            // (the leaf's box is the sphere's cube, which the ray may cross beside it).
-            ++c.nodes.tests;
-            if (!line_meets_sphere(scene.prim_sphere[p], r)) return true;
-            ++c.nodes.hits;
-            ++c.prims.tests;
-            if (!intersect_prim(scene, p, r, t)) return true;
+            return triangle(p);
         }
+        // An analytic shape's exact test costs many triangles': its bounding sphere first
+        // (the leaf's box is the sphere's cube, which the ray may cross beside it).
+        ++c.nodes.tests;
+        if (!line_meets_sphere(scene.prim_sphere[p], r)) return true;
+        ++c.nodes.hits;
+        ++c.prims.tests;
+        float t;
+        if (!intersect_prim(scene, p, r, t)) return true;
+        return hit(p, t);
+    }
+
+    /// Triangle p's exact test, neither counted nor checked against `skip`.
+    SHEAF_HD_INLINE bool triangle(uint32_t p) {
+        const TriangleVerts& tri = scene.tris[p];
+        TriangleHit h;
+        if (!intersect_triangle(bounded, tri.a, tri.b, tri.c, h)) return true;
+        return hit(p, h.t);
+    }
+
+    SHEAF_HD_INLINE bool hit(uint32_t p, float t) {
         ++c.prims.hits;
         if constexpr (Any) {
             if (passes(scene, shadow, p)) return record_pass(scene, out, i, r, t, p);
@@ -181,7 +195,88 @@ SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& 
             }
             return true;
         }
-    };
+    }
+
+    /// Writes a closest-hit ray's best hit (`shared`: an atomic minimum with other traversals
+    /// of the same ray).
+    SHEAF_HD_INLINE void finish(bool shared) {
+        if constexpr (!Any) {
+            if (!shared)
+                out.closest[i] = best;
+            else if (best != kNoHit)
+                atomic_min_u64(&out.closest[i], best);
+        }
+    }
+};
+
+/// The part of the BVH under entry `e` that a ray meets, nearest child first: each leaf met
+/// handed to leaf(first, count) (entries [first, first + count) of bvh.prims), which returns
+/// false to end the walk. A closest-hit ray (Any false) skips what lies beyond `far`, read
+/// anew at each step; box tests are counted in c.nodes.
+template <bool Any, class Leaf>
+SHEAF_HD_INLINE void bvh_walk(const BvhView& bvh, const Ray& r, const Vec3& inv,
+                              const BvhPlanes& planes, uint32_t e, const float& far, BvhCounts& c,
+                              Leaf&& leaf) {
+    // With each waiting entry its entry distance, so that a closest-hit ray drops what its
+    // best hit has passed. The entry in hand (e) is not on the stack: of a node's children
+    // met, the nearest is taken next and the others pushed, farthest first (any-hit rays: in
+    // order; the first opaque hit anywhere ends them).
+    uint32_t stack[kBvhStack];
+    float stack_t[kBvhStack];
+    int sp = 0;
+    for (;;) {
+        if (e & kBvhLeaf) {
+            const BvhNode& n = bvh.nodes[(e & ~kBvhLeaf) >> 2];
+            const uint32_t slot = e & 3u;
+            if (!leaf(n.child[slot], n.count[slot])) return;
+        } else {
+            const BvhNode& n = bvh.nodes[e];
+            float near[kBvhWidth];
+            uint32_t mask =
+                bvh_children_hit(n, planes, r.origin, inv, r.tmin, far, near, c.nodes.tests);
+            if (mask) {
+                int order[kBvhWidth], hits = 0;
+                for (; mask; mask &= mask - 1) {
+                    const int k = lowest_bit(mask);
+                    int at = hits++;
+                    if constexpr (!Any)
+                        while (at > 0 && near[order[at - 1]] < near[k])
+                            order[at] = order[at - 1], --at;
+                    order[at] = k;
+                }
+                c.nodes.hits += uint64_t(hits);
+                for (int h = 0; h + 1 < hits; ++h) {
+                    const int k = order[h];
+                    stack[sp] = bvh_child_entry(n, e, k);
+                    if constexpr (!Any) stack_t[sp] = near[k];
+                    ++sp;
+                }
+                e = bvh_child_entry(n, e, order[hits - 1]);
+                continue;
+            }
+        }
+        // The next waiting entry that a closest-hit ray's best hit has not passed.
+        while (sp > 0 && (!Any && stack_t[sp - 1] > far)) --sp;
+        if (sp == 0) return;
+        e = stack[--sp];
+    }
+}
+
+/// Ray i of a batch (r) through the part of the BVH under `start` (an entry; the root is 0),
+/// against `scene`, after the primitives without bounds when `unbounded`: records its hits as
+/// brute_trace_ray does (BvhHitTest). `shared`: other traversals record hits of the same ray
+/// (the ray hierarchy's entries, core/rsh/bvh_top.h), so a closest hit is an atomic minimum;
+/// each traversal prunes by its own best hit only, so its counts do not depend on the
+/// others'. (A flag, not a template parameter, and not inlined on the device: each copy is
+/// another copy of the exact tests in the CUDA module, which ptxas takes minutes over; the bvh
+/// launch and the ray hierarchy's over the BVH call the same two.) `skip`: primitive flags
+/// that are no candidates for this ray type.
+template <bool Any>
+SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& scene, const Ray& r,
+                                           uint32_t i, uint32_t start, bool unbounded, bool shared,
+                                           bool shadow, uint8_t skip, const HitSinks& out) {
+    BvhCounts c;
+    BvhHitTest<Any> test(scene, r, i, shadow, skip, out, c);
     bool done = false;
     if (unbounded)
         for (uint32_t k = 0; k < bvh.unbounded_count && !done; ++k) done = !test(bvh.unbounded[k]);
@@ -189,60 +284,14 @@ SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& 
         test(start & ~kBvhPrim);
     } else if (bvh.node_count > 0 && !done) {
         const Vec3 inv = bvh_inverse(r.dir);
-        const BvhPlanes planes = bvh_planes(inv);
-        // With each waiting entry its entry distance, so that a closest-hit ray drops what its
-        // best hit has passed. The entry in hand (e) is not on the stack: of a node's children
-        // met, the nearest is taken next and the others pushed, farthest first (any-hit rays:
-        // in order; the first opaque hit anywhere ends them).
-        uint32_t stack[kBvhStack];
-        float stack_t[kBvhStack];
-        int sp = 0;
-        uint32_t e = start;
-        for (;;) {
-            if (e & kBvhLeaf) {
-                const BvhNode& n = bvh.nodes[(e & ~kBvhLeaf) >> 2];
-                const uint32_t slot = e & 3u, first = n.child[slot];
-                for (uint32_t k = first; k < first + n.count[slot] && !done; ++k)
-                    done = !test(bvh.prims[k]);
-                if (done) break;
-            } else {
-                const BvhNode& n = bvh.nodes[e];
-                float near[kBvhWidth];
-                uint32_t mask =
-                    bvh_children_hit(n, planes, r.origin, inv, r.tmin, far, near, c.nodes.tests);
-                if (mask) {
-                    int order[kBvhWidth], hits = 0;
-                    for (; mask; mask &= mask - 1) {
-                        const int k = lowest_bit(mask);
-                        int at = hits++;
-                        if constexpr (!Any)
-                            while (at > 0 && near[order[at - 1]] < near[k])
-                                order[at] = order[at - 1], --at;
-                        order[at] = k;
-                    }
-                    c.nodes.hits += uint64_t(hits);
-                    for (int h = 0; h + 1 < hits; ++h) {
-                        const int k = order[h];
-                        stack[sp] = bvh_child_entry(n, e, k);
-                        if constexpr (!Any) stack_t[sp] = near[k];
-                        ++sp;
-                    }
-                    e = bvh_child_entry(n, e, order[hits - 1]);
-                    continue;
-                }
-            }
-            // The next waiting entry that a closest-hit ray's best hit has not passed.
-            while (sp > 0 && (!Any && stack_t[sp - 1] > far)) --sp;
-            if (sp == 0) break;
-            e = stack[--sp];
-        }
+        bvh_walk<Any>(bvh, r, inv, bvh_planes(inv), start, test.far, c,
+                      [&](uint32_t first, uint32_t count) {
+                          for (uint32_t k = first; k < first + count; ++k)
+                              if (!test(bvh.prims[k])) return false;
+                          return true;
+                      });
     }
-    if constexpr (!Any) {
-        if (!shared)
-            out.closest[i] = best;
-        else if (best != kNoHit)
-            atomic_min_u64(&out.closest[i], best);
-    }
+    test.finish(shared);
     return c;
 }
 

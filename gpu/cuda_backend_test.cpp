@@ -82,6 +82,7 @@ TEST(Cuda, BuiltinScenesMatchTheCpu) {
         for (const SettingList& kv :
              {SettingList{}, SettingList{{"accel", "rah"}}, SettingList{{"accel", "bvh"}},
               SettingList{{"accel", "crsh-bvh"}}, SettingList{{"accel", "rah-bvh"}},
+              SettingList{{"accel", "strips"}},
               SettingList{{"hash.mode", "hash192"}, {"ao.samples", "4"}},
               SettingList{{"hash.mode", "static3d"}, {"sort.algorithm", "bitonic"}},
               SettingList{{"aa.samples", "2"}, {"traversal.batch", "65536"}}})
@@ -96,6 +97,7 @@ TEST(Cuda, PipelineTestScenesMatchTheCpu) {
         {{"accel", "brute"}},
         {{"accel", "rah"}, {"cull.objects", "false"}},
         {{"accel", "bvh"}},
+        {{"accel", "strips"}},
         {{"accel", "crsh-bvh"}, {"traversal.batch", "1024"}},
         {{"accel", "rah-bvh"}, {"hierarchy.depth", "3"}, {"hierarchy.arity", "4"}},
         {},
@@ -128,6 +130,7 @@ TEST(Cuda, SceneFilesMatchTheCpu) {
             expect_cuda_matches_cpu(scene, name, {});
             expect_cuda_matches_cpu(scene, name, {{"accel", "bvh"}});
             expect_cuda_matches_cpu(scene, name, {{"accel", "crsh-bvh"}});
+            expect_cuda_matches_cpu(scene, name, {{"accel", "strips"}});
         });
 }
 

@@ -5,9 +5,8 @@
 
 #include "core/frame/render_frame.h"
 #include "core/rsh/cull_units.h"
-#include "core/scenes/builtin.h"
+#include "tests/support/accel_scenes.h"
 #include "tests/support/same_image.h"
-#include "tests/support/test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -88,22 +87,10 @@ void expect_valid(const PreparedScene& scene, const Bvh& bvh, const std::string&
     for (size_t p = 0; p < seen.size(); ++p) EXPECT_EQ(seen[p], 1) << what << ": primitive " << p;
 }
 
-std::vector<std::pair<std::string, PreparedScene>> scenes() {
-    std::vector<std::pair<std::string, PreparedScene>> v;
-    for (const std::string& name : builtin_scene_names())
-        v.emplace_back(name, prepare_scene(make_builtin_scene(name)));
-    v.emplace_back("glass_mirror", prepare_scene(test::glass_mirror_scene()));
-    v.emplace_back("lights", prepare_scene(test::lights_scene(false)));
-    v.emplace_back("csg", prepare_scene(test::csg_scene()));
-    v.emplace_back("julia", prepare_scene(test::julia_scene()));
-    v.emplace_back("media", prepare_scene(test::media_scene()));
-    v.emplace_back("photons", prepare_scene(test::photon_scene()));
-    v.emplace_back("procedural", prepare_scene(test::procedural_scene()));
-    return v;
-}
+using test::accel_scenes;
 
 TEST(Bvh, IsValidOnEveryTestScene) {
-    for (const auto& [name, scene] : scenes()) expect_valid(scene, build_bvh(scene), name);
+    for (const auto& [name, scene] : accel_scenes()) expect_valid(scene, build_bvh(scene), name);
 }
 
 TEST(Bvh, IsValidOnManyRandomTriangles) {
@@ -148,7 +135,7 @@ TEST(Bvh, IsBuiltOncePerScene) {
 // accel=bvh renders the frames of the other modes: images and primary passes equal value for
 // value, through the host exec and the wavefront pipeline's CPU exec.
 TEST(Bvh, FramesEqualEveryOtherMode) {
-    for (const auto& [name, scene] : scenes()) {
+    for (const auto& [name, scene] : accel_scenes()) {
         const RenderSettings crsh = test::settings_for(scene, {}, 40, 30);
         const RenderSettings brute = test::settings_for(scene, {{"accel", "brute"}}, 40, 30);
         const RenderSettings bvh = test::settings_for(scene, {{"accel", "bvh"}}, 40, 30);
@@ -161,8 +148,8 @@ TEST(Bvh, FramesEqualEveryOtherMode) {
         EXPECT_LT(got.stats.get("tests.shadow.final.tests"),
                   got.stats.get("tests.shadow.brute_force") + 1)
             << name;
-        // The ray hierarchies over the BVH: the same frame on both pipelines.
-        for (const char* accel : {"crsh-bvh", "rah-bvh"}) {
+        // The ray hierarchies over the BVH and the strips: the same frame on both pipelines.
+        for (const char* accel : {"crsh-bvh", "rah-bvh", "strips"}) {
             const RenderSettings over = test::settings_for(scene, {{"accel", accel}}, 40, 30);
             const Frame f = render_frame_cpu(scene, over);
             test::expect_same_image(got, f, name + ", " + accel);

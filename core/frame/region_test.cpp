@@ -63,7 +63,8 @@ void expect_parts_equal_whole(const PreparedScene& scene, const KeyValues& kv, i
     const Frame merged = assemble_frame(order);
     EXPECT_EQ(merged.settings, whole.settings) << what;
     EXPECT_EQ(merged.stats.get("frame.parts"), double(parts.size()));
-    if (whole_settings.accel == Accel::Brute || whole_settings.accel == Accel::Bvh)
+    if (whole_settings.accel == Accel::Brute || whole_settings.accel == Accel::Bvh ||
+        whole_settings.accel == Accel::Strips)
         for (const char* k : {"rays.primary", "rays.shadow", "rays.ao", "rays.reflection"})
             EXPECT_EQ(merged.stats.get(k), whole.stats.get(k)) << what << ": " << k;
     test::expect_same_image(whole, merged, what);
@@ -94,7 +95,7 @@ const Renderer kWavefront = [](const PreparedScene& s, const RenderSettings& r) 
 
 TEST(Region, PartsOfAFrameEqualTheWholeUnderEveryAccel) {
     const PreparedScene scene = prepare_scene(test::glass_mirror_scene());
-    for (const char* accel : {"brute", "rah", "crsh", "bvh", "crsh-bvh", "rah-bvh"})
+    for (const char* accel : {"brute", "rah", "crsh", "bvh", "crsh-bvh", "rah-bvh", "strips"})
         expect_parts_equal_whole(scene,
                                  {{"width", "37"},
                                   {"height", "29"},

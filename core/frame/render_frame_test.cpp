@@ -183,7 +183,7 @@ void expect_statistics_add_up(const PreparedScene& scene, const char* accel) {
     EXPECT_GE(st.get("time_ms.frame"), st.get("time_ms.traversal"));
     const std::string row = crsh ? "level2" : "nodes";
     EXPECT_NE(st.to_json().find("\"tests.shadow." + row + ".tests\""), std::string::npos);
-    EXPECT_NE(st.to_table().find(crsh ? "  level 2 " : "  bvh nodes "), std::string::npos);
+    EXPECT_NE(st.to_table().find(crsh ? "  level 2 " : "  nodes "), std::string::npos);
     EXPECT_EQ(st.to_table().find("top nodes") != std::string::npos, crsh);
 }
 

@@ -30,18 +30,30 @@ struct CullView {
     const uint32_t* object_units = nullptr; // objects + 1 entries
     uint32_t count = 0;
     BvhView bvh; // accel=bvh (CullUnits::bvh); empty otherwise
+    StripsView strips; // accel=strips (CullUnits::strips); empty otherwise
 };
 
 /// The units in host memory, for an exec that reads it (no copy).
 inline CullView host_cull_view(const CullUnits& u) {
-    return {u.begin.data(), u.sphere.data(), u.object.data(), u.object_units.data(),
-            uint32_t(u.count()), u.bvh ? u.bvh->view() : BvhView{}};
+    return {u.begin.data(),
+            u.sphere.data(),
+            u.object.data(),
+            u.object_units.data(),
+            uint32_t(u.count()),
+            u.bvh ? u.bvh->view() : BvhView{},
+            u.strips ? u.strips->view() : StripsView{}};
 }
 
 /// The units' BVH, or an empty one.
 inline const Bvh& units_bvh(const CullUnits& u) {
     static const Bvh none;
     return u.bvh ? *u.bvh : none;
+}
+
+/// The units' strips, or empty ones.
+inline const Strips& units_strips(const CullUnits& u) {
+    static const Strips none;
+    return u.strips ? *u.strips : none;
 }
 
 template <class Exec> class DeviceScene {
@@ -93,6 +105,11 @@ template <class Exec> class DeviceScene {
         const BvhView b = units_bvh(units).view();
         cull.bvh.node_count = b.node_count, cull.bvh.prim_count = b.prim_count;
         cull.bvh.unbounded_count = b.unbounded_count;
+        const StripsView sv = units_strips(units).view();
+        cull.strips.top.node_count = sv.top.node_count,
+        cull.strips.top.prim_count = sv.top.prim_count;
+        cull.strips.top.unbounded_count = sv.top.unbounded_count;
+        cull.strips.strip_count = sv.strip_count;
         v.textures = nullptr;
         v.sampler = nullptr;
         // The same device copy, the packed arrays' pointers set above (a small warp table is
@@ -170,6 +187,16 @@ template <class Exec> class DeviceScene {
         f(units_bvh(units).nodes, cull.bvh.nodes);
         f(units_bvh(units).prims, cull.bvh.prims);
         f(units_bvh(units).unbounded, cull.bvh.unbounded);
+        const Strips& strips = units_strips(units);
+        f(strips.top.nodes, cull.strips.top.nodes);
+        f(strips.top.prims, cull.strips.top.prims);
+        f(strips.top.unbounded, cull.strips.top.unbounded);
+        f(strips.strips, cull.strips.strips);
+        f(strips.planes, cull.strips.planes);
+        f(strips.meta, cull.strips.meta);
+        f(strips.index, cull.strips.index);
+        f(strips.ids, cull.strips.ids);
+        f(strips.verts, cull.strips.verts);
     }
 
     /// Where one array lives: in a buffer of its own, or at `offset` in the packed buffer.

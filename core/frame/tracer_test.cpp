@@ -162,38 +162,40 @@ TEST(Trace, EveryModeFindsWhatBruteForceFinds) {
     }
 }
 
-// accel=bvh: each ray through the BVH finds what brute force finds (closest hits, occlusion,
-// what shadow rays keep through transparent surfaces), with fewer exact tests; the wavefront
-// path runs the same launch and counts the same.
-TEST(Trace, BvhFindsWhatBruteForceFinds) {
+// accel=bvh and accel=strips: each ray through the structure finds what brute force finds
+// (closest hits, occlusion, what shadow rays keep through transparent surfaces), with fewer
+// exact tests; the wavefront path runs the same launch and counts the same.
+TEST(Trace, PerRayStructuresFindWhatBruteForceFinds) {
     const PreparedScene scene = random_scene(4);
     MemoryTracker mem;
-    for (RayType type : {RayType::Reflection, RayType::Shadow, RayType::Ao}) {
-        const RayBatch batch = random_batch(type, mem, 13, 4000);
-        const std::string p = std::string("tests.") + ray_type_name(type) + ".";
-        RenderSettings brute, bvh;
-        brute.accel = Accel::Brute;
-        bvh.accel = Accel::Bvh;
-        TraceResult ref, got, wave;
-        Stats bst, st, wst;
-        trace_batch(scene, batch, brute, bst, mem, ref);
-        trace_batch(scene, batch, bvh, st, mem, got);
-        trace_batch(scene, batch, bvh, wst, mem, wave, wavefront::Traversal::Wavefront);
-        const std::string what = ray_type_name(type);
-        EXPECT_EQ(got.closest, ref.closest) << what;
-        EXPECT_EQ(got.occluded, ref.occluded) << what;
-        EXPECT_EQ(got.pass_log, ref.pass_log) << what;
-        EXPECT_EQ(wave.closest, got.closest) << what;
-        EXPECT_EQ(wave.tests, got.tests) << what;
-        EXPECT_GT(st.get(p + "nodes.tests"), 0.0) << what;
-        EXPECT_EQ(st.get(p + "nodes.tests"), st.get(p + "nodes.hits") + st.get(p + "nodes.misses"))
-            << what;
-        EXPECT_LT(st.get(p + "final.tests"), bst.get(p + "final.tests") / 4) << what;
-        EXPECT_EQ(st.get(p + "total"), st.get(p + "nodes.tests") + st.get(p + "final.tests"))
-            << what;
-        for (const auto& [k, v] : st.entries())
-            if (k.rfind("time_ms.", 0) != 0) EXPECT_EQ(wst.get(k), v) << what << " " << k;
-    }
+    for (Accel accel : {Accel::Bvh, Accel::Strips})
+        for (RayType type : {RayType::Reflection, RayType::Shadow, RayType::Ao}) {
+            const RayBatch batch = random_batch(type, mem, 13, 4000);
+            const std::string p = std::string("tests.") + ray_type_name(type) + ".";
+            RenderSettings brute, s;
+            brute.accel = Accel::Brute;
+            s.accel = accel;
+            TraceResult ref, got, wave;
+            Stats bst, st, wst;
+            trace_batch(scene, batch, brute, bst, mem, ref);
+            trace_batch(scene, batch, s, st, mem, got);
+            trace_batch(scene, batch, s, wst, mem, wave, wavefront::Traversal::Wavefront);
+            const std::string what = std::string(to_string(accel)) + " " + ray_type_name(type);
+            EXPECT_EQ(got.closest, ref.closest) << what;
+            EXPECT_EQ(got.occluded, ref.occluded) << what;
+            EXPECT_EQ(got.pass_log, ref.pass_log) << what;
+            EXPECT_EQ(wave.closest, got.closest) << what;
+            EXPECT_EQ(wave.tests, got.tests) << what;
+            EXPECT_GT(st.get(p + "nodes.tests"), 0.0) << what;
+            EXPECT_EQ(st.get(p + "nodes.tests"),
+                      st.get(p + "nodes.hits") + st.get(p + "nodes.misses"))
+                << what;
+            EXPECT_LT(st.get(p + "final.tests"), bst.get(p + "final.tests") / 4) << what;
+            EXPECT_EQ(st.get(p + "total"), st.get(p + "nodes.tests") + st.get(p + "final.tests"))
+                << what;
+            for (const auto& [k, v] : st.entries())
+                if (k.rfind("time_ms.", 0) != 0) EXPECT_EQ(wst.get(k), v) << what << " " << k;
+        }
 }
 
 TEST(Trace, SmallBatchesChangeNeitherResultsNorCounts) {

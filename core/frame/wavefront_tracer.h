@@ -7,6 +7,7 @@
 #pragma once
 
 #include "core/accel/bvh_trace.h"
+#include "core/accel/strips_trace.h"
 #include "core/frame/batch.h"
 #include "core/frame/compact.h"
 #include "core/frame/order.h"
@@ -160,7 +161,7 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
                                      "accel=bvh for this scene");
         const bool cull = !per_ray && !over_bvh_ && s_.cull_objects;
         const int depth = per_ray ? 0 : s_.hierarchy_depth;
-        const bool bvh = uses_bvh(s_.accel);
+        const bool bvh = uses_bvh(s_.accel) || s_.accel == Accel::Strips; // counts box tests
         BatchCounts* slot = take_slot(p, cull, depth, bvh);
         objects_count_ = &slot->objects;
         final_count_ = &slot->final;
@@ -169,7 +170,7 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         if (per_ray) {
             const TestCount none;
             if (bvh)
-                bvh_trace(batch, out);
+                per_ray_trace(batch, out);
             else
                 brute(batch, out);
             add_test_counts(st_, p, false, {}, {}, {}, bvh ? &none : nullptr); // no levels
@@ -278,31 +279,34 @@ template <class Exec, Traversal kTraversal = Traversal::Wavefront> class Wavefro
         clock_.stop("final_tests");
     }
 
-    // accel=bvh: each ray through the scene's BVH (core/accel/bvh_trace.h), written once for
-    // both backends.
-    void bvh_trace(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
+    // accel=bvh and accel=strips: each ray through the scene's structure (core/accel/
+    // bvh_trace.h, strips_trace.h), written once for both backends.
+    void per_ray_trace(const DeviceBatch<Exec>& batch, DeviceTraceResult<Exec>& out) {
         clock_.start("traversal");
         const size_t n = batch.n;
         DeviceBuffer<BvhCounts, Exec> counts(ex_, n);
         const SceneView scene = scene_;
+        const bool strips = s_.accel == Accel::Strips;
         const BvhView bvh = cull_.bvh;
+        const StripsView sv = cull_.strips;
         const Ray* rays = batch.rays.data();
         uint32_t* tests = out.tests.data();
         BvhCounts* per = counts.data();
         const bool any = any_, shadow = shadow_;
         const uint8_t skip = skip_;
         const HitSinks sinks = out.sinks();
-        ex_.launch("bvh.trace", n, [=] SHEAF_HD_LAMBDA(size_t i) {
+        ex_.launch(strips ? "strips.trace" : "bvh.trace", n, [=] SHEAF_HD_LAMBDA(size_t i) {
             const BvhCounts c =
-                bvh_trace_ray(bvh, scene, rays[i], uint32_t(i), any, shadow, skip, sinks);
+                strips ? strips_trace_ray(sv, scene, rays[i], uint32_t(i), any, shadow, skip, sinks)
+                       : bvh_trace_ray(bvh, scene, rays[i], uint32_t(i), any, shadow, skip, sinks);
             tests[i] = uint32_t(c.prims.tests < 0xFFFFFFFFu ? c.prims.tests : 0xFFFFFFFFu);
             per[i] = c;
         });
         ex_.reduce_into(
-            "bvh.prim_counts", n, final_count_, TestCount{},
+            "per_ray.prim_counts", n, final_count_, TestCount{},
             [=] SHEAF_HD_LAMBDA(size_t i) -> TestCount { return per[i].prims; }, SumCounts{});
         ex_.reduce_into(
-            "bvh.node_counts", n, node_count_, TestCount{},
+            "per_ray.node_counts", n, node_count_, TestCount{},
             [=] SHEAF_HD_LAMBDA(size_t i) -> TestCount { return per[i].nodes; }, SumCounts{});
         clock_.stop("traversal");
     }

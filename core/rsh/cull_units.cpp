@@ -12,7 +12,8 @@ namespace sheaf {
 struct CullUnitsCache {
     std::mutex mutex;
     std::map<int, std::shared_ptr<const CullUnits>> by_cluster;
-    std::shared_ptr<const CullUnits> with_bvh; // whole objects and the BVH
+    std::shared_ptr<const CullUnits> with_bvh;    // whole objects and the BVH
+    std::shared_ptr<const CullUnits> with_strips; // whole objects and the strips
 };
 
 std::shared_ptr<CullUnitsCache> new_cull_units_cache() {
@@ -62,19 +63,25 @@ CullUnits make_cull_units(const PreparedScene& scene, int cluster) {
 std::shared_ptr<const CullUnits> cull_units_for(const PreparedScene& scene,
                                                 const RenderSettings& settings) {
     const bool bvh = uses_bvh(settings.accel);
-    const int cluster = settings.cull_objects && !bvh ? std::max(0, settings.cull_cluster) : 0;
+    const bool strips = settings.accel == Accel::Strips;
+    const int cluster =
+        settings.cull_objects && !bvh && !strips ? std::max(0, settings.cull_cluster) : 0;
     const auto make = [&] {
         CullUnits u = make_cull_units(scene, cluster);
         if (bvh) u.bvh = bvh_for(scene);
+        if (strips) u.strips = strips_for(scene);
         return std::make_shared<const CullUnits>(std::move(u));
     };
     CullUnitsCache* cache = scene.cull_units_cache.get();
     if (!cache) return make();
-    if (bvh) {
-        bvh_for(scene); // built outside this cache's lock (make() then finds it kept)
+    if (bvh || strips) {
+        // Built outside this cache's lock (make() then finds it kept).
+        if (bvh) bvh_for(scene);
+        if (strips) strips_for(scene);
         std::lock_guard<std::mutex> lock(cache->mutex);
-        if (!cache->with_bvh) cache->with_bvh = make();
-        return cache->with_bvh;
+        std::shared_ptr<const CullUnits>& kept = bvh ? cache->with_bvh : cache->with_strips;
+        if (!kept) kept = make();
+        return kept;
     }
     std::lock_guard<std::mutex> lock(cache->mutex);
     std::shared_ptr<const CullUnits>& units = cache->by_cluster[cluster];

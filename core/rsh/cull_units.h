@@ -8,6 +8,7 @@
 #pragma once
 
 #include "core/accel/bvh.h"
+#include "core/accel/strips.h"
 #include "core/geometry/sphere.h"
 #include "core/scene/prepared_scene.h"
 #include "core/settings/settings.h"
@@ -29,6 +30,8 @@ struct CullUnits {
     /// accel=bvh, crsh-bvh, rah-bvh: the scene's object-space hierarchy (bvh_for), which the
     /// traversal tests instead of the units; null otherwise.
     std::shared_ptr<const Bvh> bvh;
+    /// accel=strips: the scene's strips (strips_for); null otherwise.
+    std::shared_ptr<const Strips> strips;
     size_t count() const { return sphere.size(); }
     bool split(uint32_t o) const { return object_units[o + 1] - object_units[o] > 1; }
 };

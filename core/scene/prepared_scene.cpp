@@ -355,6 +355,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.settings = scene.settings;
     p.cull_units_cache = new_cull_units_cache();
     p.bvh_cache = new_bvh_cache();
+    p.strips_cache = new_strips_cache();
     return p;
 }
 

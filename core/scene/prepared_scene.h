@@ -44,6 +44,9 @@ std::shared_ptr<CullUnitsCache> new_cull_units_cache();
 /// The BVH of a prepared scene, built on first use (core/accel/bvh.h).
 struct BvhCache;
 std::shared_ptr<BvhCache> new_bvh_cache();
+/// The strips of a prepared scene, built on first use (core/accel/strips.h).
+struct StripsCache;
+std::shared_ptr<StripsCache> new_strips_cache();
 
 struct PreparedScene {
     // Primitives (triangles for now), object by object: object o owns
@@ -114,6 +117,8 @@ struct PreparedScene {
     std::shared_ptr<CullUnitsCache> cull_units_cache;
     // Set by prepare_scene: the BVH of this geometry (accel=bvh), built once and shared alike.
     std::shared_ptr<BvhCache> bvh_cache;
+    // Set by prepare_scene: the strips of this geometry (accel=strips), likewise.
+    std::shared_ptr<StripsCache> strips_cache;
     std::vector<Light> lights;
     Camera camera;
     // Projection::Mesh: the camera meshes' faces, the meshes, and the distribution-3 uv grid

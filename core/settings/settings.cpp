@@ -22,14 +22,15 @@ const std::vector<SettingSpec>& setting_specs() {
          "bvh",
          0,
          0,
-         {"brute", "rah", "crsh", "bvh", "crsh-bvh", "rah-bvh"},
+         {"brute", "rah", "crsh", "bvh", "crsh-bvh", "rah-bvh", "strips"},
          "how secondary rays find geometry: every ray against every primitive (brute), the ray "
          "hierarchy over "
          "rays in generation order (rah, Roger et al.) or over rays hashed and sorted by hash.mode "
          "and sort.mode "
          "(crsh, paper 000), each ray through a bounding volume hierarchy of the primitives "
          "(bvh, SAH-built, four-wide), or the ray hierarchy of crsh or rah with its top nodes "
-         "through that BVH instead of the object spheres (crsh-bvh, rah-bvh)"},
+         "through that BVH instead of the object spheres (crsh-bvh, rah-bvh), or each ray "
+         "through triangle strips under an SAH BVH (strips, paper 004)"},
         {"hierarchy.depth",
          K::Int,
          "2",
@@ -421,6 +422,7 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
               : accel == "bvh"      ? Accel::Bvh
               : accel == "crsh-bvh" ? Accel::CrshBvh
               : accel == "rah-bvh"  ? Accel::RahBvh
+              : accel == "strips"   ? Accel::Strips
                                     : Accel::Crsh;
     r.hierarchy_depth = i("hierarchy.depth");
     r.hierarchy_arity = i("hierarchy.arity");
@@ -487,6 +489,8 @@ const char* to_string(Accel a) {
         return "crsh-bvh";
     case Accel::RahBvh:
         return "rah-bvh";
+    case Accel::Strips:
+        return "strips";
     case Accel::Crsh:
         break;
     }

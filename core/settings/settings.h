@@ -53,7 +53,7 @@ class Settings {
     std::map<std::string, std::string, std::less<>> values_;
 };
 
-enum class Accel { Brute, Rah, Crsh, Bvh, CrshBvh, RahBvh };
+enum class Accel { Brute, Rah, Crsh, Bvh, CrshBvh, RahBvh, Strips };
 
 /// Whether `a` traces through a hierarchy of rays (rah, crsh and their forms over the BVH).
 inline bool uses_ray_hierarchy(Accel a) {
@@ -66,6 +66,11 @@ inline bool orders_rays(Accel a) {
 /// Whether `a` tests the scene's BVH (bvh per ray; crsh-bvh and rah-bvh per top node).
 inline bool uses_bvh(Accel a) {
     return a == Accel::Bvh || a == Accel::CrshBvh || a == Accel::RahBvh;
+}
+/// Whether `a` traces each ray through an object-space structure of its own (bvh, strips):
+/// it counts box tests (tests.<type>.nodes) and no ray hierarchy.
+inline bool per_ray_structure(Accel a) {
+    return a == Accel::Bvh || a == Accel::Strips;
 }
 enum class HashMode { None, Crsh, Hash32, Hash192, Static1d, Static3d };
 enum class SortMode { None, Full, Csd };

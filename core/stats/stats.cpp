@@ -164,7 +164,7 @@ std::string Stats::to_table() const {
         level_row("objects", "objects");
         for (int k = 16; k >= 1; --k)
             level_row("level " + std::to_string(k), "level" + std::to_string(k));
-        level_row("bvh nodes", "nodes");
+        level_row("nodes", "nodes"); // the BVH's boxes, or the strips' boxes and planes
         level_row("final", "final");
         const double total = get(p + "total"), brute = get(p + "brute_force");
         std::snprintf(line, sizeof line, "  %-12s %18s   %.2f%% of brute force (%s)\n", "total",
@@ -174,7 +174,8 @@ std::string Stats::to_table() const {
     }
 
     const double total = get("tests.total"), brute = get("tests.brute_force");
-    os << "\nTotals (hierarchy levels or BVH nodes + final tests; object-sphere tests on their "
+    os << "\nTotals (hierarchy levels or structure nodes + final tests; object-sphere tests on "
+          "their "
           "own row)\n";
     row("tests.total", total);
     row("tests.objects", get("tests.objects"));

@@ -15,7 +15,7 @@ TEST(BvhSceneFiles, MatchTheDefaultAccel) {
         SHEAF_SCENES_DIR, 48, 36, [](const std::string& name, const PreparedScene& scene) {
             const RenderSettings ref = test::settings_for(scene, {}, 48, 36);
             const Frame want = render_frame_cpu(scene, ref);
-            for (const char* accel : {"bvh", "crsh", "crsh-bvh"}) {
+            for (const char* accel : {"bvh", "crsh", "crsh-bvh", "strips"}) {
                 const RenderSettings s = test::settings_for(scene, {{"accel", accel}}, 48, 36);
                 test::expect_same_image(want, render_frame_cpu(scene, s),
                                         name + ", accel=" + accel);

@@ -13,6 +13,7 @@
 // this benchmark only.
 #include "bench_args.h"
 #include "core/accel/bvh.h"
+#include "core/accel/strips.h"
 #include "core/frame/host_tracer.h"
 #include "core/frame/render_frame.h"
 #include "core/rsh/cull_units.h"
@@ -371,6 +372,12 @@ int run(int argc, char** argv) {
         double embree_bytes, primary_ms;
     };
     std::vector<Summary> summary;
+    struct Footprint {
+        size_t tris;
+        double bvh_hierarchy, list_geometry, strips_hierarchy, strips_geometry;
+        size_t strips, joins, loose;
+    };
+    std::vector<Footprint> footprint;
     for (const size_t n : sizes) {
         const Scene scene = make_scene(n);
         const PreparedScene prepared = prepare_scene(scene);
@@ -471,6 +478,18 @@ int run(int argc, char** argv) {
                              : (x.hit.geomID != RTC_INVALID_GEOMETRY_ID ? 1 : 0);
             embree_found[k] = found;
         }
+        {
+            // Bytes a triangle, hierarchy and geometry apart (paper 004, Table 1): the BVH over
+            // the scene's triangle list (36 bytes a triangle, three corners), and the strips
+            // with their own vertices, indices and primitive ids.
+            const Bvh tree = build_bvh(prepared);
+            const Strips strips = build_strips(prepared);
+            const double t = double(tris);
+            footprint.push_back({tris, double(tree.bytes()) / t, double(sizeof(TriangleVerts)),
+                                 double(strips.hierarchy_bytes()) / t,
+                                 double(strips.geometry_bytes()) / t, strips.strips.size(),
+                                 strips.joins, strips.loose});
+        }
         summary.push_back({tris, embree_bytes / double(tris), median(primary_ms)});
         for (const std::string& mode : modes) {
             Settings kv;
@@ -490,6 +509,16 @@ int run(int argc, char** argv) {
                 }
                 build = median(b);
                 bytes = double(tree.bytes());
+            } else if (s.accel == Accel::Strips) {
+                std::vector<double> b;
+                Strips strips;
+                for (int r = 0; r < rounds; ++r) {
+                    const auto t0 = Clock::now();
+                    strips = build_strips(prepared);
+                    b.push_back(ms(t0, Clock::now()));
+                }
+                build = median(b);
+                bytes = double(strips.hierarchy_bytes() + strips.geometry_bytes());
             } else {
                 const auto t0 = Clock::now();
                 const CullUnits units = make_cull_units(prepared, s.cull_objects ? s.cull_cluster : 0);
@@ -551,6 +580,15 @@ int run(int argc, char** argv) {
                 "| triangles | Embree B/tri | Embree primary |\n|---:|---:|---:|\n");
     for (const Summary& x : summary)
         std::printf("| %zu | %.1f | %.1f ms |\n", x.tris, x.embree_bytes, x.primary_ms);
+    std::printf("\nBytes a triangle, hierarchy + geometry (the triangle list: three corners a "
+                "triangle, as the scene keeps them):\n\n| triangles | bvh | triangle list | bvh "
+                "all | strips | strips geometry | strips all | strips | joins | triangles in no "
+                "strip |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const Footprint& x : footprint)
+        std::printf("| %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %zu | %zu | %zu |\n", x.tris,
+                    x.bvh_hierarchy, x.list_geometry, x.bvh_hierarchy + x.list_geometry,
+                    x.strips_hierarchy, x.strips_geometry, x.strips_hierarchy + x.strips_geometry,
+                    x.strips, x.joins, x.loose);
     return 0;
 }
 

@@ -95,7 +95,8 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    // The default accel (bvh), then the ray hierarchies with their own settings, and over the BVH.
+    // The default accel (bvh), then the ray hierarchies with their own settings, over the BVH,
+    // and the strips.
     const std::vector<test::SettingList> builtin_variants = {
         {},
         {{"accel", "brute"}},
@@ -110,6 +111,7 @@ int main(int argc, char** argv) {
          {"hierarchy.arity", "4"}},
         {{"accel", "crsh-bvh"}},
         {{"accel", "rah-bvh"}, {"traversal.batch", "4096"}},
+        {{"accel", "strips"}},
         {{"output.passes", "combined"}},
     };
     for (const std::string& name : builtin_scene_names()) {

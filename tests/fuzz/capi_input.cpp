@@ -193,7 +193,8 @@ class Host {
         if (mode_ == CapiMode::Calls) return;
         // Every accel finds brute force's hits (ties to the lower primitive), so the images
         // are equal; a render that fails must fail under all of them.
-        static const char* const accels[] = {"brute", "crsh", "rah", "bvh", "crsh-bvh", "rah-bvh"};
+        static const char* const accels[] = {"brute",    "crsh",    "rah",   "bvh",
+                                             "crsh-bvh", "rah-bvh", "strips"};
         std::vector<float> first;
         for (const char* accel : accels) {
             if (sheafRendererSetString(renderer_, "accel", accel) != SHEAF_OK)
@@ -458,25 +459,11 @@ class Host {
         } else {
             key = in_.u8() & 1 ? "no.such.setting" : nullptr;
         }
-        static const char* const strings[] = {"",
-                                              "0",
-                                              "1",
-                                              "-1",
-                                              "2",
-                                              "4",
-                                              "true",
-                                              "off",
-                                              "cpu",
-                                              "cuda",
-                                              "crsh",
-                                              "bvh",
-                                              "crsh-bvh",
-                                              "rah-bvh",
-                                              "brute",
-                                              "rah",
-                                              "nan",
-                                              "1e40",
-                                              "combined,depth"};
+        static const char* const strings[] = {"",         "0",       "1",      "-1",
+                                              "2",        "4",       "true",   "off",
+                                              "cpu",      "cuda",    "crsh",   "bvh",
+                                              "crsh-bvh", "rah-bvh", "strips", "brute",
+                                              "rah",      "nan",     "1e40",   "combined,depth"};
         switch (in_.u8() % 6) {
         case 0:
             check("sheafRendererSetString",

@@ -175,7 +175,7 @@ texture {
 }
 Ball(0, 0, texture {
   gradient y
-  texture_map { [0.4 Gold] [0.6 Matte] }
+  texture_map { [0.5 Gold] [0.5 Matte] } // a step: POV-Ray blends only between two values
   scale 0.5
 })
 // Normal patterns tilt the shading normal: bumps ...

@@ -38,7 +38,7 @@ enum class PatternKind : uint8_t {
     Waves,          // like ripples, with amplitude falling with distance
     Spiral1,        // spiral bands (param[0] arms) around the z axis
     Spiral2,        // two spirals crossing
-    Quilted,        // cushion-shaped cells
+    Quilted,        // cushion-shaped cells: POV-Ray's, param[0] control0, param[1] control1
     Mandel,         // the Mandelbrot set in the x-y plane (Pattern::fractal)
     Julia,          // a Julia set in the x-y plane (Pattern::fractal, its c)
     Slope,          // the surface's slope towards a direction, and its altitude (SlopeParams)
@@ -319,7 +319,7 @@ SHEAF_HD_INLINE float slope_map_height(const SlopeEntry* e, uint32_t count, floa
 /// How POV-Ray tilts a normal by its pattern: bumps, dents, wrinkles, ripples and waves have
 /// normal functions of their own (core/shading/surface_texture.h); every other pattern tilts
 /// it by its slope, sampled `delta` (POV-Ray's accuracy) around the point.
-enum class NormalForm : uint8_t { Slope, Bumps, Dents, Wrinkles, Ripples, Waves };
+enum class NormalForm : uint8_t { Slope, Bumps, Dents, Wrinkles, Ripples, Waves, Quilted };
 
 /// The form POV-Ray gives a normal pattern named `name` (bumps, dents ...; others Slope).
 inline NormalForm normal_form_of(std::string_view name) {
@@ -328,6 +328,7 @@ inline NormalForm normal_form_of(std::string_view name) {
     if (name == "wrinkles") return NormalForm::Wrinkles;
     if (name == "ripples") return NormalForm::Ripples;
     if (name == "waves") return NormalForm::Waves;
+    if (name == "quilted") return NormalForm::Quilted;
     return NormalForm::Slope;
 }
 

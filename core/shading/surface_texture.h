@@ -406,6 +406,8 @@ SHEAF_HD_INLINE DVec3 normal_displacement(const SceneView& scene, const NormalPa
         }
         return r;
     }
+    case NormalForm::Quilted: // by the quilted cell's scaled offset (POV-Ray's own normal)
+        return pattern_detail::quilted_offset(pt, d) * amount;
     case NormalForm::Slope:
         break;
     }

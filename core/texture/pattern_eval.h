@@ -42,6 +42,19 @@ SHEAF_HD_INLINE double triangle_wave(double v) {
     return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
 }
 
+// POV-Ray's quilted cell: the point's offset from its unit cell's centre, scaled by the cubic
+// of its length with control points control0 and control1 (param[0], param[1]; the curve runs
+// from 0 to 1 and is divided by sqrt(3/4), the longest offset). The pattern is the scaled
+// offset's mean absolute component; the normal leans by the offset itself.
+SHEAF_HD_INLINE DVec3 quilted_offset(const Pattern& pt, DVec3 p) {
+    const DVec3 q(p.x - ::floor(p.x) - 0.5, p.y - ::floor(p.y) - 0.5, p.z - ::floor(p.z) - 0.5);
+    const double t = ::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), it = 1.0 - t;
+    const double s = (t * t * t + 3.0 * t * it * it * double(pt.param[0]) +
+                      3.0 * t * t * it * double(pt.param[1])) *
+                     1.154700538;
+    return q * s;
+}
+
 // The wave shapes a value in [0, 1], as POV-Ray's do.
 SHEAF_HD_INLINE double apply_wave(const Pattern& pt, double v) {
     switch (pt.wave) {
@@ -267,10 +280,9 @@ SHEAF_HD_NOINLINE double raw_value(const Pattern& pt, Vec3 p) {
         if (pt.kind == PatternKind::Spiral1) return s;
         return triangle_wave(s) + triangle_wave(r);
     }
-    case PatternKind::Quilted: {
-        const Vec3 q(frac(p.x + 0.5f) - 0.5f, frac(p.y + 0.5f) - 0.5f, frac(p.z + 0.5f) - 0.5f);
-        const float m = 2.0f * hdm::fmaxf(fabsf(q.x), hdm::fmaxf(fabsf(q.y), fabsf(q.z)));
-        return clamp01(m * m * (3.0f - 2.0f * m));
+    case PatternKind::Quilted: { // the cell's offset scaled by the cushion, summed (POV-Ray)
+        const DVec3 q = quilted_offset(pt, d);
+        return (::fabs(q.x) + ::fabs(q.y) + ::fabs(q.z)) / 3.0;
     }
     case PatternKind::Mandel:
     case PatternKind::Julia:

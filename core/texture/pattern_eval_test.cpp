@@ -285,5 +285,26 @@ TEST(Patterns, CellsAndCrackleArePovRays) {
     }
 }
 
+// Values povray 3.7.0.10 wrote (#debug of function { pattern { quilted … } }): the default
+// control points (1, 1) and control0 0.3, control1 -0.6.
+TEST(Patterns, QuiltedIsPovRays) {
+    const Vec3 at[4] = {{0.125f, 0.25f, 0.375f},
+                        {1.75f, -2.375f, 0.0625f},
+                        {-0.5f, 3.96875f, 12.25f},
+                        {0.5f, 0.5f, 0.5f}};
+    const double want[4][2] = {{0.245137862071, 0.003460333206},
+                               {0.277964778706, 0.004590737304},
+                               {0.248153240525, 0.004664533133},
+                               {0.0, 0.0}};
+    Pattern plain = make(PatternKind::Quilted), shaped = plain;
+    plain.param[0] = plain.param[1] = 1;
+    plain.frequency = shaped.frequency = 0; // POV-Ray's quilted has none
+    shaped.param[0] = 0.3f, shaped.param[1] = -0.6f;
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_NEAR(pattern_value_at(plain, at[i]), want[i][0], 1e-7) << i;
+        EXPECT_NEAR(pattern_value_at(shaped, at[i]), want[i][1], 1e-8) << i;
+    }
+}
+
 } // namespace
 } // namespace sheaf

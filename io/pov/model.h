@@ -157,6 +157,10 @@ struct PovTexture {
     std::vector<std::pair<double, PovTextureRef>> map_entries;
 };
 
+/// Whether a texture_map over a continuous pattern has neighbouring entries (by value) of two
+/// textures at two values, between which POV-Ray blends the textures (Sheaf does not).
+bool texture_map_blends(const std::vector<std::pair<double, PovTextureRef>>& entries);
+
 /// A texture moved by a transform applied after it (the object's, or the texture's own).
 PovTextureRef transformed(const PovTextureRef& t, const Affine& m);
 /// `t` uv-mapped (an object's uv_mapping), placed by the transforms it has now (one that is

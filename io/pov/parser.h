@@ -119,6 +119,10 @@ class Parser {
     [[noreturn]] void error_at(const Token& t, const std::string& msg) const;
     void warn(const Token& t, const std::string& msg);
     void unsupported(const Token& t, const std::string& what);
+    /// What Sheaf draws otherwise than POV-Ray: `FILE:LINE:COL: warning: approximated WHAT`
+    /// (an error with `strict`). A scene with only these is still clean (`render --check`);
+    /// inside a declaration it waits, as unsupported() does, until the value is used.
+    void approximated(const Token& t, const std::string& what);
     /// Reports the unsupported features a declared value carries (see PendingWarning).
     void raise_pending(const Value& v);
     /// While a #declare is read, unsupported features are collected here instead.

@@ -125,7 +125,9 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         }
         if (k == "mandel" || k == "julia" || k == "magnet") parse_fractal(pt, k);
         if (k == "slope") parse_slope(pt, t);
-        if (k == "quilted") { // control0 and control1 follow as modifiers
+        if (k == "quilted") { // POV-Ray's: control points 1 and 1, and no frequency
+            pt.param[0] = 1, pt.param[1] = 1;
+            pt.frequency = 0;
         }
         return true;
     }
@@ -241,6 +243,9 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
     } else if (pt.kind == PatternKind::Crackle && k == "offset") {
         advance();
         pt.param[1] = parse_float();
+    } else if (pt.kind == PatternKind::Quilted && (k == "control0" || k == "control1")) {
+        advance();
+        pt.param[k == "control0" ? 0 : 1] = parse_float();
     } else if (k == "form" || k == "metric" || k == "offset" || k == "control0" ||
                k == "control1" || k == "orientation" || k == "dist_exp" || k == "max_iteration" ||
                k == "interpolate") {

@@ -4,6 +4,7 @@
 
 #include "core/base/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -158,6 +159,9 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
         } else if (k == "texture_map") {
             if (!tx.is_map) error_at(t, "texture_map needs a pattern before it");
             tx.map_entries = parse_texture_map();
+            if (list == 0 && texture_map_blends(tx.map_entries))
+                approximated(t, "texture_map blending: a point takes the nearer entry's texture, "
+                                "where POV-Ray mixes the two around the pattern's value");
         } else if (k == "texture" && tx.is_map && list > 0) {
             if (!list_given) tx.map_entries.clear(), list_given = true;
             tx.map_entries.push_back({0.0, parse_texture_block(PovTexture{})});
@@ -199,6 +203,17 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
                 tx.map_entries.push_back({0.0, std::make_shared<const PovTexture>(base)});
     }
     return done(tx);
+}
+
+bool texture_map_blends(const std::vector<std::pair<double, PovTextureRef>>& entries) {
+    std::vector<std::pair<double, PovTextureRef>> sorted = entries;
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (size_t i = 0; i + 1 < sorted.size(); ++i)
+        if (sorted[i].first < sorted[i + 1].first &&
+            !same_texture(sorted[i].second, sorted[i + 1].second))
+            return true;
+    return false;
 }
 
 std::vector<std::pair<double, PovTextureRef>> Parser::parse_texture_map() {

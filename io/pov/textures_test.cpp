@@ -79,6 +79,39 @@ TEST(PovTextures, MapEntriesMayStartWithADeclaredFloat) {
     EXPECT_FLOAT_EQ(r.scene.pigment_entries[bozo.first].color[1], 0);
 }
 
+// A texture_map that POV-Ray blends (two textures at two values of a continuous pattern) is
+// an approximation Sheaf warns about where the map is, also when declared, and --strict
+// refuses; steps, one texture at several values and list patterns are exact and say nothing.
+TEST(PovTextures, BlendingTextureMapsAreWarnedAsApproximated) {
+    const std::string decl = "#declare A = texture { pigment { rgb 1 } }\n"
+                             "#declare B = texture { pigment { rgb 0 } }\n";
+    const PovResult blend =
+        load_text(decl + "sphere { 0, 1 texture { gradient y texture_map { [0 A] [1 B] } } }\n");
+    ASSERT_EQ(blend.warnings.size(), 1u);
+    EXPECT_NE(blend.warnings[0].find("scene.pov:3:36: warning: approximated texture_map blending"),
+              std::string::npos)
+        << blend.warnings[0];
+    const PovResult exact = load_text(
+        decl +
+        "sphere { 0, 1 texture { gradient y texture_map { [0 A] [0.5 A] [0.5 B] [1 B] } } }\n"
+        "sphere { 0, 1 texture { checker texture { A } texture { B } } }\n");
+    EXPECT_TRUE(exact.warnings.empty()) << exact.warnings.front();
+    PovOptions strict;
+    strict.strict = true;
+    EXPECT_NE(
+        error_of(decl + "sphere { 0, 1 texture { bozo texture_map { [0 A] [1 B] } } }\n", strict)
+            .find("scene.pov:3:30: error: approximated texture_map blending"),
+        std::string::npos);
+    // Declared: warned where it is used, once.
+    const std::string declared =
+        decl + "#declare T = texture { bozo texture_map { [0 A] [1 B] } }\n";
+    EXPECT_TRUE(load_text(declared + "sphere { 0, 1 }\n").warnings.empty());
+    const PovResult used = load_text(declared + "sphere { 0, 1 texture { T } }\n");
+    ASSERT_EQ(used.warnings.size(), 1u) << used.warnings.front();
+    EXPECT_NE(used.warnings[0].find("scene.pov:3:29: warning: approximated"), std::string::npos)
+        << used.warnings[0];
+}
+
 TEST(PovTextures, FractalPatternsTakeTheirArgumentsAndModifiers) {
     const PovResult r = load_text(
         "#declare M = pigment { magnet 2 mandel 40 }\n"
@@ -176,7 +209,9 @@ TEST(PovTextures, LayersTextureMapsAndNormals) {
         "sphere { 0, 1 texture { gradient y texture_map { [0 pigment { rgb 1 }]\n"
         "  [1 pigment { rgb 0 } finish { phong 1 }] } } }\n"
         "sphere { 0, 1 texture { checker texture { pigment { rgb x } } texture { pigment { rgb y } } } }\n");
-    EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+    // The gradient's map blends in POV-Ray: the one warning.
+    ASSERT_EQ(r.warnings.size(), 1u) << r.warnings.front();
+    EXPECT_NE(r.warnings[0].find("3:36: warning: approximated texture_map"), std::string::npos);
     const Material& layered = shape_material(r, 0);
     ASSERT_GE(layered.pigment, 0);
     const Pigment& layers = r.scene.pigments[size_t(layered.pigment)];
@@ -270,7 +305,8 @@ TEST(PovTextures, SlopePatternsTakeTheirArguments) {
                   "sphere { 0, 1 pigment { slope z color_map { [0 rgb 0] [1 rgb 1] } } }\n"
                   "sphere { 0, 1 pigment { slope { point_at <1, 2, 3> } } }\n"
                   "sphere { 0, 1 normal { slope { x altitude z } 0.5 } }\n");
-    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    ASSERT_EQ(r.warnings.size(), 1u) << r.warnings[0]; // the texture_map blends in POV-Ray
+    EXPECT_NE(r.warnings[0].find("warning: approximated texture_map"), std::string::npos);
     const Material& mapped = shape_material(r, 0);
     ASSERT_GE(mapped.select, 0);
     const Pattern& terrain = r.scene.material_switches[size_t(mapped.select)].pattern;

@@ -81,10 +81,20 @@ void Parser::unsupported(const Token& t, const std::string& what) {
     warn(t, "unsupported " + what);
 }
 
+void Parser::approximated(const Token& t, const std::string& what) {
+    if (!captures_.empty()) {
+        captures_.back().push_back({t, what, true});
+        return;
+    }
+    if (options_.strict) throw SceneError(where(t) + ": error: approximated " + what + context());
+    warn(t, "approximated " + what);
+}
+
 void Parser::raise_pending(const Value& v) {
     if (!v.pending) return;
     const auto pending = v.pending; // unsupported() may add to the same declaration's list
-    for (const PendingWarning& p : *pending) unsupported(p.where, p.what);
+    for (const PendingWarning& p : *pending)
+        p.approximation ? approximated(p.where, p.what) : unsupported(p.where, p.what);
 }
 
 void Parser::charge(size_t bytes, const Token& t) {

@@ -43,6 +43,7 @@ const char* type_name(VType t);
 struct PendingWarning {
     Token where;
     std::string what;
+    bool approximation = false; // Parser::approximated's, else Parser::unsupported's
 };
 
 struct Value {

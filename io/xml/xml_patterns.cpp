@@ -155,6 +155,13 @@ Pattern SceneReader::read_pattern(Attributes& a, PatternKind kind) const {
         if (a.get("arms", pt.param[0]) && pt.param[0] == 0)
             fail_value("arms", "a spiral needs a number of arms other than 0");
     }
+    only_for("control0", kind == PatternKind::Quilted, "the quilted pattern");
+    only_for("control1", kind == PatternKind::Quilted, "the quilted pattern");
+    if (kind == PatternKind::Quilted) { // POV-Ray's control points, 1 and 1 when not given
+        pt.param[0] = pt.param[1] = 1;
+        a.get("control0", pt.param[0]);
+        a.get("control1", pt.param[1]);
+    }
     only_for("agate_turb", kind == PatternKind::Agate, "the agate pattern");
     if (kind == PatternKind::Agate) {
         pt.param[0] = 1;

@@ -194,6 +194,8 @@ struct Pattern {
     // POV-Ray's noise_generator for the noise patterns and turbulence (core/texture/pov_noise.h):
     // 1 the original, 2 range-corrected (POV-Ray's default), 3 Perlin's.
     uint8_t noise_generator = 2;
+    // Ripples and waves: POV-Ray's number_of_waves (global_settings), 1..1000.
+    uint16_t waves = 10;
     // World -> pattern space (uv: texture coordinates -> pattern space), or with warps world
     // -> the space of the last warp declared; then Scene::warps [warp_first, warp_first +
     // warp_count), the last declared first, each warping and mapping on by its to_inner.

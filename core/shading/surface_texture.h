@@ -387,14 +387,16 @@ SHEAF_HD_INLINE DVec3 normal_displacement(const SceneView& scene, const NormalPa
     case NormalForm::Ripples:
     case NormalForm::Waves: { // towards each wave's centre by the sine of its distance
         DVec3 r;
-        for (int i = 0; i < kPovWaves; ++i) {
+        PovWaveFrequencies freq;
+        const int count = pt.waves;
+        for (int i = 0; i < count; ++i) {
             const DVec3 s = pov_wave_source(i);
             const DVec3 v(d.x - s.x, d.y - s.y, d.z - s.z);
             double len = ::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
             if (len == 0.0) len = 1.0;
             double scalar;
             if (np.form == NormalForm::Waves) {
-                const double f = pov_wave_frequency(i);
+                const double f = freq.next();
                 scalar =
                     pattern_detail::cycloidal(len * double(pt.frequency) * f + double(pt.phase)) *
                     amount / f;
@@ -402,7 +404,7 @@ SHEAF_HD_INLINE DVec3 normal_displacement(const SceneView& scene, const NormalPa
                 scalar = pattern_detail::cycloidal(len * double(pt.frequency) + double(pt.phase)) *
                          amount;
             }
-            r = r + v * (scalar / (len * kPovWaves));
+            r = r + v * (scalar / (len * count));
         }
         return r;
     }

@@ -76,21 +76,22 @@ SHEAF_HD_INLINE double apply_wave(const Pattern& pt, double v) {
 
 // POV-Ray's ripples (the mean of the waves' sines of distance times frequency plus phase,
 // from 0..1) and waves (each wave at its own frequency, weighted by its inverse).
-SHEAF_HD_INLINE double pov_waves_value(DVec3 p, bool waves, double frequency, double phase) {
+SHEAF_HD_INLINE double pov_waves_value(DVec3 p, bool waves, double frequency, double phase,
+                                       int count) {
     double sum = 0.0;
-    for (int i = 0; i < kPovWaves; ++i) {
+    PovWaveFrequencies freq;
+    for (int i = 0; i < count; ++i) {
         const DVec3 s = pov_wave_source(i);
         const double dx = p.x - s.x, dy = p.y - s.y, dz = p.z - s.z;
         double len = ::sqrt(dx * dx + dy * dy + dz * dz);
         if (len == 0.0) len = 1.0;
-        if (waves) {
-            const double f = pov_wave_frequency(i);
+        const double f = freq.next();
+        if (waves)
             sum += cycloidal(len * frequency * f + phase) / f;
-        } else {
+        else
             sum += cycloidal(len * frequency + phase);
-        }
     }
-    return waves ? 0.2 * (2.5 + sum / kPovWaves) : 0.5 * (1.0 + sum / kPovWaves);
+    return waves ? 0.2 * (2.5 + sum / count) : 0.5 * (1.0 + sum / count);
 }
 
 // Coordinates kept within +-1e9 (NaN as 0), where whole cell numbers still fit an int.
@@ -260,9 +261,10 @@ SHEAF_HD_NOINLINE double raw_value(const Pattern& pt, Vec3 p) {
         return v < 1.0 ? v : 1.0;
     }
     case PatternKind::Ripples:
-    case PatternKind::Waves: // POV-Ray's ten sources; waves weigh each by its own frequency
+    case PatternKind::Waves: // POV-Ray's sources (number_of_waves); waves weigh each by its own
+                             // frequency
         return pov_waves_value(d, pt.kind == PatternKind::Waves, double(pt.frequency),
-                               double(pt.phase));
+                               double(pt.phase), pt.waves);
     case PatternKind::Spiral1:
     case PatternKind::Spiral2: {
         // POV-Ray's: the arms turn about z, the angle counted from -y towards +x; spiral2

@@ -256,12 +256,22 @@ SHEAF_HD_INLINE DVec3 pov_wave_source(int i) {
     return l > 0 ? DVec3(d.x / l, d.y / l, d.z / l) : d;
 }
 
-/// The relative frequency of POV-Ray's wave i (the waves pattern), in [0.01, 1.01]: the i-th
-/// draw of the classic generator from POV-Ray's seed.
-SHEAF_HD_INLINE double pov_wave_frequency(int i) {
+/// POV-Ray's generator of wave frequencies, from its seed: each next() the relative frequency of
+/// the next wave (the waves pattern), in [0.01, 1.01].
+struct PovWaveFrequencies {
     uint32_t state = uint32_t(-560851967);
-    for (int k = 0; k <= i; ++k) state = state * 1812433253u + 12345u;
-    return double((state >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
+    SHEAF_HD double next() {
+        state = state * 1812433253u + 12345u;
+        return double((state >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
+    }
+};
+
+/// The relative frequency of POV-Ray's wave i: the i-th draw of PovWaveFrequencies.
+SHEAF_HD_INLINE double pov_wave_frequency(int i) {
+    PovWaveFrequencies g;
+    double f = g.next();
+    for (int k = 0; k < i; ++k) f = g.next();
+    return f;
 }
 
 /// POV-Ray's hash of a lattice cell (each coordinate modulo 4096), 0..4095: the cells and
@@ -283,8 +293,10 @@ SHEAF_HD_INLINE DVec3 pov_cell_point(int x, int y, int z) {
             z + pov_pattern_rand(seed + 2)};
 }
 
-/// POV-Ray's number of waves (global_settings' number_of_waves, 10 unless set).
+/// POV-Ray's number of waves unless global_settings' number_of_waves sets it (Pattern::waves).
 constexpr int kPovWaves = 10;
+/// The most waves a scene may ask for (more are clamped, with a warning).
+constexpr int kPovMostWaves = 1000;
 
 #undef SHEAF_POV_TABLE
 

@@ -4,7 +4,9 @@
 
 #include "core/base/error.h"
 #include "core/settings/settings.h"
+#include "core/texture/pov_noise.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -300,8 +302,17 @@ void Parser::parse_global_settings() {
             const double g = parse_float();
             if (!(g >= 1 && g < 4)) error_at(at, "global noise_generator must be 1, 2 or 3");
             model.noise_generator = int(g);
-        } else if (k == "adc_bailout" || k == "number_of_waves" || k == "max_intersections" ||
-                   k == "hf_gray_16" || k == "mm_per_unit") {
+        } else if (k == "number_of_waves") { // as POV-Ray: below 1 is 1
+            const Token at = peek();
+            const double n = parse_float();
+            if (!std::isfinite(n)) error_at(at, "number_of_waves must be a number");
+            model.number_of_waves = int(std::clamp(n, 1.0, double(kPovMostWaves)));
+            if (n < 1 || n >= kPovMostWaves + 1)
+                warn(at, "number_of_waves " + format_number(n) + " is clamped to " +
+                             std::to_string(model.number_of_waves) + " (1.." +
+                             std::to_string(kPovMostWaves) + ")");
+        } else if (k == "adc_bailout" || k == "max_intersections" || k == "hf_gray_16" ||
+                   k == "mm_per_unit") {
             if (starts_expression(peek())) parse_expr();
         } else {
             error_expected(t, "a global setting (assumed_gamma, max_trace_level ...)");

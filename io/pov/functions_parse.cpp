@@ -156,7 +156,7 @@ void Parser::parse_pigment_function(PovFunction& f) {
             f.unsupported = "warp in a pigment function";
             return;
         }
-        pf->pattern = lower_pattern(pg->pattern, pg->local, nullptr, model.scene_noise_generator());
+        pf->pattern = lower_pattern(pg->pattern, pg->local, nullptr, model.pattern_defaults());
         pf->pigment.count = uint32_t(pf->entries.size());
         pf->pigment.list = pattern_is_list(k) ? 1 : 0;
     }

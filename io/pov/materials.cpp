@@ -112,7 +112,7 @@ Highlights layer_highlights(const PovTexture& t) {
 
 Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
     std::vector<Warp> warps;
-    Pattern p = lower_pattern(pt, eff, &warps, p_.model.scene_noise_generator());
+    Pattern p = lower_pattern(pt, eff, &warps, p_.model.pattern_defaults());
     if (uv_) { // (u, v, 0) -> the pattern's own space: no world, no mirror
         p.uv = true;
         ++uv_patterns_;
@@ -197,10 +197,11 @@ int32_t MaterialBuilder::function(const PovFunction& f) {
 }
 
 Pattern lower_pattern(const PovPattern& pt, const Affine& eff, std::vector<Warp>* warps,
-                      int scene_noise_generator) {
+                      const PatternDefaults& scene) {
     Pattern p;
     p.kind = pt.kind;
-    p.noise_generator = uint8_t(pt.noise_generator ? pt.noise_generator : scene_noise_generator);
+    p.noise_generator = uint8_t(pt.noise_generator ? pt.noise_generator : scene.noise_generator);
+    p.waves = uint16_t(scene.waves);
     p.wave = pt.wave;
     p.octaves = int8_t(std::clamp(pt.octaves, 1, 10));
     p.has_turbulence = pt.has_turbulence;

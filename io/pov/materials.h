@@ -24,7 +24,7 @@ inline Vec3 rgb(const Color5& c) {
 /// pattern reads POV-Ray coordinates). Its warps are appended to `warps` (null: a pattern
 /// without warps is asked for).
 Pattern lower_pattern(const PovPattern& pt, const Affine& eff, std::vector<Warp>* warps,
-                      int scene_noise_generator);
+                      const PatternDefaults& scene);
 
 /// Sets `slot` to `value` for a scope and puts its old value back after (also when the scope
 /// ends by an error).

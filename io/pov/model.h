@@ -276,6 +276,13 @@ struct PovSky {
 };
 
 /// Everything the parser collected.
+/// What a scene's global settings give its patterns: the noise generator of those that name
+/// none, and the number of waves of ripples and waves.
+struct PatternDefaults {
+    int noise_generator = 2;
+    int waves = 10;
+};
+
 struct PovModel {
     std::vector<PovObject> objects;
     bool has_camera = false;
@@ -285,11 +292,14 @@ struct PovModel {
     double version = 3.7;
     bool version_given = false;
     int noise_generator = 0; // global_settings' (1..3); 0: not given
+    int number_of_waves = 10; // global_settings' (ripples and waves), 1..kPovMostWaves
     /// The generator of patterns that name none: global_settings', else as POV-Ray 3.7
     /// defaults it, 1 before #version 3.5 and 2 from it.
     int scene_noise_generator() const {
         return noise_generator ? noise_generator : version < 3.5 ? 1 : 2;
     }
+    /// What the scene's global settings give every pattern (lower_pattern).
+    PatternDefaults pattern_defaults() const { return {scene_noise_generator(), number_of_waves}; }
     std::array<double, 3> ambient_light{1, 1, 1};
     std::array<double, 3> irid_wavelength{0.25, 0.18, 0.14};
     int max_trace_level = -1;

@@ -112,6 +112,26 @@ TEST(PovTextures, BlendingTextureMapsAreWarnedAsApproximated) {
         << used.warnings[0];
 }
 
+// global_settings' number_of_waves reaches every ripples and waves pattern (10 unless set),
+// the normals' too; POV-Ray's 1 for less, and at most 1000, both warned.
+TEST(PovTextures, NumberOfWavesReachesTheWavePatterns) {
+    const std::string body = "sphere { 0, 1 pigment { ripples } normal { waves 0.5 } }\n";
+    const PovResult plain = load_text(body);
+    EXPECT_EQ(plain.scene.pigments[size_t(shape_material(plain).pigment)].pattern.waves, 10);
+    const PovResult three = load_text(body + "global_settings { number_of_waves 3 }\n");
+    EXPECT_TRUE(three.warnings.empty()) << three.warnings.front();
+    const Material& m = shape_material(three);
+    EXPECT_EQ(three.scene.pigments[size_t(m.pigment)].pattern.waves, 3);
+    ASSERT_GE(m.normal, 0);
+    EXPECT_EQ(three.scene.normal_patterns[size_t(m.normal)].pattern.waves, 3);
+    const PovResult none = load_text(body + "global_settings { number_of_waves 0 }\n");
+    ASSERT_EQ(none.warnings.size(), 1u);
+    EXPECT_NE(none.warnings[0].find("number_of_waves 0 is clamped to 1"), std::string::npos);
+    EXPECT_EQ(none.scene.pigments[size_t(shape_material(none).pigment)].pattern.waves, 1);
+    const PovResult many = load_text(body + "global_settings { number_of_waves 1e9 }\n");
+    EXPECT_EQ(many.scene.pigments[size_t(shape_material(many).pigment)].pattern.waves, 1000);
+}
+
 TEST(PovTextures, FractalPatternsTakeTheirArgumentsAndModifiers) {
     const PovResult r = load_text(
         "#declare M = pigment { magnet 2 mandel 40 }\n"

@@ -84,6 +84,8 @@ SCENES = [
     ("examples/incdemo/woods/teak.pov", "legacy"),
     ("examples/incdemo/func_gradient.pov", "exact"),
     ("examples/textures/pigments/skies/stars.pov", "exact"),
+    ("examples/textures/normals/normavg.pov", "exact"),  # number_of_waves 1
+    ("examples/textures/patterns/quilted.pov", "exact"),
     ("examples/radiosity/cornell.pov", "radiosity"),
     ("scenes/radiosity.pov", "radiosity"),
 ]

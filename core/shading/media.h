@@ -10,6 +10,7 @@
 #include "core/scene/scene_view.h"
 #include "core/shading/shade.h"
 #include "core/shading/surface_texture.h"
+#include "core/texture/lattice_hash.h"
 
 namespace sheaf {
 

@@ -10,7 +10,6 @@
 #include "core/math/hd_math.h"
 #include "core/scene/pattern.h"
 #include "core/texture/fractal_pattern.h"
-#include "core/texture/lattice_hash.h"
 #include "core/texture/pov_noise.h"
 
 namespace sheaf {
@@ -383,10 +382,11 @@ SHEAF_HD_NOINLINE Vec3 warp_point(const Warp& w, Vec3 p) {
             const int bx = w.b.x > 0 ? floor_int(p.x / w.b.x) : 0;
             const int by = w.b.y > 0 ? floor_int(p.y / w.b.y) : 0;
             const int bz = w.b.z > 0 ? floor_int(p.z / w.b.z) : 0;
-            const uint32_t h = lattice_hash(bx, by, bz, 0x6b1au);
-            centre += Vec3(w.c.x * (2 * hash_unit(h) - 1),
-                           w.c.y * (2 * hash_unit(lattice_hash(bx, by, bz, h)) - 1),
-                           w.c.z * (2 * hash_unit(lattice_hash(bx, by, bz, h + 1)) - 1));
+            // Its jitter (turbulence): POV-Ray's random numbers at the block's hash.
+            const int seed = pov_hash3(bx, by, bz);
+            centre += Vec3(w.c.x * float(pov_pattern_rand(seed)),
+                           w.c.y * float(pov_pattern_rand(seed + 1)),
+                           w.c.z * float(pov_pattern_rand(seed + 2)));
             centre += Vec3(w.b.x * float(bx), w.b.y * float(by), w.b.z * float(bz));
         }
         const Vec3 d = p - centre;

@@ -86,6 +86,7 @@ SCENES = [
     ("examples/textures/pigments/skies/stars.pov", "exact"),
     ("examples/textures/normals/normavg.pov", "exact"),  # number_of_waves 1
     ("examples/textures/patterns/quilted.pov", "exact"),
+    ("examples/textures/pigments/blkhole.pov", "exact"),  # black holes' jitter
     ("examples/radiosity/cornell.pov", "radiosity"),
     ("scenes/radiosity.pov", "radiosity"),
 ]

@@ -180,6 +180,11 @@ struct Light {
     // (photon_switch_on); photons are off unless the scene's PhotonSettings are on.
     PhotonSwitch photon_reflection = PhotonSwitch::Unset, photon_refraction = PhotonSwitch::Unset;
     float photon_weight = 1.0f; // its photons carry color x this (an area light's one shooter)
+    // One sample of an area light, as POV-Ray lights without area_illumination: the spot cone
+    // and the fade are taken from the area light's centre, the rest (direction, shadow) from
+    // this sample's position.
+    bool centred = false;
+    Vec3 centre;
 };
 
 constexpr uint16_t kMaxLightGroup = 0x7fff;

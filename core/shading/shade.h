@@ -133,10 +133,18 @@ SHEAF_HD_INLINE LightSample sample_light(const Light& l, Vec3 p, float far) {
     s.distance = length(d);
     s.to_light = s.distance > 0 ? d / s.distance : Vec3(0, 0, 1);
     s.origin = l.position;
+    // An area light's sample takes its cone and fade from the area light's centre.
+    Vec3 from_light = -s.to_light;
+    float reach = s.distance;
+    if (l.centred) {
+        const Vec3 c = p - l.centre;
+        reach = length(c);
+        from_light = reach > 0 ? c / reach : from_light;
+    }
     float k = 1.0f;
-    if (l.type == LightType::Spot) k *= spot_factor(l, -s.to_light);
+    if (l.type == LightType::Spot) k *= spot_factor(l, from_light);
     if (l.fade_distance > 0 && l.fade_power > 0)
-        k *= 2.0f / (1.0f + hdm::powf(s.distance / l.fade_distance, l.fade_power));
+        k *= 2.0f / (1.0f + hdm::powf(reach / l.fade_distance, l.fade_power));
     s.radiance = l.color * k;
     return s;
 }

@@ -177,6 +177,8 @@ struct Builder {
                 const float v = pl.n2 > 1 ? (j + 0.5f + jitter(rng)) / pl.n2 - 0.5f : 0.0f;
                 Light s = l;
                 s.position = flip.point(pl.light.position + pl.axis1 * u + pl.axis2 * v);
+                s.centred = !pl.area_illumination;
+                s.centre = flip.point(pl.light.position);
                 // POV-Ray's area lights shoot photons as one light; the middle sample shoots
                 // them for all.
                 if (i == pl.n1 / 2 && j == pl.n2 / 2)

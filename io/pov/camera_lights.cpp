@@ -235,7 +235,7 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
         } else if (k == "adaptive") {
             parse_float();
         } else if (k == "area_illumination") {
-            parse_bool_opt(true);
+            l.area_illumination = parse_bool_opt(true);
         } else if (k == "media_interaction") {
             l.light.media_interaction = parse_bool_opt(true);
         } else if (k == "media_attenuation") { // the atmosphere's media fade its light

@@ -305,6 +305,29 @@ TEST(PovLights, AreaLightsBecomeSamples) {
     EXPECT_EQ(again.scene.lights[5].position.x, r.scene.lights[5].position.x);
 }
 
+// As POV-Ray lights: an area spotlight's samples take the cone (and the fade) from the area
+// light's centre, unless area_illumination gives each sample its own. A cone narrower than
+// the area then still lights what the centre aims at.
+TEST(PovLights, AreaSpotlightsTakeTheirConeFromTheCentre) {
+    const std::string light = "light_source { <0, 100, 0> rgb 1 spotlight point_at <0, 0, 0> "
+                              "radius 0.5 falloff 1 area_light x * 40, z * 40, 5, 5 ";
+    const PovResult centred = load_text(light + "}");
+    const PovResult own = load_text(light + "area_illumination on }");
+    ASSERT_EQ(centred.scene.lights.size(), 25u);
+    ASSERT_EQ(own.scene.lights.size(), 25u);
+    float lit = 0, lit_own = 0;
+    for (size_t i = 0; i < 25; ++i) {
+        const Light& l = centred.scene.lights[i];
+        EXPECT_TRUE(l.centred);
+        EXPECT_NEAR(length(l.centre - Vec3(0, 100, 0)), 0, 1e-4);
+        EXPECT_FALSE(own.scene.lights[i].centred);
+        lit += sample_light(l, Vec3(0, 0, 0), 1e6f).radiance.x;
+        lit_own += sample_light(own.scene.lights[i], Vec3(0, 0, 0), 1e6f).radiance.x;
+    }
+    EXPECT_NEAR(lit, 1, 1e-5); // every sample's share, as the centre sees the point
+    EXPECT_LT(lit_own, 0.2f);  // most samples' own cones miss it
+}
+
 TEST(PovLights, LightsInsideObjectsMoveWithThem) {
     const PovResult r =
         load_text("union { sphere { 0, 1 } light_source { <0, 2, 0>, 1 } translate x * 3 }");

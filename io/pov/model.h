@@ -207,6 +207,7 @@ struct PovLight {
     bool area = false;
     Vec3 axis1, axis2;
     int n1 = 1, n2 = 1;
+    bool area_illumination = false; // each sample its own cone and fade (else the centre's)
 };
 
 enum class PovKind { Shape, Mesh, Csg, Light };

@@ -203,8 +203,9 @@ SHEAF_HD_NOINLINE double raw_value(const Pattern& pt, Vec3 p) {
     }
     case PatternKind::Onion:
         return ::fmod(::sqrt(d.x * d.x + d.y * d.y + d.z * d.z), 1.0);
-    case PatternKind::Radial:
-        return hdm::atan2f(p.x, -p.z) / (2.0f * kPi) + 0.5f;
+    case PatternKind::Radial: // POV-Ray's: a quarter turn on, 0.25 on the axis
+        if (fabs(d.x) < 0.001 && fabs(d.z) < 0.001) return 0.25;
+        return 0.25 + (::atan2(d.x, d.z) + 3.141592653589793) / 6.283185307179586;
     case PatternKind::Spherical:
         return 1.0f - clamp01(length(p));
     case PatternKind::Cylindrical:

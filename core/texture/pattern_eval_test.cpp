@@ -285,6 +285,18 @@ TEST(Patterns, CellsAndCrackleArePovRays) {
     }
 }
 
+// Values povray 3.7.0.10 wrote (#debug of function { pattern { radial } }): a quarter turn on
+// from atan2(x, z), 0.25 on the axis, wrapped by the frequency's modulo.
+TEST(Patterns, RadialIsPovRays) {
+    const Vec3 at[4] = {{0.5f, 0.3f, 0.25f},
+                        {-0.75f, 2.0f, 0.125f},
+                        {0.0625f, 0.0f, -0.5f},
+                        {0.0005f, 1.0f, 0.0002f}};
+    const double want[4] = {0.926208191175, 0.526284228356, 0.230198287920, 0.25};
+    const Pattern radial = make(PatternKind::Radial);
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(pattern_value_at(radial, at[i]), want[i], 1e-6) << i;
+}
+
 // Values povray 3.7.0.10 wrote (#debug of function { pattern { quilted … } }): the default
 // control points (1, 1) and control0 0.3, control1 -0.6.
 TEST(Patterns, QuiltedIsPovRays) {

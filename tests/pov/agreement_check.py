@@ -87,6 +87,7 @@ SCENES = [
     ("examples/textures/normals/normavg.pov", "exact"),  # number_of_waves 1
     ("examples/textures/patterns/quilted.pov", "exact"),
     ("examples/textures/pigments/blkhole.pov", "exact"),  # black holes' jitter
+    ("examples/textures/patterns/radial.pov", "exact"),
     ("examples/radiosity/cornell.pov", "radiosity"),
     ("scenes/radiosity.pov", "radiosity"),
 ]

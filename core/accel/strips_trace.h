@@ -80,7 +80,8 @@ SHEAF_HD_INLINE bool strip_leaf(const StripsView& sv, const StripHeader& h, uint
         ux[q] = v[s.kx], uy[q] = v[s.ky], uz[q] = v[s.kz];
     }
     const float ox = r.origin[s.kx], oy = r.origin[s.ky], oz = r.origin[s.kz];
-    float along[kStripLeaf + 4], across[kStripLeaf + 4], px[kV], py[kV];
+    // Zeroed: the vectors read the lanes past a short leaf, whose triangles are never tested.
+    float along[kStripLeaf + 4] = {}, across[kStripLeaf + 4] = {}, px[kV], py[kV];
     // The triangles to test: real ones (no join) of this ray type.
     const uint16_t* ids = sv.ids + h.first + l;
     uint32_t real = 0;

@@ -74,8 +74,6 @@ class StripMaker {
   private:
     // One strip of `tris` (sorted, within 16 bits of the first), if any fits one.
     void one(const std::vector<uint32_t>& tris) {
-        LeafStrip made;
-        out_ = &made;
         weld(tris);
         std::vector<std::array<uint32_t, 3>> faces; // welded corners
         std::vector<uint32_t> prims;                // the primitive of each face
@@ -89,9 +87,9 @@ class StripMaker {
             prims.push_back(tris[t]);
         }
         if (faces.empty()) return;
-        const Stripified strip = stripify(faces);
-        assign(strip, prims);
-        if (strip_made_) leaf_.strips.push_back(std::move(*out_));
+        LeafStrip made;
+        out_ = &made;
+        if (assign(stripify(faces), prims)) leaf_.strips.push_back(std::move(made));
         out_ = nullptr;
     }
 
@@ -130,9 +128,8 @@ class StripMaker {
     }
 
     // The strip's arrays: its vertices in the order of first use, its triangles' ids (from
-    // the least primitive), and its hierarchy.
-    void assign(const Stripified& strip, const std::vector<uint32_t>& prims) {
-        strip_made_ = false;
+    // the least primitive), and its hierarchy; false when it holds no triangle of the scene.
+    bool assign(const Stripified& strip, const std::vector<uint32_t>& prims) {
         const uint32_t base = *std::min_element(prims.begin(), prims.end());
         const size_t n = strip.tri.size();
         std::vector<uint16_t> ids(n, kStripJoin);
@@ -146,8 +143,7 @@ class StripMaker {
         }
         for (size_t f = 0; f < prims.size(); ++f)
             if (!placed[f]) leaf_.loose.push_back(prims[f]);
-        if (real == 0) return;
-        strip_made_ = true;
+        if (real == 0) return false;
         out_->joins = n - real;
         // The strip's vertices in the order of first use, numbered from 0.
         std::vector<uint32_t> local(welded_, 0xFFFFFFFFu);
@@ -183,6 +179,7 @@ class StripMaker {
         out_->planes.resize(leaves - 1);
         out_->meta.resize(leaves - 1);
         if (leaves > 1) node(0, 0, h.tris);
+        return true;
     }
 
     // The bounds of the strip's triangles [l, l + m): their vertices.
@@ -215,8 +212,7 @@ class StripMaker {
 
     const PreparedScene& scene_;
     LeafStrips& leaf_;
-    LeafStrip* out_ = nullptr;
-    bool strip_made_ = false;
+    LeafStrip* out_ = nullptr; // the strip assign() fills
     std::vector<uint32_t> corner_;
     std::vector<Vec3> positions_;
     size_t welded_ = 0;

@@ -49,7 +49,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     /// `keep`: where an exec that outlives its frames keeps the scene's copy between them
     /// (none: the frame copies the scene and frees it at its end).
     FramePipeline(Exec& ex, const PreparedScene& scene, const RenderSettings& s,
-                const ProgressFn& progress, Frame& f, SceneKeep<Exec>* keep = nullptr)
+                  const ProgressFn& progress, Frame& f, SceneKeep<Exec>* keep = nullptr)
         : ex_(ex), host_(scene), s_(s), progress_(progress), f_(f), st_(f.stats), clock_(ex),
           keep_(keep) {}
 
@@ -59,9 +59,11 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const int aa = s_.aa_samples;
         W_ = s_.width * aa, H_ = s_.height * aa;
         const RenderSettings::Rect region = s_.region();
-        win_ = SampleWindow::of_pixels(s_.width, aa, region.x, region.y, region.width,
-                                       region.height);
-        const size_t samples = win_.count(); // the buffers hold the region's samples only
+        region_win_ =
+            SampleWindow::of_pixels(s_.width, aa, region.x, region.y, region.width, region.height);
+        win_ = region_win_;
+        const size_t samples = region_win_.count();
+        band_rows_ = band_rows();
         last_mark_ = start;
         const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
         mark("cull units");
@@ -76,7 +78,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         } else if (const int64_t available =
                        // Reading the system's free memory takes a tenth of a millisecond:
                        // only with photons.
-                       host_.has_photons() ? available_memory_bytes() : 0;
+                   host_.has_photons() ? available_memory_bytes() : 0;
                    available > 0) {
             device_photon_memory.set_limit(available / 10 * 9, available);
         }
@@ -102,10 +104,6 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
             st_.set("device.scene_bytes", double(uploaded.bytes()));
             mark(reused ? "upload (kept)" : "upload");
         }
-        radiance_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
-        tests_ = DeviceBuffer<uint32_t, Exec>(ex_, s_.keeps(kPassTests) ? samples : 0);
-        fill(ex_, radiance_.data(), samples, Vec3(0.0f));
-        fill(ex_, tests_.data(), tests_.size(), 0u);
         params_ = frame_ray_params(host_, s_);
         Tracer tracer(ex_, host_, scene_, *units, cull, s_, st_, clock_);
         tracer_ = &tracer;
@@ -114,19 +112,30 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         mark("tracer");
 
         scatter_ = host_.media_scatter_light();
-        DeviceHits<Exec> hits = primary();
-        mark("primary");
-        scatter_light(segments_, samples);
-        segments_ = DeviceBuffer<MediaSegment, Exec>();
-        report(0.1f);
-        for (int bounce = 0; bounce <= s_.trace_depth && hits.n > 0; ++bounce) {
-            hits = shade_wave(hits, bounce);
-            report(0.1f + 0.9f * float(bounce + 1) / float(s_.trace_depth + 1));
+        cam_ = make_camera_frame(host_.camera, W_, H_, s_.aa_samples);
+        // Primary visibility of the whole region at once (a rasterised triangle is set up
+        // once, not once a band); then the rest of the frame band by band, each band's
+        // per-sample buffers and rays freed before the next.
+        DeviceBuffer<uint64_t, Exec> vis(ex_, samples);
+        if (!cam_.traced) rasterize_region(vis.data());
+        st_.set("rays.primary", double(samples));
+        allocate_pixels();
+        mark("visibility");
+        const int bands = (region_win_.height + band_rows_ - 1) / band_rows_;
+        st_.set("memory.bands", double(bands));
+        st_.set("memory.band_samples", double(size_t(band_rows_) * size_t(region_win_.width)));
+        for (int b = 0; b < bands; ++b) {
+            const int row = b * band_rows_;
+            win_ = region_win_;
+            win_.y += row;
+            win_.height = std::min(band_rows_, region_win_.height - row);
+            shade_band(vis.data() + size_t(row) * size_t(region_win_.width), row, b, bands);
         }
-        mark("waves");
+        win_ = region_win_;
+        mark("bands");
         tracer.flush();
         mark("flush");
-        resolve();
+        download_pixels();
         mark("resolve");
         tracer_ = nullptr;
         clock_.add_to(st_);
@@ -139,6 +148,46 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
             st_.set("device.launches", double(ex_.launches()));
             st_.set("device.host_waits", double(ex_.host_waits()));
         }
+    }
+
+    // Sample rows a band holds: whole pixel rows (a pixel's samples resolve together), about
+    // band.samples samples, at least one pixel row.
+    int band_rows() const {
+        const size_t row = size_t(region_win_.width) * size_t(s_.aa_samples);
+        const size_t want = s_.band_or(Exec::kHostMemory, region_win_.count());
+        const size_t pixel_rows = std::max<size_t>(1, want / std::max<size_t>(1, row));
+        return int(
+            std::min<size_t>(pixel_rows * size_t(s_.aa_samples), size_t(region_win_.height)));
+    }
+
+    // One band of the region (win_): the camera rays where the projection is traced, the
+    // G-buffer from the band's visibility keys, the media along the camera rays, the bounces,
+    // and the band's pixels resolved. `row`: the band's first sample row in the region.
+    void shade_band(uint64_t* vis, int row, int band, int bands) {
+        const size_t n = win_.count();
+        radiance_ = DeviceBuffer<Vec3, Exec>(ex_, n);
+        tests_ = DeviceBuffer<uint32_t, Exec>(ex_, s_.keeps(kPassTests) ? n : 0);
+        fill(ex_, radiance_.data(), n, Vec3(0.0f));
+        fill(ex_, tests_.data(), tests_.size(), 0u);
+        if (cam_.traced) trace_camera(cam_, vis); // its tests count into the band's samples
+        DeviceHits<Exec> hits = gbuffer(vis);
+        scatter_light(segments_, n);
+        segments_ = DeviceBuffer<MediaSegment, Exec>();
+        const float share = 0.9f / float(bands);
+        report(0.1f + share * (float(band) + 0.1f));
+        for (int bounce = 0; bounce <= s_.trace_depth && hits.n > 0; ++bounce) {
+            hits = shade_wave(hits, bounce);
+            report(0.1f + share * (float(band) + 0.1f +
+                                   0.9f * float(bounce + 1) / float(s_.trace_depth + 1)));
+        }
+        hits = DeviceHits<Exec>();
+        resolve(row);
+        radiance_ = DeviceBuffer<Vec3, Exec>();
+        tests_ = DeviceBuffer<uint32_t, Exec>();
+        depth_ = DeviceBuffer<float, Exec>();
+        normal_ = DeviceBuffer<Vec3, Exec>();
+        albedo_ = DeviceBuffer<Vec3, Exec>();
+        object_ = DeviceBuffer<uint32_t, Exec>();
     }
 
     /// Host time of the frame's steps in order (cull units, photons, upload, tracer, primary,
@@ -159,24 +208,25 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     void limit_memory() {
         const int64_t available = available_memory_bytes();
         if (available <= 0) return; // unknown: no limit
-        const int64_t samples = int64_t(win_.count());
-        // What lives together at the primary stage: radiance, tests, depth, normal, albedo,
-        // object id, the visibility buffer and its slots, the hits (as if every sample hit);
-        // the frame's passes per pixel.
-        const int64_t per_sample = sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t) * 3 +
-                                   sizeof(uint64_t) + sizeof(SurfaceHit);
+        const int64_t samples = int64_t(region_win_.count());
+        const int64_t band = int64_t(band_rows_) * int64_t(region_win_.width);
+        // What lives together at a band's primary stage: the region's visibility keys; the
+        // band's radiance, tests, depth, normal, albedo, object id, slots and hits (as if
+        // every sample hit); the region's passes per pixel.
+        const int64_t per_band_sample =
+            sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t) * 3 + sizeof(SurfaceHit);
         const int64_t per_pixel = sizeof(float) * (4 + 1 + 3 + 3 + 1 + 1);
         const RenderSettings::Rect region = s_.region();
-        const int64_t fixed =
-            samples * per_sample + int64_t(region.width) * region.height * per_pixel;
+        const int64_t fixed = samples * int64_t(sizeof(uint64_t)) + band * per_band_sample +
+                              int64_t(region.width) * region.height * per_pixel;
         const int64_t usable = available / 10 * 9; // the rest for what is not counted
         if (fixed > usable)
             throw OutOfMemory("a " + std::to_string(region.width) + "x" +
-                              std::to_string(region.height) +
-                              " frame with " + std::to_string(s_.aa_samples) + "x" +
-                              std::to_string(s_.aa_samples) + " samples per pixel needs at least " +
-                              std::to_string(fixed >> 20) + " MiB; this machine has " +
-                              std::to_string(available >> 20) + " MiB available");
+                              std::to_string(region.height) + " frame with " +
+                              std::to_string(s_.aa_samples) + "x" + std::to_string(s_.aa_samples) +
+                              " samples per pixel needs at least " + std::to_string(fixed >> 20) +
+                              " MiB; this machine has " + std::to_string(available >> 20) +
+                              " MiB available");
         ex_.memory().set_limit(usable, available);
     }
 
@@ -214,19 +264,14 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
                    [=] SHEAF_HD_LAMBDA(size_t i) { vis[win.local(pixel[i])] = closest[i]; });
     }
 
-    // Primary visibility, resolved to surface hits and the primary passes: rasterised with the
-    // analytic objects merged in, or traced for the projections that need it.
-    DeviceHits<Exec> primary() {
-        const CameraFrame cam = make_camera_frame(host_.camera, W_, H_, s_.aa_samples);
+    // Primary visibility of the region (win_), for the projections a plane holds: rasterised,
+    // the analytic objects merged in, each sample's key in vis.
+    void rasterize_region(uint64_t* vis) {
+        const CameraFrame cam = cam_;
         const size_t samples = win_.count();
-        const int W = W_;
         const SampleWindow win = win_;
         const SceneView scene = scene_;
-        DeviceBuffer<uint64_t, Exec> vis_buf(ex_, samples);
-        uint64_t* vis = vis_buf.data();
-        if (cam.traced) {
-            trace_camera(cam, vis);
-        } else {
+        {
             clock_.start("raster");
             const size_t tris = host_.triangle_count();
             if constexpr (Exec::kHostMemory) {
@@ -285,8 +330,14 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
                 });
             clock_.stop("raster");
         }
-        st_.set("rays.primary", double(samples));
-
+    }
+    // The band's (win_) surface hits and primary passes from its visibility keys.
+    DeviceHits<Exec> gbuffer(const uint64_t* vis) {
+        const CameraFrame cam = cam_;
+        const size_t samples = win_.count();
+        const int W = W_;
+        const SampleWindow win = win_;
+        const SceneView scene = scene_;
         clock_.start("gbuffer");
         DeviceBuffer<uint32_t, Exec> slot_buf(ex_, samples);
         uint32_t* slot = slot_buf.data();
@@ -296,10 +347,12 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         DeviceHits<Exec> hits;
         hits.h = DeviceBuffer<SurfaceHit, Exec>(ex_, count);
         hits.n = hits.camera = count;
-        depth_ = DeviceBuffer<float, Exec>(ex_, samples);
-        normal_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
-        albedo_ = DeviceBuffer<Vec3, Exec>(ex_, samples);
-        object_ = DeviceBuffer<uint32_t, Exec>(ex_, samples);
+        // Only the passes the frame keeps.
+        auto kept = [&](PassBit bit) { return s_.keeps(bit) ? samples : size_t(0); };
+        depth_ = DeviceBuffer<float, Exec>(ex_, kept(kPassDepth));
+        normal_ = DeviceBuffer<Vec3, Exec>(ex_, kept(kPassNormal));
+        albedo_ = DeviceBuffer<Vec3, Exec>(ex_, kept(kPassAlbedo));
+        object_ = DeviceBuffer<uint32_t, Exec>(ex_, kept(kPassObjectId));
         SurfaceHit* out = hits.h.data();
         Vec3* radiance = radiance_.data();
         float* depth = depth_.data();
@@ -311,10 +364,10 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         ex_.launch("gbuffer.resolve", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
             const PrimarySample ps = primary_sample(scene, cam, W, win.global(i), vis[i]);
             radiance[i] = ps.radiance;
-            depth[i] = ps.depth;
-            normal[i] = ps.normal;
-            albedo[i] = ps.albedo;
-            object[i] = ps.object;
+            if (depth) depth[i] = ps.depth;
+            if (normal) normal[i] = ps.normal;
+            if (albedo) albedo[i] = ps.albedo;
+            if (object) object[i] = ps.object;
             if (segment) segment[i] = ps.segment;
             if (ps.hit) out[slot[i]] = ps.h;
         });
@@ -333,27 +386,31 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         Vec3* radiance = radiance_.data();
         const SampleWindow win = win_;
 
-        DeviceBatch<Exec> shadow = shadow_rays(hits);
-        DeviceBatch<Exec> ao(ex_, RayType::Ao, 0);
-        if (trace_ao) ao = ao_rays(hits);
         {
-            // Terms that need no ray: emission, ambient (unless AO traces it), shadowless lights.
-            clock_.start("shading");
-            accumulate_in_order(
-                ex_, n, radiance,
-                [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return win.local(h[i].pixel); },
-                [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
-                    v = unshadowed_terms(scene, h[i], trace_ao, params);
-                    return true;
-                });
-            clock_.stop("shading");
-        }
-        DeviceTraceResult<Exec> r;
-        tracer_->trace(shadow, r);
-        add_unoccluded(shadow, r);
-        if (trace_ao) {
-            tracer_->trace(ao, r);
-            add_unoccluded(ao, r);
+            // Shadow and AO rays, freed before the bounce rays are made.
+            DeviceBatch<Exec> shadow = shadow_rays(hits);
+            DeviceBatch<Exec> ao(ex_, RayType::Ao, 0);
+            if (trace_ao) ao = ao_rays(hits);
+            {
+                // Terms that need no ray: emission, ambient (unless AO traces it), shadowless
+                // lights.
+                clock_.start("shading");
+                accumulate_in_order(
+                    ex_, n, radiance,
+                    [=] SHEAF_HD_LAMBDA(size_t i) -> uint32_t { return win.local(h[i].pixel); },
+                    [=] SHEAF_HD_LAMBDA(size_t i, Vec3 & v) -> bool {
+                        v = unshadowed_terms(scene, h[i], trace_ao, params);
+                        return true;
+                    });
+                clock_.stop("shading");
+            }
+            DeviceTraceResult<Exec> r;
+            tracer_->trace(shadow, r);
+            add_unoccluded(shadow, r);
+            if (trace_ao) {
+                tracer_->trace(ao, r);
+                add_unoccluded(ao, r);
+            }
         }
         if (bounce >= s_.trace_depth) return DeviceHits<Exec>();
 
@@ -592,39 +649,67 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         scatter_light(segments, b.n);
     }
 
-    // Box filter of the aa x aa samples of each pixel; passes from the centre sample; the
-    // results come back to the host.
-    void resolve() {
-        clock_.start("shading");
-        // The region's pixels from the region's samples (the whole frame by default).
+    // The region's kept passes, one element a pixel (output.passes): on host memory the
+    // frame's own arrays, which the bands resolve into; on a device buffers read back at the
+    // end.
+    void allocate_pixels() {
         const RenderSettings::Rect region = s_.region();
-        const int aa = s_.aa_samples, w = region.width, h = region.height, W = win_.width;
-        const float gamma = scene_.working_gamma;
-        const size_t pixels = size_t(w) * h;
-        // Only the passes the frame keeps (output.passes) are resolved and read back.
+        const size_t pixels = size_t(region.width) * size_t(region.height);
         auto kept = [&](PassBit bit, size_t n) { return s_.keeps(bit) ? n : size_t(0); };
-        DeviceBuffer<float, Exec> rgba(ex_, kept(kPassCombined, 4 * pixels)),
-            depth(ex_, kept(kPassDepth, pixels));
-        DeviceBuffer<Vec3, Exec> normal(ex_, kept(kPassNormal, pixels)),
-            albedo(ex_, kept(kPassAlbedo, pixels));
-        DeviceBuffer<uint32_t, Exec> object(ex_, kept(kPassObjectId, pixels)),
-            tests(ex_, kept(kPassTests, pixels));
-        const SampleBuffers in{radiance_.data(), tests_.data(),  depth_.data(),
-                               normal_.data(),   albedo_.data(), object_.data()};
-        const PixelBuffers out{rgba.data(),   depth.data(),  normal.data(),
-                               albedo.data(), object.data(), tests.data()};
-        ex_.launch("resolve", pixels,
-                   [=] SHEAF_HD_LAMBDA(size_t p) { resolve_pixel(p, w, aa, W, gamma, in, out); });
-        f_.width = w, f_.height = h;
+        f_.width = region.width, f_.height = region.height;
         f_.x = region.x, f_.y = region.y;
         f_.full_width = s_.width, f_.full_height = s_.height;
-        f_.rgba = rgba.download();
-        f_.depth = depth.download();
-        f_.normal = normal.download();
-        f_.albedo = albedo.download();
-        f_.object_id = object.download();
-        f_.tests = tests.download();
+        if constexpr (Exec::kHostMemory) {
+            f_.rgba = host_vector<float>(kept(kPassCombined, 4 * pixels));
+            f_.depth = host_vector<float>(kept(kPassDepth, pixels));
+            f_.normal = host_vector<Vec3>(kept(kPassNormal, pixels));
+            f_.albedo = host_vector<Vec3>(kept(kPassAlbedo, pixels));
+            f_.object_id = host_vector<uint32_t>(kept(kPassObjectId, pixels));
+            f_.tests = host_vector<uint32_t>(kept(kPassTests, pixels));
+            pixels_ = {f_.rgba.data(),   f_.depth.data(),     f_.normal.data(),
+                       f_.albedo.data(), f_.object_id.data(), f_.tests.data()};
+        } else {
+            rgba_ = DeviceBuffer<float, Exec>(ex_, kept(kPassCombined, 4 * pixels));
+            depth_pixels_ = DeviceBuffer<float, Exec>(ex_, kept(kPassDepth, pixels));
+            normal_pixels_ = DeviceBuffer<Vec3, Exec>(ex_, kept(kPassNormal, pixels));
+            albedo_pixels_ = DeviceBuffer<Vec3, Exec>(ex_, kept(kPassAlbedo, pixels));
+            object_pixels_ = DeviceBuffer<uint32_t, Exec>(ex_, kept(kPassObjectId, pixels));
+            tests_pixels_ = DeviceBuffer<uint32_t, Exec>(ex_, kept(kPassTests, pixels));
+            pixels_ = {rgba_.data(),          depth_pixels_.data(),  normal_pixels_.data(),
+                       albedo_pixels_.data(), object_pixels_.data(), tests_pixels_.data()};
+        }
+    }
+
+    // Box filter of the aa x aa samples of each pixel of the band (win_, from sample row `row`
+    // of the region); passes from the centre sample.
+    void resolve(int row) {
+        clock_.start("shading");
+        const int aa = s_.aa_samples, w = win_.width / aa, W = win_.width;
+        const float gamma = scene_.working_gamma;
+        const size_t first = size_t(row / aa) * size_t(w); // the band's first pixel
+        const size_t pixels = size_t(w) * size_t(win_.height / aa);
+        const SampleBuffers in{radiance_.data(), tests_.data(),  depth_.data(),
+                               normal_.data(),   albedo_.data(), object_.data()};
+        auto at = [first](auto* p, size_t per) { return p ? p + first * per : p; };
+        const PixelBuffers out{at(pixels_.rgba, 4),   at(pixels_.depth, 1),  at(pixels_.normal, 1),
+                               at(pixels_.albedo, 1), at(pixels_.object, 1), at(pixels_.tests, 1)};
+        ex_.launch("resolve", pixels,
+                   [=] SHEAF_HD_LAMBDA(size_t p) { resolve_pixel(p, w, aa, W, gamma, in, out); });
         clock_.stop("shading");
+    }
+
+    // A device's passes, read back to the frame.
+    void download_pixels() {
+        if constexpr (!Exec::kHostMemory) {
+            clock_.start("shading");
+            f_.rgba = rgba_.download();
+            f_.depth = depth_pixels_.download();
+            f_.normal = normal_pixels_.download();
+            f_.albedo = albedo_pixels_.download();
+            f_.object_id = object_pixels_.download();
+            f_.tests = tests_pixels_.download();
+            clock_.stop("shading");
+        }
     }
 
   private:
@@ -639,8 +724,15 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     SceneView scene_;
     Tracer* tracer_ = nullptr;
     RayGenParams params_;
-    int W_ = 0, H_ = 0; // the whole frame's sample grid
-    SampleWindow win_;  // the region's part of it, which the per-sample buffers hold
+    int W_ = 0, H_ = 0;       // the whole frame's sample grid
+    SampleWindow region_win_; // the region's part of it
+    SampleWindow win_;        // the band of the region the per-sample buffers hold
+    int band_rows_ = 0;       // sample rows of a band (the last may have fewer)
+    CameraFrame cam_;
+    PixelBuffers pixels_{};                         // the region's kept passes
+    DeviceBuffer<float, Exec> rgba_, depth_pixels_; // a device's passes, until read back
+    DeviceBuffer<Vec3, Exec> normal_pixels_, albedo_pixels_;
+    DeviceBuffer<uint32_t, Exec> object_pixels_, tests_pixels_;
     DeviceBuffer<Vec3, Exec> radiance_;
     DeviceBuffer<uint32_t, Exec> tests_;
     DeviceBuffer<float, Exec> depth_;

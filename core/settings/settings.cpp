@@ -221,6 +221,17 @@ const std::vector<SettingSpec>& setting_specs() {
          {"half", "float"},
          "OpenEXR colour channels as half or full float (depth, ids and test counts are always "
          "float)"},
+        {"band.samples",
+         K::Int,
+         "0",
+         0,
+         1 << 30,
+         {},
+         "camera samples shaded at once: the frame is shaded in bands of whole pixel rows of "
+         "about this many samples, which bounds its memory (the same picture whatever the "
+         "size); 0 sizes it to the backend: 16384 on the CPU under bvh, strips and brute, the "
+         "whole frame on a GPU and under a ray hierarchy (rah, crsh, ...), whose figures count "
+         "a frame's rays at once"},
         {"traversal.batch",
          K::Int,
          "0",
@@ -427,8 +438,8 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.hierarchy_depth = i("hierarchy.depth");
     r.hierarchy_arity = i("hierarchy.arity");
     const std::string hash = choice("hash.mode");
-    r.hash = hash == "none"      ? HashMode::None
-             : hash == "hash32"  ? HashMode::Hash32
+    r.hash = hash == "none"       ? HashMode::None
+             : hash == "hash32"   ? HashMode::Hash32
              : hash == "hash192"  ? HashMode::Hash192
              : hash == "static1d" ? HashMode::Static1d
              : hash == "static3d" ? HashMode::Static3d
@@ -451,13 +462,15 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.region_height = i("region.height");
     const Rect g = r.region();
     if (g.width <= 0 || g.x + g.width > r.width)
-        throw SettingsError("region.x=" + v.at("region.x") + ", region.width=" +
-                            v.at("region.width") + ": the region's columns must lie within width=" +
-                            v.at("width") + " (columns 0.." + std::to_string(r.width - 1) + ")");
+        throw SettingsError("region.x=" + v.at("region.x") +
+                            ", region.width=" + v.at("region.width") +
+                            ": the region's columns must lie within width=" + v.at("width") +
+                            " (columns 0.." + std::to_string(r.width - 1) + ")");
     if (g.height <= 0 || g.y + g.height > r.height)
-        throw SettingsError("region.y=" + v.at("region.y") + ", region.height=" +
-                            v.at("region.height") + ": the region's rows must lie within height=" +
-                            v.at("height") + " (rows 0.." + std::to_string(r.height - 1) + ")");
+        throw SettingsError("region.y=" + v.at("region.y") +
+                            ", region.height=" + v.at("region.height") +
+                            ": the region's rows must lie within height=" + v.at("height") +
+                            " (rows 0.." + std::to_string(r.height - 1) + ")");
     r.aa_samples = i("aa.samples");
     r.threads = i("threads");
     r.ao_samples = i("ao.samples");
@@ -466,8 +479,14 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.radiosity_depth = i("radiosity.depth");
     r.radiosity_brightness = f("radiosity.brightness");
     r.batch_pairs = std::stoll(v.at("traversal.batch"));
+    r.band_samples = std::stoll(v.at("band.samples"));
     r.passes = subset_bits(spec_or_throw("output.passes"), v.at("output.passes"));
     return r;
+}
+
+size_t RenderSettings::band_or(bool host_memory, size_t frame_samples) const {
+    if (band_samples > 0) return size_t(band_samples);
+    return host_memory && !uses_ray_hierarchy(accel) ? kCpuBandSamples : frame_samples;
 }
 
 size_t device_batch_pairs(uint64_t device_bytes) {

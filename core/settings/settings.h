@@ -125,13 +125,18 @@ struct RenderSettings {
     int radiosity_samples = 0; // gather rays per camera-path point; 0: no radiosity
     int radiosity_depth = 2;   // diffuse bounces of a gathered path
     float radiosity_brightness = 1.0f;
-    long long batch_pairs = 0;       // candidate pairs held at once per level; 0: the backend's
-    uint32_t passes = kAllPasses;    // PassBit: the passes the frame keeps
+    long long batch_pairs = 0;    // candidate pairs held at once per level; 0: the backend's
+    long long band_samples = 0;   // camera samples shaded at once; 0: band_or()
+    uint32_t passes = kAllPasses; // PassBit: the passes the frame keeps
     bool keeps(PassBit pass) const { return (passes & pass) != 0; }
     /// traversal.batch, or `auto_pairs` when it is 0 (the backend's choice).
     size_t batch_or(size_t auto_pairs) const {
         return batch_pairs > 0 ? size_t(batch_pairs) : auto_pairs;
     }
+    /// band.samples, or the choice for band.samples = 0: kCpuBandSamples where the exec holds
+    /// host memory and every ray is traced on its own (a band's rays then meet the same
+    /// tests as the frame's), else the whole frame (`frame_samples`).
+    size_t band_or(bool host_memory, size_t frame_samples) const;
 
     /// Explicit values win over the scene's, which win over the defaults.
     static RenderSettings resolve(const Settings& explicit_settings,
@@ -145,6 +150,9 @@ struct RenderSettings {
 /// The deepest ray hierarchy (hierarchy.depth).
 constexpr int kMaxHierarchyDepth = 8;
 
+/// band.samples = 0 on the CPU under a per-ray accel: about 64 rows of 256 pixels at once,
+/// some 8 MiB of a frame's buffers on a scene with two lights and mirrors.
+constexpr size_t kCpuBandSamples = size_t(1) << 14;
 /// traversal.batch = 0 on the CPU: 4M candidate pairs a level holds at once.
 constexpr size_t kCpuBatchPairs = size_t(1) << 22;
 /// traversal.batch = 0 on a device of `device_bytes` memory: 1/1024 of it, rounded down to a

@@ -3,14 +3,16 @@
 
 #include "progress.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <unistd.h>
 #include <fstream>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace render {
@@ -125,10 +127,29 @@ int apply_region(SheafRenderer renderer, SheafScene scene, const RegionRequest& 
     } catch (const RegionError& e) {
         return error(kUsage, e.what());
     }
-    const std::pair<const char*, int> values[] = {
-        {"region.x", p.x}, {"region.y", p.y}, {"region.width", p.width}, {"region.height", p.height}};
+    const std::pair<const char*, int> values[] = {{"region.x", p.x},
+                                                  {"region.y", p.y},
+                                                  {"region.width", p.width},
+                                                  {"region.height", p.height}};
     for (const auto& [key, value] : values)
-        if (sheafRendererSetInt(renderer, key, value) != SHEAF_OK) return error(kUsage, last_error());
+        if (sheafRendererSetInt(renderer, key, value) != SHEAF_OK)
+            return error(kUsage, last_error());
+    return kOk;
+}
+
+int keep_written_passes(SheafRenderer renderer, SheafScene scene, const std::string& output) {
+    // An OpenEXR file holds every pass; the other formats hold the picture alone, so the frame
+    // need not keep the rest (output.passes at its default: all).
+    std::string ext = output.substr(std::min(output.size(), output.rfind('.') + 1));
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == "exr") return kOk;
+    char passes[256] = "";
+    if (sheafRendererGetEffective(renderer, scene, "output.passes", passes, sizeof passes,
+                                  nullptr) != SHEAF_OK)
+        return error(kScene, last_error());
+    if (std::string(passes) != "all") return kOk; // as the scene or the user asked
+    if (sheafRendererSetString(renderer, "output.passes", "combined") != SHEAF_OK)
+        return error(kRender, last_error());
     return kOk;
 }
 
@@ -179,6 +200,7 @@ int run_single(const Options& o) {
         const double scene_ms = ms_since(load_start);
 
         if (int rc = apply_region(raw_renderer, raw_scene, o.region)) return rc;
+        if (int rc = keep_written_passes(raw_renderer, raw_scene, o.output)) return rc;
         std::string label = scene_label(o.scene);
         if (f) label += " frame " + std::to_string(*f);
         progress.start_run(raw_renderer, int(i), label);

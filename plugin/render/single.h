@@ -15,6 +15,9 @@ int run_check(const Options& o);
 /// Sets the renderer's region.* to the part `region` names of the frame `scene` renders at
 /// (its effective width and height); nothing when it names none. Returns an exit code.
 int apply_region(SheafRenderer renderer, SheafScene scene, const RegionRequest& region);
+/// output.passes=combined when it is at its default and `output` is not OpenEXR (the only
+/// format that holds the other passes): the frame keeps only what is written.
+int keep_written_passes(SheafRenderer renderer, SheafScene scene, const std::string& output);
 
 /// FILE.EXT with the frame number before the extension, zero-padded to the digits of `last`,
 /// as POV-Ray names an animation's images (render.png, frame 3 of 1..12: render03.png).

@@ -113,9 +113,8 @@ inline Scene csg_scene() {
     mirror.mirror = 0.7f, mirror.color = Vec3(0.9f);
     mirror.irid = 0.4f, mirror.irid_thickness = 0.5f;
     floor.color = Vec3(0.7f);
-    const uint32_t mr = s.add_material(red), mb = s.add_material(blue),
-                   mg = s.add_material(glass), mm = s.add_material(mirror),
-                   mf = s.add_material(floor);
+    const uint32_t mr = s.add_material(red), mb = s.add_material(blue), mg = s.add_material(glass),
+                   mm = s.add_material(mirror), mf = s.add_material(floor);
     s.add_shape("floor", Shape{ShapeKind::Plane}, mf,
                 Affine::translate(Vec3(0, -1, 0)) * Affine::rotate(Vec3(1, 0, 0), -kPi / 2));
     ShapeObject o;
@@ -150,8 +149,8 @@ inline Scene csg_scene() {
     clipped.nodes[2].shape = {ShapeKind::Box}, clipped.nodes[2].material = mb,
     clipped.nodes[2].inverse = true,
     clipped.nodes[2].transform = Affine::translate(Vec3(0.5f, 0, 0.5f)) * Affine::scale(Vec3(0.4f));
-    clipped.transform = Affine::translate(Vec3(0, -1, -1.5f)) * Affine::rotate(Vec3(1, 0, 0), -kPi / 2) *
-                        Affine::scale(Vec3(1, 1, 1.5f));
+    clipped.transform = Affine::translate(Vec3(0, -1, -1.5f)) *
+                        Affine::rotate(Vec3(1, 0, 0), -kPi / 2) * Affine::scale(Vec3(1, 1, 1.5f));
     s.add_shape_object(clipped);
     s.add_shape("disc", Shape{ShapeKind::Disc, 0.3f}, mb,
                 Affine::translate(Vec3(2.5f, 0, -1.5f)) * Affine::rotate(Vec3(0, 1, 0), 0.7f));
@@ -458,13 +457,13 @@ inline Scene rainbow_scene() {
 inline Scene procedural_scene() {
     Scene s;
     Material floor;
-    floor.pigment = add_pigment(
-        s, PatternKind::Checker, {pigment_entry(0, Vec3(0.9f)), pigment_entry(0, Vec3(0.2f))}, 0.5f);
+    floor.pigment = add_pigment(s, PatternKind::Checker,
+                                {pigment_entry(0, Vec3(0.9f)), pigment_entry(0, Vec3(0.2f))}, 0.5f);
     floor.mirror = 0.5f, floor.mirror_min = 0.05f, floor.mirror_falloff = 2;
     Material marble;
-    marble.pigment = add_pigment(s, PatternKind::Marble,
-                                 {pigment_entry(0, Vec3(0.9f, 0.8f, 0.7f)),
-                                  pigment_entry(1, Vec3(0.2f, 0.1f, 0.1f))});
+    marble.pigment = add_pigment(
+        s, PatternKind::Marble,
+        {pigment_entry(0, Vec3(0.9f, 0.8f, 0.7f)), pigment_entry(1, Vec3(0.2f, 0.1f, 0.1f))});
     s.pigments.back().pattern.has_turbulence = true;
     s.pigments.back().pattern.turbulence = Vec3(0.3f);
     s.pigments.back().pattern.wave = Wave::Sine;
@@ -478,23 +477,21 @@ inline Scene procedural_scene() {
     marble.blinn = 0.5f, marble.blinn_exponent = 30, marble.metallic = 0.5f;
     marble.mirror = 0.3f, marble.mirror_metallic = true, marble.conserve_energy = true;
     Material glass;
-    glass.pigment = add_pigment(s, PatternKind::Gradient,
-                                {pigment_entry(0, Vec3(1), 0, 0.9f),
-                                 pigment_entry(1, Vec3(0.8f, 1, 0.8f), 0.3f, 0.3f)});
+    glass.pigment = add_pigment(
+        s, PatternKind::Gradient,
+        {pigment_entry(0, Vec3(1), 0, 0.9f), pigment_entry(1, Vec3(0.8f, 1, 0.8f), 0.3f, 0.3f)});
     // Clearer where it faces up (a slope pattern, also seen by shadow rays crossing it).
     set_slope(s.pigments[size_t(glass.pigment)].pattern, Vec3(0, 1, 0), 0, 0, Vec3(0.0f), 0, 0,
               false);
     glass.ior = 1.5f, glass.fresnel_split = false, glass.mirror = 1, glass.mirror_min = 0,
     glass.mirror_fresnel = true, glass.fade_distance = 1, glass.fade_power = 2;
     Material layered;
-    const int32_t spots = add_pigment(s, PatternKind::Crackle,
-                                      {pigment_entry(0, Vec3(0.1f, 0.1f, 0.4f)),
-                                       pigment_entry(0.3f, Vec3(1.0f), 0, 1.0f)},
-                                      0.3f);
-    const int32_t base = add_pigment(s, PatternKind::Wood,
-                                     {pigment_entry(0, Vec3(0.6f, 0.4f, 0.2f)),
-                                      pigment_entry(1, Vec3(0.3f, 0.2f, 0.1f))},
-                                     0.2f);
+    const int32_t spots = add_pigment(
+        s, PatternKind::Crackle,
+        {pigment_entry(0, Vec3(0.1f, 0.1f, 0.4f)), pigment_entry(0.3f, Vec3(1.0f), 0, 1.0f)}, 0.3f);
+    const int32_t base = add_pigment(
+        s, PatternKind::Wood,
+        {pigment_entry(0, Vec3(0.6f, 0.4f, 0.2f)), pigment_entry(1, Vec3(0.3f, 0.2f, 0.1f))}, 0.2f);
     Pigment layers;
     layers.solid = false, layers.layers = true;
     layers.first = uint32_t(s.pigment_entries.size()), layers.count = 2;
@@ -541,8 +538,9 @@ inline Scene procedural_scene() {
     const uint32_t box =
         s.add_mesh_object("picked", make_box(Vec3(-0.5f, -1, -2), Vec3(0.5f, 0, -1.5f)), mp);
     s.objects[box].flags = kNoShadow;
-    const uint32_t ghost = s.add_shape("ghost", Shape{ShapeKind::Sphere}, ma,
-                                       Affine::translate(Vec3(0, 2, -1)) * Affine::scale(Vec3(0.5f)));
+    const uint32_t ghost =
+        s.add_shape("ghost", Shape{ShapeKind::Sphere}, ma,
+                    Affine::translate(Vec3(0, 2, -1)) * Affine::scale(Vec3(0.5f)));
     s.shape_objects[ghost].flags = kNoImage | kNoReflection;
     s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
     s.camera.position = Vec3(0, 1.5f, 5);
@@ -616,8 +614,7 @@ inline void expect_same_frame(const Frame& a, const Frame& b, const std::string&
     EXPECT_TRUE(same(a.object_id, b.object_id)) << what << ": object ids differ";
     EXPECT_TRUE(same(a.tests, b.tests)) << what << ": per-pixel tests differ";
     auto measured = [&](const std::string& k) {
-        if (k.rfind("time_ms.", 0) == 0 || k.rfind("memory.", 0) == 0 ||
-            k.rfind("device.", 0) == 0)
+        if (k.rfind("time_ms.", 0) == 0 || k.rfind("memory.", 0) == 0 || k.rfind("device.", 0) == 0)
             return true;
         for (const std::string& i : ignore)
             if (k == i) return true;
@@ -628,6 +625,9 @@ inline void expect_same_frame(const Frame& a, const Frame& b, const std::string&
         if (!measured(e.first)) ka.push_back(e);
     for (const auto& e : b.stats.entries())
         if (!measured(e.first)) kb.push_back(e);
+    // By key: a key first counted in a later band (band.samples) comes later in the list.
+    std::sort(ka.begin(), ka.end());
+    std::sort(kb.begin(), kb.end());
     EXPECT_EQ(ka.size(), kb.size()) << what << ": statistics keys differ";
     for (size_t i = 0; i < ka.size() && i < kb.size(); ++i) {
         EXPECT_EQ(ka[i].first, kb[i].first) << what << ": statistic " << i;

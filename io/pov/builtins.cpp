@@ -54,10 +54,27 @@ Vec3 rotate_xyz(Vec3 v, Vec3 deg) {
 
 } // namespace
 
+Parser::Word Parser::word(const Token& t) {
+    auto classify = [&] {
+        static const std::set<std::string> colours = {
+            "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf", "srgbt", "srgbft", "color", "colour"};
+        if (colours.count(t.text)) return Word::Colour;
+        if (is_float_builtin(t.text)) return Word::MathBuiltin;
+        if (names().count(t.text)) return Word::Builtin;
+        return Word::Other;
+    };
+    const uint32_t id = name_of(t);
+    if (id == Scopes::kNoName) return classify();
+    if (id >= words_.size()) words_.resize(size_t(id) + 1, Word::Unknown);
+    if (words_[id] == Word::Unknown) words_[id] = classify();
+    return words_[id];
+}
+
 bool Parser::builtin_call(const Token& t, Value& out) {
     const std::string& n = t.text;
-    const bool math = is_float_builtin(n);
-    if (!math && !names().count(n)) return false;
+    const Word w = word(t);
+    const bool math = w == Word::MathBuiltin;
+    if (!math && w != Word::Builtin) return false;
     advance();
     if (n == "now") {
         out = Value::number(0);
@@ -69,9 +86,9 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         const Token id = raw();
         if (id.kind != TokKind::Ident) error_expected(id, "an identifier");
         advance();
-        bool d = lookup(id.text) != nullptr || find_macro(id.text) != nullptr;
+        bool d = lookup(id) != nullptr || find_macro(id.text) != nullptr;
         if (is_sym_tok(raw(), "[")) { // defined(A[i])
-            const Value* a = lookup(id.text);
+            const Value* a = lookup(id);
             if (!a) error_at(id, "'" + id.text + "' is not declared");
             Value probe = *a;
             const ArrayValue& arr = a->as<ArrayValue>();
@@ -89,11 +106,11 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         return true;
     }
     std::vector<Value> args;
-    std::vector<Token> at;
-    Token normal_var; // trace's fourth argument: the variable its normal is put in
+    std::vector<const Token*> at; // where each argument starts (tokens of files the reader holds)
+    Token normal_var;             // trace's fourth argument: the variable its normal is put in
     if (!accept_sym(")")) {
         for (;;) {
-            at.push_back(peek());
+            at.push_back(&peek());
             if (n == "trace" && at.size() == 4) {
                 normal_var = peek();
                 if (normal_var.kind != TokKind::Ident)
@@ -114,23 +131,23 @@ bool Parser::builtin_call(const Token& t, Value& out) {
                             std::to_string(args.size()));
     };
     auto num = [&](size_t i) {
-        if (args[i].type != VType::Float) error_expected(at[i], "a float");
+        if (args[i].type != VType::Float) error_expected(*at[i], "a float");
         return args[i].v[0];
     };
     auto vec = [&](size_t i) {
         const Value& v = args[i];
-        if (!v.numeric()) error_expected(at[i], "a vector");
+        if (!v.numeric()) error_expected(*at[i], "a vector");
         if (v.type == VType::Float) return Vec3(float(v.v[0]));
         return Vec3(float(v.v[0]), float(v.v[1]), float(v.dim > 2 ? v.v[2] : 0));
     };
     auto str = [&](size_t i) -> const std::string& {
-        if (args[i].type != VType::String) error_expected(at[i], "a string");
+        if (args[i].type != VType::String) error_expected(*at[i], "a string");
         return args[i].str;
     };
     auto vout = [](Vec3 v) { return Value::vec3(v.x, v.y, v.z); };
     auto set_normal = [&](Vec3 v) { // as #declare, or into the local of that name
         if (normal_var.kind != TokKind::Ident) return;
-        if (Value* existing = lookup_mut(normal_var.text))
+        if (Value* existing = lookup_mut(normal_var))
             *existing = vout(v);
         else
             declare(normal_var.text, vout(v), false);
@@ -166,7 +183,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         // POV-Ray's DTurbulence, its omega and lambda in single precision as POV-Ray keeps them.
         const int octaves = std::isfinite(num(2)) ? int(std::clamp(num(2), 1.0, 10.0)) : 6;
         const Value& p = args[3];
-        if (!p.numeric()) error_expected(at[3], "a vector");
+        if (!p.numeric()) error_expected(*at[3], "a vector");
         const DVec3 q = p.type == VType::Float ? DVec3(p.v[0], p.v[0], p.v[0])
                                                : DVec3(p.v[0], p.v[1], p.dim > 2 ? p.v[2] : 0);
         const DVec3 t = pov_dturbulence(q, octaves, double(float(num(1))), double(float(num(0))));
@@ -241,13 +258,13 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         need(1);
         const double s = num(0);
         if (s < 0 || size_t(s) >= rand_streams_.size())
-            error_at(at[0], "rand of a stream that seed() did not make");
+            error_at(*at[0], "rand of a stream that seed() did not make");
         // POV-Ray's generator: the classic 32-bit step, the state over 2^32 - 1.
         uint32_t& x = rand_streams_[size_t(s)];
         x = x * 1812433253u + 12345u;
         out = Value::number(double(x) / 4294967295.0);
     } else if (n == "dimension_size" || n == "dimensions") {
-        if (args.empty() || args[0].type != VType::Array) error_expected(at[0], "an array");
+        if (args.empty() || args[0].type != VType::Array) error_expected(*at[0], "an array");
         const ArrayValue& a = args[0].as<ArrayValue>();
         if (n == "dimensions") {
             out = Value::number(double(a.sizes.size()));
@@ -270,7 +287,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         if (args[0].type == VType::Object)
             object_extent(args[0].as<PovObject>(), lo, hi);
         else if (!(args[0].type == VType::Other && args[0].str == "object"))
-            error_expected(at[0], "an object identifier");
+            error_expected(*at[0], "an object identifier");
         const Vec3 v = n == "min_extent" ? lo : hi;
         out = Value::vec3(v.x, v.y, v.z);
     } else if (n == "trace" || n == "inside") {
@@ -285,7 +302,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
             set_normal(Vec3(0.0f));
             return true;
         }
-        if (args[0].type != VType::Object) error_expected(at[0], "an object identifier");
+        if (args[0].type != VType::Object) error_expected(*at[0], "an object identifier");
         const ObjectProbe& q = probe(args[0], t);
         if (n == "inside") {
             out = Value::number(probe_inside(q, vec(1)) ? 1 : 0);

@@ -536,7 +536,7 @@ void Parser::parse_rainbow(const Token& kw) {
 
 Value Parser::parse_rvalue() {
     const Token t = peek();
-    if (t.kind == TokKind::Ident && !lookup(t.text)) {
+    if (t.kind == TokKind::Ident && !lookup(t)) {
         const std::string& k = t.text;
         if (is_object_start(t)) {
             PovObject o;

@@ -154,7 +154,7 @@ bool Parser::directive(bool continuation) {
         const std::string id = expect_ident("a file identifier");
         Value* v = lookup_mut(id);
         if (v && v->type == VType::File) {
-            for (auto& scope : scopes_) scope.erase(id);
+            scopes_.erase_everywhere(scopes_.find(id));
         }
     } else {
         error_expected(name, "a directive");
@@ -221,7 +221,8 @@ void Parser::declare_directive(bool local) {
         throw;
     }
     if (!captures_.back().empty())
-        v.pending = std::make_shared<const std::vector<PendingWarning>>(std::move(captures_.back()));
+        v.pending =
+            std::make_shared<const std::vector<PendingWarning>>(std::move(captures_.back()));
     captures_.pop_back();
     if (is_sym_tok(peek_cont(), ";")) advance();
     if (v.type == VType::Array) { // arrays are copied on assignment
@@ -240,7 +241,7 @@ void Parser::declare_directive(bool local) {
             declare(name.text, std::move(v), false);
         return;
     }
-    Value* arr = lookup_mut(name.text);
+    Value* arr = lookup_mut(name);
     if (!arr || arr->type != VType::Array) error_at(name, "'" + name.text + "' is not an array");
     ArrayValue& a = arr->as<ArrayValue>();
     if (index.size() != a.sizes.size())
@@ -260,8 +261,7 @@ void Parser::undef_directive() {
     const Token name = raw();
     if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
     advance();
-    for (size_t i = scopes_.size(); i-- > 0;)
-        if (scopes_[i].erase(name.text)) return;
+    if (scopes_.erase_innermost(name_of(name))) return;
     macros_.erase(name.text);
 }
 
@@ -271,9 +271,9 @@ void Parser::ifdef_directive(bool want_defined) {
     const Token name = raw();
     if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
     advance();
-    bool defined = lookup(name.text) != nullptr || find_macro(name.text) != nullptr;
+    bool defined = lookup(name) != nullptr || find_macro(name.text) != nullptr;
     if (defined && is_sym_tok(raw(), "[")) { // an array element
-        const Value* a = lookup(name.text);
+        const Value* a = lookup(name);
         std::vector<size_t> index;
         while (accept_sym("[")) {
             index.push_back(size_t(std::max(0.0, parse_float())));
@@ -324,9 +324,12 @@ Token Parser::next_directive_in_block(const Token& from, const char* missing_end
         advance();
         if (!is_sym_tok(t, "#")) continue;
         const Token d = raw();
-        if (opens_block(d.text)) ++depth;
-        else if (d.text == "end" && depth > 0) --depth;
-        else if (depth == 0) return d;
+        if (opens_block(d.text))
+            ++depth;
+        else if (d.text == "end" && depth > 0)
+            --depth;
+        else if (depth == 0)
+            return d;
     }
 }
 

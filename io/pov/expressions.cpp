@@ -60,14 +60,14 @@ Value Parser::parse_expr() {
 }
 
 double Parser::parse_float() {
-    const Token t = peek();
+    const Token& t = peek();
     const Value v = parse_expr();
     if (v.type != VType::Float) error_expected(t, std::string("a float, not ") + type_name(v.type));
     return v.v[0];
 }
 
 Vec3 Parser::parse_vector() {
-    const Token t = peek();
+    const Token& t = peek();
     const Value v = parse_expr();
     if (v.type == VType::Float) return Vec3(float(v.v[0]));
     if (!v.numeric()) error_expected(t, std::string("a vector, not ") + type_name(v.type));
@@ -75,7 +75,7 @@ Vec3 Parser::parse_vector() {
 }
 
 std::string Parser::parse_string() {
-    const Token t = peek();
+    const Token& t = peek();
     const Value v = parse_expr();
     if (v.type != VType::String) error_expected(t, "a string");
     return v.str;
@@ -88,14 +88,14 @@ bool Parser::parse_bool_opt(bool dflt) {
         is_kw_tok(t, "no") || is_sym_tok(t, "(") || is_sym_tok(t, "!"))
         return truth(parse_expr());
     if (t.kind == TokKind::Ident) {
-        const Value* v = lookup(t.text);
+        const Value* v = lookup(t);
         if (v && v->type == VType::Float) return truth(parse_expr());
     }
     return dflt;
 }
 
 Color5 Parser::parse_color() {
-    const Token t = peek();
+    const Token& t = peek();
     Color5 c{0, 0, 0, 0, 0};
     const bool keyword = is_kw_tok(t, "color") || is_kw_tok(t, "colour");
     if (keyword) advance();
@@ -205,36 +205,36 @@ Value Parser::parse_and() {
 Value Parser::parse_compare() {
     Value a = parse_additive();
     for (;;) {
-        const Token t = peek_cont();
+        const Token& t = peek_cont();
         if (t.kind != TokKind::Symbol) return a;
         const std::string& o = t.text;
-        if (!((o == "<" && no_lt_ == 0) || o == "<=" || o == "=" || o == "!=" || o == ">=" ||
-              (o == ">" && no_gt_ == 0)))
+        if (!((same_text(o, "<") && no_lt_ == 0) || same_text(o, "<=") || same_text(o, "=") ||
+              same_text(o, "!=") || same_text(o, ">=") || (same_text(o, ">") && no_gt_ == 0)))
             return a;
         if (a.type != VType::Float && a.type != VType::String) return a; // <1,2,3> <4,5,6>
         advance();
         const Value b = parse_additive();
         if (a.type == VType::String && b.type == VType::String) { // 3.7 compares strings too
             const int c = a.str.compare(b.str);
-            a = Value::number(o == "<"    ? c < 0
-                              : o == "<=" ? c <= 0
-                              : o == "="  ? c == 0
-                              : o == "!=" ? c != 0
-                              : o == ">=" ? c >= 0
-                                          : c > 0);
+            a = Value::number(same_text(o, "<")    ? c < 0
+                              : same_text(o, "<=") ? c <= 0
+                              : same_text(o, "=")  ? c == 0
+                              : same_text(o, "!=") ? c != 0
+                              : same_text(o, ">=") ? c >= 0
+                                                   : c > 0);
             continue;
         }
         const double x = scalar(*this, a, t), y = scalar(*this, b, t);
         bool r;
-        if (o == "<")
+        if (same_text(o, "<"))
             r = x < y;
-        else if (o == "<=")
+        else if (same_text(o, "<="))
             r = x <= y;
-        else if (o == "=")
+        else if (same_text(o, "="))
             r = std::fabs(x - y) <= 1e-10;
-        else if (o == "!=")
+        else if (same_text(o, "!="))
             r = std::fabs(x - y) > 1e-10;
-        else if (o == ">=")
+        else if (same_text(o, ">="))
             r = x >= y;
         else
             r = x > y;
@@ -245,7 +245,7 @@ Value Parser::parse_compare() {
 Value Parser::parse_additive() {
     Value a = parse_term();
     for (;;) {
-        const Token t = peek_cont();
+        const Token& t = peek_cont();
         if (!is_sym_tok(t, "+") && !is_sym_tok(t, "-")) return a;
         advance();
         a = arith(*this, a, parse_term(), t.text[0], t);
@@ -255,7 +255,7 @@ Value Parser::parse_additive() {
 Value Parser::parse_term() {
     Value a = parse_unary();
     for (;;) {
-        const Token t = peek_cont();
+        const Token& t = peek_cont();
         if (!is_sym_tok(t, "*") && !is_sym_tok(t, "/")) return a;
         advance();
         a = arith(*this, a, parse_unary(), t.text[0], t);
@@ -263,7 +263,7 @@ Value Parser::parse_term() {
 }
 
 Value Parser::parse_unary() {
-    const Token t = peek();
+    const Token& t = peek();
     const Nest nest(*this, t); // every nested expression comes through here
     if (is_sym_tok(t, "-") || is_sym_tok(t, "+")) {
         advance();
@@ -314,7 +314,7 @@ Value Parser::parse_postfix() {
 }
 
 Value Parser::parse_primary() {
-    const Token t = peek();
+    const Token& t = peek();
     switch (t.kind) {
     case TokKind::Number:
         advance();
@@ -386,7 +386,7 @@ Value Parser::index_value(const Value& base, const Token& t) {
 }
 
 Value Parser::parse_identifier(const Token& t) {
-    if (const Value* found = lookup(t.text)) {
+    if (const Value* found = lookup(t)) {
         advance();
         Value v = *found;
         if (v.type == VType::Array && is_sym_tok(peek_cont(), "[")) v = index_value(v, t);
@@ -400,14 +400,13 @@ Value Parser::parse_identifier(const Token& t) {
         return v;
     }
     const std::string& k = t.text;
-    static const std::set<std::string> colors = {"rgb",   "rgbf",  "rgbt",   "rgbft", "srgb",
-                                                 "srgbf", "srgbt", "srgbft", "color", "colour"};
-    if (colors.count(k)) {
+    const Word w = word(t);
+    if (w == Word::Colour) {
         advance();
         return parse_color_keyword(t);
     }
     Value out;
-    if (builtin_call(t, out)) return out;
+    if ((w == Word::MathBuiltin || w == Word::Builtin) && builtin_call(t, out)) return out;
     advance();
     if (k == "x") return Value::vec3(1, 0, 0);
     if (k == "y") return Value::vec3(0, 1, 0);

@@ -172,7 +172,7 @@ void Parser::read_directive(const Token& where) {
     }
     expect_sym(")");
     if (toks[h.pos].kind == TokKind::End) // all read: the file closes, defined(id) is false
-        for (auto& scope : scopes_) scope.erase(id);
+        scopes_.erase_everywhere(scopes_.find(id));
 }
 
 void Parser::write_directive(const Token& where) {

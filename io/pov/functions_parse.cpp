@@ -331,7 +331,7 @@ FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
         n.param = int(it - params.begin());
         return n;
     }
-    if (const Value* v = lookup(t.text)) {
+    if (const Value* v = lookup(t)) {
         if (v->type == VType::Float) {
             n.value = v->v[0];
             return n;

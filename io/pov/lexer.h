@@ -2,6 +2,7 @@
 // each with its file, line and column. Comments (// and nested /* */) are dropped.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@ struct Token {
     double number = 0;
     int file = 0; // index into the reader's file names
     int line = 1, col = 1;
+    uint32_t name = 0xFFFFFFFFu; // an identifier's number in the reader's Scopes, once read
 };
 
 /// A whole file's tokens; the last one is always TokKind::End.

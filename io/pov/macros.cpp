@@ -11,21 +11,21 @@ void Parser::define_macro(const Token& where) {
     if (name.kind != TokKind::Ident) error_expected(name, "the macro's name");
     advance();
     Macro m;
-    std::vector<std::string> params;
+    std::vector<uint32_t> params;
     expect_sym("(");
     if (!is_sym_tok(raw(), ")")) {
         for (;;) {
             const Token p = raw();
             if (p.kind != TokKind::Ident) error_expected(p, "a parameter name");
             advance();
-            params.push_back(p.text);
+            params.push_back(name_of(p));
             if (is_sym_tok(raw(), ")")) break;
             if (!is_sym_tok(raw(), ",")) error_expected(raw(), "',' or ')'");
             advance();
         }
     }
     advance(); // ')'
-    m.params = std::make_shared<const std::vector<std::string>>(std::move(params));
+    m.params = std::make_shared<const std::vector<uint32_t>>(std::move(params));
     m.file = frames_.back().file;
     m.body = frames_.back().pos;
     skip_raw_to_end(1, where);
@@ -37,12 +37,12 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
     // The table may change while the arguments are parsed: what the call needs, held.
     const std::shared_ptr<const TokenFile> file = macro.file;
     const size_t body = macro.body;
-    const std::shared_ptr<const std::vector<std::string>> holder = macro.params;
-    const std::vector<std::string>& params = *holder;
+    const std::shared_ptr<const std::vector<uint32_t>> holder = macro.params;
+    const std::vector<uint32_t>& params = *holder;
     std::vector<Value> args;
     // Arguments that are a declared variable alone are passed by reference, as in POV-Ray:
     // the macro's assignments to the parameter reach the variable.
-    std::vector<std::pair<size_t, std::pair<size_t, std::string>>> by_ref;
+    std::vector<std::pair<size_t, Scopes::Ref>> by_ref;
     if (!is_sym("(")) error_expected(peek(), "'(' after macro " + name.text);
     advance();
     if (!accept_sym(")")) {
@@ -51,11 +51,10 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
             const Frame& fr = frames_.back();
             if (t.kind == TokKind::Ident && fr.pos + 1 < fr.file->tokens.size()) {
                 const Token& after = fr.file->tokens[fr.pos + 1];
-                size_t scope;
-                std::string target;
+                Scopes::Ref target;
                 if ((is_sym_tok(after, ",") || is_sym_tok(after, ")")) &&
-                    find_variable(t.text, scopes_.size() - 1, scope, target))
-                    by_ref.push_back({args.size(), {scope, target}});
+                    scopes_.find_variable(name_of(t), scopes_.size() - 1, target))
+                    by_ref.push_back({args.size(), target});
             }
             // As in POV-Ray, '<' outside parentheses is not a comparison: "off <100, 100>"
             // is two arguments, the comma between them left out.
@@ -77,21 +76,18 @@ void Parser::call_macro(const Token& name, const Macro& macro) {
     if (macro_depth_ >= kMaxMacroDepth)
         error_at(name, "macro calls nested deeper than " + std::to_string(kMaxMacroDepth) +
                            " (endless recursion?)");
-    std::unordered_map<std::string, Value> scope;
-    std::unordered_map<std::string, std::pair<size_t, std::string>> refs;
-    for (size_t i = 0; i < args.size(); ++i) scope[params[i]] = std::move(args[i]);
-    for (auto& [i, var] : by_ref) {
-        scope.erase(params[i]);
-        refs[params[i]] = std::move(var);
-    }
+    std::vector<std::pair<uint32_t, Value>> vars;
+    std::vector<std::pair<uint32_t, Scopes::Ref>> refs;
+    vars.reserve(args.size());
+    for (size_t i = 0; i < args.size(); ++i) vars.emplace_back(params[i], std::move(args[i]));
+    for (const auto& [i, var] : by_ref) refs.emplace_back(params[i], var);
     Frame f;
     f.file = file;
     f.pos = body;
     f.macro = true;
     f.own_scope = true;
     f.where = name;
-    scopes_.push_back(std::move(scope));
-    refs_.push_back(std::move(refs));
+    scopes_.push(std::move(vars), std::move(refs));
     frames_.push_back(std::move(f));
     ++macro_depth_;
 }

@@ -31,7 +31,7 @@ std::shared_ptr<const PovNormal> Parser::parse_normal(const PovNormal* base) {
 void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
     const Nest nest(*this, peek()); // normal maps hold normals
     Value declared;
-    const Value* named = peek().kind == TokKind::Ident ? lookup(peek().text) : nullptr;
+    const Value* named = peek().kind == TokKind::Ident ? lookup(peek()) : nullptr;
     // Arrays take the path below: their elements may mix normals and flat ones.
     if (named && named->type == VType::Normal &&
         accept_declared(VType::Normal, declared, "a normal")) {
@@ -40,7 +40,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
     } else if (const Token t = peek(); t.kind == TokKind::Ident) {
         // A normal declared flat (its pattern unsupported, warned where it is used), alone or
         // as an element of an array of normals (the portfolio's normal { normalArr[i] }).
-        const Value* v = lookup(t.text);
+        const Value* v = lookup(t);
         if (v && ((v->type == VType::Other && v->str == "normal") || v->type == VType::Array)) {
             accept_declared_any(declared);
             if (declared.type == VType::Normal) {

@@ -9,6 +9,7 @@
 #include "io/pov/lexer.h"
 #include "io/pov/model.h"
 #include "io/pov/pov_reader.h"
+#include "io/pov/scopes.h"
 #include "io/pov/splines.h"
 #include "io/pov/value.h"
 
@@ -41,7 +42,7 @@ constexpr int kMaxFunctionHeight = 10'000;
 /// Array dimensions, as POV-Ray's own limit.
 constexpr size_t kMaxArrayDimensions = 5;
 
-struct ObjectProbe;  // io/pov/probe.h
+struct ObjectProbe;   // io/pov/probe.h
 struct FunctionScene; // io/pov/function_scene.h
 
 struct Macro {
@@ -49,7 +50,7 @@ struct Macro {
     size_t body = 0; // index of the first body token
     /// Shared, so that a call holds them without a copy while its arguments (which may
     /// redefine the macro) are parsed.
-    std::shared_ptr<const std::vector<std::string>> params;
+    std::shared_ptr<const std::vector<uint32_t>> params; // the parameters' names (Scopes)
 };
 
 /// An open #fopen file.
@@ -95,6 +96,15 @@ class Parser {
     void advance();
     /// The next token after running directives, expanding macros and leaving finished files.
     const Token& peek();
+    const Token& peek_expanded(); // peek's work, without its memory of the last answer
+    /// The token peek last returned and where the stream stood then.
+    struct Peeked {
+        const Token* token = nullptr;
+        uint64_t steps = 0;
+        size_t depth = 0, pos = 0;
+        const TokenFile* file = nullptr;
+        explicit operator bool() const { return token != nullptr; }
+    } peeked_;
     /// The next token for an expression that may continue: only closes #if/#switch branches,
     /// macros and files; any other directive ends the expression.
     const Token& peek_cont();
@@ -102,11 +112,24 @@ class Parser {
     bool is_sym(const char* s) { return is_sym_tok(peek(), s); }
     bool is_kw(const char* s) { return is_kw_tok(peek(), s); }
     static bool is_sym_tok(const Token& t, const char* s) {
-        return t.kind == TokKind::Symbol && std::string_view(t.text) == s; // sizes first
+        return t.kind == TokKind::Symbol && same_text(t.text, s);
     }
     static bool is_kw_tok(const Token& t, const char* s) {
-        return t.kind == TokKind::Ident && std::string_view(t.text) == s;
+        return t.kind == TokKind::Ident && same_text(t.text, s);
     }
+    /// a == s, inline: the reader compares every token it peeks at with short literals.
+    static bool same_text(const std::string& a, const char* s) {
+        const char* p = a.c_str(); // NUL-terminated; a NUL inside `a` ends neither early
+        const size_t n = a.size();
+        size_t i = 0;
+        for (; i < n; ++i)
+            if (p[i] != s[i] || s[i] == 0) return false;
+        return s[i] == 0;
+    }
+    /// What an identifier that names no variable is among the words expressions know.
+    enum class Word : uint8_t { Unknown, Other, Colour, MathBuiltin, Builtin };
+    Word word(const Token& t);
+    std::vector<Word> words_; // by name (Scopes), computed on first sight
     bool accept_sym(const char* s);
     bool accept_kw(const char* s);
     void expect_sym(const char* s, const std::string& expected = "");
@@ -137,6 +160,9 @@ class Parser {
     // ---- symbols ----
     const Value* lookup(const std::string& name) const;
     Value* lookup_mut(const std::string& name);
+    /// The same for an identifier token, by the number it was read with.
+    const Value* lookup(const Token& t) const;
+    Value* lookup_mut(const Token& t);
     void declare(const std::string& name, Value v, bool local);
     /// #local in scope `scope`: its own variable, or the one a by-reference parameter of
     /// that name stands for.
@@ -208,7 +234,7 @@ class Parser {
     FnNode parse_fn(const std::vector<std::string>& params, int level);
     FnNode parse_fn_primary(const std::vector<std::string>& params);
     FnNode parse_fn_atom(const std::vector<std::string>& params);
-    std::string fn_unsupported_; // what the function being compiled uses that is unsupported
+    std::string fn_unsupported_;       // what the function being compiled uses that is unsupported
     std::string fn_scene_unsupported_; // ... and that the language cannot evaluate
     /// If the next token is a declared identifier (an array element with its indices) of
     /// type `t`, consumes it into `out`. A declared identifier of another type is an error
@@ -367,18 +393,17 @@ class Parser {
     void parse_object_photons(PovObject& o);
     void parse_light_photons(Light& l);
     PovSky parse_sky_sphere(); // after the keyword sky_sphere
-    bool parse_statement(); // one top-level item; false at the end of the scene
+    bool parse_statement();    // one top-level item; false at the end of the scene
 
     // ---- work ----
     uint64_t steps_ = 0; // against options_.limits.parse_steps
     /// What the scene has used of options_.limits so far.
     PovUsage usage() const {
-        return {steps_,        objects_made_, peak_data_bytes_,
-                loop_runs_,    macro_calls_,  function_terms_};
+        return {steps_, objects_made_, peak_data_bytes_, loop_runs_, macro_calls_, function_terms_};
     }
     uint64_t macro_calls_ = 0;    // against limits.macro_calls
     uint64_t function_terms_ = 0; // against limits.function_terms (and parse_steps)
-    uint64_t loop_runs_ = 0; // runs of all loops together, against limits.loop_iterations
+    uint64_t loop_runs_ = 0;      // runs of all loops together, against limits.loop_iterations
     size_t peak_data_bytes_ = 0;
     /// The steps left before limits.parse_steps (for a function's evaluation to count down).
     uint64_t steps_left() const {
@@ -419,21 +444,21 @@ class Parser {
     std::string scene_dir_;
     std::vector<std::string> file_names_;
     std::vector<uint32_t> rand_streams_; // seed() streams: POV-Ray's 32-bit state
-    size_t data_bytes_ = 0; // live arrays and strings, objects placed or in a CSG: limits.data_bytes
+    size_t data_bytes_ =
+        0; // live arrays and strings, objects placed or in a CSG: limits.data_bytes
     void charge(size_t bytes, const Token& t);
 
     // ---- state ----
     PovOptions options_;
     std::vector<Frame> frames_;
-    std::vector<std::unordered_map<std::string, Value>> scopes_;
-    /// Beside each scope, its macro parameters passed by reference (an argument that is a bare
-    /// identifier, as POV-Ray passes it): the scope and the name of the variable they stand
-    /// for. Reading, #declare and #local of the parameter all reach that variable.
-    std::vector<std::unordered_map<std::string, std::pair<size_t, std::string>>> refs_;
-    /// Where variable `name` lives as seen from scope `top` down: (scope, name), references
-    /// followed; false when it is not declared.
-    bool find_variable(const std::string& name, size_t top, size_t& scope,
-                       std::string& target) const;
+    /// The variables. A macro's parameters passed by reference (an argument that is a bare
+    /// identifier, as POV-Ray passes it) stand for the caller's variable: reading, #declare and
+    /// #local of the parameter all reach it.
+    Scopes scopes_;
+    /// An identifier's number: the one it was read with, else its text's.
+    uint32_t name_of(const Token& t) const {
+        return t.name != Scopes::kNoName ? t.name : scopes_.find(t.text);
+    }
     std::unordered_map<std::string, Macro> macros_;
     std::map<std::string, bool> warned_; // de-duplication of identical warnings
     int macro_depth_ = 0;

@@ -50,9 +50,9 @@ bool Parser::is_color_start(const Token& t) {
     // Components alone: `red 1 green 0.5`.
     if (is_kw_tok(t, "red") || is_kw_tok(t, "green") || is_kw_tok(t, "blue") ||
         is_kw_tok(t, "filter") || is_kw_tok(t, "transmit"))
-        return !lookup(t.text);
+        return !lookup(t);
     if (t.kind != TokKind::Ident) return starts_expression(t);
-    const Value* v = lookup(t.text);
+    const Value* v = lookup(t);
     if (v && v->type == VType::Array) // an array of colours or numbers
         for (const Value& e : static_cast<const ArrayValue*>(v->ptr.get())->elements)
             if (e.type != VType::None) return e.numeric();
@@ -62,7 +62,7 @@ bool Parser::is_color_start(const Token& t) {
 bool Parser::starts_map_value(const Token& t) {
     if (t.kind == TokKind::Number) return true;
     if (t.kind == TokKind::Ident)
-        if (const Value* v = lookup(t.text)) return v->type == VType::Float;
+        if (const Value* v = lookup(t)) return v->type == VType::Float;
     if (is_sym_tok(t, "<")) return false; // a colour vector
     return starts_expression(t) && (t.kind != TokKind::Ident || !is_color_start(t));
 }

@@ -49,7 +49,7 @@ bool Parser::starts_expression(const Token& t) const {
     case TokKind::Symbol:
         return t.text == "<" || t.text == "(" || t.text == "-" || t.text == "+" || t.text == "!";
     case TokKind::Ident: {
-        if (const Value* v = lookup(t.text))
+        if (const Value* v = lookup(t))
             return v->numeric() || v->type == VType::String || v->type == VType::Function ||
                    v->type == VType::Array;
         static const std::set<std::string> k = {

@@ -10,10 +10,7 @@
 
 namespace sheaf::io::pov {
 
-Parser::Parser(const PovOptions& options) : options_(options) {
-    scopes_.emplace_back();
-    refs_.emplace_back();
-}
+Parser::Parser(const PovOptions& options) : options_(options) {}
 
 std::string Parser::where(const Token& t) const {
     const std::string file =
@@ -126,6 +123,8 @@ std::shared_ptr<const TokenFile> Parser::load_tokens(const std::string& path, co
     ss << in.rdbuf();
     file_names_.push_back(path);
     auto tf = tokenize(ss.str(), path, int(file_names_.size() - 1));
+    for (Token& t : tf->tokens)
+        if (t.kind == TokKind::Ident) t.name = scopes_.intern(t.text);
     file_cache_[path] = tf;
     return tf;
 }
@@ -135,13 +134,13 @@ void Parser::push_file(const std::string& path, const Token& where) {
     f.file = load_tokens(path, frames_.empty() ? nullptr : &where);
     f.where = where;
     f.own_scope = !frames_.empty();
-    if (f.own_scope) scopes_.emplace_back(), refs_.emplace_back();
+    if (f.own_scope) scopes_.push();
     frames_.push_back(std::move(f));
 }
 
 void Parser::pop_frame() {
     Frame& f = frames_.back();
-    if (f.own_scope) scopes_.pop_back(), refs_.pop_back();
+    if (f.own_scope) scopes_.pop();
     if (f.macro) --macro_depth_;
     frames_.pop_back();
 }
@@ -174,6 +173,17 @@ void Parser::too_many_function_terms(const Token& at) const {
 }
 
 const Token& Parser::peek() {
+    // Asked again and again for the same token (every accept_ and is_ asks): the answer
+    // stands while no token was read and no file or macro opened or closed.
+    if (peeked_ && peeked_.steps == steps_ && peeked_.depth == frames_.size() &&
+        peeked_.pos == frames_.back().pos && peeked_.file == frames_.back().file.get())
+        return *peeked_.token;
+    const Token& t = peek_expanded();
+    peeked_ = {&t, steps_, frames_.size(), frames_.back().pos, frames_.back().file.get()};
+    return t;
+}
+
+const Token& Parser::peek_expanded() {
     for (;;) {
         const Token& t = raw();
         if (t.kind == TokKind::End) {
@@ -183,11 +193,11 @@ const Token& Parser::peek() {
             pop_frame();
             continue;
         }
-        if (t.kind == TokKind::Symbol && t.text == "#") {
+        if (t.kind == TokKind::Symbol && same_text(t.text, "#")) {
             directive(false);
             continue;
         }
-        if (t.kind == TokKind::Ident && !lookup(t.text)) {
+        if (t.kind == TokKind::Ident && !lookup(t)) {
             if (const Macro* m = find_macro(t.text)) {
                 const Token name = t;
                 advance();
@@ -207,7 +217,8 @@ const Token& Parser::peek_cont() {
             pop_frame();
             continue;
         }
-        if (t.kind == TokKind::Symbol && t.text == "#" && directive_args_ == 0 && directive(true))
+        if (t.kind == TokKind::Symbol && same_text(t.text, "#") && directive_args_ == 0 &&
+            directive(true))
             continue;
         return t;
     }
@@ -262,65 +273,43 @@ void Parser::skip_rest_of_block() {
     }
 }
 
-bool Parser::find_variable(const std::string& name, size_t top, size_t& scope,
-                           std::string& target) const {
-    for (size_t i = top + 1; i-- > 0;) {
-        if (auto r = refs_[i].find(name); r != refs_[i].end()) {
-            scope = r->second.first, target = r->second.second; // resolved when bound
-            return scopes_[scope].count(target) != 0;
-        }
-        if (scopes_[i].count(name)) {
-            scope = i, target = name;
-            return true;
-        }
-    }
-    return false;
-}
-
 Value* Parser::lookup_mut(const std::string& name) {
-    // find_variable's walk, without copying the name and finding the variable twice: the
-    // reader looks up every identifier it reads, through every macro's scope it is in.
-    for (size_t i = scopes_.size(); i-- > 0;) {
-        if (!refs_[i].empty())
-            if (auto r = refs_[i].find(name); r != refs_[i].end()) {
-                auto& bound = scopes_[r->second.first];
-                auto v = bound.find(r->second.second);
-                return v == bound.end() ? nullptr : &v->second;
-            }
-        if (scopes_[i].empty()) continue;
-        if (auto v = scopes_[i].find(name); v != scopes_[i].end()) return &v->second;
-    }
-    return nullptr;
+    return scopes_.lookup(scopes_.find(name));
 }
 
 const Value* Parser::lookup(const std::string& name) const {
     return const_cast<Parser*>(this)->lookup_mut(name);
 }
 
+Value* Parser::lookup_mut(const Token& t) {
+    return scopes_.lookup(name_of(t));
+}
+
+const Value* Parser::lookup(const Token& t) const {
+    return const_cast<Parser*>(this)->lookup_mut(t);
+}
+
 void Parser::declare(const std::string& name, Value v, bool local) {
+    const uint32_t id = scopes_.intern(name);
     if (local) {
-        declare_in(scopes_.size() - 1, name, std::move(v));
+        scopes_.set(scopes_.size() - 1, id, std::move(v));
         return;
     }
-    if (Value* existing = lookup_mut(name)) {
+    if (Value* existing = scopes_.lookup(id)) {
         *existing = std::move(v);
         return;
     }
-    scopes_.front()[name] = std::move(v);
+    scopes_.set(0, id, std::move(v));
 }
 
 void Parser::declare_in(size_t scope, const std::string& name, Value v) {
-    if (auto r = refs_[scope].find(name); r != refs_[scope].end()) {
-        scopes_[r->second.first][r->second.second] = std::move(v);
-        return;
-    }
-    scopes_[scope][name] = std::move(v);
+    scopes_.set(scope, scopes_.intern(name), std::move(v));
 }
 
 bool Parser::accept_declared(VType type, Value& out, const std::string& expected) {
     const Token t = peek();
     if (t.kind != TokKind::Ident) return false;
-    const Value* v = lookup(t.text);
+    const Value* v = lookup(t);
     if (!v) return false;
     if (v->type != type && v->type != VType::Array) return false;
     if (v->type == VType::Array) // an array of other values (colours ...) is not one of these
@@ -344,7 +333,7 @@ bool Parser::accept_declared(VType type, Value& out, const std::string& expected
 bool Parser::accept_declared_any(Value& out) {
     const Token t = peek();
     if (t.kind != TokKind::Ident) return false;
-    const Value* v = lookup(t.text);
+    const Value* v = lookup(t);
     if (!v) return false;
     advance();
     out = *v;

@@ -550,7 +550,8 @@ Value Parser::parse_rvalue() {
         }
         if (k == "texture") {
             advance();
-            return Value::boxed(VType::Texture, PovTexture(*parse_texture_layers(model.default_texture)));
+            return Value::boxed(VType::Texture,
+                                PovTexture(*parse_texture_layers(model.default_texture)));
         }
         if (k == "material") {
             advance();
@@ -645,8 +646,8 @@ Value Parser::parse_rvalue() {
             return v;
         }
         if (k == "fog" || k == "media" || k == "rainbow" || k == "density" ||
-            k == "interior_texture" || k == "density_map" || k == "photons" ||
-            k == "radiosity" || k == "material_map") {
+            k == "interior_texture" || k == "density_map" || k == "photons" || k == "radiosity" ||
+            k == "material_map") {
             advance();
             Value v;
             v.type = VType::Other;

@@ -43,8 +43,8 @@ TEST(PovCamera, RightHandedCamerasMirrorThePicture) {
     // A mirrored camera draws x the other way: the same scene, the image flipped.
     const std::string scene = "light_source { <0, 5, -5> rgb 1 }\n"
                               "sphere { <-1, 0, 0>, 0.5 pigment { rgb <1, 0, 0> } }\n";
-    const PreparedScene a = prepare_scene(
-        load_text("camera { location <0, 0, -5> look_at 0 }\n" + scene).scene);
+    const PreparedScene a =
+        prepare_scene(load_text("camera { location <0, 0, -5> look_at 0 }\n" + scene).scene);
     const PreparedScene b = prepare_scene(
         load_text("camera { location <0, 0, -5> right -x * 4/3 look_at 0 }\n" + scene).scene);
     const CameraFrame fa = make_camera_frame(a.camera, 40, 30);

@@ -96,7 +96,10 @@ bool Parser::directive(bool continuation) {
         expect_sym("(");
         Cond c;
         c.kind = Cond::For, c.where = name;
-        c.var = expect_ident("the loop variable");
+        const Token& var = peek();
+        if (var.kind != TokKind::Ident) error_expected(var, "the loop variable");
+        c.var = intern_of(var);
+        advance();
         expect_sym(",");
         const double start = parse_float();
         expect_sym(",");
@@ -236,9 +239,9 @@ void Parser::declare_directive(bool local) {
     }
     if (index.empty()) {
         if (local)
-            declare_in(scope, name.text, std::move(v));
+            scopes_.set(scope, intern_of(name), std::move(v));
         else
-            declare(name.text, std::move(v), false);
+            declare(intern_of(name), std::move(v), false);
         return;
     }
     Value* arr = lookup_mut(name);
@@ -412,7 +415,7 @@ void Parser::end_directive(const Token& where) {
         return;
     }
     // #for
-    Value* v = lookup_mut(c.var);
+    Value* v = scopes_.lookup(c.var);
     const double next = (v && v->type == VType::Float ? v->v[0] : c.end) + c.step;
     declare(c.var, Value::number(next), true); // after the loop it holds End + Step
     if (c.step > 0 ? next <= c.end + 1e-10 : next >= c.end - 1e-10)

@@ -576,8 +576,7 @@ TEST(PovDirectives, ImageSizeComesFromTheOptions) {
                                   "#error \"wrong size\"\n#end\nsphere { 0, 1 }\n",
                                   o);
     EXPECT_TRUE(r.warnings.empty());
-    EXPECT_EQ(error_of("#if (image_width != 512 | image_height != 512) #error \"size\" #end\n"),
-              "")
+    EXPECT_EQ(error_of("#if (image_width != 512 | image_height != 512) #error \"size\" #end\n"), "")
         << "without options the size is 512 x 512";
 }
 

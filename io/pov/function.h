@@ -26,8 +26,8 @@ struct FnNode {
     Kind kind = Const;
     FnOp op = FnOp::Const; // Operator: Neg, Not, Add ... Or, Cond (a ? b : c)
     double value = 0;      // Const
-    int param = 0;    // Param
-    std::string name; // Builtin
+    int param = 0;         // Param
+    std::string name;      // Builtin
     std::shared_ptr<const struct PovFunction> fn;
     int component = 5; // Call of a pigment function: the FnComponent taken (.red ...; gray)
     std::vector<FnNode> args;

@@ -96,7 +96,7 @@ TEST(PovIsosurfaces, FunctionPatternsColourByTheFunction) {
     EXPECT_NEAR(grey(0, 0.5f), 0.25f, 1e-6);
     EXPECT_NEAR(grey(0, 1.5f), 0.75f, 1e-6);
     EXPECT_NEAR(grey(0, 2.5f), 0.24999f, 1e-6); // 1.25 wraps modulo 1.00001, as in POV-Ray
-    EXPECT_NEAR(grey(1, 1.0f), 0.25f, 1e-6); // the pattern scaled with the pigment
+    EXPECT_NEAR(grey(1, 1.0f), 0.25f, 1e-6);    // the pattern scaled with the pigment
 }
 
 TEST(PovIsosurfaces, PigmentFunctionsGiveTheirColoursComponents) {

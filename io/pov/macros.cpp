@@ -29,6 +29,9 @@ void Parser::define_macro(const Token& where) {
     m.file = frames_.back().file;
     m.body = frames_.back().pos;
     skip_raw_to_end(1, where);
+    const uint32_t id = intern_of(name);
+    if (id >= macro_named_.size()) macro_named_.resize(size_t(id) + 1, false);
+    macro_named_[id] = true; // never cleared: find_macro looks the name up when it is set
     macros_[name.text] = std::move(m);
 }
 

@@ -123,8 +123,8 @@ Pattern MaterialBuilder::pattern(const PovPattern& pt, const Affine& eff) {
         // In a warped pigment's map: through its chain into its pattern space, then from
         // there into this pattern's (to_pattern relative to the warped pigment's space).
         const bool mirrored = !p.uv && !pattern_space_; // as to_pattern was made above
-        const Affine rel = mirrored ? p.to_pattern * pov_to_sheaf() * chain_.eff
-                                    : p.to_pattern * chain_.eff;
+        const Affine rel =
+            mirrored ? p.to_pattern * pov_to_sheaf() * chain_.eff : p.to_pattern * chain_.eff;
         std::vector<Warp> chain = chain_.warps;
         chain.back().to_inner = rel * chain.back().to_inner;
         chain.insert(chain.end(), warps.begin(), warps.end());

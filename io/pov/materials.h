@@ -89,7 +89,7 @@ class MaterialBuilder {
     Scene& scene_;
     std::map<std::string, uint32_t> plain_; // materials without patterns, by their values
     std::map<std::pair<uint32_t, int32_t>, uint32_t> insides_; // (front, inside) -> material
-    std::map<std::string, int32_t> images_; // image textures by file and transform
+    std::map<std::string, int32_t> images_;  // image textures by file and transform
     std::map<const void*, uint32_t> voxels_; // density_file voxels by file: their first
     FnCompiler functions_;
     // While set, the patterns made are uv-mapped (Pattern::uv): inside a uv_mapping texture or

@@ -51,11 +51,11 @@ struct PovDensity {
 
 /// An image for image_map (and the image pattern): the file and how it is wrapped.
 struct PovImage {
-    std::string path;        // resolved against the scene's folder and the include paths
-    int map_type = 0;        // 0 planar, 1 spherical, 2 cylindrical, 5 torus
+    std::string path; // resolved against the scene's folder and the include paths
+    int map_type = 0; // 0 planar, 1 spherical, 2 cylindrical, 5 torus
     double filter_all = 0, transmit_all = 0;
-    bool once = false;       // bump_map once: no change outside the image
-    Token where;             // where the scene asked for it, for errors
+    bool once = false; // bump_map once: no change outside the image
+    Token where;       // where the scene asked for it, for errors
 };
 
 /// A pattern as parsed: its kind and modifiers. It lives in the space of the pigment, normal or
@@ -179,14 +179,14 @@ struct PovMedia {
     int scatter_type = 1; // POV-Ray's scattering types 1..5 (ScatterType)
     double eccentricity = 0, extinction = 1;
     std::vector<std::shared_ptr<const PovPigment>> densities; // multiplied
-    int samples = 32; // steps along each ray inside (core/shading/media.h)
+    int samples = 32;      // steps along each ray inside (core/shading/media.h)
     int light_samples = 8; // intervals x samples: steps along a shadow ray inside
-    Affine local;     // the medium's own transforms, applied to its densities
+    Affine local;          // the medium's own transforms, applied to its densities
 };
 
 /// interior { ior caustics fade_distance fade_power fade_color media }.
 struct PovInterior {
-    double ior = 0; // 0: not set (1)
+    double ior = 0;      // 0: not set (1)
     double caustics = 0; // POV-Ray's fake caustics, as written (Material::caustics is 45 times)
     double fade_distance = 0, fade_power = 0;
     std::array<double, 3> fade_color{0, 0, 0};
@@ -217,8 +217,8 @@ enum class PovKind { Shape, Mesh, Csg, Light };
 struct PovObject {
     PovKind kind = PovKind::Shape;
     Shape shape;
-    std::shared_ptr<const PolyCoeffs> poly;    // shape of kind Poly: its coefficients
-    std::shared_ptr<const GlyphOutline> glyph; // shape of kind Glyph: its outline
+    std::shared_ptr<const PolyCoeffs> poly;              // shape of kind Poly: its coefficients
+    std::shared_ptr<const GlyphOutline> glyph;           // shape of kind Glyph: its outline
     std::shared_ptr<const RevolutionProfile> revolution; // shape of kind Revolution
     std::shared_ptr<const BlobModel> blob;               // shape of kind Blob
     std::shared_ptr<const IsoRef> iso; // shape of kind Isosurface (its program set when built)
@@ -232,11 +232,11 @@ struct PovObject {
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;
     Affine local;
-    PovTextureRef texture;                     // null: inherited (or the default texture)
+    PovTextureRef texture;                       // null: inherited (or the default texture)
     std::shared_ptr<const PovInterior> interior; // null: inherited (or none)
     PovTextureRef interior_texture; // what it shows from inside; null: inherited (or none)
     bool inverse = false;
-    bool hollow = false; // media around it fill it (`hollow`; set on a CSG, on its members too)
+    bool hollow = false;     // media around it fill it (`hollow`; set on a CSG, on its members too)
     bool uv_mapping = false; // its textures are uv-mapped (the object's uv_mapping)
     uint8_t flags = 0;       // ObjectFlag bits: no_shadow, no_reflection, no_image, photons'
     PhotonObject photons;    // its photons block (a union's passes to its parts)
@@ -255,7 +255,7 @@ struct PovCamera {
     double angle = 0;    // degrees, 0: not given
     double v_angle = -1; // spherical: the vertical angle; < 0: not given
     Token type_at;       // the camera type's keyword, for errors
-    Affine transform; // applied after everything else
+    Affine transform;    // applied after everything else
     /// Tilts each primary ray as a surface normal, in screen space (x and y from -1/2 to 1/2).
     std::shared_ptr<const PovNormal> normal;
     /// Focal blur: the aperture (0: none), the point in focus and the samples a pixel takes.
@@ -292,7 +292,7 @@ struct PovModel {
     double assumed_gamma = 0; // 0: not given
     double version = 3.7;
     bool version_given = false;
-    int noise_generator = 0; // global_settings' (1..3); 0: not given
+    int noise_generator = 0;  // global_settings' (1..3); 0: not given
     int number_of_waves = 10; // global_settings' (ripples and waves), 1..kPovMostWaves
     /// The generator of patterns that name none: global_settings', else as POV-Ray 3.7
     /// defaults it, 1 before #version 3.5 and 2 from it.

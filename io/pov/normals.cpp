@@ -108,7 +108,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
             error_expected(t, "a normal item (bumps, ripples, bump_size, turbulence ...)");
         }
     }
-    if (n.own_normal) n.slope_map.clear(); // as POV-Ray: their own normals take no slope map
+    if (n.own_normal) n.slope_map.clear();        // as POV-Ray: their own normals take no slope map
     if (n.average && n.map.empty()) have = false; // an average of nothing: no change
     // A list pattern's entries that were not given leave the surface's normal as it is.
     if (list > 0 && !n.map.empty())

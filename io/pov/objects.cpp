@@ -371,8 +371,9 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
         set_texture(o.texture);
     } else if (k == "no_shadow" || k == "no_reflection" || k == "no_image") {
         advance();
-        const uint8_t flag = k == "no_shadow" ? kNoShadow : k == "no_reflection" ? kNoReflection
-                                                                                  : kNoImage;
+        const uint8_t flag = k == "no_shadow"       ? kNoShadow
+                             : k == "no_reflection" ? kNoReflection
+                                                    : kNoImage;
         if (parse_bool_opt(true))
             o.flags |= flag;
         else

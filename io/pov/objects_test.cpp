@@ -502,9 +502,10 @@ TEST(PovObjects, SyntaxErrorsNameFileLineColumnAndToken) {
         FAIL();
     } catch (const SceneError& e) {
         // The include follows on a line of its own.
-        EXPECT_EQ(std::string(e.what()), d.path() + "/bad.inc:3:17: error: found ']', expected an "
-                                                    "object modifier or '}'\n  in 'bad.inc' "
-                                                    "included at " +
+        EXPECT_EQ(std::string(e.what()), d.path() +
+                                             "/bad.inc:3:17: error: found ']', expected an "
+                                             "object modifier or '}'\n  in 'bad.inc' "
+                                             "included at " +
                                              d.path() + "/s.pov:1:2");
     }
 }

@@ -78,8 +78,8 @@ class Parser {
     // ---- token stream (token_stream.cpp) ----
     struct Cond {
         enum Kind { If, While, For, Switch } kind = If;
-        size_t pos = 0; // While: the condition; For: the body
-        std::string var;
+        size_t pos = 0;                 // While: the condition; For: the body
+        uint32_t var = Scopes::kNoName; // For: the loop variable's name
         double end = 0, step = 1;
         uint64_t iterations = 0;
         Token where;
@@ -96,7 +96,8 @@ class Parser {
     void advance();
     /// The next token after running directives, expanding macros and leaving finished files.
     const Token& peek();
-    const Token& peek_expanded(); // peek's work, without its memory of the last answer
+    const Token& peek_expanded();      // peek's work, without its memory of the last answer
+    const Token& peek_cont_expanded(); // the same for peek_cont
     /// The token peek last returned and where the stream stood then.
     struct Peeked {
         const Token* token = nullptr;
@@ -104,7 +105,8 @@ class Parser {
         size_t depth = 0, pos = 0;
         const TokenFile* file = nullptr;
         explicit operator bool() const { return token != nullptr; }
-    } peeked_;
+        int directive_args = 0;
+    } peeked_, peeked_cont_;
     /// The next token for an expression that may continue: only closes #if/#switch branches,
     /// macros and files; any other directive ends the expression.
     const Token& peek_cont();
@@ -164,10 +166,13 @@ class Parser {
     const Value* lookup(const Token& t) const;
     Value* lookup_mut(const Token& t);
     void declare(const std::string& name, Value v, bool local);
+    /// The same by the name's number (Scopes::intern).
+    void declare(uint32_t name, Value v, bool local);
     /// #local in scope `scope`: its own variable, or the one a by-reference parameter of
     /// that name stands for.
     void declare_in(size_t scope, const std::string& name, Value v);
     const Macro* find_macro(const std::string& name) const;
+    const Macro* find_macro(const Token& t) const;
 
     // ---- directives (directives.cpp, macros.cpp, files.cpp) ----
     /// Runs the directive at '#'. In continuation mode only the ones that close a branch run;
@@ -459,7 +464,12 @@ class Parser {
     uint32_t name_of(const Token& t) const {
         return t.name != Scopes::kNoName ? t.name : scopes_.find(t.text);
     }
+    /// The same, given one if it has none yet (a name about to be declared).
+    uint32_t intern_of(const Token& t) {
+        return t.name != Scopes::kNoName ? t.name : scopes_.intern(t.text);
+    }
     std::unordered_map<std::string, Macro> macros_;
+    std::vector<bool> macro_named_;      // by name (Scopes): some #macro had this name
     std::map<std::string, bool> warned_; // de-duplication of identical warnings
     int macro_depth_ = 0;
     std::map<std::string, std::shared_ptr<const TokenFile>> file_cache_;

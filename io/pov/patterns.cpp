@@ -162,9 +162,8 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
     const std::string& k = t.text;
     auto turbulence = [&]() {
         const Value v = parse_expr();
-        pt.turbulence = v.type == VType::Float
-                            ? Vec3(float(v.v[0]))
-                            : Vec3(float(v.v[0]), float(v.v[1]), float(v.v[2]));
+        pt.turbulence = v.type == VType::Float ? Vec3(float(v.v[0]))
+                                               : Vec3(float(v.v[0]), float(v.v[1]), float(v.v[2]));
         pt.has_turbulence = pt.turbulence.x != 0 || pt.turbulence.y != 0 || pt.turbulence.z != 0;
     };
     if (k == "turbulence") {

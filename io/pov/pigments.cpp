@@ -77,8 +77,7 @@ std::shared_ptr<const PovPigment> Parser::parse_pigment(const PovPigment& base) 
 void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
     const Nest nest(*this, peek()); // pigment maps hold pigments
     Value declared;
-    if (accept_declared(VType::Pigment, declared, "a pigment"))
-        pg = declared.as<PovPigment>();
+    if (accept_declared(VType::Pigment, declared, "a pigment")) pg = declared.as<PovPigment>();
     Token pattern_at;
     bool unsupported_pattern = false;
     int list = pg.patterned && pattern_is_list(pg.pattern.kind) ? int(pg.entries.size()) : 0;
@@ -98,8 +97,8 @@ void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
             accept_sym(",");
             continue;
         }
-        if (t.kind != TokKind::Ident) error_expected(t, "a colour, a pattern or '" +
-                                                            std::string(close) + "'");
+        if (t.kind != TokKind::Ident)
+            error_expected(t, "a colour, a pattern or '" + std::string(close) + "'");
         const std::string& k = t.text;
         bool supported = true;
         if (parse_pattern_name(pg.pattern, list, supported)) {
@@ -235,7 +234,7 @@ std::vector<PovMapEntry> Parser::parse_pigment_map() {
 std::shared_ptr<PovImage> Parser::parse_image_file(const Token& kw) {
     auto img = std::make_shared<PovImage>();
     img->where = kw;
-    static const std::set<std::string> types = {"gif", "tga", "iff", "ppm", "pgm", "png",
+    static const std::set<std::string> types = {"gif",  "tga",  "iff", "ppm", "pgm", "png",
                                                 "jpeg", "tiff", "sys", "exr", "hdr", "bmp"};
     if (peek().kind == TokKind::Ident && types.count(peek().text)) advance();
     const Token name = peek();

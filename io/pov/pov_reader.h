@@ -19,8 +19,8 @@
 namespace sheaf::io::pov {
 
 struct PovOptions {
-    std::vector<std::string> include_paths; // searched after the including file's folder
-    bool strict = false;                    // the first unsupported feature is an error
+    std::vector<std::string> include_paths;    // searched after the including file's folder
+    bool strict = false;                       // the first unsupported feature is an error
     int image_width = 512, image_height = 512; // what image_width and image_height give
     RasterReader read_raster = nullptr;        // height_field images (io::read_raster); without it,
                                                // a height field from an image is an error

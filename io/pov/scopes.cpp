@@ -16,104 +16,120 @@ uint32_t Scopes::find(std::string_view name) const {
     return it == ids_.end() ? kNoName : it->second;
 }
 
-void Scopes::bind(uint32_t name, size_t scope) {
-    std::vector<uint32_t>& h = held_[name];
+Scopes::Binding* Scopes::in_scope(uint32_t name, size_t scope) {
+    return const_cast<Binding*>(std::as_const(*this).in_scope(name, scope));
+}
+
+const Scopes::Binding* Scopes::in_scope(uint32_t name, size_t scope) const {
+    if (unbound(name)) return nullptr;
+    const std::vector<Binding>& h = held_[name];
+    for (size_t i = h.size(); i-- > 0;) {
+        if (h[i].scope == scope) return &h[i];
+        if (h[i].scope < scope) break;
+    }
+    return nullptr;
+}
+
+Scopes::Binding& Scopes::bind(uint32_t name, size_t scope) {
+    std::vector<Binding>& h = held_[name];
     // Mostly the innermost scope (a #local, a parameter) or the outermost (a #declare).
-    auto at = h.end();
-    while (at != h.begin() && *(at - 1) > scope) --at;
-    h.insert(at, uint32_t(scope));
-}
-
-void Scopes::unbind(uint32_t name, size_t scope) {
-    std::vector<uint32_t>& h = held_[name];
-    for (auto at = h.end(); at != h.begin();)
-        if (*--at == scope) {
-            h.erase(at);
-            return;
-        }
-}
-
-bool Scopes::holder(uint32_t name, size_t top, size_t& scope) const {
-    if (unbound(name)) return false;
-    const std::vector<uint32_t>& h = held_[name];
-    for (auto at = h.end(); at != h.begin();)
-        if (*--at <= top) {
-            scope = *at;
-            return true;
-        }
-    return false;
+    size_t at = h.size();
+    while (at > 0 && h[at - 1].scope > scope) --at;
+    Binding& b = *h.insert(h.begin() + ptrdiff_t(at), Binding{});
+    b.scope = uint32_t(scope);
+    stack_[scope].names.push_back(name);
+    return b;
 }
 
 void Scopes::push(std::vector<std::pair<uint32_t, Value>> vars,
                   std::vector<std::pair<uint32_t, Ref>> refs) {
-    Scope s;
-    for (auto& [name, v] : vars) s.vars.insert_or_assign(name, std::move(v));
-    for (auto& [name, r] : refs) {
-        s.vars.erase(name);
-        s.refs.insert_or_assign(name, r);
-    }
     const size_t at = stack_.size();
-    for (const auto& [name, v] : s.vars) bind(name, at);
-    for (const auto& [name, r] : s.refs) bind(name, at);
-    stack_.push_back(std::move(s));
+    stack_.emplace_back();
+    for (auto& [name, r] : refs) {
+        Binding* b = in_scope(name, at);
+        if (!b) b = &bind(name, at);
+        b->is_ref = true, b->ref = r, b->value.reset();
+    }
+    for (auto& [name, v] : vars) {
+        Binding* b = in_scope(name, at);
+        if (!b) {
+            b = &bind(name, at);
+            b->value = std::make_unique<Value>(std::move(v));
+        } else if (!b->is_ref) {
+            *b->value = std::move(v);
+        }
+    }
 }
 
 void Scopes::pop() {
     const size_t at = stack_.size() - 1;
-    for (const auto& [name, v] : stack_.back().vars) unbind(name, at);
-    for (const auto& [name, r] : stack_.back().refs) unbind(name, at);
+    for (uint32_t name : stack_.back().names) {
+        std::vector<Binding>& h = held_[name];
+        if (!h.empty() && h.back().scope == at) h.pop_back(); // the innermost scope's is last
+    }
     stack_.pop_back();
 }
 
 Value* Scopes::lookup(uint32_t name) {
-    size_t i;
-    if (stack_.empty() || !holder(name, stack_.size() - 1, i)) return nullptr;
-    Scope& s = stack_[i];
-    if (!s.refs.empty())
-        if (auto r = s.refs.find(name); r != s.refs.end()) {
-            auto& bound = stack_[r->second.scope].vars;
-            auto v = bound.find(r->second.name);
-            return v == bound.end() ? nullptr : &v->second;
-        }
-    return &s.vars.find(name)->second;
+    if (unbound(name)) return nullptr;
+    const Binding& b = held_[name].back();
+    if (!b.is_ref) return b.value.get();
+    Binding* to = in_scope(b.ref.name, b.ref.scope);
+    return to && !to->is_ref ? to->value.get() : nullptr;
 }
 
 bool Scopes::find_variable(uint32_t name, size_t top, Ref& where) const {
-    size_t i;
-    if (!holder(name, top, i)) return false;
-    const Scope& s = stack_[i];
-    if (auto r = s.refs.find(name); r != s.refs.end()) {
-        where = r->second; // resolved when bound
-        return stack_[where.scope].vars.count(where.name) != 0;
+    if (unbound(name)) return false;
+    const std::vector<Binding>& h = held_[name];
+    for (size_t i = h.size(); i-- > 0;) {
+        const Binding& b = h[i];
+        if (b.scope > top) continue;
+        if (!b.is_ref) {
+            where = {b.scope, name};
+            return true;
+        }
+        where = b.ref; // resolved when bound
+        const Binding* to = in_scope(where.name, where.scope);
+        return to && !to->is_ref;
     }
-    where = {i, name};
-    return true;
+    return false;
 }
 
 void Scopes::set(size_t scope, uint32_t name, Value v) {
-    if (auto r = stack_[scope].refs.find(name); r != stack_[scope].refs.end()) {
-        const Ref to = r->second;
-        if (stack_[to.scope].vars.insert_or_assign(to.name, std::move(v)).second)
-            bind(to.name, to.scope);
-        return;
+    Binding* b = in_scope(name, scope);
+    if (b && b->is_ref) {
+        const Ref to = b->ref;
+        b = in_scope(to.name, to.scope);
+        if (!b) b = &bind(to.name, to.scope);
+    } else if (!b) {
+        b = &bind(name, scope);
     }
-    if (stack_[scope].vars.insert_or_assign(name, std::move(v)).second) bind(name, scope);
+    if (b->value)
+        *b->value = std::move(v);
+    else
+        b->value = std::make_unique<Value>(std::move(v));
 }
 
 bool Scopes::erase_innermost(uint32_t name) {
     if (unbound(name)) return false;
-    for (size_t i = stack_.size(); i-- > 0;)
-        if (stack_[i].vars.erase(name)) {
-            unbind(name, i);
+    std::vector<Binding>& h = held_[name];
+    for (size_t i = h.size(); i-- > 0;)
+        if (!h[i].is_ref) {
+            std::vector<uint32_t>& names = stack_[h[i].scope].names;
+            for (size_t k = names.size(); k-- > 0;)
+                if (names[k] == name) {
+                    names.erase(names.begin() + ptrdiff_t(k));
+                    break;
+                }
+            h.erase(h.begin() + ptrdiff_t(i));
             return true;
         }
     return false;
 }
 
 void Scopes::erase_everywhere(uint32_t name) {
-    if (unbound(name)) return;
-    for (size_t i = 0; i < stack_.size(); ++i)
-        if (stack_[i].vars.erase(name)) unbind(name, i);
+    while (erase_innermost(name)) {
+    }
 }
 
 } // namespace sheaf::io::pov

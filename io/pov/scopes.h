@@ -1,14 +1,16 @@
 // The reader's variables: every name interned to a number once (the tokenizer's identifiers
 // carry theirs), a stack of scopes (the scene's, each include's and each macro call's), and
-// macro parameters that stand for a caller's variable. Each name lists the scopes that hold
-// it, innermost last, so a lookup reads one scope however deep the macro calls are, and a
-// name no scope holds (every keyword) is known undeclared at once.
+// macro parameters that stand for a caller's variable. Each name holds its bindings, one per
+// scope that declares it, innermost last (shallow binding): a lookup reads the last one
+// however deep the macro calls are, without hashing, and a name nothing binds (every keyword)
+// is known undeclared at once.
 #pragma once
 
 #include "io/pov/value.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -36,13 +38,14 @@ class Scopes {
 
     size_t size() const { return stack_.size(); }
     void push() { stack_.emplace_back(); }
-    /// A macro call's scope: its parameters' values and the ones passed by reference.
+    /// A macro call's scope: its parameters' values and the ones passed by reference (which
+    /// win over a value of the same name).
     void push(std::vector<std::pair<uint32_t, Value>> vars,
               std::vector<std::pair<uint32_t, Ref>> refs);
     void pop();
 
     /// The variable `name` as seen from the innermost scope, references followed; nullptr
-    /// when it is not declared.
+    /// when it is not declared. The pointer stays valid until the variable is removed.
     Value* lookup(uint32_t name);
     /// Where `name` lives as seen from scope `top` down, references followed; false when it
     /// is not declared.
@@ -50,27 +53,36 @@ class Scopes {
     /// #local in scope `scope`: its own variable, or the one a reference of that name stands
     /// for.
     void set(size_t scope, uint32_t name, Value v);
-    /// Removes the variable from the innermost scope that holds it; false when none does.
+    /// Removes the variable from the innermost scope that holds it as a variable; false when
+    /// none does.
     bool erase_innermost(uint32_t name);
     /// Removes the variable from every scope.
     void erase_everywhere(uint32_t name);
 
   private:
-    struct Scope {
-        std::unordered_map<uint32_t, Value> vars;
-        std::unordered_map<uint32_t, Ref> refs;
+    /// A name in one scope: a variable (its value, which keeps its address) or a reference.
+    struct Binding {
+        uint32_t scope = 0;
+        bool is_ref = false;
+        Ref ref;
+        std::unique_ptr<Value> value;
     };
-    void bind(uint32_t name, size_t scope);
-    void unbind(uint32_t name, size_t scope);
+    /// The names a scope binds, for its pop (a name may repeat after an erase).
+    struct Scope {
+        std::vector<uint32_t> names;
+    };
+    std::vector<Binding>& bindings(uint32_t name) { return held_[name]; }
+    /// The binding of `name` in exactly scope `scope`, nullptr when there is none.
+    Binding* in_scope(uint32_t name, size_t scope);
+    const Binding* in_scope(uint32_t name, size_t scope) const;
+    /// A new binding in scope `scope`, kept in scope order.
+    Binding& bind(uint32_t name, size_t scope);
     bool unbound(uint32_t name) const { return name >= held_.size() || held_[name].empty(); }
-    /// The innermost scope at or below `top` that holds `name`; false when none does.
-    bool holder(uint32_t name, size_t top, size_t& scope) const;
 
     std::vector<Scope> stack_;
     std::unordered_map<std::string, uint32_t> ids_;
     std::vector<std::string> names_;
-    /// Per name: the scopes holding it as a variable or a reference, in stack order.
-    std::vector<std::vector<uint32_t>> held_;
+    std::vector<std::vector<Binding>> held_; // per name, in scope order
 };
 
 } // namespace sheaf::io::pov

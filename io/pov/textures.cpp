@@ -53,9 +53,9 @@ bool Parser::starts_expression(const Token& t) const {
             return v->numeric() || v->type == VType::String || v->type == VType::Function ||
                    v->type == VType::Array;
         static const std::set<std::string> k = {
-            "x",   "y",     "z",     "t",      "u",    "v",     "pi",    "on",     "off",
-            "true", "false", "yes",  "no",     "clock", "rgb",  "rgbf",  "rgbt",   "rgbft",
-            "srgb", "srgbf", "srgbt", "srgbft", "color", "colour"};
+            "x",    "y",     "z",     "t",     "u",     "v",      "pi",    "on",
+            "off",  "true",  "false", "yes",   "no",    "clock",  "rgb",   "rgbf",
+            "rgbt", "rgbft", "srgb",  "srgbf", "srgbt", "srgbft", "color", "colour"};
         return k.count(t.text) || is_float_builtin(t.text);
     }
     default:
@@ -190,8 +190,7 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
                                             (tx.map_entries.empty() ? "the default texture"
                                                                     : "its first texture") +
                                             " is used)");
-            PovTextureRef first =
-                tx.map_entries.empty() ? nullptr : tx.map_entries.front().second;
+            PovTextureRef first = tx.map_entries.empty() ? nullptr : tx.map_entries.front().second;
             const Affine local = tx.local;
             tx = first ? *first : base;
             tx.local = local * tx.local;
@@ -298,7 +297,8 @@ void Parser::parse_finish(PovFinish& f) {
                     } else if (accept_kw("exponent")) {
                         parse_float(); // POV-Ray's reflection_exponent: not modelled
                     } else if (accept_kw("metallic")) {
-                        f.reflection_metallic = starts_expression(peek()) ? parse_float() > 0 : true;
+                        f.reflection_metallic =
+                            starts_expression(peek()) ? parse_float() > 0 : true;
                     } else if (is_color_start(r)) {
                         values.push_back(parse_color());
                         accept_sym(",");

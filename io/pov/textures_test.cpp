@@ -41,9 +41,9 @@ std::string write_tiles(test::TempDir& d) {
 }
 
 TEST(PovTextures, PatternsBecomePigmentsInTheirOwnSpace) {
-    const PovResult r = load_text(
-        "sphere { 0, 1 pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] }\n"
-        "  scale 2 } translate <3, 0, 0> }\n");
+    const PovResult r =
+        load_text("sphere { 0, 1 pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] }\n"
+                  "  scale 2 } translate <3, 0, 0> }\n");
     EXPECT_TRUE(r.warnings.empty());
     const Material& m = shape_material(r);
     ASSERT_GE(m.pigment, 0);
@@ -228,7 +228,8 @@ TEST(PovTextures, LayersTextureMapsAndNormals) {
         "  [0 rgbt <1, 0, 0, 1>] [1 rgb 0] } } normal { bumps 0.4 scale 0.2 } } }\n"
         "sphere { 0, 1 texture { gradient y texture_map { [0 pigment { rgb 1 }]\n"
         "  [1 pigment { rgb 0 } finish { phong 1 }] } } }\n"
-        "sphere { 0, 1 texture { checker texture { pigment { rgb x } } texture { pigment { rgb y } } } }\n");
+        "sphere { 0, 1 texture { checker texture { pigment { rgb x } } texture { pigment { rgb y } "
+        "} } }\n");
     // The gradient's map blends in POV-Ray: the one warning.
     ASSERT_EQ(r.warnings.size(), 1u) << r.warnings.front();
     EXPECT_NE(r.warnings[0].find("3:36: warning: approximated texture_map"), std::string::npos);
@@ -448,9 +449,9 @@ TEST(PovTextures, SkySphereFogAndFlags) {
 TEST(PovTextures, ImageMapsAreTextures) {
     test::TempDir d;
     const std::string png = write_tiles(d); // red, green / blue, white
-    const std::string scene = d.write(
-        "scene.pov", "plane { z, 0 pigment { image_map { png \"tiles.png\" map_type 0 "
-                     "interpolate 2 transmit all 0.25 } scale 2 } }\n");
+    const std::string scene =
+        d.write("scene.pov", "plane { z, 0 pigment { image_map { png \"tiles.png\" map_type 0 "
+                             "interpolate 2 transmit all 0.25 } scale 2 } }\n");
     const PovResult r = load_pov_scene(scene);
     EXPECT_TRUE(r.warnings.empty());
     ASSERT_EQ(r.scene.textures.size(), 1u);
@@ -1065,18 +1066,18 @@ TEST(PovTextures, ACameraNormalTiltsThePrimaryRays) {
 }
 
 TEST(PovTextures, DeclaredTexturesPigmentsNormalsAndMaps) {
-    const PovResult r = load_text(
-        "#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }\n"
-        "#declare N = normal { ripples 0.7 }\n"
-        "#declare F = finish { phong 0.9 }\n"
-        "#declare CM = color_map { [0 rgb x] [1 rgb y] }\n"
-        "#declare T = texture { pigment { P scale 2 } normal { N } finish { F } }\n"
-        "#declare L = texture { T } texture { pigment { rgbt 1 } }\n"
-        "#declare M = material { texture { T } interior { ior 1.2 } }\n"
-        "sphere { 0, 1 texture { T } }\n"
-        "sphere { 0, 1 texture { L } }\n"
-        "sphere { 0, 1 material { M } }\n"
-        "sphere { 0, 1 pigment { onion color_map { CM } } }\n");
+    const PovResult r =
+        load_text("#declare P = pigment { granite color_map { [0 rgb 0] [1 rgb 1] } }\n"
+                  "#declare N = normal { ripples 0.7 }\n"
+                  "#declare F = finish { phong 0.9 }\n"
+                  "#declare CM = color_map { [0 rgb x] [1 rgb y] }\n"
+                  "#declare T = texture { pigment { P scale 2 } normal { N } finish { F } }\n"
+                  "#declare L = texture { T } texture { pigment { rgbt 1 } }\n"
+                  "#declare M = material { texture { T } interior { ior 1.2 } }\n"
+                  "sphere { 0, 1 texture { T } }\n"
+                  "sphere { 0, 1 texture { L } }\n"
+                  "sphere { 0, 1 material { M } }\n"
+                  "sphere { 0, 1 pigment { onion color_map { CM } } }\n");
     EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
     const Material& t = shape_material(r, 0);
     EXPECT_EQ(r.scene.pigments[size_t(t.pigment)].pattern.kind, PatternKind::Granite);

@@ -179,7 +179,7 @@ const Token& Parser::peek() {
         peeked_.pos == frames_.back().pos && peeked_.file == frames_.back().file.get())
         return *peeked_.token;
     const Token& t = peek_expanded();
-    peeked_ = {&t, steps_, frames_.size(), frames_.back().pos, frames_.back().file.get()};
+    peeked_ = {&t, steps_, frames_.size(), frames_.back().pos, frames_.back().file.get(), 0};
     return t;
 }
 
@@ -198,7 +198,7 @@ const Token& Parser::peek_expanded() {
             continue;
         }
         if (t.kind == TokKind::Ident && !lookup(t)) {
-            if (const Macro* m = find_macro(t.text)) {
+            if (const Macro* m = find_macro(t)) {
                 const Token name = t;
                 advance();
                 call_macro(name, *m);
@@ -210,6 +210,18 @@ const Token& Parser::peek_expanded() {
 }
 
 const Token& Parser::peek_cont() {
+    // As peek: every level of an expression asks whether its operator follows.
+    if (peeked_cont_ && peeked_cont_.steps == steps_ && peeked_cont_.depth == frames_.size() &&
+        peeked_cont_.pos == frames_.back().pos && peeked_cont_.file == frames_.back().file.get() &&
+        peeked_cont_.directive_args == directive_args_)
+        return *peeked_cont_.token;
+    const Token& t = peek_cont_expanded();
+    peeked_cont_ = {
+        &t, steps_, frames_.size(), frames_.back().pos, frames_.back().file.get(), directive_args_};
+    return t;
+}
+
+const Token& Parser::peek_cont_expanded() {
     for (;;) {
         const Token& t = raw();
         if (t.kind == TokKind::End && frames_.size() > 1 && frames_.back().conds.empty() &&
@@ -290,7 +302,10 @@ const Value* Parser::lookup(const Token& t) const {
 }
 
 void Parser::declare(const std::string& name, Value v, bool local) {
-    const uint32_t id = scopes_.intern(name);
+    declare(scopes_.intern(name), std::move(v), local);
+}
+
+void Parser::declare(uint32_t id, Value v, bool local) {
     if (local) {
         scopes_.set(scopes_.size() - 1, id, std::move(v));
         return;
@@ -340,6 +355,13 @@ bool Parser::accept_declared_any(Value& out) {
     if (out.type == VType::Array && is_sym_tok(peek_cont(), "[")) out = index_value(out, t);
     raise_pending(out);
     return true;
+}
+
+const Macro* Parser::find_macro(const Token& t) const {
+    // Every keyword comes here: most names never named a macro.
+    const uint32_t id = name_of(t);
+    if (id == Scopes::kNoName || id >= macro_named_.size() || !macro_named_[id]) return nullptr;
+    return find_macro(t.text);
 }
 
 const Macro* Parser::find_macro(const std::string& name) const {

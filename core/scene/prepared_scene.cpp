@@ -91,9 +91,9 @@ void spatial_order(PreparedScene& p, size_t b, size_t e) {
     std::vector<std::pair<uint32_t, uint32_t>> order(e - b);
     for (size_t i = b; i < e; ++i) {
         const Vec3 c = centroid(i);
-        order[i - b] = {morton3(cell(c.x, lo.x, ext.x), cell(c.y, lo.y, ext.y),
-                                cell(c.z, lo.z, ext.z)),
-                        uint32_t(i)};
+        order[i - b] = {
+            morton3(cell(c.x, lo.x, ext.x), cell(c.y, lo.y, ext.y), cell(c.z, lo.z, ext.z)),
+            uint32_t(i)};
     }
     std::sort(order.begin(), order.end());
     auto permute = [&](auto& v) {
@@ -291,7 +291,8 @@ PreparedScene prepare_scene(const Scene& scene) {
         const uint32_t root = base + obj.root;
         if (holds_media) p.media_containers.push_back(uint32_t(p.analytic_root.size()));
         p.analytic_root.push_back(root);
-        const Sphere bound = csg_bound(p, root);
+        Sphere bound = csg_bound(p, root);
+        if (obj.bound.radius < bound.radius) bound = obj.bound; // bounded_by
         p.prim_sphere.push_back(bound);
         p.prim_object.push_back(uint32_t(p.object_sphere.size()));
         p.object_sphere.push_back(bound);

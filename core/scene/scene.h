@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/geometry/shape.h"
+#include "core/geometry/sphere.h"
 #include "core/math/affine.h"
 #include "core/scene/pattern.h"
 #include "core/scene/photon_settings.h"
@@ -62,18 +63,18 @@ struct Material {
     // interior_texture): that whole material, ior and fade included, so it should share this
     // one's; one without an `inside` of its own. Shadow rays see this one.
     int32_t inside = -1;
-    float brilliance = 1.0f;                   // the diffuse term is cos^brilliance
+    float brilliance = 1.0f;                    // the diffuse term is cos^brilliance
     float blinn = 0.0f, blinn_exponent = 20.0f; // half-vector highlight (POV-Ray's specular)
-    float metallic = 0.0f;                     // highlights tinted by the surface colour
-    Vec3 mirror_color{1.0f, 1.0f, 1.0f};       // mirror reflection is mirror * mirror_color
-    float mirror_min = -1.0f; // >= 0: reflection varies from mirror_min (facing) to mirror
-    float mirror_falloff = 1.0f; //   (grazing) as (1 - cos)^falloff,
-    bool mirror_fresnel = false; //   or by Fresnel's law with `ior`
+    float metallic = 0.0f;                      // highlights tinted by the surface colour
+    Vec3 mirror_color{1.0f, 1.0f, 1.0f};        // mirror reflection is mirror * mirror_color
+    float mirror_min = -1.0f;     // >= 0: reflection varies from mirror_min (facing) to mirror
+    float mirror_falloff = 1.0f;  //   (grazing) as (1 - cos)^falloff,
+    bool mirror_fresnel = false;  //   or by Fresnel's law with `ior`
     bool mirror_metallic = false; // reflection tinted by the surface colour
     bool conserve_energy = false; // diffuse and transmission keep what reflection leaves
-    bool fresnel_split = true; // transmission splits into reflection and refraction by Fresnel
-                               // (POV-Ray: reflection only from the finish)
-    Vec3 fade_color{0.0f, 0.0f, 0.0f}; // light inside fades to this colour:
+    bool fresnel_split = true;    // transmission splits into reflection and refraction by Fresnel
+                                  // (POV-Ray: reflection only from the finish)
+    Vec3 fade_color{0.0f, 0.0f, 0.0f};             // light inside fades to this colour:
     float fade_distance = 0.0f, fade_power = 0.0f; //   1 / (1 + (d / fade_distance)^fade_power)
     uint32_t media_first = 0, media_count = 0;     // the media inside: Scene::media
     // POV-Ray's light groups: 0, lit by the lights in no group; g (1 .. kMaxLightGroup), lit
@@ -171,9 +172,9 @@ struct Light {
     float spot_tightness = 0.0f; // spot: intensity times cos(angle)^tightness
     float fade_distance = 0.0f;  // > 0: intensity 2 / (1 + (d / fade_distance)^fade_power)
     float fade_power = 0.0f;
-    bool shadowless = false; // lights without shadow rays
-    bool highlights = true;  // false: diffuse light only (POV-Ray's shadowless lights)
-    bool media_interaction = true; // false: media do not scatter this light
+    bool shadowless = false;        // lights without shadow rays
+    bool highlights = true;         // false: diffuse light only (POV-Ray's shadowless lights)
+    bool media_interaction = true;  // false: media do not scatter this light
     bool media_attenuation = false; // true: the atmosphere's media fade its light on its way
     uint16_t group = 0; // > 0: lights only materials of that light group (Material::light_group)
     // Photons it sends reflect and refract where the object's switches allow
@@ -313,15 +314,15 @@ enum class CsgOp : uint8_t { Leaf, Union, Merge, Intersection, Difference, Clip 
 /// same object. `inverse` swaps inside and outside (POV-Ray's `inverse`).
 struct CsgNode {
     CsgOp op = CsgOp::Leaf;
-    Shape shape;           // leaf
-    std::shared_ptr<const PolyCoeffs> poly;    // leaf of kind Poly: its coefficients
-    std::shared_ptr<const GlyphOutline> glyph; // leaf of kind Glyph: its outline
+    Shape shape;                                         // leaf
+    std::shared_ptr<const PolyCoeffs> poly;              // leaf of kind Poly: its coefficients
+    std::shared_ptr<const GlyphOutline> glyph;           // leaf of kind Glyph: its outline
     std::shared_ptr<const RevolutionProfile> revolution; // leaf of kind Revolution: its profile
     std::shared_ptr<const BlobModel> blob;               // leaf of kind Blob: its components
     std::shared_ptr<const IsoRef> iso; // leaf of kind Isosurface (bound computed by prepare)
     std::shared_ptr<const JuliaFractal> julia; // leaf of kind Julia: its parameters
-    Affine transform;      // leaf: shape space -> object space
-    uint32_t material = 0; // leaf
+    Affine transform;                          // leaf: shape space -> object space
+    uint32_t material = 0;                     // leaf
     bool inverse = false;
     std::vector<uint32_t> children; // operation: indices into the object's nodes
 };
@@ -335,9 +336,13 @@ struct ShapeObject {
     std::string name;
     std::vector<CsgNode> nodes;
     uint32_t root = 0;
-    Affine transform; // object space -> world
+    Affine transform;  // object space -> world
     uint8_t flags = 0; // ObjectFlag bits
     PhotonObject photons;
+    /// A bound the scene gives (POV-Ray's bounded_by), in world space: where it is smaller
+    /// than the one its shapes give (none for a polynomial surface), rays that miss it skip
+    /// the object. Infinite: none.
+    Sphere bound{Vec3(0.0f), INFINITY};
 };
 
 /// The deepest nesting of CSG operations in `o` (a lone shape: 0), against kMaxCsgNesting.
@@ -368,7 +373,7 @@ class Scene {
     std::vector<Pigment> pigments;
     std::vector<PigmentEntry> pigment_entries;
     std::vector<NormalPattern> normal_patterns;
-    std::vector<SlopeEntry> slope_entries; // the normal patterns' slope maps
+    std::vector<SlopeEntry> slope_entries;          // the normal patterns' slope maps
     std::vector<NormalMapEntry> normal_map_entries; // and their normal maps
     std::vector<MaterialSwitch> material_switches;
     std::vector<MaterialEntry> material_entries;

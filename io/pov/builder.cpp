@@ -83,6 +83,9 @@ struct Builder {
     uint16_t group = 0;
     uint16_t groups = 0;                                            // light groups so far
     std::map<std::pair<uint32_t, uint16_t>, uint32_t> grouped = {}; // (material, group) -> copy
+    // The box of the bounded_by objects around the object being built (POV-Ray's space):
+    // unbounded when none is given.
+    Vec3 bound_lo_ = Vec3(-INFINITY), bound_hi_ = Vec3(INFINITY);
 
     /// Builds `body` as the members of light group `o` when it is one.
     template <class Body> auto in_group(const PovObject& o, Body body) {
@@ -327,7 +330,26 @@ struct Builder {
 
     void top(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
              const PovTexture* parent_inside, uint8_t parent_flags) {
+        const Vec3 outer_lo = bound_lo_, outer_hi = bound_hi_;
+        Vec3 lo, hi;
+        // A bound the size of POV-Ray's "huge" (a plane, a polynomial) bounds nothing.
+        if (o.bounded_by && object_extent(*o.bounded_by, lo, hi) &&
+            std::fmax(std::fmax(std::fabs(lo.x), std::fabs(lo.y)), std::fabs(lo.z)) < 1e9f &&
+            std::fmax(std::fmax(std::fabs(hi.x), std::fabs(hi.y)), std::fabs(hi.z)) < 1e9f)
+            bound_lo_ = vmax(bound_lo_, lo), bound_hi_ = vmin(bound_hi_, hi);
         in_group(o, [&] { top_in(o, parent, parent_in, parent_inside, parent_flags); });
+        bound_lo_ = outer_lo, bound_hi_ = outer_hi;
+    }
+
+    /// The bounded_by box around the object being built as a sphere in Sheaf's world
+    /// (infinite: none). Nested bounds that do not meet leave a point.
+    Sphere bound_sphere() const {
+        if (!(std::fabs(bound_lo_.x) < INFINITY) || !(std::fabs(bound_hi_.x) < INFINITY))
+            return {Vec3(0.0f), INFINITY};
+        const Vec3 c = flip.point((bound_lo_ + bound_hi_) * 0.5f);
+        if (bound_lo_.x > bound_hi_.x || bound_lo_.y > bound_hi_.y || bound_lo_.z > bound_hi_.z)
+            return {c, 0.0f};
+        return {c, pad_radius(length(bound_hi_ - bound_lo_) * 0.5f, c)};
     }
 
     void top_in(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
@@ -375,6 +397,7 @@ struct Builder {
         // POV-Ray's objects are solid unless `hollow`: media around them leave them out.
         so.flags = uint8_t(flags | (o.hollow ? 0 : kSolid));
         so.photons = photons_of(o);
+        so.bound = bound_sphere();
         scene.add_shape_object(std::move(so));
     }
 

@@ -231,6 +231,9 @@ struct PovObject {
     std::shared_ptr<const std::vector<int32_t>> face_texture;
     CsgOp op = CsgOp::Union;
     std::vector<PovObject> children;
+    /// bounded_by's objects (a union of them), moved with the object: a ray that misses them
+    /// may skip it (null: none given).
+    std::shared_ptr<const PovObject> bounded_by;
     Affine local;
     PovTextureRef texture;                       // null: inherited (or the default texture)
     std::shared_ptr<const PovInterior> interior; // null: inherited (or none)

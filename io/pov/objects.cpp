@@ -383,7 +383,7 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
         parse_vector();
     } else if (k == "bounded_by") {
         advance();
-        skip_block();
+        parse_bounded_by(o);
     } else if (k == "clipped_by") {
         advance();
         parse_clipped_by(t, o);
@@ -404,6 +404,25 @@ bool analytic(const PovObject& o) {
 }
 
 } // namespace
+
+void Parser::parse_bounded_by(PovObject& o) {
+    expect_sym("{");
+    auto bound = std::make_shared<PovObject>();
+    bound->kind = PovKind::Csg, bound->op = CsgOp::Union;
+    bool clip = false; // bounded_by { clipped_by }: the clip bounds it, already in the object
+    for (;;) {
+        const Token& t = peek();
+        if (accept_sym("}")) break;
+        if (accept_kw("clipped_by")) {
+            clip = true;
+            continue;
+        }
+        if (!is_object_start(t)) error_expected(t, "an object or '}'");
+        PovObject c;
+        if (parse_object(c)) bound->children.push_back(std::move(c));
+    }
+    if (!clip && !bound->children.empty()) o.bounded_by = std::move(bound);
+}
 
 void Parser::parse_clipped_by(const Token& kw, PovObject& o) {
     expect_sym("{");
@@ -516,6 +535,11 @@ void set_hollow(PovObject& o, bool hollow) {
 }
 
 void Parser::apply_transform(PovObject& o, const Affine& m) {
+    if (o.bounded_by) {
+        auto b = std::make_shared<PovObject>(*o.bounded_by);
+        apply_transform(*b, m);
+        o.bounded_by = std::move(b);
+    }
     o.texture = transformed(o.texture, m);
     o.interior_texture = transformed(o.interior_texture, m);
     for (PovTextureRef& t : o.face_textures) t = transformed(t, m);

@@ -261,6 +261,8 @@ class Parser {
     void parse_object_modifiers(PovObject& o, bool& texture_here);
     /// One modifier (transform, texture, flag ...); false when the next token is not one.
     bool parse_modifier(PovObject& o, bool& texture_here);
+    /// bounded_by { objects } after its keyword, into o.bounded_by.
+    void parse_bounded_by(PovObject& o);
     void parse_clipped_by(const Token& kw, PovObject& o);
     bool parse_transform_item(Affine& m);
     Affine parse_transform_block();

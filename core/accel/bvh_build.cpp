@@ -27,9 +27,9 @@ namespace sheaf {
 namespace {
 
 constexpr int kBins = 32;
-constexpr uint32_t kMaxLeaf = 8;          // primitives a leaf holds at most
-constexpr float kNodeCost = 1.0f;         // a box test against a primitive test
-constexpr uint32_t kParallelBin = 1u << 16; // ranges binned in parallel from this size
+constexpr uint32_t kMaxLeaf = 8;              // primitives a leaf holds at most
+constexpr float kNodeCost = 1.0f;             // a box test against a primitive test
+constexpr uint32_t kParallelBin = 1u << 16;   // ranges binned in parallel from this size
 constexpr uint32_t kParallelBuild = 1u << 12; // children built in parallel from this size
 
 struct Box {
@@ -65,7 +65,9 @@ struct Split {
 };
 
 /// Bounds that stay conservative after rounding: grown by kBoundPad of their magnitude.
-Vec3 vabs(const Vec3& v) { return {std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}; }
+Vec3 vabs(const Vec3& v) {
+    return {std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)};
+}
 
 Box padded(Box b) {
     const Vec3 m = vmax(vmax(vabs(b.lo), vabs(b.hi)), b.hi - b.lo);
@@ -137,7 +139,14 @@ class Builder {
         } else {
             const Sphere& s = scene_.prim_sphere[p];
             if (!(std::fabs(s.radius) <= 1e30f)) return Box{Vec3(-INFINITY), Vec3(INFINITY)};
-            b.lo = s.center - Vec3(std::fabs(s.radius)), b.hi = s.center + Vec3(std::fabs(s.radius));
+            b.lo = s.center - Vec3(std::fabs(s.radius)),
+            b.hi = s.center + Vec3(std::fabs(s.radius));
+            // The object's own box where the scene has one (csg_box), inside that cube.
+            const size_t a = p - scene_.tris.size();
+            if (a < scene_.analytic_box.size()) {
+                const WorldBox& w = scene_.analytic_box[a];
+                b.lo = vmax(b.lo, w.lo), b.hi = vmin(b.hi, w.hi);
+            }
         }
         return b;
     }
@@ -317,7 +326,8 @@ class Builder {
             for (int a = 0; a < 3; ++a) node.lo[a][i] = FLT_MAX, node.hi[a][i] = -FLT_MAX;
         }
         for (size_t i = 0; i < kids.size(); ++i) {
-            for (int a = 0; a < 3; ++a) node.lo[a][i] = kids[i].box.lo[a], node.hi[a][i] = kids[i].box.hi[a];
+            for (int a = 0; a < 3; ++a)
+                node.lo[a][i] = kids[i].box.lo[a], node.hi[a][i] = kids[i].box.hi[a];
             if (fate[i].leaf) {
                 node.child[i] = kids[i].begin, node.count[i] = kids[i].size();
             } else {
@@ -389,7 +399,9 @@ struct BvhCache {
     std::shared_ptr<const Bvh> bvh;
 };
 
-std::shared_ptr<BvhCache> new_bvh_cache() { return std::make_shared<BvhCache>(); }
+std::shared_ptr<BvhCache> new_bvh_cache() {
+    return std::make_shared<BvhCache>();
+}
 
 Bvh build_bvh(const PreparedScene& scene, uint32_t chunk) {
     Bvh bvh;

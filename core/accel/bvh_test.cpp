@@ -73,9 +73,11 @@ void expect_valid(const PreparedScene& scene, const Bvh& bvh, const std::string&
                     EXPECT_TRUE(inside(t.a, b) && inside(t.b, b) && inside(t.c, b))
                         << what << ": triangle " << p;
                 } else {
+                    // The object's box (csg_box) within the cube around its sphere.
                     const Sphere& s = scene.prim_sphere[p];
-                    EXPECT_TRUE(inside(s.center - Vec3(s.radius), b) &&
-                                inside(s.center + Vec3(s.radius), b))
+                    const WorldBox& w = scene.analytic_box[p - scene.tris.size()];
+                    EXPECT_TRUE(inside(vmax(s.center - Vec3(s.radius), w.lo), b) &&
+                                inside(vmin(s.center + Vec3(s.radius), w.hi), b))
                         << what << ": shape " << p;
                 }
             }

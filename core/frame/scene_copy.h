@@ -10,9 +10,9 @@
 
 #include "core/base/content_hash.h"
 #include "core/frame/buffer.h"
+#include "core/frame/photon_pass.h"
 #include "core/rsh/cull_units.h"
 #include "core/scene/scene_view.h"
-#include "core/frame/photon_pass.h"
 
 #include <cstdint>
 #include <cstring>
@@ -29,7 +29,7 @@ struct CullView {
     const uint32_t* object = nullptr;
     const uint32_t* object_units = nullptr; // objects + 1 entries
     uint32_t count = 0;
-    BvhView bvh; // accel=bvh (CullUnits::bvh); empty otherwise
+    BvhView bvh;       // accel=bvh (CullUnits::bvh); empty otherwise
     StripsView strips; // accel=strips (CullUnits::strips); empty otherwise
 };
 
@@ -136,6 +136,7 @@ template <class Exec> class DeviceScene {
         f(p.uvs, v.uvs);
         f(p.prim_object, v.prim_object);
         f(p.prim_sphere, v.prim_sphere);
+        f(p.analytic_box, v.analytic_box);
         f(p.prim_flags, v.prim_flags);
         f(p.object_begin, v.object_begin);
         f(p.object_sphere, v.object_sphere);

@@ -62,7 +62,98 @@ Sphere local_bound(const PreparedScene& scene, const Shape& s) {
     return {Vec3(0.0f), INFINITY};
 }
 
+/// The shape's canonical solid's box where the kind has a tight one (shape.h), else the cube
+/// around local_bound. False: unbounded.
+bool local_box(const PreparedScene& scene, const Shape& s, Vec3& lo, Vec3& hi) {
+    switch (s.kind) {
+    case ShapeKind::Sphere:
+    case ShapeKind::Box:
+    case ShapeKind::Superellipsoid:
+        lo = Vec3(-1.0f), hi = Vec3(1.0f);
+        return true;
+    case ShapeKind::Cylinder:
+        lo = Vec3(-1, -1, 0), hi = Vec3(1, 1, 1);
+        return true;
+    case ShapeKind::Cone: {
+        const float r = std::fmax(std::fabs(s.a), std::fabs(s.b));
+        lo = Vec3(-r, -r, 0), hi = Vec3(r, r, 1);
+        return true;
+    }
+    case ShapeKind::Disc:
+        lo = Vec3(-1, -1, 0), hi = Vec3(1, 1, 0);
+        return true;
+    case ShapeKind::Torus: {
+        const float r = std::fabs(s.a);
+        lo = Vec3(-1 - r, -1 - r, -r), hi = Vec3(1 + r, 1 + r, r);
+        return true;
+    }
+    case ShapeKind::Revolution: {
+        const RevolutionRef& g = scene.revolutions[s.index];
+        lo = Vec3(-g.r_max, -g.r_max, g.h_lo), hi = Vec3(g.r_max, g.r_max, g.h_hi);
+        return true;
+    }
+    default: {
+        const Sphere b = local_bound(scene, s);
+        if (!std::isfinite(b.radius)) return false;
+        lo = b.center - Vec3(b.radius), hi = b.center + Vec3(b.radius);
+        return true;
+    }
+    }
+}
+
+/// The overlap of a and b; where they do not meet (an intersection of parts apart), b.
+WorldBox meet(WorldBox a, const WorldBox& b) {
+    a.lo = vmax(a.lo, b.lo), a.hi = vmin(a.hi, b.hi);
+    if (a.lo.x > a.hi.x || a.lo.y > a.hi.y || a.lo.z > a.hi.z) return b;
+    return a;
+}
+
+/// The cube around a sphere (infinite: unbounded).
+WorldBox cube(const Sphere& s) {
+    WorldBox b;
+    if (std::isfinite(s.radius)) b.lo = s.center - Vec3(s.radius), b.hi = s.center + Vec3(s.radius);
+    return b;
+}
+
 } // namespace
+
+WorldBox csg_box(const PreparedScene& scene, uint32_t node) {
+    const PreparedCsgNode& n = scene.csg[node];
+    const WorldBox around = cube(csg_bound(scene, node));
+    if (n.inverse) return WorldBox();
+    if (n.op == CsgOp::Leaf) {
+        const PlacedShape& ps = scene.shapes[n.first];
+        Vec3 lo, hi;
+        if (!local_box(scene, ps.shape, lo, hi)) return WorldBox();
+        const Affine to_world = ps.to_local.inverse();
+        WorldBox b;
+        b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);
+        for (int c = 0; c < 8; ++c) {
+            const Vec3 p =
+                to_world.point(Vec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
+            b.lo = vmin(b.lo, p), b.hi = vmax(b.hi, p);
+        }
+        // Padded as pad_radius pads a sphere: the box of rounded corners holds the solid.
+        const Vec3 big = vmax(Vec3(std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.lo.z)),
+                              Vec3(std::fabs(b.hi.x), std::fabs(b.hi.y), std::fabs(b.hi.z)));
+        const Vec3 pad = (big + (b.hi - b.lo)) * 1e-5f;
+        b.lo = b.lo - pad, b.hi = b.hi + pad;
+        return meet(b, around);
+    }
+    std::vector<WorldBox> kids;
+    for (uint32_t c = 0; c < n.count; ++c)
+        kids.push_back(csg_box(scene, scene.csg_children[n.first + c]));
+    if (n.op == CsgOp::Difference) return meet(kids[0], around); // inside the first child
+    if (n.op == CsgOp::Intersection || n.op == CsgOp::Clip) {
+        WorldBox b = around; // inside every child
+        for (const WorldBox& k : kids) b = meet(b, k);
+        return b;
+    }
+    WorldBox b;
+    b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);
+    for (const WorldBox& k : kids) b.lo = vmin(b.lo, k.lo), b.hi = vmax(b.hi, k.hi);
+    return meet(b, around);
+}
 
 Sphere csg_bound(const PreparedScene& scene, uint32_t node) {
     const PreparedCsgNode& n = scene.csg[node];

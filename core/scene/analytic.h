@@ -4,6 +4,7 @@
 
 #include "core/geometry/csg.h"
 #include "core/geometry/sphere.h"
+#include "core/geometry/world_box.h"
 #include "core/scene/scene_view.h"
 
 namespace sheaf {
@@ -120,6 +121,11 @@ SHEAF_HD inline bool analytic_first_hit(const SceneView& scene, uint32_t index, 
 /// A world-space sphere holding the node's solid; radius +inf when unbounded (planes,
 /// `inverse`), so the node is a candidate for every ray. Host only (scene preparation).
 Sphere csg_bound(const PreparedScene& scene, uint32_t node);
+
+/// A world-space axis-aligned box holding the node's solid, within the cube around its
+/// csg_bound (a shape's own box through its transform, CSG combined as csg_bound does);
+/// infinite where that is. Host only (scene preparation: the BVH's boxes).
+WorldBox csg_box(const PreparedScene& scene, uint32_t node);
 
 /// Placed shape of a leaf: world <-> local transforms from the leaf's world transform.
 PlacedShape place_shape(const Shape& shape, const Affine& local_to_world);

@@ -107,22 +107,59 @@ TEST(Analytic, CsgSpansMatchMembership) {
     EXPECT_GT(hits, 50);
 }
 
-TEST(Analytic, BoundsHoldEveryHit) {
-    const PreparedScene scene = csg_scene();
+// Every hit of random rays lies in the object's sphere and in its box (csg_box).
+void expect_bounds_hold(const PreparedScene& scene, const std::string& what) {
     std::mt19937 g(4);
     std::uniform_real_distribution<float> u(-1, 1);
+    ASSERT_EQ(scene.analytic_box.size(), scene.analytic_root.size());
     for (uint32_t a = 0; a < scene.analytic_root.size(); ++a) {
         const Sphere& s = scene.prim_sphere[scene.tris.size() + a];
-        for (int k = 0; k < 2000; ++k) {
+        const WorldBox& b = scene.analytic_box[a];
+        int hits = 0;
+        for (int k = 0; k < 4000; ++k) {
             Ray r;
             r.origin = Vec3(u(g), u(g), u(g)) * 5.0f;
             r.dir = normalize(Vec3(u(g), u(g), u(g)) * 2.0f - r.origin);
             r.tmin = 0, r.tmax = 1e30f;
             AnalyticHit h;
-            if (analytic_first_hit(scene, a, r, h) && std::isfinite(s.radius))
-                ASSERT_LE(length(ray_at(r, h.t) - s.center), s.radius) << "object " << a;
+            if (!analytic_first_hit(scene, a, r, h)) continue;
+            ++hits;
+            const Vec3 p = ray_at(r, h.t);
+            if (std::isfinite(s.radius))
+                ASSERT_LE(length(p - s.center), s.radius) << what << " object " << a;
+            ASSERT_TRUE(p.x >= b.lo.x && p.y >= b.lo.y && p.z >= b.lo.z && p.x <= b.hi.x &&
+                        p.y <= b.hi.y && p.z <= b.hi.z)
+                << what << " object " << a << ": hit outside its box";
         }
+        if (std::isfinite(s.radius)) EXPECT_GT(hits, 0) << what << " object " << a;
     }
+}
+
+TEST(Analytic, BoundsHoldEveryHit) {
+    const PreparedScene scene = csg_scene();
+    expect_bounds_hold(scene, "csg");
+    // Every kind with a box of its own, turned and stretched.
+    Scene kinds;
+    const uint32_t m = kinds.add_material(Material{});
+    const Affine turn = Affine::rotate(normalize(Vec3(1, 2, 3)), 0.7f);
+    const Shape shapes[] = {{ShapeKind::Sphere},
+                            {ShapeKind::Box},
+                            {ShapeKind::Cylinder},
+                            {ShapeKind::Cone, 0.3f, 1.0f},
+                            {ShapeKind::Disc, 0.2f},
+                            {ShapeKind::Torus, 0.3f},
+                            {ShapeKind::Superellipsoid, 0.5f, 0.5f}};
+    for (size_t i = 0; i < std::size(shapes); ++i)
+        kinds.add_shape("kind", shapes[i], m,
+                        Affine::translate(Vec3(float(i) - 3, 0, 0)) * turn *
+                            Affine::scale(Vec3(0.4f, 0.7f, 0.3f)));
+    const PreparedScene k = prepare_scene(kinds);
+    expect_bounds_hold(k, "kinds");
+    // A box's own box is tighter than the cube around its sphere.
+    const WorldBox& box = k.analytic_box[1];
+    const Sphere& sphere = k.prim_sphere[1];
+    EXPECT_LT((box.hi.x - box.lo.x) * (box.hi.y - box.lo.y) * (box.hi.z - box.lo.z),
+              0.5f * 8 * sphere.radius * sphere.radius * sphere.radius);
     // The plane is unbounded: a candidate for every ray.
     EXPECT_FALSE(std::isfinite(scene.prim_sphere[scene.tris.size() + 1].radius));
 }

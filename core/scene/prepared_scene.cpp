@@ -292,7 +292,12 @@ PreparedScene prepare_scene(const Scene& scene) {
         if (holds_media) p.media_containers.push_back(uint32_t(p.analytic_root.size()));
         p.analytic_root.push_back(root);
         Sphere bound = csg_bound(p, root);
+        WorldBox box = csg_box(p, root);
         if (obj.bound.radius < bound.radius) bound = obj.bound; // bounded_by
+        // bounded_by's box, where it meets the object's own (parts apart: a point).
+        box.lo = vmax(box.lo, obj.bound_box.lo), box.hi = vmin(box.hi, obj.bound_box.hi);
+        if (box.lo.x > box.hi.x || box.lo.y > box.hi.y || box.lo.z > box.hi.z) box.hi = box.lo;
+        p.analytic_box.push_back(box);
         p.prim_sphere.push_back(bound);
         p.prim_object.push_back(uint32_t(p.object_sphere.size()));
         p.object_sphere.push_back(bound);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/geometry/sphere.h"
+#include "core/geometry/world_box.h"
 #include "core/scene/camera_faces.h"
 #include "core/scene/scene.h"
 #include "core/texture/texture.h"
@@ -65,9 +66,9 @@ struct PreparedScene {
     std::vector<std::string> object_name;
     std::vector<PhotonObject> object_photons; // what each object does with photons
 
-    std::vector<PlacedShape> shapes;      // every leaf of every analytic object
-    std::vector<PolyCoeffs> polys;        // of the poly leaves, indexed by Shape::index
-    std::vector<GlyphRef> glyphs;         // of the glyph leaves, indexed by Shape::index
+    std::vector<PlacedShape> shapes;          // every leaf of every analytic object
+    std::vector<PolyCoeffs> polys;            // of the poly leaves, indexed by Shape::index
+    std::vector<GlyphRef> glyphs;             // of the glyph leaves, indexed by Shape::index
     std::vector<GlyphSegment> glyph_segments; // the glyphs' outlines
     std::vector<RevolutionRef> revolutions;   // of the revolution leaves, by Shape::index
     std::vector<RevolutionSegment> revolution_segments; // their profiles
@@ -75,10 +76,12 @@ struct PreparedScene {
     std::vector<BlobElement> blob_elements;             // their components
     std::vector<IsoRef> isosurfaces;                    // of the isosurface leaves
     std::vector<JuliaFractal> julias;                   // of the julia leaves, by Shape::index
-    std::vector<uint32_t> shape_material; // per placed shape
+    std::vector<uint32_t> shape_material;               // per placed shape
     std::vector<PreparedCsgNode> csg;
     std::vector<uint32_t> csg_children;
     std::vector<uint32_t> analytic_root; // per analytic primitive: its root node in csg
+    std::vector<WorldBox> analytic_box;  // per analytic primitive: its box (csg_box), which
+                                         // the BVH bounds it by
 
     std::vector<uint8_t> prim_flags; // ObjectFlag bits of each primitive's object, and
                                      // kPrimMayPass

@@ -5,6 +5,7 @@
 
 #include "core/geometry/shape.h"
 #include "core/geometry/sphere.h"
+#include "core/geometry/world_box.h"
 #include "core/math/affine.h"
 #include "core/scene/pattern.h"
 #include "core/scene/photon_settings.h"
@@ -343,6 +344,7 @@ struct ShapeObject {
     /// than the one its shapes give (none for a polynomial surface), rays that miss it skip
     /// the object. Infinite: none.
     Sphere bound{Vec3(0.0f), INFINITY};
+    WorldBox bound_box; // the same bound as a box (infinite: none)
 };
 
 /// The deepest nesting of CSG operations in `o` (a lone shape: 0), against kMaxCsgNesting.

@@ -22,6 +22,7 @@ struct SceneView : ShapeTables {
     uint32_t analytic_count = 0;
     const uint32_t* prim_object = nullptr;
     const Sphere* prim_sphere = nullptr;
+    const WorldBox* analytic_box = nullptr; // per analytic primitive (csg_box)
     const uint8_t* prim_flags = nullptr;
     uint32_t prim_flag_count = 0;
 
@@ -93,9 +94,9 @@ struct SceneView : ShapeTables {
                        p.fn_pigments.data(), p.fn_pigment_entries.data(), p.warps.data()},
                       p.julias.data()},
           tris(p.tris.data()), normals(p.normals.empty() ? nullptr : p.normals.data()),
-          uvs(p.uvs.empty() ? nullptr : p.uvs.data()),
-          tri_count(uint32_t(p.tris.size())), analytic_count(uint32_t(p.analytic_root.size())),
-          prim_object(p.prim_object.data()), prim_sphere(p.prim_sphere.data()),
+          uvs(p.uvs.empty() ? nullptr : p.uvs.data()), tri_count(uint32_t(p.tris.size())),
+          analytic_count(uint32_t(p.analytic_root.size())), prim_object(p.prim_object.data()),
+          prim_sphere(p.prim_sphere.data()), analytic_box(p.analytic_box.data()),
           prim_flags(p.prim_flags.data()), prim_flag_count(uint32_t(p.prim_flags.size())),
           object_begin(p.object_begin.data()), object_sphere(p.object_sphere.data()),
           object_material(p.object_material.data()), object_count(uint32_t(p.object_sphere.size())),

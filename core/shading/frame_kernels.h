@@ -33,7 +33,18 @@ SHEAF_HD_INLINE uint64_t cast_analytic_pixel(const SceneView& scene, const Camer
     const float depth_per_t = cam.ortho ? 1.0f : dot(ray.dir, cam.forward);
     for (uint32_t a = 0; a < scene.analytic_count; ++a) {
         if (scene.prim_flag(first + a, kNoImage)) continue;
-        if (!ray_meets_sphere(scene.prim_sphere[first + a], ray.origin, ray.dir)) continue;
+        const Sphere& s = scene.prim_sphere[first + a];
+        if (!ray_meets_sphere(s, ray.origin, ray.dir)) continue;
+        // Its box missed, or wholly behind the nearest surface so far (none of its hits
+        // would be in front).
+        float enter;
+        if (!ray_enters_box(scene.analytic_box[a], ray.origin, ray.dir, enter)) continue;
+        if (vis != kEmptyPixel) {
+            const uint32_t near_bits = uint32_t(vis >> 32);
+            float nearest;
+            memcpy(&nearest, &near_bits, 4);
+            if (enter * depth_per_t > nearest) continue;
+        }
         AnalyticHit h;
         if (!analytic_first_hit(scene, a, ray, h)) continue;
         const float depth = h.t * depth_per_t;

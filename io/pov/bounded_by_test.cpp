@@ -37,9 +37,19 @@ TEST(PovBoundedBy, BoundsAQuarticAndMovesWithIt) {
     EXPECT_NEAR(b.center.y, 2, 1e-5);
     EXPECT_NEAR(b.center.z, -3, 1e-5); // Sheaf's world: z mirrored
     EXPECT_NEAR(b.radius, std::sqrt(2.5 * 2.5 * 2 + 0.25), 1e-3);
+    const WorldBox& box = r.scene.shape_objects[0].bound_box; // the box itself, z mirrored
+    EXPECT_NEAR(box.lo.x, -1.5, 1e-3);
+    EXPECT_NEAR(box.hi.x, 3.5, 1e-3);
+    EXPECT_NEAR(box.lo.y, 1.5, 1e-3);
+    EXPECT_NEAR(box.hi.y, 2.5, 1e-3);
+    EXPECT_NEAR(box.lo.z, -5.5, 1e-3);
+    EXPECT_NEAR(box.hi.z, -0.5, 1e-3);
+    EXPECT_LE(box.lo.x, -1.5f); // padded outwards
+    EXPECT_GE(box.hi.z, -0.5f);
     // The prepared object takes it: no longer unbounded.
     const PreparedScene p = prepare_scene(r.scene);
     EXPECT_NEAR(p.object_sphere.back().radius, b.radius, 1e-3);
+    EXPECT_NEAR(p.analytic_box.back().lo.y, 1.5, 1e-3); // the BVH bounds it by the box
 }
 
 TEST(PovBoundedBy, PartsOfASplitUnionKeepTheirOwnSmallerBound) {

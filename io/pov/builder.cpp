@@ -22,6 +22,10 @@ Affine pov_to_sheaf() {
 
 namespace {
 
+Vec3 vabs3(Vec3 v) {
+    return Vec3(std::fabs(v.x), std::fabs(v.y), std::fabs(v.z));
+}
+
 /// Whether transform a squeezes space to a segment or a point (its linear part's rank at
 /// most 1: every 2 x 2 minor negligible against its largest entry squared).
 bool squeezed_to_a_line(const Affine& a) {
@@ -398,6 +402,11 @@ struct Builder {
         so.flags = uint8_t(flags | (o.hollow ? 0 : kSolid));
         so.photons = photons_of(o);
         so.bound = bound_sphere();
+        if (std::isfinite(so.bound.radius) && so.bound.radius > 0) {
+            const Vec3 a = flip.point(bound_lo_), b = flip.point(bound_hi_);
+            const Vec3 pad = (vmax(vabs3(a), vabs3(b)) + (b - a)) * 1e-5f;
+            so.bound_box.lo = vmin(a, b) - pad, so.bound_box.hi = vmax(a, b) + pad;
+        }
         scene.add_shape_object(std::move(so));
     }
 

@@ -1,5 +1,6 @@
 #include "io/pov/probe.h"
 
+#include "core/accel/bvh_trace.h"
 #include "core/base/error.h"
 #include "core/geometry/ray_triangle.h"
 #include "core/scene/analytic.h"
@@ -15,6 +16,7 @@ std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o, con
     build_object_geometry(p, o, q->scene);
     try {
         q->prepared = prepare_scene(q->scene);
+        q->bvh = build_bvh(q->prepared);
     } catch (const SceneError& e) {
         p.error_at(at, at.text + "() cannot trace this object: " + e.what());
     }
@@ -44,18 +46,37 @@ bool probe_trace(const ObjectProbe& q, Vec3 from, Vec3 dir, Vec3& hit, Vec3& nor
     r.dir = normalize(flip.vector(dir));
     r.tmin = 0, r.tmax = FLT_MAX;
     float best = FLT_MAX;
+    uint32_t best_prim = 0xFFFFFFFFu;
     Vec3 n(0.0f);
-    for (size_t i = 0; i < q.prepared.tris.size(); ++i) {
-        const TriangleVerts& tv = q.prepared.tris[i];
-        TriangleHit h;
-        if (intersect_triangle(r, tv.a, tv.b, tv.c, h) && h.t < best) {
-            best = h.t, r.tmax = h.t, n = cross(tv.b - tv.a, tv.c - tv.a);
-            if (dot(n, r.dir) > 0) n = -n;
+    const uint32_t tris = uint32_t(q.prepared.tris.size());
+    // The exact tests see the whole ray (r.tmax stays FLT_MAX), so a tie is found and the
+    // lower primitive keeps it, whatever order the BVH brings them in.
+    auto test = [&](uint32_t p) {
+        float t;
+        Vec3 normal;
+        if (p < tris) {
+            const TriangleVerts& tv = q.prepared.tris[p];
+            TriangleHit h;
+            if (!intersect_triangle(r, tv.a, tv.b, tv.c, h)) return;
+            t = h.t, normal = cross(tv.b - tv.a, tv.c - tv.a);
+            if (dot(normal, r.dir) > 0) normal = -normal;
+        } else {
+            AnalyticHit h;
+            if (!analytic_first_hit(view, p - tris, r, h)) return;
+            t = h.t, normal = h.normal;
         }
-    }
-    for (uint32_t a = 0; a < uint32_t(q.prepared.analytic_root.size()); ++a) {
-        AnalyticHit h;
-        if (analytic_first_hit(view, a, r, h) && h.t < best) best = h.t, r.tmax = h.t, n = h.normal;
+        if (t < best || (t == best && p < best_prim)) best = t, best_prim = p, n = normal;
+    };
+    const BvhView bvh = q.bvh.view();
+    for (uint32_t k = 0; k < bvh.unbounded_count; ++k) test(bvh.unbounded[k]);
+    if (bvh.node_count > 0) {
+        const Vec3 inv = bvh_inverse(r.dir);
+        BvhCounts counts;
+        bvh_walk<false>(bvh, r, inv, bvh_planes(inv), 0, best, counts,
+                        [&](uint32_t first, uint32_t count) {
+                            for (uint32_t k = first; k < first + count; ++k) test(bvh.prims[k]);
+                            return true;
+                        });
     }
     if (!(best < FLT_MAX)) return false;
     hit = flip.point(ray_at(r, best));

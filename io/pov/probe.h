@@ -3,6 +3,7 @@
 // own exact tests (core/scene/analytic.h, core/geometry/ray_triangle.h) over its primitives.
 #pragma once
 
+#include "core/accel/bvh.h"
 #include "core/scene/prepared_scene.h"
 #include "core/scene/scene.h"
 #include "io/pov/parser.h"
@@ -14,6 +15,7 @@ namespace sheaf::io::pov {
 struct ObjectProbe {
     Scene scene;
     PreparedScene prepared;
+    Bvh bvh; // over prepared: trace() walks it (a height field is many thousand triangles)
 };
 
 /// The probe of object `o` (its geometry in Sheaf's world space).
@@ -27,7 +29,8 @@ bool probe_inside(const ObjectProbe& q, Vec3 point);
 
 /// The first surface of the object along the ray from `from` in direction `dir` (POV-Ray
 /// coordinates): its point and its unit normal, out of the solid (a triangle's: facing
-/// `from`); false when it meets none.
+/// `from`); false when it meets none. Of hits at the same distance the lowest primitive's
+/// wins, as in a walk over them all in order.
 bool probe_trace(const ObjectProbe& q, Vec3 from, Vec3 dir, Vec3& hit, Vec3& normal);
 
 } // namespace sheaf::io::pov

@@ -35,7 +35,7 @@ bool Parser::parse_bicubic_patch(const Token& kw, PovObject& o) {
     // and the first point, not a comparison.
     ++no_lt_;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_kw("type")) {
             const double type = parse_float();
             if (type != 0 && type != 1) error_at(t, "a bicubic_patch's type must be 0 or 1");
@@ -62,7 +62,7 @@ bool Parser::parse_bicubic_patch(const Token& kw, PovObject& o) {
     std::array<Vec3, 16> p;
     for (int k = 0; k < 16; ++k) {
         accept_sym(","); // also after the settings: "v_steps 4, <0, 0, 0>, ..."
-        const Token at = peek();
+        const Token& at = peek();
         if (is_sym_tok(at, "}"))
             error_expected(at,
                            "control point " + std::to_string(k + 1) + " of the bicubic_patch's 16");
@@ -73,7 +73,7 @@ bool Parser::parse_bicubic_patch(const Token& kw, PovObject& o) {
     }
     bool texture_here = false;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (accept_kw("uv_vectors")) { // the texture corners: Sheaf's meshes take no POV uv
             for (int k = 0; k < 4; ++k) {

@@ -48,10 +48,10 @@ bool Parser::parse_blob(const Token& kw, PovObject& o) {
     };
     bool texture_here = false;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (accept_kw("threshold")) {
-            const Token at = peek();
+            const Token& at = peek();
             const double v = parse_float();
             if (!(v > 0) || !std::isfinite(v))
                 error_at(at, "a blob's threshold must be a positive, finite number");

@@ -83,7 +83,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
     if (!is_sym("(")) error_expected(peek(), "'(' after " + n);
     advance();
     if (n == "defined") {
-        const Token id = raw();
+        const Token& id = raw();
         if (id.kind != TokKind::Ident) error_expected(id, "an identifier");
         advance();
         bool d = lookup(id) != nullptr || find_macro(id.text) != nullptr;

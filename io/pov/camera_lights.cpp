@@ -37,7 +37,7 @@ void Parser::parse_camera(PovCamera& c) {
     Value declared;
     if (accept_declared(VType::Camera, declared, "a camera")) c = declared.as<PovCamera>();
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         Affine m;
         if (parse_transform_item(m)) {
@@ -51,7 +51,7 @@ void Parser::parse_camera(PovCamera& c) {
             c.projection = *type;
             c.type_at = t;
             if (k == "cylinder") {
-                const Token at = peek();
+                const Token& at = peek();
                 const double n = parse_float();
                 if (!(n == 1 || n == 2 || n == 3 || n == 4))
                     error_at(at, "a cylinder camera's type must be 1, 2, 3 or 4, not " +
@@ -71,7 +71,7 @@ void Parser::parse_camera(PovCamera& c) {
         else if (k == "sky")
             c.sky = parse_vector();
         else if (k == "angle") {
-            const Token at = peek();
+            const Token& at = peek();
             c.angle = parse_float();
             if (!(c.angle == 0 || camera_angle_ok(c.angle))) // 0: not given
                 error_at(at, "a camera's angle must lie between 0 and 3600 degrees");
@@ -85,13 +85,13 @@ void Parser::parse_camera(PovCamera& c) {
                          std::string(text) + " degrees that Sheaf's single-precision rays resolve");
             }
             if (accept_sym(",")) { // spherical: the vertical angle
-                const Token v = peek();
+                const Token& v = peek();
                 c.v_angle = parse_float();
                 if (!(c.v_angle == 0 || camera_angle_ok(c.v_angle)))
                     error_at(v, "a camera's vertical angle must lie between 0 and 3600 degrees");
             }
         } else if (k == "aperture") {
-            const Token at = peek();
+            const Token& at = peek();
             c.aperture = parse_float();
             c.aperture_at = t;
             if (!(c.aperture >= 0 && c.aperture < 1e30))
@@ -100,7 +100,7 @@ void Parser::parse_camera(PovCamera& c) {
             c.focal_point = parse_vector();
         } else if (k == "blur_samples") {
             // blur_samples [MIN,] MAX: Sheaf always takes about MAX (no adaptive stop).
-            const Token at = peek();
+            const Token& at = peek();
             double n = parse_float();
             if (accept_sym(",")) n = parse_float();
             if (!(n >= 1 && n <= 1e6))
@@ -125,13 +125,13 @@ void Parser::parse_camera(PovCamera& c) {
 
 void Parser::parse_mesh_camera(const Token& kw, PovCamera& c) {
     expect_sym("{");
-    const Token rays_at = peek();
+    const Token& rays_at = peek();
     const double rays = parse_float();
     if (!(rays >= 1 && rays <= double(kMaxMeshCameraRays)))
         error_at(rays_at, "a mesh camera takes 1 to " + std::to_string(kMaxMeshCameraRays) +
                               " rays per pixel");
     accept_sym(",");
-    const Token dist_at = peek();
+    const Token& dist_at = peek();
     const double dist = parse_float();
     if (!(dist == 0 || dist == 1 || dist == 2 || dist == 3))
         error_at(dist_at, "a mesh camera's distribution must be 0, 1, 2 or 3");
@@ -140,13 +140,13 @@ void Parser::parse_mesh_camera(const Token& kw, PovCamera& c) {
         error_at(rays_at, "a mesh camera of distribution 2 or 3 takes 1 ray per pixel");
     accept_sym(",");
     if (starts_expression(peek())) { // the longest ray
-        const Token at = peek();
+        const Token& at = peek();
         if (parse_float() != 0) unsupported(at, "mesh_camera's maximum ray distance (ignored)");
     }
     c.meshes.clear();
     c.mesh_smooth = false;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_kw("mesh") || accept_kw("mesh2")) {
             PovObject m;
             if (t.text == "mesh")
@@ -178,7 +178,7 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
     o.where = kw;
     expect_sym("{");
     Value declared;
-    const Token first = peek();
+    const Token& first = peek();
     if (accept_declared(VType::Object, declared, "a light")) {
         if (declared.as<PovObject>().kind != PovKind::Light) error_expected(first, "a light");
         o = declared.as<PovObject>();
@@ -190,7 +190,7 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
     }
     PovLight& l = o.light;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         Affine m;
         if (parse_transform_item(m)) {
@@ -266,13 +266,13 @@ void Parser::parse_light(const Token& kw, PovObject& o) {
 void Parser::parse_global_settings() {
     expect_sym("{");
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         if (t.kind != TokKind::Ident) error_expected(t, "a global setting or '}'");
         const std::string& k = t.text;
         advance();
         if (k == "assumed_gamma") {
-            const Token at = peek();
+            const Token& at = peek();
             model.assumed_gamma = parse_float();
             // The working space's gamma (Scene::working_gamma): POV-Ray's range of use.
             if (!(model.assumed_gamma >= 0.1 && model.assumed_gamma <= 10))
@@ -290,7 +290,7 @@ void Parser::parse_global_settings() {
             unsupported(t, k);
             if (is_sym_tok(peek(), "{")) skip_block();
         } else if (k == "irid_wavelength") {
-            const Token at = peek();
+            const Token& at = peek();
             const Color5 c = parse_color();
             if (!(c[0] > 0 && c[1] > 0 && c[2] > 0) || !std::isfinite(c[0] + c[1] + c[2]))
                 error_at(at, "irid_wavelength's components must be positive numbers");
@@ -298,12 +298,12 @@ void Parser::parse_global_settings() {
         } else if (k == "charset") {
             next();
         } else if (k == "noise_generator") { // as POV-Ray: 1, 2 or 3
-            const Token at = peek();
+            const Token& at = peek();
             const double g = parse_float();
             if (!(g >= 1 && g < 4)) error_at(at, "global noise_generator must be 1, 2 or 3");
             model.noise_generator = int(g);
         } else if (k == "number_of_waves") { // as POV-Ray: below 1 is 1
-            const Token at = peek();
+            const Token& at = peek();
             const double n = parse_float();
             if (!std::isfinite(n)) error_at(at, "number_of_waves must be a number");
             model.number_of_waves = int(std::clamp(n, 1.0, double(kPovMostWaves)));
@@ -344,29 +344,29 @@ void Parser::parse_radiosity() {
     model.radiosity = true;
     expect_sym("{");
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         if (t.kind != TokKind::Ident) error_expected(t, "a radiosity setting or '}'");
         const std::string k = t.text;
         advance();
         if (k == "count") {
-            const Token at = peek();
+            const Token& at = peek();
             const double c = parse_float();
             if (!(c >= 1)) error_at(at, "a radiosity count must be a positive number");
             model.radiosity_count = int(radiosity_in_range(at, "count", "radiosity.samples", c));
             if (accept_sym(",")) parse_float(); // the number of directions to draw from
         } else if (k == "recursion_limit") {
-            const Token at = peek();
+            const Token& at = peek();
             const double d = parse_float();
             if (!(d >= 1)) error_at(at, "a radiosity recursion_limit must be a positive number");
             model.radiosity_depth = int(radiosity_in_range(at, k, "radiosity.depth", d));
         } else if (k == "brightness") {
-            const Token at = peek();
+            const Token& at = peek();
             const double v = parse_float();
             if (!(v >= 0)) error_at(at, "a radiosity brightness must not be negative");
             model.radiosity_brightness = radiosity_in_range(at, k, "radiosity.brightness", v);
         } else if (k == "gray_threshold") {
-            const Token at = peek();
+            const Token& at = peek();
             if (parse_float() != 0) unsupported(at, "radiosity gray_threshold (ignored)");
         } else if (k == "normal" || k == "media" || k == "subsurface") {
             if (parse_bool_opt(true)) unsupported(t, "radiosity " + k + " on (ignored)");
@@ -401,7 +401,7 @@ PovSky Parser::parse_sky_sphere() {
         sky = declared.as<PovSky>();
     }
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         Affine m;
         if (parse_transform_item(m)) {
@@ -435,7 +435,7 @@ void Parser::parse_atmospheric(const Token& kw) {
         Vec3 up(0, 1, 0);
         Affine transform;
         for (;;) {
-            const Token t = peek();
+            const Token& t = peek();
             if (accept_sym("}")) break;
             Affine m;
             if (parse_transform_item(m)) { // turns the ground fog's up vector
@@ -451,11 +451,11 @@ void Parser::parse_atmospheric(const Token& kw) {
             } else if (accept_kw("fog_offset")) {
                 offset = parse_float();
             } else if (accept_kw("fog_alt")) {
-                const Token at = peek();
+                const Token& at = peek();
                 alt = parse_float();
                 if (!(alt > 0)) error_at(at, "fog_alt must be greater than 0");
             } else if (accept_kw("up")) {
-                const Token at = peek();
+                const Token& at = peek();
                 up = parse_vector();
                 if (!(length(up) > 0)) error_at(at, "the fog's up vector must not be zero");
             } else if (accept_kw("octaves") || accept_kw("omega") || accept_kw("lambda") ||
@@ -493,7 +493,7 @@ void Parser::parse_rainbow(const Token& kw) {
     PovModel::Rainbow r;
     bool arc = false, falloff = false;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (accept_kw("angle")) {
             r.angle = parse_float();
@@ -535,7 +535,7 @@ void Parser::parse_rainbow(const Token& kw) {
 }
 
 Value Parser::parse_rvalue() {
-    const Token t = peek();
+    const Token& t = peek();
     if (t.kind == TokKind::Ident && !lookup(t)) {
         const std::string& k = t.text;
         if (is_object_start(t)) {
@@ -660,7 +660,7 @@ Value Parser::parse_rvalue() {
 }
 
 bool Parser::parse_statement() {
-    const Token t = peek();
+    const Token& t = peek();
     if (t.kind == TokKind::End) return false;
     if (is_sym_tok(t, ";")) { // stray semicolons after directives
         advance();

@@ -10,7 +10,7 @@ namespace sheaf::io::pov {
 
 std::shared_ptr<const PovDensity> Parser::parse_density_file(const Token& keyword) {
     accept_kw("df3");
-    const Token name = peek();
+    const Token& name = peek();
     const std::string file = parse_string();
     const std::string path = find_file(file, name, "density file", {".df3"});
     // Read once per file: the patterns that name it share its voxels.

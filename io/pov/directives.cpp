@@ -201,7 +201,7 @@ void Parser::declare_directive(bool local) {
         if (is_kw_tok(raw(), "once")) advance();
         if (raw().kind == TokKind::String) advance();
     }
-    const Token name = raw();
+    const Token& name = raw();
     if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
     advance();
     // A #local belongs to the scope it is written in, though a macro the value calls may
@@ -261,7 +261,7 @@ void Parser::declare_directive(bool local) {
 }
 
 void Parser::undef_directive() {
-    const Token name = raw();
+    const Token& name = raw();
     if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
     advance();
     if (scopes_.erase_innermost(name_of(name))) return;
@@ -269,9 +269,9 @@ void Parser::undef_directive() {
 }
 
 void Parser::ifdef_directive(bool want_defined) {
-    const Token where = raw();
+    const Token& where = raw();
     expect_sym("(");
-    const Token name = raw();
+    const Token& name = raw();
     if (name.kind != TokKind::Ident) error_expected(name, "an identifier");
     advance();
     bool defined = lookup(name) != nullptr || find_macro(name.text) != nullptr;
@@ -326,7 +326,7 @@ Token Parser::next_directive_in_block(const Token& from, const char* missing_end
         if (t.kind == TokKind::End) error_at(from, missing_end);
         advance();
         if (!is_sym_tok(t, "#")) continue;
-        const Token d = raw();
+        const Token& d = raw();
         if (opens_block(d.text))
             ++depth;
         else if (d.text == "end" && depth > 0)
@@ -439,7 +439,7 @@ void Parser::break_directive(const Token& where) {
 }
 
 void Parser::version_directive() {
-    const Token t = peek();
+    const Token& t = peek();
     const double v = parse_float();
     if (v < 1 || v > 10) error_at(t, "#version " + std::to_string(v) + " is not a version");
     model.version = v;
@@ -450,7 +450,7 @@ void Parser::version_directive() {
 void Parser::default_directive() {
     expect_sym("{");
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         PovTexture& d = model.default_texture;
         if (accept_kw("texture")) {

@@ -54,6 +54,16 @@ TEST(PovDirectives, MacrosReturnValuesAndRecurse) {
               std::string::npos);
 }
 
+// A macro whose body ends with its own local (an array, a number): the value outlives the
+// macro's scope, which closes while the caller reads on (benchmark.pov's L_GetVN).
+TEST(PovDirectives, AMacroReturnsItsOwnLocal) {
+    const std::string s = "#macro Pair() #local A = array[2] {3, 4}\n A\n#end\n"
+                          "#macro Half(N) #local H = N / 2; H #end\n"
+                          "#declare B = Pair()\n"
+                          "#declare V = dimension_size(B, 1) * 100 + B[1] * 10 + Half(8);\n";
+    EXPECT_DOUBLE_EQ(declared(s, "V").v[0], 200 + 40 + 4);
+}
+
 TEST(PovDirectives, MacroArgumentsMayGoWithoutCommas) {
     // POV-Ray reads "off <100, 100>" as two arguments (shapes.inc's HF_Square in the portfolio's
     // o_shapes.pov): '<' outside parentheses starts a vector, it is no comparison; inside

@@ -132,7 +132,7 @@ Value Parser::parse_color_keyword(const Token& t) {
     if (k == "color" || k == "colour") return Value::color(parse_color());
     const bool srgb = k.rfind("srgb", 0) == 0;
     const std::string kind = srgb ? k.substr(1) : k; // rgb, rgbf, rgbt, rgbft
-    const Token at = peek();
+    const Token& at = peek();
     const Value v = parse_unary();
     if (!v.numeric()) error_expected(at, std::string("a colour vector, not ") + type_name(v.type));
     Color5 c{0, 0, 0, 0, 0};
@@ -168,7 +168,7 @@ Value Parser::parse_color_keyword(const Token& t) {
 Value Parser::parse_ternary() {
     Value c = parse_or();
     if (!is_sym_tok(peek_cont(), "?")) return c;
-    const Token q = raw();
+    const Token& q = raw();
     advance();
     const bool cond = truth(c);
     const int saved = no_gt_;
@@ -285,7 +285,7 @@ Value Parser::parse_postfix() {
     Value v = parse_primary();
     while (is_sym_tok(peek_cont(), ".")) {
         advance();
-        const Token m = raw();
+        const Token& m = raw();
         if (m.kind != TokKind::Ident) error_expected(m, "a component (x, y, z, red ...)");
         advance();
         if (!v.numeric()) error_at(m, std::string("'.") + m.text + "' of " + type_name(v.type));
@@ -340,7 +340,7 @@ Value Parser::parse_primary() {
             int n = 0;
             ++no_gt_;
             for (;;) {
-                const Token at = peek();
+                const Token& at = peek();
                 const Value e = parse_expr();
                 if (e.type != VType::Float)
                     error_expected(at, std::string("a float component, not ") + type_name(e.type));
@@ -372,7 +372,7 @@ Value Parser::index_value(const Value& base, const Token& t) {
     for (size_t k = 0; k < a.sizes.size(); ++k) {
         if (!is_sym_tok(peek_cont(), "[")) error_expected(raw(), "'[' (more array indices)");
         advance();
-        const Token at = peek();
+        const Token& at = peek();
         const double i = parse_float();
         expect_sym("]");
         if (i < 0 || size_t(i) >= a.sizes[k])
@@ -388,6 +388,7 @@ Value Parser::index_value(const Value& base, const Token& t) {
 Value Parser::parse_identifier(const Token& t) {
     if (const Value* found = lookup(t)) {
         advance();
+        // A copy before peek_cont, which may close the macro whose local it is.
         Value v = *found;
         if (v.type == VType::Array && is_sym_tok(peek_cont(), "[")) v = index_value(v, t);
         raise_pending(v);
@@ -445,7 +446,7 @@ Value Parser::parse_array_literal(const Token& t) {
     size_t count = 1;
     while (is_sym_tok(peek_cont(), "[")) {
         advance();
-        const Token at = peek();
+        const Token& at = peek();
         const double n = parse_float();
         expect_sym("]");
         if (n < 1) error_at(at, "an array needs at least one element per dimension");

@@ -76,7 +76,7 @@ std::string Parser::find_file(const std::string& name, const Token& where, const
 }
 
 void Parser::include_directive(const Token& where) {
-    const Token at = peek();
+    const Token& at = peek();
     const Value v = parse_condition(); // the including file stays open while it is read
     if (v.type != VType::String) error_expected(at, "the include file's name");
     const std::string name = v.str;

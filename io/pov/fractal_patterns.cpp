@@ -12,7 +12,7 @@ void Parser::parse_fractal(PovPattern& pt, const std::string& keyword) {
     bool julia = keyword == "julia";
     pt.fractal.magnet = 0;
     if (keyword == "magnet") {
-        const Token at = peek();
+        const Token& at = peek();
         const double type = parse_float();
         if (type != 1 && type != 2) error_at(at, "a magnet pattern's type must be 1 or 2");
         pt.fractal.magnet = uint8_t(type);
@@ -21,7 +21,7 @@ void Parser::parse_fractal(PovPattern& pt, const std::string& keyword) {
     }
     pt.kind = julia ? PatternKind::Julia : PatternKind::Mandel;
     if (julia) {
-        const Token at = peek();
+        const Token& at = peek();
         const Value c = parse_expr();
         if (c.type != VType::Float && c.type != VType::Vector)
             error_expected(at, "julia's complex constant, a 2-vector such as <0.3, 0.44>");
@@ -29,7 +29,7 @@ void Parser::parse_fractal(PovPattern& pt, const std::string& keyword) {
         pt.fractal.c[1] = float(c.type == VType::Float ? c.v[0] : c.v[1]);
         accept_sym(",");
     }
-    const Token at = peek();
+    const Token& at = peek();
     const double n = parse_float();
     if (!(n >= 1 && n <= kFractalMaxIterations))
         error_at(at, "a fractal pattern's iterations must lie between 1 and " +
@@ -40,7 +40,7 @@ void Parser::parse_fractal(PovPattern& pt, const std::string& keyword) {
 void Parser::parse_fractal_modifier(const Token& keyword, FractalParams& f) {
     const std::string& k = keyword.text;
     if (k == "exponent") {
-        const Token at = peek();
+        const Token& at = peek();
         const double e = parse_float();
         if (!(e >= kFractalMinExponent && e <= kFractalMaxExponent))
             error_at(at, "a fractal pattern's exponent must lie between " +
@@ -50,12 +50,12 @@ void Parser::parse_fractal_modifier(const Token& keyword, FractalParams& f) {
         return;
     }
     const bool inside = k == "interior";
-    const Token at = peek();
+    const Token& at = peek();
     const double type = std::trunc(parse_float()); // povray takes the whole part too
     if (const char* why = fractal_type_error(inside, type))
         error_at(at, std::string("a fractal pattern's ") + (why + 4)); // "the " dropped
     accept_sym(",");
-    const Token factor_at = peek();
+    const Token& factor_at = peek();
     const double factor = parse_float();
     if (const char* why = fractal_factor_error(inside, type, factor)) error_at(factor_at, why);
     if (inside) {

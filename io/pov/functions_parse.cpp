@@ -33,7 +33,7 @@ Value Parser::parse_function(const Token& t) {
     const Token& first = peek();
     if (!is_sym_tok(first, "{")) error_expected(first, "'{'");
     advance();
-    const Token b = peek();
+    const Token& b = peek();
     if (is_kw_tok(b, "internal")) {
         parse_internal_function(*f);
         expect_sym("}", "'}'");
@@ -103,7 +103,7 @@ void Parser::parse_pattern_function(PovFunction& f) {
     Affine local;
     int list = 0;
     bool supported = false;
-    const Token name = peek();
+    const Token& name = peek();
     if (!parse_pattern_name(pt, list, supported)) error_expected(name, "a pattern");
     only_in_normals(name, pt);
     while (!accept_sym("}"))
@@ -124,7 +124,7 @@ void Parser::parse_pattern_function(PovFunction& f) {
 }
 
 void Parser::parse_pigment_function(PovFunction& f) {
-    const Token at = peek(); // `pigment`
+    const Token& at = peek(); // `pigment`
     advance();
     const std::shared_ptr<const PovPigment> pg = parse_pigment(PovPigment());
     auto pf = std::make_shared<PigmentFunction>();
@@ -205,7 +205,7 @@ template <class... Kids> FnNode node(FnOp op, Kids&&... kids) {
 // Levels: 0 ?:, 1 |, 2 &, 3 comparisons, 4 + -, 5 * /, 6 unary.
 FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
     if (level == 6) {
-        const Token t = peek();
+        const Token& t = peek();
         const Nest nest(*this, t); // every nested term of the body comes through here
         if (is_sym_tok(t, "-")) {
             advance();
@@ -223,7 +223,7 @@ FnNode Parser::parse_fn(const std::vector<std::string>& params, int level) {
     }
     FnNode a = parse_fn(params, level + 1);
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (t.kind != TokKind::Symbol) return a;
         const std::string& o = t.text;
         FnOp op;
@@ -272,7 +272,7 @@ FnNode Parser::parse_fn_primary(const std::vector<std::string>& params) {
     FnNode n = parse_fn_atom(params);
     while (is_sym_tok(peek(), ".")) { // F(x, y, z).red of a pigment function
         advance();
-        const Token c = peek();
+        const Token& c = peek();
         const std::string name = expect_ident("a component");
         if (n.kind != FnNode::Call || !n.fn || !n.fn->pigment) continue; // of a vector: unsupported
         static const std::map<std::string, FnComponent> components = {
@@ -301,7 +301,7 @@ FnNode Parser::parse_fn_primary(const std::vector<std::string>& params) {
 }
 
 FnNode Parser::parse_fn_atom(const std::vector<std::string>& params) {
-    const Token t = peek();
+    const Token& t = peek();
     FnNode n;
     if (t.kind == TokKind::Number) {
         advance();

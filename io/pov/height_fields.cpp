@@ -30,9 +30,9 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
     bool colour_image = false;
     static const std::set<std::string> types = {"gif",  "tga",  "iff", "ppm", "pgm", "png",
                                                 "jpeg", "tiff", "exr", "hdr", "bmp"};
-    const Token src = peek();
+    const Token& src = peek();
     if (accept_kw("function")) {
-        const Token at = peek();
+        const Token& at = peek();
         const double fw = parse_float();
         accept_sym(",");
         const double fh = parse_float();
@@ -64,7 +64,7 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
         }
         count_function_terms(had - left);
     } else {
-        const Token type = peek();
+        const Token& type = peek();
         if (accept_kw("pot") || accept_kw("sys")) { // Fractint's and the system's formats
             parse_string();
             unsupported(type, "height_field from a " + type.text + " file (left out)");
@@ -72,7 +72,7 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
             return false;
         }
         if (peek().kind == TokKind::Ident && types.count(peek().text)) advance();
-        const Token name = peek();
+        const Token& name = peek();
         const std::string file = parse_string();
         const std::string path = find_file(file, name, "image file",
                                            {".png", ".pgm", ".ppm", ".tga", ".tif", ".tiff", ".exr",
@@ -106,7 +106,7 @@ bool Parser::parse_height_field(const Token& kw, PovObject& o) {
     bool smooth = false, texture_here = false;
     float water = 0;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (accept_kw("smooth")) {
             smooth = parse_bool_opt(true);

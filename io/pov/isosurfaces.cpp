@@ -16,7 +16,7 @@ bool Parser::parse_isosurface(const Token& kw, PovObject& o) {
     std::shared_ptr<const PovFunction> fn;
     Token fn_at = kw;
     auto positive = [&](const char* what) {
-        const Token at = peek();
+        const Token& at = peek();
         const double v = parse_float();
         if (!(v > 0) || !std::isfinite(v))
             error_at(at, std::string("an isosurface's ") + what + " must be a positive number");
@@ -24,7 +24,7 @@ bool Parser::parse_isosurface(const Token& kw, PovObject& o) {
     };
     bool texture_here = false;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (is_kw_tok(t, "function")) {
             advance();
@@ -35,7 +35,7 @@ bool Parser::parse_isosurface(const Token& kw, PovObject& o) {
                 error_at(t, "an isosurface's function must take x, y and z");
         } else if (accept_kw("contained_by")) {
             expect_sym("{");
-            const Token shape = peek();
+            const Token& shape = peek();
             if (accept_kw("box")) {
                 expect_sym("{");
                 const Vec3 a = parse_vector();
@@ -50,7 +50,7 @@ bool Parser::parse_isosurface(const Token& kw, PovObject& o) {
                 expect_sym("{");
                 const Vec3 c = parse_vector();
                 accept_sym(",");
-                const Token at = peek();
+                const Token& at = peek();
                 const double r = parse_float();
                 expect_sym("}", "'}' (a container takes no modifiers)");
                 if (!(r > 0)) error_at(at, "an isosurface's container sphere needs a radius > 0");

@@ -22,7 +22,7 @@ bool Parser::parse_julia_fractal(const Token& kw, PovObject& o) {
     expect_sym("{");
     auto j = std::make_shared<JuliaFractal>();
     auto vector4 = [&](const char* what, double* out) {
-        const Token at = peek();
+        const Token& at = peek();
         const Value v = parse_expr();
         if (v.type == VType::Float) {
             for (int i = 0; i < 4; ++i) out[i] = v.v[0];
@@ -40,7 +40,7 @@ bool Parser::parse_julia_fractal(const Token& kw, PovObject& o) {
     std::string other_function; // a complex function Sheaf leaves out
     bool texture_here = false;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (accept_kw("quaternion")) {
             hypercomplex = false;
@@ -56,7 +56,7 @@ bool Parser::parse_julia_fractal(const Token& kw, PovObject& o) {
             expect_sym(")");
             other_function = "pwr", function_at = t;
         } else if (accept_kw("max_iteration")) {
-            const Token at = peek();
+            const Token& at = peek();
             const double n = std::floor(parse_float());
             if (!std::isfinite(n)) error_at(at, "max_iteration is not finite");
             if (n > double(kJuliaMaxIterations))
@@ -64,15 +64,15 @@ bool Parser::parse_julia_fractal(const Token& kw, PovObject& o) {
                                  " (Sheaf keeps every iterate of a point)");
             j->iterations = n < 1 ? 1u : uint32_t(n);
         } else if (accept_kw("precision")) {
-            const Token at = peek();
+            const Token& at = peek();
             const double p = parse_float();
             if (!std::isfinite(p)) error_at(at, "precision is not finite");
             j->min_step = 1.0 / (p < 1 ? 1.0 : p);
         } else if (accept_kw("slice")) {
-            const Token at = peek();
+            const Token& at = peek();
             vector4("the slice's normal", j->slice);
             accept_sym(",");
-            const Token dist_at = peek();
+            const Token& dist_at = peek();
             j->slice_dist = parse_float();
             if (!std::isfinite(j->slice_dist))
                 error_at(dist_at, "the slice's distance is not finite");

@@ -7,7 +7,7 @@
 namespace sheaf::io::pov {
 
 void Parser::define_macro(const Token& where) {
-    const Token name = raw();
+    const Token& name = raw();
     if (name.kind != TokKind::Ident) error_expected(name, "the macro's name");
     advance();
     Macro m;
@@ -15,7 +15,7 @@ void Parser::define_macro(const Token& where) {
     expect_sym("(");
     if (!is_sym_tok(raw(), ")")) {
         for (;;) {
-            const Token p = raw();
+            const Token& p = raw();
             if (p.kind != TokKind::Ident) error_expected(p, "a parameter name");
             advance();
             params.push_back(name_of(p));

@@ -84,7 +84,7 @@ void Parser::parse_triangle(const Token& kw, PovObject& o, bool smooth) {
 }
 
 bool Parser::accept_declared_mesh(PovObject& o) {
-    const Token t = peek();
+    const Token& t = peek();
     Value declared;
     if (!accept_declared(VType::Object, declared, "a mesh")) return false;
     if (declared.as<PovObject>().kind != PovKind::Mesh) error_expected(t, "a mesh identifier");
@@ -103,7 +103,7 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
     std::vector<PovTextureRef> textures; // the triangles' own textures
     std::vector<int32_t> face_texture;   // per triangle: its texture there (-1: the mesh's)
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         const bool tri = is_kw_tok(t, "triangle"), stri = is_kw_tok(t, "smooth_triangle");
         if (!tri && !stri) break;
         advance();
@@ -121,7 +121,7 @@ void Parser::parse_mesh(const Token& kw, PovObject& o) {
         bool given_uv = false;
         int32_t own_texture = -1;
         for (;;) {
-            const Token i = peek();
+            const Token& i = peek();
             if (accept_sym("}")) break;
             if (accept_kw("uv_vectors")) {
                 for (int k = 0; k < 3; ++k) {
@@ -177,7 +177,7 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
     auto section = [&](std::vector<Vec3>& out,
                        std::vector<std::array<int32_t, 3>>* extra = nullptr) {
         expect_sym("{");
-        const Token at = peek();
+        const Token& at = peek();
         const Value count = parse_additive(); // "14 <-1, ...>": a count, not a comparison
         if (count.type != VType::Float) error_expected(at, "the item count");
         const double n = count.v[0];
@@ -187,7 +187,7 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
         accept_sym(",");
         int after = 0; // floats after the last vector
         while (!accept_sym("}")) {
-            const Token t = peek();
+            const Token& t = peek();
             const Value v = parse_expr();
             if (v.type == VType::Vector || v.type == VType::Color) {
                 out.emplace_back(float(v.v[0]), float(v.v[1]), float(v.dim > 2 ? v.v[2] : 0));
@@ -208,7 +208,7 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
                              std::to_string(out.size()));
     };
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_kw("vertex_vectors"))
             section(vertices);
         else if (accept_kw("normal_vectors"))
@@ -296,13 +296,13 @@ void Parser::parse_mesh2(const Token& kw, PovObject& o) {
 
 std::vector<PovTextureRef> Parser::parse_texture_list() {
     expect_sym("{");
-    const Token at = peek();
+    const Token& at = peek();
     const double n = parse_float();
     if (!(n >= 0 && n <= double(kMaxArrayElements))) error_at(at, "bad texture count");
     accept_sym(",");
     std::vector<PovTextureRef> out;
     while (!accept_sym("}")) {
-        const Token t = peek();
+        const Token& t = peek();
         if (!accept_kw("texture")) error_expected(t, "texture or '}'");
         out.push_back(parse_texture_block(model.default_texture));
         accept_sym(",");
@@ -464,7 +464,7 @@ void triangulate(const std::vector<Vec3>& pts, Mesh& m) {
 
 void Parser::parse_polygon(const Token& kw, PovObject& o) {
     expect_sym("{");
-    const Token at = peek();
+    const Token& at = peek();
     const Value count = parse_additive();
     if (count.type != VType::Float) error_expected(at, "the point count");
     const double n = count.v[0];

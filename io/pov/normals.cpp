@@ -37,7 +37,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
         accept_declared(VType::Normal, declared, "a normal")) {
         n = declared.as<PovNormal>();
         have = true;
-    } else if (const Token t = peek(); t.kind == TokKind::Ident) {
+    } else if (const Token& t = peek(); t.kind == TokKind::Ident) {
         // A normal declared flat (its pattern unsupported, warned where it is used), alone or
         // as an element of an array of normals (the portfolio's normal { normalArr[i] }).
         const Value* v = lookup(t);
@@ -54,7 +54,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
     int list = pattern_is_list(n.pattern.kind) ? int(n.map.size()) : 0;
     bool list_given = false; // the scene named its own list entries
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym(close)) break;
         if (parse_pattern_modifier(n.pattern, n.local)) continue;
         if (t.kind != TokKind::Ident)
@@ -86,7 +86,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
             n.map = parse_normal_map(t, n.average);
         } else if (k == "normal" && list > 0) { // a list pattern's entries, in order
             if (!list_given) n.map.clear(), list_given = true;
-            const Token e = peek();
+            const Token& e = peek();
             if (int(n.map.size()) == list)
                 error_at(t, "a list pattern of " + std::to_string(list) + " entries takes " +
                                 std::to_string(list) + " normals");
@@ -97,7 +97,7 @@ void Parser::parse_normal_body(PovNormal& n, bool& have, const char* close) {
         } else if (k == "uv_mapping") {
             unsupported(t, "uv_mapping of a normal (the normal pattern is evaluated in space)");
         } else if (k == "accuracy") { // how far apart the slope is sampled
-            const Token at = peek();
+            const Token& at = peek();
             n.accuracy = parse_float();
             if (!(n.accuracy > 0 && std::isfinite(n.accuracy)))
                 error_at(at, "accuracy must be a positive number");
@@ -119,7 +119,7 @@ void Parser::parse_bump_map(const Token& kw, PovNormal& n) {
     expect_sym("{");
     const std::shared_ptr<PovImage> img = parse_image_file(kw);
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (parse_image_item(*img)) {
         } else if (accept_kw("use_index")) {
@@ -161,11 +161,11 @@ Parser::parse_normal_map(const Token& kw, bool weights) {
     }
     std::vector<std::pair<double, std::shared_ptr<const PovNormal>>> entries;
     while (!accept_sym("}")) {
-        const Token e = peek();
+        const Token& e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
         double value = 1; // an average's weight may be left out
         if (starts_map_value(peek())) {
-            const Token vt = peek();
+            const Token& vt = peek();
             const Value v = parse_additive();
             if (v.type != VType::Float) error_expected(vt, "a float (the entry's value)");
             value = v.v[0];
@@ -173,7 +173,7 @@ Parser::parse_normal_map(const Token& kw, bool weights) {
             error_expected(peek(), "the entry's value (a float)");
         }
         accept_sym(",");
-        const Token body = peek();
+        const Token& body = peek();
         PovNormal n = model.normal_defaults;
         bool have = false;
         if (accept_kw("normal")) {
@@ -196,7 +196,7 @@ Parser::parse_normal_map(const Token& kw, bool weights) {
 }
 
 std::vector<std::array<double, 3>> Parser::parse_slope_map() {
-    const Token open = peek();
+    const Token& open = peek();
     expect_sym("{");
     Value declared;
     if (accept_declared(VType::Other, declared, "a slope map")) {
@@ -206,14 +206,14 @@ std::vector<std::array<double, 3>> Parser::parse_slope_map() {
     }
     std::vector<std::array<double, 3>> entries;
     while (!accept_sym("}")) {
-        const Token e = peek();
+        const Token& e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
-        const Token vt = peek();
+        const Token& vt = peek();
         const Value v = parse_additive(); // no comparison: `[0 <0, 1>]` is a value and a vector
         if (v.type != VType::Float) error_expected(vt, "a float (the entry's value)");
         const double value = v.v[0];
         accept_sym(",");
-        const Token at = peek();
+        const Token& at = peek();
         const Value hs = parse_expr(); // <height, slope>
         double height = 0, slope = 0;
         if (hs.type == VType::Float) {

@@ -222,7 +222,7 @@ void Parser::parse_shape(const Token& kw, PovObject& o) {
         o.shape.kind = ShapeKind::Plane;
         o.local = frame(w * d, u, v, w);
     } else if (k == "superellipsoid") {
-        const Token at = peek();
+        const Token& at = peek();
         const Vec3 v = parse_vector(); // <e, n>
         if (!(v.x > 0 && v.y > 0))
             error_at(at, "a superellipsoid's exponents <e, n> must be greater than 0");
@@ -253,7 +253,7 @@ void Parser::parse_csg(const Token& kw, PovObject& o) {
     expect_sym("{");
     bool texture_here = false;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         if (is_object_start(t)) {
             PovObject child;
@@ -272,7 +272,7 @@ void Parser::parse_csg(const Token& kw, PovObject& o) {
 
 void Parser::parse_object_modifiers(PovObject& o, bool& texture_here) {
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         if (!parse_modifier(o, texture_here)) error_expected(t, "an object modifier or '}'");
     }
@@ -284,7 +284,7 @@ bool Parser::parse_modifier(PovObject& o, bool& texture_here) {
         apply_transform(o, m);
         return true;
     }
-    const Token t = peek();
+    const Token& t = peek();
     if (t.kind != TokKind::Ident) return false;
     const std::string& k = t.text;
     // Pigments, normals and finishes given after a texture change that texture, in its space.
@@ -428,7 +428,7 @@ void Parser::parse_clipped_by(const Token& kw, PovObject& o) {
     expect_sym("{");
     std::vector<PovObject> clips;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (accept_kw("bounded_by")) continue; // clipped_by { bounded_by }: nothing to add
         if (!is_object_start(t)) error_expected(t, "an object or '}'");
@@ -459,7 +459,7 @@ void Parser::parse_clipped_by(const Token& kw, PovObject& o) {
 }
 
 bool Parser::parse_transform_item(Affine& m) {
-    const Token t = peek();
+    const Token& t = peek();
     if (t.kind != TokKind::Ident) return false;
     if (t.text == "translate") {
         advance();
@@ -501,14 +501,14 @@ bool Parser::parse_transform_item(Affine& m) {
 }
 
 Affine Parser::parse_transform_block() {
-    const Token t = peek();
+    const Token& t = peek();
     Value declared;
     if (accept_declared(VType::Transform, declared, "a transform")) return declared.as<Affine>();
     expect_sym("{", "'{' or a transform identifier");
     Affine total;
     bool inverse = false;
     for (;;) {
-        const Token i = peek();
+        const Token& i = peek();
         if (accept_sym("}")) break;
         if (accept_kw("inverse")) {
             inverse = !inverse;

@@ -73,7 +73,7 @@ bool Parser::is_pattern_name(const Token& t) const {
 }
 
 bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
-    const Token t = peek();
+    const Token& t = peek();
     if (!is_pattern_name(t)) return false;
     advance();
     const std::string& k = t.text;
@@ -106,7 +106,7 @@ bool Parser::parse_pattern_name(PovPattern& pt, int& list, bool& supported) {
         if (k == "facets") { // POV-Ray's defaults: size 0.1, over the normal, metric 2
             pt.param[0] = 0.1, pt.param[2] = 2;
             for (;;) {
-                const Token m = peek();
+                const Token& m = peek();
                 if (accept_kw("coords")) {
                     pt.param[1] = parse_float();
                 } else if (accept_kw("size")) {
@@ -157,7 +157,7 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         local = m * local;
         return true;
     }
-    const Token t = peek();
+    const Token& t = peek();
     if (t.kind != TokKind::Ident) return false;
     const std::string& k = t.text;
     auto turbulence = [&]() {
@@ -222,7 +222,7 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         parse_fractal_modifier(t, pt.fractal);
     } else if (k == "noise_generator") { // 0: the scene's, as POV-Ray reads it
         advance();
-        const Token at = peek();
+        const Token& at = peek();
         const double g = parse_float();
         if (!(g >= 0 && g < 4)) error_at(at, "noise_generator must be 0, 1, 2 or 3");
         pt.noise_generator = int(g);
@@ -262,7 +262,7 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
 
 void Parser::parse_warp(PovPattern& pt, const Affine& local) {
     expect_sym("{");
-    const Token w = peek();
+    const Token& w = peek();
     Warp out;
     auto unit = [&](const Token& at, Vec3 v) { // an orientation
         const float l = length(v);
@@ -287,7 +287,7 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
         }
     } else if (accept_kw("repeat")) { // repeat <width along one axis> [offset v] [flip v]
         out.kind = WarpKind::Repeat;
-        const Token at = peek();
+        const Token& at = peek();
         const Vec3 v = parse_vector();
         const int axes = (v.x != 0) + (v.y != 0) + (v.z != 0);
         if (axes != 1)
@@ -310,7 +310,7 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
     } else if (accept_kw("planar")) { // planar [orientation [, offset]]
         out.kind = WarpKind::Planar;
         if (starts_expression(peek())) {
-            const Token at = peek();
+            const Token& at = peek();
             out.b = unit(at, parse_vector());
             accept_sym(",");
             if (starts_expression(peek())) out.f[0] = parse_float();
@@ -322,7 +322,7 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
                    : w.text == "toroidal"  ? WarpKind::Toroidal
                                            : WarpKind::Cubic;
         for (;;) {
-            const Token m = peek();
+            const Token& m = peek();
             if (out.kind != WarpKind::Cubic && accept_kw("orientation")) {
                 out.b = unit(m, parse_vector());
             } else if (out.kind != WarpKind::Cubic && accept_kw("dist_exp")) {
@@ -337,7 +337,7 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
         out.kind = WarpKind::BlackHole;
         out.a = parse_vector();
         accept_sym(",");
-        const Token at = peek();
+        const Token& at = peek();
         out.f[0] = parse_float();
         if (!(out.f[0] > 0)) error_at(at, "a black hole's radius must be above 0");
         out.f[1] = 2, out.f[2] = 1; // falloff, strength
@@ -392,7 +392,7 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
 void Parser::skip_to_block_end() {
     int depth = 1;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (t.kind == TokKind::End) error_expected(t, "'}'");
         advance();
         if (is_sym_tok(t, "{")) ++depth;

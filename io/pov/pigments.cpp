@@ -83,7 +83,7 @@ void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
     int list = pg.patterned && pattern_is_list(pg.pattern.kind) ? int(pg.entries.size()) : 0;
     bool list_given = false; // the scene named its own list entries
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym(close)) break;
         if (parse_pattern_modifier(pg.pattern, pg.local)) continue;
         if (is_color_start(t)) {
@@ -174,7 +174,7 @@ std::vector<PovMapEntry> Parser::parse_color_map() {
     }
     std::vector<PovMapEntry> entries;
     while (!accept_sym("}")) {
-        const Token e = peek();
+        const Token& e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
         const double a = parse_float();
         accept_sym(",");
@@ -208,7 +208,7 @@ std::vector<PovMapEntry> Parser::parse_pigment_map() {
     }
     std::vector<PovMapEntry> entries;
     while (!accept_sym("}")) {
-        const Token e = peek();
+        const Token& e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
         PovMapEntry entry;
         entry.value = 1; // average maps may leave the weight out
@@ -237,7 +237,7 @@ std::shared_ptr<PovImage> Parser::parse_image_file(const Token& kw) {
     static const std::set<std::string> types = {"gif",  "tga",  "iff", "ppm", "pgm", "png",
                                                 "jpeg", "tiff", "sys", "exr", "hdr", "bmp"};
     if (peek().kind == TokKind::Ident && types.count(peek().text)) advance();
-    const Token name = peek();
+    const Token& name = peek();
     const std::string file = parse_string();
     img->path = find_file(file, name, "image file",
                           {".tga", ".png", ".jpg", ".jpeg", ".ppm", ".pgm", ".bmp", ".tif", ".tiff",
@@ -246,7 +246,7 @@ std::shared_ptr<PovImage> Parser::parse_image_file(const Token& kw) {
 }
 
 bool Parser::parse_image_item(PovImage& img) {
-    const Token t = peek();
+    const Token& t = peek();
     if (accept_kw("map_type")) {
         img.map_type = int(parse_float());
         if (img.map_type != 0 && img.map_type != 1 && img.map_type != 2 && img.map_type != 5) {
@@ -267,7 +267,7 @@ std::shared_ptr<const PovImage> Parser::parse_image_pattern(const Token& kw) {
     expect_sym("{");
     const std::shared_ptr<PovImage> img = parse_image_file(kw);
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (parse_image_item(*img) || accept_kw("use_index")) {
         } else if (accept_kw("use_alpha")) {
@@ -288,7 +288,7 @@ void Parser::parse_image_map(const Token& kw, PovPigment& pg) {
     expect_sym("{");
     const std::shared_ptr<PovImage> img = parse_image_file(kw);
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (parse_image_item(*img)) {
         } else if (accept_kw("use_index") || accept_kw("use_alpha")) {

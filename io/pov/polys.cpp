@@ -10,12 +10,12 @@
 namespace sheaf::io::pov {
 
 std::vector<double> Parser::parse_coefficients(const Token& kw, size_t count) {
-    const Token open = peek();
+    const Token& open = peek();
     expect_sym("<", "'<' and " + std::to_string(count) + " coefficients");
     std::vector<double> c;
     ++no_gt_;
     for (;;) {
-        const Token at = peek();
+        const Token& at = peek();
         if (c.size() == count)
             error_expected(at, "'>' after " + std::to_string(count) + " coefficients");
         const Value e = parse_expr();
@@ -42,7 +42,7 @@ bool Parser::parse_poly(const Token& kw, PovObject& o) {
     if (k == "cubic") order = 3;
     if (k == "quartic") order = 4;
     if (k == "poly") {
-        const Token at = peek();
+        const Token& at = peek();
         ++no_lt_; // POV-Ray takes poly { 4 <...> } without a comma
         const double n = parse_float();
         --no_lt_;
@@ -63,7 +63,7 @@ bool Parser::parse_poly(const Token& kw, PovObject& o) {
                                   {0, 1, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, 0}};
         double c[10];
         for (int v = 0; v < 3; ++v) {
-            const Token at = peek();
+            const Token& at = peek();
             const Value e = parse_expr();
             if (!e.numeric()) error_expected(at, std::string("a vector, not ") + type_name(e.type));
             for (int i = 0; i < 3; ++i) c[3 * v + i] = e.type == VType::Float ? e.v[0] : e.v[i];

@@ -64,7 +64,7 @@ bool Parser::parse_prism(const Token& kw, PovObject& o) {
     accept_sym(",");
     double h2 = parse_float();
     accept_sym(",");
-    const Token count_at = peek();
+    const Token& count_at = peek();
     ++no_lt_; // POV-Ray reads "4 <-1, 0> ..." as the count and the first point
     const double count = parse_float();
     --no_lt_;
@@ -82,7 +82,7 @@ bool Parser::parse_prism(const Token& kw, PovObject& o) {
     charge(size_t(n) * (sizeof(Vec3) + kCubicPieces * sizeof(GlyphSegment)), count_at);
     std::vector<Vec3> p(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
-        const Token at = peek();
+        const Token& at = peek();
         // Fewer points than the count says: name the point that is missing.
         if (at.kind == TokKind::End || is_sym_tok(at, "}"))
             error_expected(at, "the prism's point " + std::to_string(i + 1) + " of " +

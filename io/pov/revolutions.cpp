@@ -29,7 +29,7 @@ std::vector<Vec3> Parser::parse_profile_points(const Token& count_at, int n, con
     std::vector<Vec3> p(static_cast<size_t>(n));
     where.clear();
     for (int i = 0; i < n; ++i) {
-        const Token at = peek();
+        const Token& at = peek();
         where.push_back(at);
         const Value v = parse_expr();
         if (!v.numeric() || v.type == VType::Float)
@@ -69,7 +69,7 @@ bool Parser::parse_lathe(const Token& kw, PovObject& o) {
             break;
         next();
     }
-    const Token count_at = peek();
+    const Token& count_at = peek();
     const int n = parse_profile_count(count_at, lathe_min_points(spline), "lathe with this spline");
     std::vector<Token> where;
     const std::vector<Vec3> p = parse_profile_points(count_at, n, "lathe", where);
@@ -91,7 +91,7 @@ bool Parser::parse_lathe(const Token& kw, PovObject& o) {
 
 bool Parser::parse_sor(const Token& kw, PovObject& o) {
     expect_sym("{");
-    const Token count_at = peek();
+    const Token& count_at = peek();
     const int n = parse_profile_count(count_at, 4, "sor");
     std::vector<Token> where;
     const std::vector<Vec3> p = parse_profile_points(count_at, n, "sor", where);

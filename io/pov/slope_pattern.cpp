@@ -21,7 +21,7 @@ void Parser::parse_slope(PovPattern& pt, const Token& keyword) {
         // [,] [LO] [,] [HI], each number optional; equal ends (not 0) are no range.
         auto range = [&](double* lo_hi, const char* what) {
             accept_sym(",");
-            const Token at = peek();
+            const Token& at = peek();
             if (starts_expression(peek())) lo_hi[0] = parse_float();
             accept_sym(",");
             if (starts_expression(peek())) lo_hi[1] = parse_float();

@@ -78,7 +78,7 @@ bool cone_piece(const Ball& a, const Ball& b, PovObject& out) {
 
 bool Parser::parse_sphere_sweep(const Token& kw, PovObject& o) {
     expect_sym("{");
-    const Token type = peek();
+    const Token& type = peek();
     int minimum = 0;
     bool b_spline = false;
     if (accept_kw("linear_spline")) {
@@ -90,7 +90,7 @@ bool Parser::parse_sphere_sweep(const Token& kw, PovObject& o) {
     } else {
         error_expected(type, "linear_spline, b_spline or cubic_spline");
     }
-    const Token count_at = peek();
+    const Token& count_at = peek();
     ++no_lt_; // "4 <0, 0, 0>, 1 ..." is the count and the first sphere
     const double count = parse_float();
     --no_lt_;
@@ -105,7 +105,7 @@ bool Parser::parse_sphere_sweep(const Token& kw, PovObject& o) {
         accept_sym(",");
         const Vec3 c = parse_vector();
         accept_sym(",");
-        const Token r_at = peek();
+        const Token& r_at = peek();
         const double r = parse_float();
         if (!(r > 0)) error_at(r_at, "a sphere_sweep's radius must be greater than 0");
         balls.push_back({c, r});

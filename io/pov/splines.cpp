@@ -144,7 +144,7 @@ bool Parser::accept_spline_kind(SplineKind& kind) {
 }
 
 PovSpline Parser::parse_spline() {
-    const Token open = peek();
+    const Token& open = peek();
     expect_sym("{");
     PovSpline s;
     Value declared;
@@ -155,12 +155,12 @@ PovSpline Parser::parse_spline() {
     // <4, 4, 5>).
     std::array<double, 5> p{};
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         if (accept_spline_kind(s.kind)) continue;
         const double time = parse_float();
         expect_sym(",", "','");
-        const Token at = peek();
+        const Token& at = peek();
         const Value v = parse_expr();
         if (!v.numeric()) error_expected(at, "a float or vector (the spline's point)");
         const int n = v.type == VType::Float ? 1 : v.dim;

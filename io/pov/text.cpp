@@ -15,11 +15,11 @@ namespace sheaf::io::pov {
 
 void Parser::parse_text(const Token& kw, PovObject& o) {
     expect_sym("{");
-    const Token ttf = peek();
+    const Token& ttf = peek();
     if (!is_kw_tok(ttf, "ttf") && !is_kw_tok(ttf, "internal"))
         error_expected(ttf, "'ttf' and the font file's name, or 'internal' and a font number");
     next();
-    const Token font_at = peek();
+    const Token& font_at = peek();
     std::string font_name;
     if (ttf.text == "internal") { // POV-Ray's built-in fonts: its own font files
         const double n = parse_float();
@@ -32,15 +32,15 @@ void Parser::parse_text(const Token& kw, PovObject& o) {
         font_name = parse_string();
     }
     accept_sym(",");
-    const Token text_at = peek();
+    const Token& text_at = peek();
     const std::string text = parse_string();
     accept_sym(",");
-    const Token thickness_at = peek();
+    const Token& thickness_at = peek();
     const double thickness = parse_float();
     if (!std::isfinite(thickness) || thickness == 0)
         error_at(thickness_at, "a text's thickness must be a finite number other than 0");
     accept_sym(",");
-    const Token offset_at = peek();
+    const Token& offset_at = peek();
     const Value off = parse_expr();
     if (!off.numeric()) error_expected(offset_at, "the offset between characters (a vector)");
     const Vec3 offset = off.type == VType::Float

@@ -105,7 +105,7 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
         return out;
     };
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym(close)) break;
         if (tx.is_map) {
             if (parse_pattern_modifier(tx.map_pattern, tx.local)) continue;
@@ -120,12 +120,12 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
         if (k == "tiles") { // tiles { texture {...} tile2 texture {...} }: a checker of two
             advance();
             expect_sym("{");
-            const Token first = peek();
+            const Token& first = peek();
             if (!accept_kw("texture")) error_expected(first, "texture");
             PovTextureRef a = parse_texture_layers(PovTexture{});
-            const Token between = peek();
+            const Token& between = peek();
             if (!accept_kw("tile2")) error_expected(between, "tile2");
-            const Token second = peek();
+            const Token& second = peek();
             if (!accept_kw("texture")) error_expected(second, "texture");
             PovTextureRef b = parse_texture_layers(PovTexture{});
             expect_sym("}");
@@ -225,7 +225,7 @@ std::vector<std::pair<double, PovTextureRef>> Parser::parse_texture_map() {
     }
     std::vector<std::pair<double, PovTextureRef>> entries;
     while (!accept_sym("}")) {
-        const Token e = peek();
+        const Token& e = peek();
         if (!accept_sym("[")) error_expected(e, "'[' or '}'");
         double v = 1; // average maps may leave the weight out
         if (starts_map_value(peek())) v = parse_float();
@@ -252,7 +252,7 @@ void Parser::parse_finish(PovFinish& f) {
         out = {c[0], c[1], c[2]};
     };
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         if (t.kind != TokKind::Ident) error_expected(t, "a finish item or '}'");
         const std::string& k = t.text;
@@ -288,7 +288,7 @@ void Parser::parse_finish(PovFinish& f) {
             if (accept_sym("{")) {
                 std::vector<Color5> values;
                 for (;;) {
-                    const Token r = peek();
+                    const Token& r = peek();
                     if (accept_sym("}")) break;
                     if (accept_kw("fresnel")) {
                         f.fresnel = parse_bool_opt(true);
@@ -322,11 +322,11 @@ void Parser::parse_finish(PovFinish& f) {
             }
         } else if (k == "irid") {
             expect_sym("{");
-            const Token at = peek();
+            const Token& at = peek();
             f.irid = parse_float();
             if (!std::isfinite(f.irid)) error_at(at, "the irid amount is not finite");
             for (;;) {
-                const Token i = peek();
+                const Token& i = peek();
                 if (accept_sym("}")) break;
                 if (accept_kw("thickness"))
                     f.irid_thickness = parse_float();
@@ -359,21 +359,21 @@ PovPigment Parser::parse_density() {
 // scattering { TYPE, COLOUR [eccentricity G] [extinction E] }
 void Parser::parse_scattering(PovMedia& m) {
     expect_sym("{");
-    const Token at = peek();
+    const Token& at = peek();
     const double type = parse_float();
     if (!(type >= 1 && type <= 5) || type != std::floor(type))
         error_at(at, "a scattering type must be 1 (isotropic), 2 (Mie hazy), 3 (Mie murky), 4 "
                      "(Rayleigh) or 5 (Henyey-Greenstein)");
     m.scatter_type = int(type);
     accept_sym(",");
-    const Token ct = peek();
+    const Token& ct = peek();
     const Color5 c = parse_color();
     for (int i = 0; i < 3; ++i)
         if (!(std::fabs(c[i]) <= 1e30) || c[i] < 0)
             error_at(ct, "a medium's scattering must be finite and not negative");
     m.scattering = {c[0], c[1], c[2]};
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return;
         if (accept_kw("eccentricity")) {
             m.eccentricity = parse_float();
@@ -397,7 +397,7 @@ PovMedia Parser::parse_media() {
         m = declared.as<PovMedia>();
     int intervals = 1, samples = 1;
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) break;
         Affine tr;
         if (parse_transform_item(tr)) {
@@ -408,7 +408,7 @@ PovMedia Parser::parse_media() {
         const std::string& k = t.text;
         advance();
         if (k == "emission" || k == "absorption") {
-            const Token at = peek();
+            const Token& at = peek();
             const Color5 c = parse_color();
             for (int i = 0; i < 3; ++i)
                 if (!(std::fabs(c[i]) <= 1e30) || (k == "absorption" && c[i] < 0))
@@ -444,7 +444,7 @@ PovInterior Parser::parse_interior(const PovInterior& base) {
     Value declared;
     if (accept_declared(VType::Interior, declared, "an interior")) in = declared.as<PovInterior>();
     for (;;) {
-        const Token t = peek();
+        const Token& t = peek();
         if (accept_sym("}")) return in;
         if (accept_kw("ior")) {
             in.ior = parse_float();

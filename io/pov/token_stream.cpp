@@ -322,7 +322,7 @@ void Parser::declare_in(size_t scope, const std::string& name, Value v) {
 }
 
 bool Parser::accept_declared(VType type, Value& out, const std::string& expected) {
-    const Token t = peek();
+    const Token& t = peek();
     if (t.kind != TokKind::Ident) return false;
     const Value* v = lookup(t);
     if (!v) return false;
@@ -346,7 +346,7 @@ bool Parser::accept_declared(VType type, Value& out, const std::string& expected
 }
 
 bool Parser::accept_declared_any(Value& out) {
-    const Token t = peek();
+    const Token& t = peek();
     if (t.kind != TokKind::Ident) return false;
     const Value* v = lookup(t);
     if (!v) return false;

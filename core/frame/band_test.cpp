@@ -91,11 +91,21 @@ TEST(Bands, RayHierarchiesGiveTheSamePictureAndKeepTheFrameByDefault) {
 TEST(Bands, ThePerRayDefaultCutsLargeFramesAndHoldsLessMemory) {
     const PreparedScene scene = prepare_scene(make_builtin_scene("cornell"));
     const RenderSettings s = with_band(scene, {}, 0, 256, 192);
-    EXPECT_EQ(s.band_or(true, 256 * 192), kCpuBandSamples);
-    EXPECT_EQ(s.band_or(false, 256 * 192), size_t(256 * 192)); // a device: the whole frame
+    const size_t rays = 2 + scene.lights.size(); // a sample's rays, about
+    const size_t band = kCpuBandRays / rays;
+    EXPECT_EQ(s.band_or(true, 256 * 192, rays), band);
+    EXPECT_EQ(s.band_or(false, 256 * 192, rays), size_t(256 * 192)); // a device: whole frame
+    // Many rays a sample: a small band, at least one pixel row.
+    EXPECT_EQ(s.band_or(true, 256 * 192, 400), kCpuBandRays / 400);
+    EXPECT_EQ(s.band_or(true, 256 * 192, size_t(1) << 20), 1u);
     const Frame cut = render_frame_cpu(scene, s);
-    EXPECT_EQ(cut.stats.get("memory.band_samples"), double(kCpuBandSamples / 256 * 256));
-    EXPECT_EQ(cut.stats.get("memory.bands"), 3.0);
+    EXPECT_EQ(cut.stats.get("memory.band_samples"), double(band / 256 * 256));
+    EXPECT_EQ(cut.stats.get("memory.bands"), double((192 + band / 256 - 1) / (band / 256)));
+    EXPECT_GT(cut.stats.get("memory.bands"), 1.0);
+    // Radiosity's 400 gathers a sample: a band of one row (163 samples, a row of 256).
+    const Frame gathers =
+        render_frame_cpu(scene, with_band(scene, {{"radiosity.samples", "400"}}, 0, 256, 3));
+    EXPECT_EQ(gathers.stats.get("memory.band_samples"), 256.0);
     const Frame whole = render_frame_cpu(scene, with_band(scene, {}, 1 << 30, 256, 192));
     test::expect_same_frame(whole, cut, "cornell 256x192");
     // The frame's buffers at their peak (counted bytes, not time): a third of the frame's

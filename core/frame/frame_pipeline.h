@@ -154,7 +154,11 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
     // band.samples samples, at least one pixel row.
     int band_rows() const {
         const size_t row = size_t(region_win_.width) * size_t(s_.aa_samples);
-        const size_t want = s_.band_or(Exec::kHostMemory, region_win_.count());
+        // The rays a camera sample makes, about: a bounce ray and its shadow rays, AO and
+        // radiosity's gathers (a light's area samples are lights of their own).
+        const size_t rays = 2 + host_.lights.size() + size_t(std::max(0, s_.ao_samples)) +
+                            size_t(std::max(0, s_.radiosity_samples));
+        const size_t want = s_.band_or(Exec::kHostMemory, region_win_.count(), rays);
         const size_t pixel_rows = std::max<size_t>(1, want / std::max<size_t>(1, row));
         return int(
             std::min<size_t>(pixel_rows * size_t(s_.aa_samples), size_t(region_win_.height)));

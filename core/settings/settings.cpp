@@ -229,9 +229,10 @@ const std::vector<SettingSpec>& setting_specs() {
          {},
          "camera samples shaded at once: the frame is shaded in bands of whole pixel rows of "
          "about this many samples, which bounds its memory (the same picture whatever the "
-         "size); 0 sizes it to the backend: 16384 on the CPU under bvh, strips and brute, the "
-         "whole frame on a GPU and under a ray hierarchy (rah, crsh, ...), whose figures count "
-         "a frame's rays at once"},
+         "size); 0 sizes it to the backend: on the CPU under bvh, strips and brute 65536 "
+         "rays' worth at 2 + lights + ao.samples + radiosity.samples a sample (16384 samples "
+         "with two lights), the whole frame on a GPU and under a ray hierarchy (rah, crsh, "
+         "...), whose figures count a frame's rays at once"},
         {"traversal.batch",
          K::Int,
          "0",
@@ -484,9 +485,11 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     return r;
 }
 
-size_t RenderSettings::band_or(bool host_memory, size_t frame_samples) const {
+size_t RenderSettings::band_or(bool host_memory, size_t frame_samples,
+                               size_t rays_per_sample) const {
     if (band_samples > 0) return size_t(band_samples);
-    return host_memory && !uses_ray_hierarchy(accel) ? kCpuBandSamples : frame_samples;
+    if (!host_memory || uses_ray_hierarchy(accel)) return frame_samples;
+    return std::max<size_t>(1, kCpuBandRays / std::max<size_t>(1, rays_per_sample));
 }
 
 size_t device_batch_pairs(uint64_t device_bytes) {

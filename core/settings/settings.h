@@ -133,10 +133,11 @@ struct RenderSettings {
     size_t batch_or(size_t auto_pairs) const {
         return batch_pairs > 0 ? size_t(batch_pairs) : auto_pairs;
     }
-    /// band.samples, or the choice for band.samples = 0: kCpuBandSamples where the exec holds
-    /// host memory and every ray is traced on its own (a band's rays then meet the same
-    /// tests as the frame's), else the whole frame (`frame_samples`).
-    size_t band_or(bool host_memory, size_t frame_samples) const;
+    /// band.samples, or the choice for band.samples = 0: where the exec holds host memory and
+    /// every ray is traced on its own (a band's rays then meet the same tests as the frame's),
+    /// samples for about kCpuBandRays rays at `rays_per_sample` each (at least one); else the
+    /// whole frame (`frame_samples`).
+    size_t band_or(bool host_memory, size_t frame_samples, size_t rays_per_sample = 4) const;
 
     /// Explicit values win over the scene's, which win over the defaults.
     static RenderSettings resolve(const Settings& explicit_settings,
@@ -150,9 +151,10 @@ struct RenderSettings {
 /// The deepest ray hierarchy (hierarchy.depth).
 constexpr int kMaxHierarchyDepth = 8;
 
-/// band.samples = 0 on the CPU under a per-ray accel: about 64 rows of 256 pixels at once,
-/// some 8 MiB of a frame's buffers on a scene with two lights and mirrors.
-constexpr size_t kCpuBandSamples = size_t(1) << 14;
+/// band.samples = 0 on the CPU under a per-ray accel: the rays a band makes, about. A sample
+/// of a scene with two lights and mirrors makes about 4 (16384 samples a band, some 8 MiB of
+/// buffers); one that gathers 400 radiosity rays takes a band of 160 samples.
+constexpr size_t kCpuBandRays = size_t(1) << 16;
 /// traversal.batch = 0 on the CPU: 4M candidate pairs a level holds at once.
 constexpr size_t kCpuBatchPairs = size_t(1) << 22;
 /// traversal.batch = 0 on a device of `device_bytes` memory: 1/1024 of it, rounded down to a

@@ -1,7 +1,7 @@
 // Frame digests: every built-in scene (under several accel, hash and sampling settings), every
 // test scene of the pipeline and every sample scene (scenes/*.pov, *.xml) rendered small on the
 // CPU backend, each frame reduced to one line of 64-bit digests: its image, each pass, and its
-// statistics (every counted key and value, in order; times, memory and device counters left
+// statistics (every counted key and value, by key; times, memory and device counters left
 // out, they are measured rather than computed). The committed list (digests.txt) is what the
 // frames were when it was written; the test `frame_digests` renders them again and compares, so
 // a change that was meant to keep every picture and every count proves it did.
@@ -62,9 +62,13 @@ void emit(const Options& o, const std::string& name, const PreparedScene& scene,
         std::printf("%s | error: %s\n", label.c_str(), e.what());
         return;
     }
+    // By key: a key first counted in a later band (band.samples) comes later in the list.
+    std::vector<std::pair<std::string, double>> counted;
+    for (const auto& e : f.stats.entries())
+        if (!measured(e.first)) counted.push_back(e);
+    std::sort(counted.begin(), counted.end());
     uint64_t stats = 1469598103934665603ull;
-    for (const auto& [k, v] : f.stats.entries()) {
-        if (measured(k)) continue;
+    for (const auto& [k, v] : counted) {
         stats = fnv(k.data(), k.size(), stats);
         stats = fnv(&v, sizeof v, stats);
     }
@@ -73,8 +77,7 @@ void emit(const Options& o, const std::string& name, const PreparedScene& scene,
                 label.c_str(), w, h, digest(f.rgba), digest(f.depth), digest(f.normal),
                 digest(f.albedo), digest(f.object_id), digest(f.tests), stats);
     if (o.stats)
-        for (const auto& [k, v] : f.stats.entries())
-            if (!measured(k)) std::printf("    %s = %.17g\n", k.c_str(), v);
+        for (const auto& [k, v] : counted) std::printf("    %s = %.17g\n", k.c_str(), v);
 }
 
 } // namespace
@@ -91,7 +94,8 @@ int main(int argc, char** argv) {
         } else if (a == "--stats") {
             o.stats = true;
         } else {
-            std::fprintf(stderr, "usage: sheaf_frame_digests [--scenes DIR] [--only TEXT] [--stats]\n");
+            std::fprintf(stderr,
+                         "usage: sheaf_frame_digests [--scenes DIR] [--only TEXT] [--stats]\n");
             return 2;
         }
     }

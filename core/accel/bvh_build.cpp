@@ -137,11 +137,15 @@ class Builder {
             const TriangleVerts& t = scene_.tris[p];
             b.grow(t.a), b.grow(t.b), b.grow(t.c);
         } else {
+            // The cube around its sphere (infinite for an unbounded one), and within it the
+            // object's own box where the scene has one (csg_box: an intersection of planes
+            // along the axes is bounded though its sphere is not).
             const Sphere& s = scene_.prim_sphere[p];
-            if (!(std::fabs(s.radius) <= 1e30f)) return Box{Vec3(-INFINITY), Vec3(INFINITY)};
-            b.lo = s.center - Vec3(std::fabs(s.radius)),
-            b.hi = s.center + Vec3(std::fabs(s.radius));
-            // The object's own box where the scene has one (csg_box), inside that cube.
+            if (std::fabs(s.radius) <= 1e30f)
+                b.lo = s.center - Vec3(std::fabs(s.radius)),
+                b.hi = s.center + Vec3(std::fabs(s.radius));
+            else
+                b.lo = Vec3(-INFINITY), b.hi = Vec3(INFINITY);
             const size_t a = p - scene_.tris.size();
             if (a < scene_.analytic_box.size()) {
                 const WorldBox& w = scene_.analytic_box[a];

@@ -108,6 +108,19 @@ WorldBox meet(WorldBox a, const WorldBox& b) {
     return a;
 }
 
+/// b grown by 1e-5 of its size and distance from the origin (finite sides only): a solid cut
+/// by planes far from where their offsets lie, its points rounded to that magnitude.
+WorldBox padded(WorldBox b) {
+    float big = 0;
+    for (int k = 0; k < 3; ++k) {
+        if (std::isfinite(b.lo[k])) big = std::fmax(big, std::fabs(b.lo[k]));
+        if (std::isfinite(b.hi[k])) big = std::fmax(big, std::fabs(b.hi[k]));
+    }
+    const float pad = 2e-5f * (2 * big + 1);
+    for (int k = 0; k < 3; ++k) b.lo[k] -= pad, b.hi[k] += pad; // infinite sides stay so
+    return b;
+}
+
 /// The cube around a sphere (infinite: unbounded).
 WorldBox cube(const Sphere& s) {
     WorldBox b;
@@ -123,9 +136,25 @@ WorldBox csg_box(const PreparedScene& scene, uint32_t node) {
     if (n.inverse) return WorldBox();
     if (n.op == CsgOp::Leaf) {
         const PlacedShape& ps = scene.shapes[n.first];
+        const Affine to_world = ps.to_local.inverse();
+        if (ps.shape.kind == ShapeKind::Plane) {
+            // The half-space z <= 0: bounded on one side where its normal lies along an axis
+            // (POV-Ray's plane { y, 5 }), which an intersection of such planes makes a box.
+            const Vec3 nz = to_world.vector(Vec3(0, 0, 1)), p0 = to_world.point(Vec3(0.0f));
+            WorldBox b;
+            for (int k = 0; k < 3; ++k) {
+                const float along = nz[k], len = length(nz);
+                if (!(std::fabs(along) >= len * (1 - 1e-6f))) continue;
+                const float pad = 1e-5f * (std::fabs(p0[k]) + 1);
+                if (along > 0)
+                    b.hi[k] = p0[k] + pad; // inside below the plane along +axis k
+                else
+                    b.lo[k] = p0[k] - pad;
+            }
+            return b;
+        }
         Vec3 lo, hi;
         if (!local_box(scene, ps.shape, lo, hi)) return WorldBox();
-        const Affine to_world = ps.to_local.inverse();
         WorldBox b;
         b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);
         for (int c = 0; c < 8; ++c) {
@@ -147,7 +176,7 @@ WorldBox csg_box(const PreparedScene& scene, uint32_t node) {
     if (n.op == CsgOp::Intersection || n.op == CsgOp::Clip) {
         WorldBox b = around; // inside every child
         for (const WorldBox& k : kids) b = meet(b, k);
-        return b;
+        return padded(b);
     }
     WorldBox b;
     b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);

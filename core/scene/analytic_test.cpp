@@ -127,8 +127,10 @@ void expect_bounds_hold(const PreparedScene& scene, const std::string& what) {
             const Vec3 p = ray_at(r, h.t);
             if (std::isfinite(s.radius))
                 ASSERT_LE(length(p - s.center), s.radius) << what << " object " << a;
-            ASSERT_TRUE(p.x >= b.lo.x && p.y >= b.lo.y && p.z >= b.lo.z && p.x <= b.hi.x &&
-                        p.y <= b.hi.y && p.z <= b.hi.z)
+            // The hit point is rounded to its own magnitude (far along a plane: large).
+            const float e = 1e-6f * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z) + 1);
+            ASSERT_TRUE(p.x >= b.lo.x - e && p.y >= b.lo.y - e && p.z >= b.lo.z - e &&
+                        p.x <= b.hi.x + e && p.y <= b.hi.y + e && p.z <= b.hi.z + e)
                 << what << " object " << a << ": hit outside its box";
         }
         if (std::isfinite(s.radius)) EXPECT_GT(hits, 0) << what << " object " << a;
@@ -153,8 +155,32 @@ TEST(Analytic, BoundsHoldEveryHit) {
         kinds.add_shape("kind", shapes[i], m,
                         Affine::translate(Vec3(float(i) - 3, 0, 0)) * turn *
                             Affine::scale(Vec3(0.4f, 0.7f, 0.3f)));
+    // A cube as the intersection of six planes along the axes: its box is finite though its
+    // sphere is not (chess2.pov's pieces).
+    ShapeObject cube;
+    cube.name = "planes";
+    cube.nodes.resize(7);
+    cube.nodes[0].op = CsgOp::Intersection, cube.nodes[0].children = {1, 2, 3, 4, 5, 6};
+    const Affine sides[6] = {
+        Affine::translate(Vec3(1, 0, 0)) * Affine::rotate(Vec3(0, 1, 0), kPi / 2),
+        Affine::translate(Vec3(-1, 0, 0)) * Affine::rotate(Vec3(0, 1, 0), -kPi / 2),
+        Affine::translate(Vec3(0, 1, 0)) * Affine::rotate(Vec3(1, 0, 0), -kPi / 2),
+        Affine::translate(Vec3(0, -1, 0)) * Affine::rotate(Vec3(1, 0, 0), kPi / 2),
+        Affine::translate(Vec3(0, 0, 1)),
+        Affine::translate(Vec3(0, 0, -1)) * Affine::rotate(Vec3(1, 0, 0), kPi)};
+    for (int i = 0; i < 6; ++i)
+        cube.nodes[size_t(i) + 1].shape = {ShapeKind::Plane},
+                               cube.nodes[size_t(i) + 1].material = m,
+                               cube.nodes[size_t(i) + 1].transform = sides[i];
+    cube.transform = Affine::translate(Vec3(0, 3, 0)) * Affine::scale(Vec3(0.5f));
+    kinds.add_shape_object(cube);
     const PreparedScene k = prepare_scene(kinds);
     expect_bounds_hold(k, "kinds");
+    const WorldBox& planes = k.analytic_box.back();
+    EXPECT_FALSE(std::isfinite(k.prim_sphere.back().radius));
+    EXPECT_NEAR(planes.lo.x, -0.5f, 1e-3f);
+    EXPECT_NEAR(planes.hi.y, 3.5f, 1e-3f);
+    EXPECT_NEAR(planes.lo.z, -0.5f, 1e-3f);
     // A box's own box is tighter than the cube around its sphere.
     const WorldBox& box = k.analytic_box[1];
     const Sphere& sphere = k.prim_sphere[1];

@@ -292,8 +292,18 @@ class Builder {
         const auto left_of = [&](uint32_t p) {
             return std::clamp(int((centers_[p][axis] - lo) * scale), 0, kBins - 1) <= best_k;
         };
-        const auto mid =
-            std::stable_partition(order.begin() + r.begin, order.begin() + r.end, left_of);
+        // Stable, through a scratch buffer of this thread's (std::stable_partition allocates
+        // one every call: fresh pages, faulted in, at every node).
+        thread_local std::vector<uint32_t> right;
+        right.clear();
+        auto out = order.begin() + r.begin;
+        for (auto it = order.begin() + r.begin; it != order.begin() + r.end; ++it)
+            if (left_of(*it))
+                *out++ = *it;
+            else
+                right.push_back(*it);
+        const auto mid = out;
+        std::copy(right.begin(), right.end(), out);
         s.leaf = false;
         Bin l, rt;
         for (int k = 0; k < kBins; ++k) (k <= best_k ? l : rt).add(bins[size_t(k)]);

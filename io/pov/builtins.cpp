@@ -76,13 +76,13 @@ bool Parser::builtin_call(const Token& t, Value& out) {
     const bool math = w == Word::MathBuiltin;
     if (!math && w != Word::Builtin) return false;
     advance();
-    if (n == "now") {
+    if (same_text(n, "now")) {
         out = Value::number(0);
         return true;
     }
     if (!is_sym("(")) error_expected(peek(), "'(' after " + n);
     advance();
-    if (n == "defined") {
+    if (same_text(n, "defined")) {
         const Token& id = raw();
         if (id.kind != TokKind::Ident) error_expected(id, "an identifier");
         advance();
@@ -111,7 +111,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
     if (!accept_sym(")")) {
         for (;;) {
             at.push_back(&peek());
-            if (n == "trace" && at.size() == 4) {
+            if (same_text(n, "trace") && at.size() == 4) {
                 normal_var = peek();
                 if (normal_var.kind != TokKind::Ident)
                     error_expected(normal_var, "an identifier for the surface's normal");
@@ -159,26 +159,26 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         if (!eval_builtin(n, a, r))
             error_at(t, n + " does not take " + std::to_string(a.size()) + " arguments");
         out = Value::number(r);
-    } else if (n == "vlength") {
+    } else if (same_text(n, "vlength")) {
         need(1);
         out = Value::number(length(vec(0)));
-    } else if (n == "vnormalize") {
+    } else if (same_text(n, "vnormalize")) {
         need(1);
         const Vec3 v = vec(0);
         out = length(v) > 0 ? vout(v / length(v)) : vout(v);
-    } else if (n == "vdot") {
+    } else if (same_text(n, "vdot")) {
         need(2);
         out = Value::number(dot(vec(0), vec(1)));
-    } else if (n == "vcross") {
+    } else if (same_text(n, "vcross")) {
         need(2);
         out = vout(cross(vec(0), vec(1)));
-    } else if (n == "vrotate") {
+    } else if (same_text(n, "vrotate")) {
         need(2);
         out = vout(rotate_xyz(vec(0), vec(1)));
-    } else if (n == "vaxis_rotate") {
+    } else if (same_text(n, "vaxis_rotate")) {
         need(3);
         out = vout(Affine::rotate(vec(1), float(num(2) * M_PI / 180)).vector(vec(0)));
-    } else if (n == "vturbulence") { // vturbulence(lambda, omega, octaves, point)
+    } else if (same_text(n, "vturbulence")) { // vturbulence(lambda, omega, octaves, point)
         need(4);
         // POV-Ray's DTurbulence, its omega and lambda in single precision as POV-Ray keeps them.
         const int octaves = std::isfinite(num(2)) ? int(std::clamp(num(2), 1.0, 10.0)) : 6;
@@ -188,7 +188,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
                                                : DVec3(p.v[0], p.v[1], p.dim > 2 ? p.v[2] : 0);
         const DVec3 t = pov_dturbulence(q, octaves, double(float(num(1))), double(float(num(0))));
         out = Value::vec3(t.x, t.y, t.z);
-    } else if (n == "concat") {
+    } else if (same_text(n, "concat")) {
         // A string lives in the variables and values that hold it, which the data budget does
         // not follow: one string may take a sixteenth of the budget, checked before it is built.
         size_t size = 0;
@@ -202,10 +202,10 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         s.reserve(size);
         for (size_t i = 0; i < args.size(); ++i) s += str(i);
         out = Value::string(std::move(s));
-    } else if (n == "str") {
+    } else if (same_text(n, "str")) {
         need(3);
         out = Value::string(format_float(num(0), int(num(1)), int(num(2))));
-    } else if (n == "vstr") {
+    } else if (same_text(n, "vstr")) {
         need(5);
         const Value& v = args[1];
         std::string s;
@@ -213,31 +213,31 @@ bool Parser::builtin_call(const Token& t, Value& out) {
             s += (i ? str(2) : "") +
                  format_float(v.dim == 1 ? v.v[0] : v.v[i], int(num(3)), int(num(4)));
         out = Value::string(s);
-    } else if (n == "chr") {
+    } else if (same_text(n, "chr")) {
         need(1);
         out = Value::string(std::string(1, char(int(num(0)))));
-    } else if (n == "strlen") {
+    } else if (same_text(n, "strlen")) {
         need(1);
         out = Value::number(double(str(0).size()));
-    } else if (n == "substr") {
+    } else if (same_text(n, "substr")) {
         need(3);
         const std::string& s = str(0);
         const double p = num(1), l = num(2);
         if (p < 1 || l < 0 || p - 1 + l > double(s.size()))
             error_at(t, "substr outside the string (length " + std::to_string(s.size()) + ")");
         out = Value::string(s.substr(size_t(p) - 1, size_t(l)));
-    } else if (n == "strupr" || n == "strlwr") {
+    } else if (same_text(n, "strupr") || same_text(n, "strlwr")) {
         need(1);
         std::string s = str(0);
-        for (char& c : s) c = char(n == "strupr" ? toupper(c) : tolower(c));
+        for (char& c : s) c = char(same_text(n, "strupr") ? toupper(c) : tolower(c));
         out = Value::string(s);
-    } else if (n == "val") {
+    } else if (same_text(n, "val")) {
         need(1);
         out = Value::number(std::atof(str(0).c_str()));
-    } else if (n == "asc") {
+    } else if (same_text(n, "asc")) {
         need(1);
         out = Value::number(str(0).empty() ? 0 : double((unsigned char)str(0)[0]));
-    } else if (n == "file_exists") {
+    } else if (same_text(n, "file_exists")) {
         need(1);
         namespace fs = std::filesystem;
         const fs::path p = str(0);
@@ -246,7 +246,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         for (const std::string& d : options_.include_paths)
             e = e || fs::exists(fs::path(d) / p, ec);
         out = Value::number(e);
-    } else if (n == "seed") {
+    } else if (same_text(n, "seed")) {
         need(1);
         // POV-Ray's stream: the seed's whole part as 32 bits of state; one out of an int's
         // range (or NaN) becomes INT_MIN, as POV-Ray's conversion gives on x86.
@@ -254,7 +254,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         const int32_t seed = s > -2147483649.0 && s < 2147483648.0 ? int32_t(s) : INT32_MIN;
         rand_streams_.push_back(uint32_t(seed));
         out = Value::number(double(rand_streams_.size() - 1));
-    } else if (n == "rand") {
+    } else if (same_text(n, "rand")) {
         need(1);
         const double s = num(0);
         if (s < 0 || size_t(s) >= rand_streams_.size())
@@ -263,10 +263,10 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         uint32_t& x = rand_streams_[size_t(s)];
         x = x * 1812433253u + 12345u;
         out = Value::number(double(x) / 4294967295.0);
-    } else if (n == "dimension_size" || n == "dimensions") {
+    } else if (same_text(n, "dimension_size") || same_text(n, "dimensions")) {
         if (args.empty() || args[0].type != VType::Array) error_expected(*at[0], "an array");
         const ArrayValue& a = args[0].as<ArrayValue>();
-        if (n == "dimensions") {
+        if (same_text(n, "dimensions")) {
             out = Value::number(double(a.sizes.size()));
         } else {
             need(2);
@@ -274,37 +274,41 @@ bool Parser::builtin_call(const Token& t, Value& out) {
             out = Value::number(
                 d >= 1 && size_t(d) <= a.sizes.size() ? double(a.sizes[size_t(d) - 1]) : 0.0);
         }
-    } else if (n == "bitwise_and" || n == "bitwise_or" || n == "bitwise_xor") {
+    } else if (same_text(n, "bitwise_and") || same_text(n, "bitwise_or") ||
+               same_text(n, "bitwise_xor")) {
         long r = long(num(0));
         for (size_t i = 1; i < args.size(); ++i) {
             const long b = long(num(i));
-            r = n == "bitwise_and" ? (r & b) : n == "bitwise_or" ? (r | b) : (r ^ b);
+            r = same_text(n, "bitwise_and")  ? (r & b)
+                : same_text(n, "bitwise_or") ? (r | b)
+                                             : (r ^ b);
         }
         out = Value::number(double(r));
-    } else if (n == "min_extent" || n == "max_extent") {
+    } else if (same_text(n, "min_extent") || same_text(n, "max_extent")) {
         need(1);
         Vec3 lo(0.0f), hi(0.0f); // an unsupported object (warned where declared) or none
         if (args[0].type == VType::Object)
             object_extent(args[0].as<PovObject>(), lo, hi);
         else if (!(args[0].type == VType::Other && args[0].str == "object"))
             error_expected(*at[0], "an object identifier");
-        const Vec3 v = n == "min_extent" ? lo : hi;
+        const Vec3 v = same_text(n, "min_extent") ? lo : hi;
         out = Value::vec3(v.x, v.y, v.z);
-    } else if (n == "trace" || n == "inside") {
+    } else if (same_text(n, "trace") || same_text(n, "inside")) {
         // trace(OBJECT, FROM, DIRECTION [, NORMAL]): the first surface's point (<0,0,0> when
         // none) and its normal put in NORMAL (<0,0,0> when none); inside(OBJECT, POINT).
-        if (n == "inside")
+        if (same_text(n, "inside"))
             need(2);
         else if (args.size() != 3 && args.size() != 4)
             error_at(t, "trace takes 3 or 4 arguments, not " + std::to_string(args.size()));
         if (args[0].type == VType::Other && args[0].str == "object") {
-            out = n == "inside" ? Value::number(0) : Value::vec3(0, 0, 0); // warned when declared
+            out = same_text(n, "inside") ? Value::number(0)
+                                         : Value::vec3(0, 0, 0); // warned when declared
             set_normal(Vec3(0.0f));
             return true;
         }
         if (args[0].type != VType::Object) error_expected(*at[0], "an object identifier");
         const ObjectProbe& q = probe(args[0], t);
-        if (n == "inside") {
+        if (same_text(n, "inside")) {
             out = Value::number(probe_inside(q, vec(1)) ? 1 : 0);
         } else {
             Vec3 hit(0.0f), normal(0.0f);
@@ -314,7 +318,7 @@ bool Parser::builtin_call(const Token& t, Value& out) {
         }
     } else { // prod, sum, datetime
         unsupported(t, n + " (gives 0)");
-        out = n == "datetime" ? Value::string("") : Value::number(0);
+        out = same_text(n, "datetime") ? Value::string("") : Value::number(0);
     }
     return true;
 }

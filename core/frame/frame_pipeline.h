@@ -116,20 +116,23 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         // Primary visibility of the whole region at once (a rasterised triangle is set up
         // once, not once a band); then the rest of the frame band by band, each band's
         // per-sample buffers and rays freed before the next.
-        DeviceBuffer<uint64_t, Exec> vis(ex_, samples);
+        // A traced projection makes each band's keys with its camera rays: a band's worth.
+        const size_t band_samples = size_t(band_rows_) * size_t(region_win_.width);
+        DeviceBuffer<uint64_t, Exec> vis(ex_, cam_.traced ? band_samples : samples);
         if (!cam_.traced) rasterize_region(vis.data());
         st_.set("rays.primary", double(samples));
         allocate_pixels();
         mark("visibility");
         const int bands = (region_win_.height + band_rows_ - 1) / band_rows_;
         st_.set("memory.bands", double(bands));
-        st_.set("memory.band_samples", double(size_t(band_rows_) * size_t(region_win_.width)));
+        st_.set("memory.band_samples", double(band_samples));
         for (int b = 0; b < bands; ++b) {
             const int row = b * band_rows_;
             win_ = region_win_;
             win_.y += row;
             win_.height = std::min(band_rows_, region_win_.height - row);
-            shade_band(vis.data() + size_t(row) * size_t(region_win_.width), row, b, bands);
+            shade_band(vis.data() + (cam_.traced ? 0 : size_t(row) * size_t(region_win_.width)),
+                       row, b, bands);
         }
         win_ = region_win_;
         mark("bands");
@@ -221,7 +224,11 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
             sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t) * 3 + sizeof(SurfaceHit);
         const int64_t per_pixel = sizeof(float) * (4 + 1 + 3 + 3 + 1 + 1);
         const RenderSettings::Rect region = s_.region();
-        const int64_t fixed = samples * int64_t(sizeof(uint64_t)) + band * per_band_sample +
+        const int64_t keys = host_.camera.projection == Projection::Perspective ||
+                                     host_.camera.projection == Projection::Orthographic
+                                 ? samples
+                                 : band; // a traced projection's keys: a band's (roughly)
+        const int64_t fixed = keys * int64_t(sizeof(uint64_t)) + band * per_band_sample +
                               int64_t(region.width) * region.height * per_pixel;
         const int64_t usable = available / 10 * 9; // the rest for what is not counted
         if (fixed > usable)

@@ -65,10 +65,6 @@ struct Split {
 };
 
 /// Bounds that stay conservative after rounding: grown by kBoundPad of their magnitude.
-Vec3 vabs(const Vec3& v) {
-    return {std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)};
-}
-
 Box padded(Box b) {
     const Vec3 m = vmax(vmax(vabs(b.lo), vabs(b.hi)), b.hi - b.lo);
     const float pad = kBoundPad * max_component(m) + FLT_MIN;

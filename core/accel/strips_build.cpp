@@ -46,9 +46,6 @@ struct LeafStrips {
 };
 
 float bound_pad(const Bounds& b) {
-    const auto vabs = [](const Vec3& v) {
-        return Vec3(std::fabs(v.x), std::fabs(v.y), std::fabs(v.z));
-    };
     const Vec3 m = vmax(vmax(vabs(b.lo), vabs(b.hi)), b.hi - b.lo);
     return kBoundPad * max_component(m) + FLT_MIN;
 }

@@ -64,6 +64,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         win_ = region_win_;
         const size_t samples = region_win_.count();
         band_rows_ = band_rows();
+        cam_ = make_camera_frame(host_.camera, W_, H_, s_.aa_samples);
         last_mark_ = start;
         const std::shared_ptr<const CullUnits> units = cull_units_for(host_, s_);
         mark("cull units");
@@ -112,7 +113,6 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         mark("tracer");
 
         scatter_ = host_.media_scatter_light();
-        cam_ = make_camera_frame(host_.camera, W_, H_, s_.aa_samples);
         // Primary visibility of the whole region at once (a rasterised triangle is set up
         // once, not once a band); then the rest of the frame band by band, each band's
         // per-sample buffers and rays freed before the next.
@@ -197,8 +197,9 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         object_ = DeviceBuffer<uint32_t, Exec>();
     }
 
-    /// Host time of the frame's steps in order (cull units, photons, upload, tracer, primary,
-    /// waves, flush, resolve, phase times): where a frame's wall time goes beyond the device's.
+    /// Host time of the frame's steps in order (cull units, photons, upload, tracer,
+    /// visibility, bands, flush, resolve, phase times): where a frame's wall time goes beyond the
+    /// device's.
     const std::vector<std::pair<const char*, double>>& host_steps() const { return steps_; }
 
     // The stages below are public only because nvcc's extended lambdas may not live in private
@@ -224,10 +225,7 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
             sizeof(Vec3) * 3 + sizeof(float) + sizeof(uint32_t) * 3 + sizeof(SurfaceHit);
         const int64_t per_pixel = sizeof(float) * (4 + 1 + 3 + 3 + 1 + 1);
         const RenderSettings::Rect region = s_.region();
-        const int64_t keys = host_.camera.projection == Projection::Perspective ||
-                                     host_.camera.projection == Projection::Orthographic
-                                 ? samples
-                                 : band; // a traced projection's keys: a band's (roughly)
+        const int64_t keys = cam_.traced ? band : samples; // a traced camera's: a band's
         const int64_t fixed = keys * int64_t(sizeof(uint64_t)) + band * per_band_sample +
                               int64_t(region.width) * region.height * per_pixel;
         const int64_t usable = available / 10 * 9; // the rest for what is not counted
@@ -282,66 +280,64 @@ template <class Exec, class Tracer = WavefrontTracer<Exec>> class FramePipeline 
         const size_t samples = win_.count();
         const SampleWindow win = win_;
         const SceneView scene = scene_;
-        {
-            clock_.start("raster");
-            const size_t tris = host_.triangle_count();
-            if constexpr (Exec::kHostMemory) {
-                // Binned into screen tiles, one task a tile, no atomics: faster on CPU cores
-                // (core/raster/rasterizer.cpp); the same minimum keys.
-                rasterize(host_, cam, win, vis);
-            } else if (fill(ex_, vis, samples, kEmptyPixel); tris > 0) {
-                const double near = raster_near(cam);
-                DeviceBuffer<ScreenTri, Exec> screen_buf(ex_, 2 * tris);
-                ScreenTri* screen = screen_buf.data();
-                ex_.launch("raster.setup", tris, [=] SHEAF_HD_LAMBDA(size_t p) {
-                    setup_triangle(scene.tris[p], uint32_t(p),
-                                   scene.prim_flag(uint32_t(p), kNoImage), cam, near,
-                                   &screen[2 * p]);
-                    clip_to_window(screen[2 * p], win);
-                    clip_to_window(screen[2 * p + 1], win);
-                });
-                // The pixel bounds cut into runs of kCoverRun pixels of a row, one thread
-                // each: a triangle as large as the screen is spread over many threads instead
-                // of looping over its pixels in one. first[k]: the first run of triangle k.
-                const size_t m = 2 * tris;
-                DeviceBuffer<uint64_t, Exec> first_buf(ex_, m);
-                uint64_t* first = first_buf.data();
-                ex_.launch("raster.runs", m, [=] SHEAF_HD_LAMBDA(size_t k) {
-                    const ScreenTri& s = screen[k];
-                    first[k] = s.x0 > s.x1 || s.y0 > s.y1
-                                   ? 0
-                                   : uint64_t(s.y1 - s.y0 + 1) *
-                                         uint64_t((s.x1 - s.x0 + kCoverRun) / kCoverRun);
-                });
-                const uint64_t runs = ex_.exclusive_scan(first, m);
-                ex_.launch("raster.cover", size_t(runs), [=] SHEAF_HD_LAMBDA(size_t j) {
-                    // The last triangle whose runs start at or before j (never an empty one:
-                    // an empty triangle's successor starts where it does).
-                    size_t lo = 0, hi = m;
-                    while (hi - lo > 1) {
-                        const size_t mid = lo + (hi - lo) / 2;
-                        (first[mid] <= j ? lo : hi) = mid;
-                    }
-                    const ScreenTri& s = screen[lo];
-                    const uint64_t per_row = uint64_t((s.x1 - s.x0 + kCoverRun) / kCoverRun);
-                    const uint64_t local = j - first[lo];
-                    const int y = s.y0 + int(local / per_row);
-                    const int xa = s.x0 + int(local % per_row) * kCoverRun;
-                    const int xb = xa + kCoverRun - 1 < s.x1 ? xa + kCoverRun - 1 : s.x1;
-                    for (int x = xa; x <= xb; ++x) {
-                        uint64_t key;
-                        if (cover_pixel(s, x, y, cam.ortho, key))
-                            atomic_min_u64(&vis[win.at(x, y)], key);
-                    }
-                });
-            }
-            if (scene.analytic_count > 0)
-                ex_.launch("raster.analytic", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
-                    vis[i] = cast_analytic_pixel(scene, cam, win.column(i), win.row(i), vis[i]);
-                });
-            clock_.stop("raster");
+        clock_.start("raster");
+        const size_t tris = host_.triangle_count();
+        if constexpr (Exec::kHostMemory) {
+            // Binned into screen tiles, one task a tile, no atomics: faster on CPU cores
+            // (core/raster/rasterizer.cpp); the same minimum keys.
+            rasterize(host_, cam, win, vis);
+        } else if (fill(ex_, vis, samples, kEmptyPixel); tris > 0) {
+            const double near = raster_near(cam);
+            DeviceBuffer<ScreenTri, Exec> screen_buf(ex_, 2 * tris);
+            ScreenTri* screen = screen_buf.data();
+            ex_.launch("raster.setup", tris, [=] SHEAF_HD_LAMBDA(size_t p) {
+                setup_triangle(scene.tris[p], uint32_t(p), scene.prim_flag(uint32_t(p), kNoImage),
+                               cam, near, &screen[2 * p]);
+                clip_to_window(screen[2 * p], win);
+                clip_to_window(screen[2 * p + 1], win);
+            });
+            // The pixel bounds cut into runs of kCoverRun pixels of a row, one thread
+            // each: a triangle as large as the screen is spread over many threads instead
+            // of looping over its pixels in one. first[k]: the first run of triangle k.
+            const size_t m = 2 * tris;
+            DeviceBuffer<uint64_t, Exec> first_buf(ex_, m);
+            uint64_t* first = first_buf.data();
+            ex_.launch("raster.runs", m, [=] SHEAF_HD_LAMBDA(size_t k) {
+                const ScreenTri& s = screen[k];
+                first[k] = s.x0 > s.x1 || s.y0 > s.y1
+                               ? 0
+                               : uint64_t(s.y1 - s.y0 + 1) *
+                                     uint64_t((s.x1 - s.x0 + kCoverRun) / kCoverRun);
+            });
+            const uint64_t runs = ex_.exclusive_scan(first, m);
+            ex_.launch("raster.cover", size_t(runs), [=] SHEAF_HD_LAMBDA(size_t j) {
+                // The last triangle whose runs start at or before j (never an empty one:
+                // an empty triangle's successor starts where it does).
+                size_t lo = 0, hi = m;
+                while (hi - lo > 1) {
+                    const size_t mid = lo + (hi - lo) / 2;
+                    (first[mid] <= j ? lo : hi) = mid;
+                }
+                const ScreenTri& s = screen[lo];
+                const uint64_t per_row = uint64_t((s.x1 - s.x0 + kCoverRun) / kCoverRun);
+                const uint64_t local = j - first[lo];
+                const int y = s.y0 + int(local / per_row);
+                const int xa = s.x0 + int(local % per_row) * kCoverRun;
+                const int xb = xa + kCoverRun - 1 < s.x1 ? xa + kCoverRun - 1 : s.x1;
+                for (int x = xa; x <= xb; ++x) {
+                    uint64_t key;
+                    if (cover_pixel(s, x, y, cam.ortho, key))
+                        atomic_min_u64(&vis[win.at(x, y)], key);
+                }
+            });
         }
+        if (scene.analytic_count > 0)
+            ex_.launch("raster.analytic", samples, [=] SHEAF_HD_LAMBDA(size_t i) {
+                vis[i] = cast_analytic_pixel(scene, cam, win.column(i), win.row(i), vis[i]);
+            });
+        clock_.stop("raster");
     }
+
     // The band's (win_) surface hits and primary passes from its visibility keys.
     DeviceHits<Exec> gbuffer(const uint64_t* vis) {
         const CameraFrame cam = cam_;

@@ -75,6 +75,9 @@ SHEAF_HD_INLINE Vec3 vmin(Vec3 a, Vec3 b) {
 SHEAF_HD_INLINE Vec3 vmax(Vec3 a, Vec3 b) {
     return {hdm::fmaxf(a.x, b.x), hdm::fmaxf(a.y, b.y), hdm::fmaxf(a.z, b.z)};
 }
+SHEAF_HD_INLINE Vec3 vabs(Vec3 a) {
+    return Vec3(::fabsf(a.x), ::fabsf(a.y), ::fabsf(a.z));
+}
 SHEAF_HD_INLINE float max_component(Vec3 a) {
     return hdm::fmaxf(a.x, hdm::fmaxf(a.y, a.z));
 }

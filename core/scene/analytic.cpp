@@ -163,9 +163,7 @@ WorldBox csg_box(const PreparedScene& scene, uint32_t node) {
             b.lo = vmin(b.lo, p), b.hi = vmax(b.hi, p);
         }
         // Padded as pad_radius pads a sphere: the box of rounded corners holds the solid.
-        const Vec3 big = vmax(Vec3(std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.lo.z)),
-                              Vec3(std::fabs(b.hi.x), std::fabs(b.hi.y), std::fabs(b.hi.z)));
-        const Vec3 pad = (big + (b.hi - b.lo)) * 1e-5f;
+        const Vec3 pad = (vmax(vabs(b.lo), vabs(b.hi)) + (b.hi - b.lo)) * 1e-5f;
         b.lo = b.lo - pad, b.hi = b.hi + pad;
         return meet(b, around);
     }

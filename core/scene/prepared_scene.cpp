@@ -293,10 +293,19 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.analytic_root.push_back(root);
         Sphere bound = csg_bound(p, root);
         WorldBox box = csg_box(p, root);
-        if (obj.bound.radius < bound.radius) bound = obj.bound; // bounded_by
-        // bounded_by's box, where it meets the object's own (parts apart: a point).
-        box.lo = vmax(box.lo, obj.bound_box.lo), box.hi = vmin(box.hi, obj.bound_box.hi);
+        // bounded_by: its box where it meets the object's own (parts apart: a point), and the
+        // sphere around it where that is smaller.
+        const WorldBox& given = obj.bound;
+        box.lo = vmax(box.lo, given.lo), box.hi = vmin(box.hi, given.hi);
         if (box.lo.x > box.hi.x || box.lo.y > box.hi.y || box.lo.z > box.hi.z) box.hi = box.lo;
+        if (max_component(vabs(given.lo)) < INFINITY && max_component(vabs(given.hi)) < INFINITY) {
+            const Vec3 c = (given.lo + given.hi) * 0.5f;
+            const float r =
+                given.lo.x > given.hi.x || given.lo.y > given.hi.y || given.lo.z > given.hi.z
+                    ? 0.0f
+                    : pad_radius(length(given.hi - given.lo) * 0.5f, c);
+            if (r < bound.radius) bound = {c, r};
+        }
         p.analytic_box.push_back(box);
         p.prim_sphere.push_back(bound);
         p.prim_object.push_back(uint32_t(p.object_sphere.size()));

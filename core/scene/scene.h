@@ -4,7 +4,6 @@
 #pragma once
 
 #include "core/geometry/shape.h"
-#include "core/geometry/sphere.h"
 #include "core/geometry/world_box.h"
 #include "core/math/affine.h"
 #include "core/scene/pattern.h"
@@ -342,9 +341,8 @@ struct ShapeObject {
     PhotonObject photons;
     /// A bound the scene gives (POV-Ray's bounded_by), in world space: where it is smaller
     /// than the one its shapes give (none for a polynomial surface), rays that miss it skip
-    /// the object. Infinite: none.
-    Sphere bound{Vec3(0.0f), INFINITY};
-    WorldBox bound_box; // the same bound as a box (infinite: none)
+    /// the object. Infinite: none; empty: nothing shows.
+    WorldBox bound;
 };
 
 /// The deepest nesting of CSG operations in `o` (a lone shape: 0), against kMaxCsgNesting.

@@ -137,7 +137,7 @@ struct RenderSettings {
     /// every ray is traced on its own (a band's rays then meet the same tests as the frame's),
     /// samples for about kCpuBandRays rays at `rays_per_sample` each (at least one); else the
     /// whole frame (`frame_samples`).
-    size_t band_or(bool host_memory, size_t frame_samples, size_t rays_per_sample = 4) const;
+    size_t band_or(bool host_memory, size_t frame_samples, size_t rays_per_sample) const;
 
     /// Explicit values win over the scene's, which win over the defaults.
     static RenderSettings resolve(const Settings& explicit_settings,

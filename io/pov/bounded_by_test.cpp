@@ -26,18 +26,13 @@ quartic {
 TEST(PovBoundedBy, BoundsAQuarticAndMovesWithIt) {
     const PovResult plain = load_text(std::string(kTorus) + "}");
     ASSERT_EQ(plain.scene.shape_objects.size(), 1u);
-    EXPECT_FALSE(std::isfinite(plain.scene.shape_objects[0].bound.radius));
+    EXPECT_FALSE(std::isfinite(plain.scene.shape_objects[0].bound.lo.x));
     const PovResult r =
         load_text(std::string(kTorus) + "bounded_by { box { <-2.5, -0.5, -2.5>, <2.5, 0.5, 2.5> } }"
                                         "translate <1, 2, 3> }");
     ASSERT_EQ(r.scene.shape_objects.size(), 1u);
     EXPECT_TRUE(r.warnings.empty());
-    const Sphere b = r.scene.shape_objects[0].bound;
-    EXPECT_NEAR(b.center.x, 1, 1e-5);
-    EXPECT_NEAR(b.center.y, 2, 1e-5);
-    EXPECT_NEAR(b.center.z, -3, 1e-5); // Sheaf's world: z mirrored
-    EXPECT_NEAR(b.radius, std::sqrt(2.5 * 2.5 * 2 + 0.25), 1e-3);
-    const WorldBox& box = r.scene.shape_objects[0].bound_box; // the box itself, z mirrored
+    const WorldBox& box = r.scene.shape_objects[0].bound; // the box itself, z mirrored
     EXPECT_NEAR(box.lo.x, -1.5, 1e-3);
     EXPECT_NEAR(box.hi.x, 3.5, 1e-3);
     EXPECT_NEAR(box.lo.y, 1.5, 1e-3);
@@ -46,9 +41,13 @@ TEST(PovBoundedBy, BoundsAQuarticAndMovesWithIt) {
     EXPECT_NEAR(box.hi.z, -0.5, 1e-3);
     EXPECT_LE(box.lo.x, -1.5f); // padded outwards
     EXPECT_GE(box.hi.z, -0.5f);
-    // The prepared object takes it: no longer unbounded.
+    // The prepared object takes it, and the sphere around it: no longer unbounded.
     const PreparedScene p = prepare_scene(r.scene);
-    EXPECT_NEAR(p.object_sphere.back().radius, b.radius, 1e-3);
+    const Sphere b = p.object_sphere.back();
+    EXPECT_NEAR(b.center.x, 1, 1e-5);
+    EXPECT_NEAR(b.center.y, 2, 1e-5);
+    EXPECT_NEAR(b.center.z, -3, 1e-5); // Sheaf's world: z mirrored
+    EXPECT_NEAR(b.radius, std::sqrt(2.5 * 2.5 * 2 + 0.25), 1e-3);
     EXPECT_NEAR(p.analytic_box.back().lo.y, 1.5, 1e-3); // the BVH bounds it by the box
 }
 
@@ -56,8 +55,9 @@ TEST(PovBoundedBy, PartsOfASplitUnionKeepTheirOwnSmallerBound) {
     const PovResult r = load_text(std::string("union { ") + kTorus + "}" +
                                   "sphere { <0, 0, 0>, 0.1 }"
                                   "bounded_by { sphere { 0, 3 } } }");
-    ASSERT_EQ(r.scene.shape_objects.size(), 2u); // a union renders as its parts
-    EXPECT_NEAR(r.scene.shape_objects[0].bound.radius, std::sqrt(27.0), 1e-3);
+    ASSERT_EQ(r.scene.shape_objects.size(), 2u);               // a union renders as its parts
+    EXPECT_NEAR(r.scene.shape_objects[0].bound.hi.x, 3, 1e-3); // the union's bound
+    EXPECT_NEAR(r.scene.shape_objects[1].bound.lo.y, -3, 1e-3);
     const PreparedScene p = prepare_scene(r.scene);
     EXPECT_NEAR(p.object_sphere[0].radius, std::sqrt(27.0), 1e-3);
     EXPECT_LT(p.object_sphere[1].radius, 0.2); // the small sphere's own bound is smaller
@@ -68,7 +68,7 @@ TEST(PovBoundedBy, ABoundThatBoundsNothingIsNone) {
                               "clipped_by { box { -3, 3 } } bounded_by { clipped_by }"}) {
         const PovResult r = load_text(std::string(kTorus) + bound + " }");
         ASSERT_EQ(r.scene.shape_objects.size(), 1u) << bound;
-        EXPECT_FALSE(std::isfinite(r.scene.shape_objects[0].bound.radius)) << bound;
+        EXPECT_FALSE(std::isfinite(r.scene.shape_objects[0].bound.hi.y)) << bound;
     }
 }
 

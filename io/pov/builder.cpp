@@ -22,10 +22,6 @@ Affine pov_to_sheaf() {
 
 namespace {
 
-Vec3 vabs3(Vec3 v) {
-    return Vec3(std::fabs(v.x), std::fabs(v.y), std::fabs(v.z));
-}
-
 /// Whether transform a squeezes space to a segment or a point (its linear part's rank at
 /// most 1: every 2 x 2 minor negligible against its largest entry squared).
 bool squeezed_to_a_line(const Affine& a) {
@@ -345,15 +341,18 @@ struct Builder {
         bound_lo_ = outer_lo, bound_hi_ = outer_hi;
     }
 
-    /// The bounded_by box around the object being built as a sphere in Sheaf's world
-    /// (infinite: none). Nested bounds that do not meet leave a point.
-    Sphere bound_sphere() const {
+    /// The bounded_by box around the object being built in Sheaf's world, padded for
+    /// rounding (infinite: none; bounds that do not meet leave an empty box).
+    WorldBox bound_box() const {
         if (!(std::fabs(bound_lo_.x) < INFINITY) || !(std::fabs(bound_hi_.x) < INFINITY))
-            return {Vec3(0.0f), INFINITY};
-        const Vec3 c = flip.point((bound_lo_ + bound_hi_) * 0.5f);
+            return WorldBox();
+        const Vec3 a = flip.point(bound_lo_), b = flip.point(bound_hi_);
+        const Vec3 pad = (vmax(vabs(a), vabs(b)) + vabs(b - a)) * 1e-5f;
+        WorldBox w;
+        w.lo = vmin(a, b) - pad, w.hi = vmax(a, b) + pad;
         if (bound_lo_.x > bound_hi_.x || bound_lo_.y > bound_hi_.y || bound_lo_.z > bound_hi_.z)
-            return {c, 0.0f};
-        return {c, pad_radius(length(bound_hi_ - bound_lo_) * 0.5f, c)};
+            w.hi = w.lo - Vec3(1.0f); // empty
+        return w;
     }
 
     void top_in(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,
@@ -401,12 +400,7 @@ struct Builder {
         // POV-Ray's objects are solid unless `hollow`: media around them leave them out.
         so.flags = uint8_t(flags | (o.hollow ? 0 : kSolid));
         so.photons = photons_of(o);
-        so.bound = bound_sphere();
-        if (std::isfinite(so.bound.radius) && so.bound.radius > 0) {
-            const Vec3 a = flip.point(bound_lo_), b = flip.point(bound_hi_);
-            const Vec3 pad = (vmax(vabs3(a), vabs3(b)) + (b - a)) * 1e-5f;
-            so.bound_box.lo = vmin(a, b) - pad, so.bound_box.hi = vmax(a, b) + pad;
-        }
+        so.bound = bound_box();
         scene.add_shape_object(std::move(so));
     }
 

@@ -37,14 +37,20 @@ bool probe_inside(const ObjectProbe& q, Vec3 point) {
     return false;
 }
 
-bool probe_trace(const ObjectProbe& q, Vec3 from, Vec3 dir, Vec3& hit, Vec3& normal) {
-    if (!(length(dir) > 0)) return false;
+Ray probe_ray(Vec3 from, Vec3 dir) {
     const Affine flip = pov_to_sheaf();
-    const SceneView view(q.prepared);
     Ray r;
     r.origin = flip.point(from);
     r.dir = normalize(flip.vector(dir));
     r.tmin = 0, r.tmax = FLT_MAX;
+    return r;
+}
+
+bool probe_trace(const ObjectProbe& q, Vec3 from, Vec3 dir, Vec3& hit, Vec3& normal) {
+    if (!(length(dir) > 0)) return false;
+    const Affine flip = pov_to_sheaf();
+    const SceneView view(q.prepared);
+    const Ray r = probe_ray(from, dir);
     float best = FLT_MAX;
     uint32_t best_prim = 0xFFFFFFFFu;
     Vec3 n(0.0f);

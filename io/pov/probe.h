@@ -27,6 +27,10 @@ std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o, con
 /// triangles enclose nothing (as in POV-Ray without inside_vector).
 bool probe_inside(const ObjectProbe& q, Vec3 point);
 
+/// The ray from `from` along `dir` (POV-Ray coordinates, dir not zero) in Sheaf's world, unit
+/// direction, the whole half-line.
+Ray probe_ray(Vec3 from, Vec3 dir);
+
 /// The first surface of the object along the ray from `from` in direction `dir` (POV-Ray
 /// coordinates): its point and its unit normal, out of the solid (a triangle's: facing
 /// `from`); false when it meets none. Of hits at the same distance the lowest primitive's

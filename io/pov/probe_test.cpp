@@ -21,10 +21,7 @@ using test::TempDir;
 bool brute_trace(const ObjectProbe& q, Vec3 from, Vec3 dir, Vec3& hit, Vec3& normal) {
     const Affine flip = pov_to_sheaf();
     const SceneView view(q.prepared);
-    Ray r;
-    r.origin = flip.point(from);
-    r.dir = normalize(flip.vector(dir));
-    r.tmin = 0, r.tmax = FLT_MAX;
+    Ray r = probe_ray(from, dir);
     float best = FLT_MAX;
     Vec3 n(0.0f);
     for (size_t i = 0; i < q.prepared.tris.size(); ++i) {

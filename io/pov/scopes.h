@@ -71,7 +71,6 @@ class Scopes {
     struct Scope {
         std::vector<uint32_t> names;
     };
-    std::vector<Binding>& bindings(uint32_t name) { return held_[name]; }
     /// The binding of `name` in exactly scope `scope`, nullptr when there is none.
     Binding* in_scope(uint32_t name, size_t scope);
     const Binding* in_scope(uint32_t name, size_t scope) const;

@@ -3,11 +3,11 @@
 
 #include "progress.h"
 
-#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -140,9 +140,9 @@ int apply_region(SheafRenderer renderer, SheafScene scene, const RegionRequest& 
 int keep_written_passes(SheafRenderer renderer, SheafScene scene, const std::string& output) {
     // An OpenEXR file holds every pass; the other formats hold the picture alone, so the frame
     // need not keep the rest (output.passes at its default: all).
-    std::string ext = output.substr(std::min(output.size(), output.rfind('.') + 1));
+    std::string ext = std::filesystem::path(output).extension().string();
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == "exr") return kOk;
+    if (ext == ".exr") return kOk;
     char passes[256] = "";
     if (sheafRendererGetEffective(renderer, scene, "output.passes", passes, sizeof passes,
                                   nullptr) != SHEAF_OK)

@@ -30,7 +30,7 @@ struct RayGenParams {
     // Where shadow rays end above surfaces, at least: they start at the lights, so the
     // rounding of their end grows with the lights' distance too.
     float shadow_epsilon = 1e-4f;
-    float far = 1e4f;      // beyond the scene: where parallel lights' shadow rays start
+    float far = 1e4f; // beyond the scene: where parallel lights' shadow rays start
     int ao_samples = 0;
     float ao_distance = 1.0f;
     float min_weight = 1e-3f;  // reflection/refraction/gather rays carrying less are not traced
@@ -189,9 +189,11 @@ SHEAF_HD_INLINE void shadow_ray_write(const SceneView& scene, const SurfaceHit* 
     out.rays[slot] = r;
     out.pixel[slot] = h.pixel;
     // The media on the way fade the light (their extinction), as POV-Ray's shadow rays do;
-    // the atmosphere's only for lights with media_attenuation.
-    const Vec3 through =
+    // the atmosphere's and the fog's only for lights with media_attenuation.
+    Vec3 through =
         media_transmittance(scene, target, ls.to_light, ls.distance, l.media_attenuation);
+    if (l.media_attenuation && l.media_interaction)
+        through = through * fog_transmittance(scene, target, ls.to_light, ls.distance);
     out.weight[slot] = h.throughput * direct_light(scene.materials[h.material], h, ls.to_light,
                                                    ls.radiance * through * scale, l.highlights);
     out.light[slot] = li;

@@ -316,10 +316,15 @@ PreparedScene prepare_scene(const Scene& scene) {
         p.object_begin.push_back(uint32_t(p.tris.size() + p.analytic_root.size()));
     }
     p.atmosphere = scene.atmosphere;
-    if (p.has_media())
+    // Fog that fades a light's shadow rays fills only what is outside solid objects too
+    // (fog_transmittance, core/shading/media.h).
+    bool fogged_lights = false;
+    for (const Light& l : scene.lights)
+        fogged_lights |= scene.fog.distance > 0 && l.media_attenuation && l.media_interaction;
+    if (p.has_media() || fogged_lights)
         for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
             if (!(scene.shape_objects[so].flags & kSolid)) continue;
-            if (p.atmosphere >= 0) { // the atmosphere is everywhere
+            if (p.atmosphere >= 0 || fogged_lights) { // the atmosphere (fog) is everywhere
                 p.media_solids.push_back(uint32_t(so));
                 continue;
             }

@@ -101,7 +101,8 @@ struct PreparedScene {
     std::vector<float> density_voxels;
     // The analytic primitives some of whose shapes hold media (0-based among the analytic
     // ones; core/shading/media.h), and the solid ones (kSolid) that media leave out: all of
-    // them with an atmosphere, else those whose bounds meet a container's.
+    // them with an atmosphere or a fog that fades lights (fog_transmittance), else those
+    // whose bounds meet a container's.
     std::vector<uint32_t> media_containers, media_solids;
     int32_t atmosphere = -1;            // Scene::atmosphere
     std::vector<FnProgram> fn_programs; // user functions (Scene::fn_programs ...)

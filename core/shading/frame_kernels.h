@@ -75,14 +75,23 @@ SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, 
     return w * ((sky * keep + add) * media_keep + media_add * keep);
 }
 
+/// Whether the way to hit h lies inside a solid object: the ray leaves, through its far
+/// side, an object that is not `hollow` (kSolid). No surface lies between the way's ends, so
+/// the whole way is inside it.
+SHEAF_HD_INLINE bool way_in_solid(const SceneView& scene, const SurfaceHit& h) {
+    return !h.front && scene.prim_flag(h.prim, kSolid);
+}
+
 /// The fog between the ray's origin and the hit: scales the hit's throughput, and returns
 /// the fog's own colour the ray brings. The media of the containers on the way come first:
 /// they fade the hit and add their own light. `seg`, when given, receives the way's media
-/// segment (core/shading/media_light.h).
+/// segment (core/shading/media_light.h). As in POV-Ray, fog fills only the space outside
+/// objects and inside hollow ones: a way inside a solid object takes none (way_in_solid).
 SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h,
                                  MediaSegment* seg = nullptr) {
     const Vec3 origin = h.position - h.incoming * h.t;
-    if (seg) *seg = media_segment(scene, origin, h.incoming, h.t, h.throughput, h.pixel);
+    const bool no_fog = way_in_solid(scene, h);
+    if (seg) *seg = media_segment(scene, origin, h.incoming, h.t, h.throughput, h.pixel, no_fog);
     Vec3 media(0.0f);
     if (scene.has_media()) {
         Vec3 keep, add;
@@ -96,9 +105,9 @@ SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h,
         media += h.throughput * rb;
         h.throughput = h.throughput * mul;
     }
-    float keep;
-    Vec3 add;
-    fog_over(scene.fog, origin, h.incoming, h.t, keep, add);
+    float keep = 1.0f;
+    Vec3 add(0.0f);
+    if (!no_fog) fog_over(scene.fog, origin, h.incoming, h.t, keep, add);
     const Vec3 fog = h.throughput * add + media * keep;
     h.throughput = h.throughput * keep;
     return fog;

@@ -26,12 +26,14 @@ struct MediaSegment {
 };
 
 /// The segment of a ray from `origin` along unit `dir` to t_end carrying w to sample `pixel`:
-/// the fog over the way fades what its media add, as through_fog and leave_scene fade it.
+/// the fog over the way fades what its media add, as through_fog and leave_scene fade it
+/// (`no_fog`: a way inside a solid object, which the fog does not fill).
 SHEAF_HD_INLINE MediaSegment media_segment(const SceneView& scene, Vec3 origin, Vec3 dir,
-                                           float t_end, Vec3 w, uint32_t pixel) {
-    float keep;
-    Vec3 add;
-    fog_over(scene.fog, origin, dir, t_end, keep, add);
+                                           float t_end, Vec3 w, uint32_t pixel,
+                                           bool no_fog = false) {
+    float keep = 1.0f;
+    Vec3 add(0.0f);
+    if (!no_fog) fog_over(scene.fog, origin, dir, t_end, keep, add);
     MediaSegment s;
     s.origin = origin, s.dir = dir, s.t_end = t_end, s.weight = w * keep, s.pixel = pixel;
     return s;

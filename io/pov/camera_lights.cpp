@@ -283,7 +283,12 @@ void Parser::parse_global_settings() {
             const Color5 c = parse_color();
             model.ambient_light = {c[0], c[1], c[2]};
         } else if (k == "radiosity") {
+            const Token at = t; // the block's tokens come after it
             parse_radiosity();
+            approximated(at, "radiosity: gathered anew at every pixel with " +
+                                 std::to_string(model.radiosity_count) +
+                                 " rays, where POV-Ray interpolates a cache of samples (the "
+                                 "light agrees, its grain and the cache's smoothing do not)");
         } else if (k == "photons") {
             parse_photon_settings();
         } else if (k == "subsurface") {

@@ -519,17 +519,17 @@ SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
         const Vec3 size(pt.param[0] > 0 ? pt.param[0] : 8.0f, pt.param[1] > 0 ? pt.param[1] : 3.0f,
                         pt.param[2] > 0 ? pt.param[2] : 4.5f);
         const float mortar = pt.param[3] > 0 ? pt.param[3] : 0.5f;
-        // Nudged as checker is, so a face lying on a course boundary takes one side.
-        const Vec3 q = p + e;
-        const int course = floor_int(q.y / size.y);
-        const float shift = (course & 1) ? 0.5f : 0.0f;
-        const float fx = frac(q.x / size.x + shift) * size.x;
-        const float fy = frac(q.y / size.y) * size.y;
-        const float fz = frac(q.z / size.z + shift) * size.z;
-        const float m = 0.5f * mortar;
-        const bool in_mortar =
-            fx < m || fx > size.x - m || fy < m || fy > size.y - m || fz < m || fz > size.z - m;
-        return in_mortar ? 0 : 1;
+        // POV-Ray's layout: the point moved by the mortar's width, so each course, brick and
+        // layer starts with its mortar (a joint at the low end of every cell); courses of
+        // even and odd number shift their end joints by half a brick, along x and along z
+        // the other way round. Nudged as checker is, so a face lying on a course boundary
+        // takes one side.
+        const Vec3 q = p + e + Vec3(mortar);
+        if (frac(q.y / size.y) <= mortar / size.y) return 0;
+        const bool odd = frac(q.y / (2.0f * size.y)) <= 0.5f;
+        if (frac(q.x / size.x + (odd ? 0.0f : 0.5f)) <= mortar / size.x) return 0;
+        if (frac(q.z / size.z + (odd ? 0.5f : 0.0f)) <= mortar / size.z) return 0;
+        return 1;
     }
     default:
         return 0;

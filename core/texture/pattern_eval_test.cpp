@@ -59,7 +59,8 @@ TEST(Patterns, CheckerAlternatesInEveryAxis) {
     EXPECT_EQ(pattern_index_at(p, Vec3(0.5f, 0.5f, -0.5f)), 1);
     EXPECT_EQ(pattern_index_at(p, Vec3(-0.5f, -0.5f, 0.5f)), 0);
     // A face on an integer plane takes one side consistently.
-    EXPECT_EQ(pattern_index_at(p, Vec3(0.25f, 0.0f, 0.25f)), pattern_index_at(p, Vec3(0.25f, 1e-6f, 0.25f)));
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.25f, 0.0f, 0.25f)),
+              pattern_index_at(p, Vec3(0.25f, 1e-6f, 0.25f)));
 }
 
 TEST(Patterns, ListPatternsStayInTheirEntries) {
@@ -87,18 +88,25 @@ TEST(Patterns, HexagonNeighboursDiffer) {
     // Centres of a hexagon and its six neighbours (unit side, flat sides along x).
     const Vec3 c(0, 0, 0);
     const float h = std::sqrt(3.0f);
-    const Vec3 n[6] = {{1.5f, 0, h / 2}, {1.5f, 0, -h / 2}, {-1.5f, 0, h / 2},
-                       {-1.5f, 0, -h / 2}, {0, 0, h}, {0, 0, -h}};
+    const Vec3 n[6] = {{1.5f, 0, h / 2},   {1.5f, 0, -h / 2}, {-1.5f, 0, h / 2},
+                       {-1.5f, 0, -h / 2}, {0, 0, h},         {0, 0, -h}};
     for (const Vec3& q : n) EXPECT_NE(pattern_index_at(p, c), pattern_index_at(p, q));
 }
 
 TEST(Patterns, BrickHasMortarBetweenBricks) {
-    Pattern p = make(PatternKind::Brick); // 8 x 3 x 4.5 bricks, 0.5 mortar
-    EXPECT_EQ(pattern_index_at(p, Vec3(4, 1.5f, 2.25f)), 1);  // inside a brick
-    EXPECT_EQ(pattern_index_at(p, Vec3(4, 0.1f, 2.25f)), 0);  // the mortar under it
-    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 1.5f, 2.25f)), 0); // between two bricks
-    // The next course is offset by half a brick: x = 0 is inside a brick there.
-    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 4.5f, 0.1f)), 1);
+    // POV-Ray's layout: each cell starts with its mortar, 0.5 below the cell's edge (its
+    // brick pattern offsets the point by the mortar): courses 0..3 of 8 x 3 x 4.5 bricks lie
+    // over y in (-0.5, 2.5) mod 3, with the bed joint above in [2.5, 3].
+    Pattern p = make(PatternKind::Brick);                    // 8 x 3 x 4.5 bricks, 0.5 mortar
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 1.5f, 1)), 1);     // inside a brick
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 2.75f, 1)), 0);    // the bed joint above it
+    EXPECT_EQ(pattern_index_at(p, Vec3(7.75f, 1.5f, 1)), 0); // the end joint at x = 8
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 1.5f, 2)), 0);     // the joint across z
+    // The next course is offset by half a brick, along x and along z.
+    EXPECT_EQ(pattern_index_at(p, Vec3(7.75f, 4.5f, 1)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(3.75f, 4.5f, 1)), 0);
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 4.5f, 2)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(4, 4.5f, -0.25f)), 0);
 }
 
 TEST(Patterns, GradientFrequencyPhaseAndWaves) {

@@ -59,14 +59,29 @@ double max3(const std::array<double, 3>& a) {
     return std::max({a[0], a[1], a[2]});
 }
 
-// The share of light a pigment lets through, averaged over its colours.
+// The share of light a pigment lets through, averaged over its colours: a list pattern's
+// (checker, hexagon ...) entries alike, a map's over the pattern's values 0..1 as the map
+// blends them (a map clear but for thin lines at its ends lets most light through).
 double mean_pass(const PovPigment* pg) {
     if (!pg) return 0;
     if (!pg->patterned || pg->entries.empty()) return pg->color[3] + pg->color[4];
-    double sum = 0;
+    std::vector<double> pass;
     for (const PovMapEntry& e : pg->entries)
-        sum += e.pigment ? mean_pass(e.pigment.get()) : e.color[3] + e.color[4];
-    return sum / double(pg->entries.size());
+        pass.push_back(e.pigment ? mean_pass(e.pigment.get()) : e.color[3] + e.color[4]);
+    const auto& es = pg->entries;
+    const bool map = !pattern_is_list(pg->pattern.kind) && !pg->average &&
+                     pg->pattern.kind != PatternKind::Image;
+    if (!map || es.size() < 2) {
+        double sum = 0;
+        for (double v : pass) sum += v;
+        return sum / double(pass.size());
+    }
+    // Piecewise linear between the entries, flat before the first and after the last.
+    auto at = [&](size_t i) { return std::clamp(es[i].value, 0.0, 1.0); };
+    double sum = pass.front() * at(0) + pass.back() * (1.0 - at(es.size() - 1));
+    for (size_t i = 0; i + 1 < es.size(); ++i)
+        sum += 0.5 * (pass[i] + pass[i + 1]) * std::max(0.0, at(i + 1) - at(i));
+    return sum;
 }
 
 // One finish for a layered texture: POV-Ray lights each layer with its own and weighs them by

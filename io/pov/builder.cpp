@@ -503,12 +503,16 @@ struct Builder {
                                           "above 0 and below 1e6");
         } else if (c.projection == Projection::Orthographic) {
             out.ortho_height = length(up) > 0 ? length(up) : 1.0f;
+            // POV-Ray sees the image area a perspective camera would at the look_at point's
+            // distance (the default look_at's, <0, 0, 1>, when none is given) when an angle is
+            // given, or when neither up nor right is: up and right grow by that distance over
+            // the direction's length. The angle sets the width seen there.
+            const float d = length(c.look_at - c.location);
             if (c.angle > 0 && c.angle < 180) {
-                // POV-Ray: the angle sets the width seen at the look_at distance (the
-                // direction's length when there is no look_at).
-                const float d = c.has_look_at ? length(c.look_at - c.location) : length(dir);
                 out.ortho_height = 2 * d * std::tan(float(c.angle * M_PI / 360)) * length(up) /
                                    std::max(length(right), 1e-6f);
+            } else if (!c.has_up && !c.has_right && d > 0 && length(c.direction) > 0) {
+                out.ortho_height *= d / length(c.direction);
             }
         } else {
             out.fov_y_degrees =

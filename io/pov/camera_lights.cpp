@@ -63,9 +63,9 @@ void Parser::parse_camera(PovCamera& c) {
         else if (k == "look_at")
             c.look_at = parse_vector(), c.has_look_at = true;
         else if (k == "right")
-            c.right = parse_vector();
+            c.right = parse_vector(), c.has_right = true;
         else if (k == "up")
-            c.up = parse_vector();
+            c.up = parse_vector(), c.has_up = true;
         else if (k == "direction")
             c.direction = parse_vector();
         else if (k == "sky")

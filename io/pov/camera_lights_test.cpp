@@ -67,6 +67,17 @@ TEST(PovCamera, DefaultAndOrthographic) {
     EXPECT_FLOAT_EQ(r.scene.camera.ortho_height, 6);
     EXPECT_FLOAT_EQ(r.scene.camera.position.x, 1);
     EXPECT_FLOAT_EQ(r.scene.camera.position.z, 10);
+    // Without up and right, POV-Ray shows the area a perspective camera would at the look_at
+    // point's distance: up grows by that distance over the direction's length
+    // (textures/pigments/transmitfx.pov).
+    auto height = [](const std::string& items) {
+        return load_text("camera { orthographic " + items + " }").scene.camera.ortho_height;
+    };
+    EXPECT_FLOAT_EQ(height("location 6 * y look_at 0"), 6);
+    EXPECT_FLOAT_EQ(height("location 6 * y look_at 0 direction 2 * z"), 3);
+    EXPECT_FLOAT_EQ(height("location <0, 0, -3>"), 4); // the default look_at, <0, 0, 1>
+    EXPECT_FLOAT_EQ(height("location 6 * y look_at 0 up 2 * y"), 2); // up given: kept
+    EXPECT_FLOAT_EQ(height("location 6 * y look_at 0 right 4 * x"), 1);
 }
 
 TEST(PovCamera, TheOtherCameraTypesAreTracedProjections) {

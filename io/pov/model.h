@@ -255,10 +255,11 @@ struct PovCamera {
     Vec3 location{0, 0, 0}, direction{0, 0, 1}, right{1.33f, 0, 0}, up{0, 1, 0}, sky{0, 1, 0};
     Vec3 look_at{0, 0, 1};
     bool has_look_at = false;
-    double angle = 0;    // degrees, 0: not given
-    double v_angle = -1; // spherical: the vertical angle; < 0: not given
-    Token type_at;       // the camera type's keyword, for errors
-    Affine transform;    // applied after everything else
+    bool has_up = false, has_right = false; // given: an orthographic view keeps their size
+    double angle = 0;                       // degrees, 0: not given
+    double v_angle = -1;                    // spherical: the vertical angle; < 0: not given
+    Token type_at;                          // the camera type's keyword, for errors
+    Affine transform;                       // applied after everything else
     /// Tilts each primary ray as a surface normal, in screen space (x and y from -1/2 to 1/2).
     std::shared_ptr<const PovNormal> normal;
     /// Focal blur: the aperture (0: none), the point in focus and the samples a pixel takes.

@@ -361,6 +361,8 @@ PreparedScene prepare_scene(const Scene& scene) {
         if (!photon_shadow(scene.shape_objects[so].photons, f))
             for (const CsgNode& n : scene.shape_objects[so].nodes)
                 if (n.op == CsgOp::Leaf && passes[n.material]) f |= kPrimMayPass;
+        for (const CsgNode& n : scene.shape_objects[so].nodes)
+            if (n.op == CsgOp::Clip) f |= kPrimOpen;
         p.prim_flags[p.tris.size() + so] = f;
     }
     copy_texture_tables(scene, p);

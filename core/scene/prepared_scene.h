@@ -38,6 +38,10 @@ struct PreparedCsgNode {
 /// A prim_flags bit beside the ObjectFlag ones: a material of the primitive may let light
 /// through somewhere (filter, transmit), so shadow rays evaluate it where they cross it.
 constexpr uint8_t kPrimMayPass = 0x80;
+/// A prim_flags bit: the primitive's surface is not closed (clipped_by opens it), so a ray
+/// that meets its far side need not have been inside it (way_in_solid,
+/// core/shading/frame_kernels.h).
+constexpr uint8_t kPrimOpen = 0x40;
 
 /// Culling units already computed for a prepared scene, by cull.cluster (core/rsh/cull_units.h).
 struct CullUnitsCache;

@@ -76,10 +76,11 @@ SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, 
 }
 
 /// Whether the way to hit h lies inside a solid object: the ray leaves, through its far
-/// side, an object that is not `hollow` (kSolid). No surface lies between the way's ends, so
-/// the whole way is inside it.
+/// side, a closed object that is not `hollow` (kSolid, not kPrimOpen). No surface lies
+/// between the way's ends, so the whole way is inside it. (A ray that meets the far side
+/// of a clipped object may have come in through the opening.)
 SHEAF_HD_INLINE bool way_in_solid(const SceneView& scene, const SurfaceHit& h) {
-    return !h.front && scene.prim_flag(h.prim, kSolid);
+    return !h.front && scene.prim_flag(h.prim, kSolid) && !scene.prim_flag(h.prim, kPrimOpen);
 }
 
 /// The fog between the ray's origin and the hit: scales the hit's throughput, and returns

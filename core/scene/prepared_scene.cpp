@@ -367,6 +367,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     }
     copy_texture_tables(scene, p);
     p.sky = scene.sky;
+    p.sky_untinted = scene.sky_untinted;
     p.fog = scene.fog;
     p.rainbows = scene.rainbows;
     p.photons = scene.photons;

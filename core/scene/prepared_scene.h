@@ -115,6 +115,7 @@ struct PreparedScene {
     std::vector<FnPigment> fn_pigments;
     std::vector<PigmentEntry> fn_pigment_entries;
     int32_t sky = -1;
+    bool sky_untinted = false; // Scene::sky_untinted
     Fog fog;
     std::vector<Rainbow> rainbows;
     PhotonSettings photons; // Scene::photons

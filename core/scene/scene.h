@@ -392,6 +392,10 @@ class Scene {
     Camera camera;
     Vec3 background{0, 0, 0};
     int32_t sky = -1; // >= 0: a pigment over directions seen where rays leave the scene
+    /// How the sky's layers (a layered pigment, bottom first) weigh what lies below them:
+    /// POV-Ray 3.7 tints it by each layer's transmitted colour; before 3.7 it weighed it by
+    /// the layers' filter and transmit alone, untinted (core/shading/surface_texture.h).
+    bool sky_untinted = false;
     Fog fog;
     std::vector<Rainbow> rainbows; // core/shading/rainbow.h
     /// >= 0: the material whose media fill the space outside solid objects (POV-Ray's

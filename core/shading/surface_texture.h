@@ -503,10 +503,34 @@ SHEAF_HD_NOINLINE Vec3 perturb_normal(const SceneView& scene, uint32_t normal, V
     return l > 0 && l <= FLT_MAX ? out / l : n;
 }
 
-/// What a ray leaving the scene along unit `dir` sees: the sky pigment or the background.
-SHEAF_HD_INLINE Vec3 sky_color(const SceneView& scene, Vec3 dir) {
+/// What a ray leaving the scene along unit `dir` sees: the sky pigment's layers (one, or a
+/// layered pigment's, bottom first), each adding its colour by its opacity and letting what
+/// lies below through; the background under them all. As POV-Ray 3.7, what lies below is
+/// tinted by each layer's transmitted colour (colour times filter, plus transmit); with
+/// Scene::sky_untinted, as POV-Ray before 3.7, weighed by the products of the layers'
+/// filters and transmits alone.
+SHEAF_HD_NOINLINE Vec3 sky_color(const SceneView& scene, Vec3 dir) {
     if (scene.sky < 0) return scene.background;
-    return evaluate_pigment(scene, uint32_t(scene.sky), dir, 0, 0).rgb;
+    const Pigment& pg = scene.pigments[scene.sky];
+    const texture_detail::Evaluator ev{scene, 0, 0, Vec3(0.0f)};
+    const uint32_t n = pg.layers ? pg.count : 1;
+    Vec3 col(0.0f), through(1.0f), tint(1.0f);
+    float filter = 1, transmit = 1, pass = 1;
+    for (uint32_t i = n; i-- > 0;) { // top first
+        const SurfaceColor c = pg.layers ? ev.entry(scene.pigment_entries[pg.first + i], dir, 0)
+                                         : ev.pigment(uint32_t(scene.sky), dir, 0);
+        const float opacity = 1.0f - c.filter - c.transmit;
+        if (scene.sky_untinted) {
+            col += c.rgb * (pass * opacity);
+            tint = tint * c.rgb, filter *= c.filter, transmit *= c.transmit;
+            pass = fabsf(filter) + fabsf(transmit);
+        } else {
+            col += c.rgb * opacity * through;
+            through = through * (c.rgb * c.filter + Vec3(c.transmit));
+        }
+    }
+    if (scene.sky_untinted) through = tint * filter + Vec3(transmit);
+    return col + scene.background * through;
 }
 
 } // namespace sheaf

@@ -537,6 +537,7 @@ double build_scene(Parser& p, Scene& scene) {
     b.camera();
     scene.background = rgb(m.background);
     scene.sky = b.materials.sky(m.sky.pigments, m.sky.local);
+    scene.sky_untinted = m.version < 3.695; // POV-Ray's sky sphere before 3.7
     if (!m.atmosphere.empty()) scene.atmosphere = int32_t(b.materials.atmosphere(m.atmosphere));
     scene.photons = m.photons;
     for (const PovModel::Rainbow& r : m.rainbows) {

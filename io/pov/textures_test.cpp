@@ -446,6 +446,30 @@ TEST(PovTextures, SkySphereFogAndFlags) {
     EXPECT_EQ(r.scene.shape_objects[1].flags & ~kSolid, kNoImage);
 }
 
+TEST(PovTextures, SkyLayersAsTheirVersionWeighsThem) {
+    // A red sky under a blue layer with filter 0.5, over a green background: POV-Ray 3.7
+    // tints the red by the blue layer's transmitted colour (none of it gets through), 3.6
+    // weighs it by the filter alone (half of it). The background shows under a clear sky.
+    auto seen = [](const std::string& version, const std::string& sky) {
+        const PovResult r = load_text(version + "background { rgb y }\nsky_sphere { " + sky + " }");
+        EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+        const PreparedScene p = prepare_scene(r.scene);
+        return sky_color(SceneView(p), Vec3(0, 0, 1));
+    };
+    const std::string layers = "pigment { rgb x } pigment { rgbf <0, 0, 1, 0.5> }";
+    const Vec3 v37 = seen("#version 3.7;\n", layers), v36 = seen("#version 3.6;\n", layers);
+    EXPECT_NEAR(v37.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(v37.z, 0.5f, 1e-6f);
+    EXPECT_NEAR(v36.x, 0.5f, 1e-6f);
+    EXPECT_NEAR(v36.z, 0.5f, 1e-6f);
+    const Vec3 clear = seen("#version 3.7;\n", "pigment { rgbt <1, 0, 0, 1> }");
+    EXPECT_NEAR(clear.y, 1.0f, 1e-6f);
+    EXPECT_NEAR(clear.x, 0.0f, 1e-6f);
+    const Vec3 half = seen("#version 3.7;\n", "pigment { rgbt <1, 0, 0, 0.5> }");
+    EXPECT_NEAR(half.x, 0.5f, 1e-6f);
+    EXPECT_NEAR(half.y, 0.5f, 1e-6f);
+}
+
 TEST(PovTextures, ImageMapsAreTextures) {
     test::TempDir d;
     const std::string png = write_tiles(d); // red, green / blue, white

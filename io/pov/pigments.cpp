@@ -16,7 +16,7 @@ std::vector<Color5> default_list(PatternKind k) {
         white{1, 1, 1, 0, 0}, gray{0.5, 0.5, 0.5, 0, 0};
     switch (k) {
     case PatternKind::Brick:
-        return {white, red};
+        return {{0.5, 0.5, 0.5, 0, 0}, {0.6, 0.15, 0.15, 0, 0}};
     case PatternKind::Hexagon:
         return {blue, green, red};
     case PatternKind::Square:
@@ -26,6 +26,29 @@ std::vector<Color5> default_list(PatternKind k) {
     default:
         return {blue, green};
     }
+}
+
+// POV-Ray's colour map for a continuous pattern the scene gives no colours for: its own for
+// agate, bozo, marble, radial, wood and mandel (of exponent 2), else a grey ramp.
+std::vector<PovMapEntry> default_map(const std::string& keyword, const PovPattern& pt) {
+    auto rgb = [](double v, double r, double g, double b) {
+        return PovMapEntry{v, {r, g, b, 0, 0}, {}};
+    };
+    if (keyword == "agate")
+        return {rgb(0, 1, 1, 1),         rgb(0.5, 0.95, 0.75, 0.5), rgb(0.5, 0.9, 0.7, 0.5),
+                rgb(0.6, 0.9, 0.7, 0.4), rgb(0.6, 1, 0.7, 0.4),     rgb(1, 0.6, 0.3, 0)};
+    if (keyword == "bozo")
+        return {rgb(0.4, 1, 1, 1), rgb(0.4, 0, 1, 0), rgb(0.6, 0, 1, 0),
+                rgb(0.6, 0, 0, 1), rgb(0.8, 0, 0, 1), rgb(0.8, 1, 0, 0)};
+    if (keyword == "marble")
+        return {rgb(0, 0.9, 0.8, 0.8), rgb(0.9, 0.9, 0.08, 0.08), rgb(0.9, 0, 0, 0)};
+    if (keyword == "radial")
+        return {rgb(0, 0, 1, 1), rgb(0.333, 1, 1, 0), rgb(0.666, 1, 0, 1), rgb(1, 0, 1, 1)};
+    if (keyword == "wood") return {rgb(0.6, 0.666, 0.312, 0.2), rgb(0.6, 0.4, 0.1333, 0.066)};
+    if (keyword == "mandel" && pt.fractal.exponent == 2 && pt.fractal.magnet == 0)
+        return {rgb(0.001, 0, 0, 0), rgb(0.001, 0, 1, 1), rgb(0.012, 1, 1, 0), rgb(0.015, 1, 0, 1),
+                rgb(0.1, 0, 1, 1)};
+    return {rgb(0, 0, 0, 0), rgb(1, 1, 1, 1)};
 }
 
 Color5 mean(const std::vector<PovMapEntry>& entries) {
@@ -161,7 +184,7 @@ void Parser::parse_pigment_body(PovPigment& pg, const char* close) {
             pg.patterned = false; // an average of nothing: the colour as it was
             return;
         }
-        pg.entries = {{0, {0, 0, 0, 0, 0}, {}}, {1, {1, 1, 1, 0, 0}, {}}}; // a gray ramp
+        pg.entries = default_map(pattern_at.text, pg.pattern);
     }
 }
 

@@ -62,6 +62,37 @@ TEST(PovTextures, PatternsBecomePigmentsInTheirOwnSpace) {
     EXPECT_NEAR(evaluate_pigment(p, uint32_t(m.pigment), Vec3(4, 0, 0), 0, 0).rgb.x, 0.5f, 1e-5);
 }
 
+TEST(PovTextures, PatternsWithoutColoursTakePovRaysDefaultMaps) {
+    // POV-Ray's own maps for agate, bozo, marble, radial, wood and mandel, a grey ramp for
+    // the others, and its list colours for brick (textures/pigments/pigmap.pov).
+    auto entries = [](const std::string& pigment) {
+        const PovResult r = load_text("sphere { 0, 1 pigment { " + pigment + " } }\n");
+        EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+        const Pigment& pg = r.scene.pigments[size_t(shape_material(r).pigment)];
+        return std::vector<PigmentEntry>(r.scene.pigment_entries.begin() + pg.first,
+                                         r.scene.pigment_entries.begin() + pg.first + pg.count);
+    };
+    const auto marble = entries("marble");
+    ASSERT_EQ(marble.size(), 3u);
+    EXPECT_FLOAT_EQ(marble[1].value, 0.9f);
+    EXPECT_FLOAT_EQ(marble[1].color[1], 0.08f);
+    const auto bozo = entries("bozo");
+    ASSERT_EQ(bozo.size(), 6u);
+    EXPECT_FLOAT_EQ(bozo[0].value, 0.4f);
+    EXPECT_FLOAT_EQ(bozo[5].color[0], 1);
+    EXPECT_EQ(entries("radial").size(), 4u);
+    EXPECT_EQ(entries("wood").size(), 2u);
+    EXPECT_EQ(entries("agate").size(), 6u);
+    EXPECT_EQ(entries("mandel 10").size(), 5u);
+    const auto spotted = entries("spotted"); // bozo's noise, the grey ramp
+    ASSERT_EQ(spotted.size(), 2u);
+    EXPECT_FLOAT_EQ(spotted[1].color[0], 1);
+    const auto brick = entries("brick");
+    ASSERT_EQ(brick.size(), 2u);
+    EXPECT_FLOAT_EQ(brick[0].color[0], 0.5f);
+    EXPECT_FLOAT_EQ(brick[1].color[1], 0.15f);
+}
+
 TEST(PovTextures, MapEntriesMayStartWithADeclaredFloat) {
     // wallstucco.pov's [L2, PWrink]: a declared float is the entry's value, not a grey colour.
     const PovResult r = load_text(

@@ -218,8 +218,8 @@ struct Pattern {
     // (its transforms map from there, not from the world), whose grey 0.297 red + 0.589
     // green + 0.114 blue is the value.
     int32_t pigment = -1;
-    int32_t program = -1; // Function: index into Scene::fn_programs
-    int32_t grid = -1;    // DensityFile: index into Scene::density_grids
+    int32_t program = -1;  // Function: index into Scene::fn_programs
+    int32_t grid = -1;     // DensityFile: index into Scene::density_grids
     FractalParams fractal; // Mandel, Julia
     SlopeParams slope;     // Slope
 };
@@ -255,7 +255,7 @@ struct Pigment {
     Pattern pattern;
     bool solid = true;
     bool layers = false;
-    bool average = false; // the mean of the entries (POV-Ray's `average`)
+    bool average = false;             // the mean of the entries (POV-Ray's `average`)
     float color[5] = {0, 0, 0, 0, 0}; // solid: red, green, blue, filter, transmit
     uint32_t first = 0, count = 0;
 };
@@ -365,16 +365,32 @@ struct MaterialEntry {
     uint32_t material = 0;
 };
 
-/// Constant fog (POV-Ray fog_type 1): a surface at distance d keeps max(exp(-d / distance),
-/// transmit) of its colour; the fog's colour fills the rest.
+/// One fog. Constant fog (POV-Ray fog_type 1): a surface at distance d keeps
+/// a = max(exp(-d / distance), transmit) of its colour, tinted by (1 - filter) + filter *
+/// color; the fog's colour fills 1 - a.
 struct Fog {
     float distance = 0; // 0: no fog
     Vec3 color{0, 0, 0};
-    float transmit = 0;
+    float filter = 0, transmit = 0;
     // alt > 0: POV-Ray's ground fog (fog_type 2): full density below the height `offset`
     // along `up` (unit), 1 / (1 + Y^2) above it, Y the height over offset in units of alt.
     float offset = 0, alt = 0;
     Vec3 up{0, 1, 0};
+    // POV-Ray's fog turbulence (turb not zero): a finite way's depth shrinks by
+    // exp(-d / distance) * min(1, turb_depth * turbulence at the way's middle times turb),
+    // the turbulence POV-Ray's (octaves, omega, lambda, noise generator 1..3).
+    Vec3 turb{0, 0, 0};
+    int octaves = 6, noise_generator = 2;
+    float omega = 0.5f, lambda = 2.0f, turb_depth = 0.5f;
+};
+
+/// A scene's fogs: POV-Ray lays every fog a scene declares over the others (each fades what
+/// is behind it and adds its colour), at most kMax of them.
+struct Fogs {
+    static constexpr uint32_t kMax = 4;
+    Fog layer[kMax];
+    uint32_t count = 0;
+    SHEAF_HD bool any() const { return count > 0; }
 };
 
 /// POV-Ray's rainbow: a band of colour around the antisolar direction, added to each ray as a

@@ -320,7 +320,7 @@ PreparedScene prepare_scene(const Scene& scene) {
     // (fog_transmittance, core/shading/media.h).
     bool fogged_lights = false;
     for (const Light& l : scene.lights)
-        fogged_lights |= scene.fog.distance > 0 && l.media_attenuation && l.media_interaction;
+        fogged_lights |= scene.fog.any() && l.media_attenuation && l.media_interaction;
     if (p.has_media() || fogged_lights)
         for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
             if (!(scene.shape_objects[so].flags & kSolid)) continue;

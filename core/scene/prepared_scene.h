@@ -116,7 +116,7 @@ struct PreparedScene {
     std::vector<PigmentEntry> fn_pigment_entries;
     int32_t sky = -1;
     bool sky_untinted = false; // Scene::sky_untinted
-    Fog fog;
+    Fogs fog;
     std::vector<Rainbow> rainbows;
     PhotonSettings photons; // Scene::photons
     std::vector<Texture> textures;
@@ -158,7 +158,7 @@ struct PreparedScene {
     }
     /// Whether rays that meet surfaces bring light of their own from the way: fog, media,
     /// rainbows (summed in ray order, so that every accel gives the same sums).
-    bool lights_the_way() const { return fog.distance > 0 || has_media() || !rainbows.empty(); }
+    bool lights_the_way() const { return fog.any() || has_media() || !rainbows.empty(); }
     /// Whether frames send media shadow rays (core/shading/media_light.h): a medium of a
     /// container or of the atmosphere scatters and a light that casts shadows interacts with
     /// media.

@@ -130,7 +130,6 @@ void validate_mesh(const Mesh& mesh, const std::string& what) {
                              std::to_string(mesh.positions.size()) + " vertices)");
 }
 
-
 namespace {
 
 /// Throws SceneError where the mesh camera's meshes and settings do not fit together.
@@ -567,7 +566,8 @@ void Scene::validate_patterns() const {
     for (size_t m = 0; m < materials.size(); ++m) {
         const Material& mt = materials[m];
         const std::string name = "material " + std::to_string(m);
-        if (mt.pigment >= int32_t(pigments.size()) || mt.normal >= int32_t(normal_patterns.size()) ||
+        if (mt.pigment >= int32_t(pigments.size()) ||
+            mt.normal >= int32_t(normal_patterns.size()) ||
             mt.select >= int32_t(material_switches.size()))
             throw SceneError(name + " names a pigment, normal or switch that does not exist");
         if (mt.inside >= int32_t(materials.size()))
@@ -647,8 +647,16 @@ void Scene::validate_patterns() const {
             throw SceneError(name + ": width must not be 0, distance must be positive, jitter "
                                     "not negative, and the falloff angle within the arc");
     }
-    if (!(fog.distance >= 0) || !is_finite(fog.color))
-        throw SceneError("the fog's distance or colour is out of range");
+    if (fog.count > Fogs::kMax) throw SceneError("more fogs than Sheaf lays over each other");
+    for (uint32_t i = 0; i < fog.count; ++i) {
+        const Fog& f = fog.layer[i];
+        if (!(f.distance >= 0) || !is_finite(f.color) || !(f.filter >= 0 && f.filter <= 1) ||
+            !(f.transmit >= 0 && f.transmit <= 1) || !is_finite(f.turb) ||
+            !(f.octaves >= 1 && f.octaves <= 10) ||
+            !(f.noise_generator >= 1 && f.noise_generator <= 3) || !std::isfinite(f.omega) ||
+            !std::isfinite(f.lambda) || !std::isfinite(f.turb_depth))
+            throw SceneError("a fog's distance, colour or turbulence is out of range");
+    }
     if (!(working_gamma >= 0.1f && working_gamma <= 10.0f))
         throw SceneError("the working gamma is out of range (0.1 to 10)");
 }

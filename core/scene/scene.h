@@ -396,7 +396,7 @@ class Scene {
     /// POV-Ray 3.7 tints it by each layer's transmitted colour; before 3.7 it weighed it by
     /// the layers' filter and transmit alone, untinted (core/shading/surface_texture.h).
     bool sky_untinted = false;
-    Fog fog;
+    Fogs fog;
     std::vector<Rainbow> rainbows; // core/shading/rainbow.h
     /// >= 0: the material whose media fill the space outside solid objects (POV-Ray's
     /// atmospheric `media`; only its media are read). Rays that leave the scene cross

@@ -57,7 +57,7 @@ struct SceneView : ShapeTables {
     int32_t atmosphere = -1; // PreparedScene::atmosphere
     int32_t sky = -1;
     bool sky_untinted = false;
-    Fog fog;
+    Fogs fog;
     const Rainbow* rainbows = nullptr;
     uint32_t rainbow_count = 0;
     // The frame's photon map (core/frame/photon_pass.h); empty unless the frame shot photons.

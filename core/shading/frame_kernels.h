@@ -60,8 +60,7 @@ SHEAF_HD_INLINE uint64_t cast_analytic_pixel(const SceneView& scene, const Camer
 /// w: the sky, through the fog, and the light of the media it crosses.
 SHEAF_HD_INLINE Vec3 leave_scene(const SceneView& scene, Vec3 origin, Vec3 dir, Vec3 w,
                                  uint32_t pixel) {
-    float keep;
-    Vec3 add;
+    Vec3 keep, add;
     fog_over(scene.fog, origin, dir, INFINITY, keep, add);
     Vec3 media_keep(1.0f), media_add(0.0f);
     if (scene.has_media())
@@ -106,8 +105,7 @@ SHEAF_HD_INLINE Vec3 through_fog(const SceneView& scene, SurfaceHit& h,
         media += h.throughput * rb;
         h.throughput = h.throughput * mul;
     }
-    float keep = 1.0f;
-    Vec3 add(0.0f);
+    Vec3 keep(1.0f), add(0.0f);
     if (!no_fog) fog_over(scene.fog, origin, h.incoming, h.t, keep, add);
     const Vec3 fog = h.throughput * add + media * keep;
     h.throughput = h.throughput * keep;

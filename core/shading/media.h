@@ -258,26 +258,27 @@ SHEAF_HD_INLINE Vec3 media_transmittance(const SceneView& scene, Vec3 from, Vec3
     return Vec3(hdm::expf(-optical.x), hdm::expf(-optical.y), hdm::expf(-optical.z));
 }
 
-/// The share of a light's light the fog leaves between `from` and from + dir * d, for a
-/// light with media_attenuation (as POV-Ray's shadow rays, which take the fog's attenuation
-/// and not its colour): over the parts outside solid objects, which the fog does not fill.
-SHEAF_HD_INLINE float fog_transmittance(const SceneView& scene, Vec3 from, Vec3 dir, float d) {
-    const Fog& f = scene.fog;
-    if (!(f.distance > 0)) return 1.0f;
+/// The share of a light's light the fogs leave between `from` and from + dir * d, for a
+/// light with media_attenuation (as POV-Ray's shadow rays, which take the fogs' attenuation
+/// and not their colour): over the parts outside solid objects, which fog does not fill.
+SHEAF_HD_INLINE Vec3 fog_transmittance(const SceneView& scene, Vec3 from, Vec3 dir, float d) {
+    if (!scene.fog.any()) return Vec3(1.0f);
     Ray ray;
     ray.origin = from, ray.dir = dir, ray.tmin = 0.0f, ray.tmax = FLT_MAX;
     SpanList spans;
     spans.push({CsgEnd{0.0f, 0xFFFFFFFFu, Vec3(0, 0, 1), false},
                 CsgEnd{d, 0xFFFFFFFFu, Vec3(0, 0, 1), false}});
     leave_solids(scene, ray, 0xFFFFFFFFu, spans);
-    double depth = 0;
+    Vec3 through(1.0f);
     for (int i = 0; i < spans.n; ++i) {
         const float t0 = spans.s[i].a.t > 0 ? spans.s[i].a.t : 0.0f;
         const float t1 = spans.s[i].b.t < d ? spans.s[i].b.t : d;
-        if (t1 > t0) depth += fog_depth(f, from + dir * t0, dir, t1 - t0);
+        if (!(t1 > t0)) continue;
+        Vec3 keep, add;
+        fog_over(scene.fog, from + dir * t0, dir, t1 - t0, keep, add);
+        through = through * keep;
     }
-    const float a = depth < 1e30 ? float(hdm::exp(-depth)) : 0.0f;
-    return hdm::fmaxf(a, f.transmit);
+    return through;
 }
 
 } // namespace sheaf

@@ -31,8 +31,7 @@ struct MediaSegment {
 SHEAF_HD_INLINE MediaSegment media_segment(const SceneView& scene, Vec3 origin, Vec3 dir,
                                            float t_end, Vec3 w, uint32_t pixel,
                                            bool no_fog = false) {
-    float keep = 1.0f;
-    Vec3 add(0.0f);
+    Vec3 keep(1.0f), add(0.0f);
     if (!no_fog) fog_over(scene.fog, origin, dir, t_end, keep, add);
     MediaSegment s;
     s.origin = origin, s.dir = dir, s.t_end = t_end, s.weight = w * keep, s.pixel = pixel;

@@ -117,14 +117,15 @@ TEST(ProceduralRender, FogAndSkyColourWhatTheyShould) {
     const Vec3 clear_ball = pixel(render(prepare_scene(s), {}), 20, 16);
     const Vec3 clear_sky = pixel(render(prepare_scene(s), {}), 1, 1);
     EXPECT_NEAR(clear_sky.y, 1.0f, 1e-6);
-    s.fog.distance = 5, s.fog.color = Vec3(0, 0, 1);
+    s.fog.count = 1;
+    s.fog.layer[0].distance = 5, s.fog.layer[0].color = Vec3(0, 0, 1);
     const Frame fog = render(prepare_scene(s), {});
     const Vec3 ball = pixel(fog, 20, 16), sky = pixel(fog, 1, 1);
     EXPECT_LT(ball.x, clear_ball.x * 0.5f); // 5 units of fog keep exp(-1) of the surface
     EXPECT_GT(ball.z, 0.5f);
     EXPECT_NEAR(sky.z, 1.0f, 1e-5); // infinitely far: all fog
     EXPECT_NEAR(sky.y, 0.0f, 1e-5);
-    s.fog.distance = 0;
+    s.fog.count = 0;
     Pigment sky_pigment;
     sky_pigment.color[0] = 0.3f; // solid
     s.pigments.push_back(sky_pigment);
@@ -292,16 +293,34 @@ namespace sheaf {
 namespace {
 
 TEST(ProceduralShading, FogAndFadeFollowPovRay) {
-    Fog f;
+    Fogs fs;
+    fs.count = 1;
+    Fog& f = fs.layer[0];
     f.distance = 10, f.color = Vec3(1), f.transmit = 0.5f;
-    float keep;
-    Vec3 add;
+    Vec3 keep, add;
     const Vec3 o(0.0f), d(1, 0, 0);
-    fog_over(f, o, d, 10, keep, add); // exp(-1) = 0.37 < transmit: the surface keeps half
-    EXPECT_FLOAT_EQ(keep, 0.5f);
+    fog_over(fs, o, d, 10, keep, add); // exp(-1) = 0.37 < transmit: the surface keeps half
+    EXPECT_FLOAT_EQ(keep.x, 0.5f);
     EXPECT_FLOAT_EQ(add.x, 0.5f);
-    fog_over(f, o, d, 1, keep, add);
-    EXPECT_NEAR(keep, std::exp(-0.1f), 1e-6);
+    fog_over(fs, o, d, 1, keep, add);
+    EXPECT_NEAR(keep.y, std::exp(-0.1f), 1e-6);
+    // A filtering fog tints what it lets through; a second fog lays its own over it.
+    f.transmit = 0, f.filter = 0.5f, f.color = Vec3(1, 0, 0);
+    fs.layer[1].distance = 5, fs.layer[1].color = Vec3(0, 0, 1);
+    fs.count = 2;
+    fog_over(fs, o, d, 10, keep, add);
+    const float a = std::exp(-1.0f), b = std::exp(-2.0f);
+    EXPECT_NEAR(keep.x, a * b, 1e-6);        // (1 - 0.5) + 0.5 * 1
+    EXPECT_NEAR(keep.y, a * 0.5f * b, 1e-6); // (1 - 0.5) + 0.5 * 0
+    EXPECT_NEAR(add.x, 1 - a, 1e-6);
+    EXPECT_NEAR(add.z, 1 - b, 1e-6);
+    // Turbulence shortens a finite way by exp(-d / distance) times the turbulence there.
+    Fog t;
+    t.distance = 10, t.turb = Vec3(1, 1, 1), t.turb_depth = 0.5f;
+    const double n = pov_turbulence(DVec3(5, 0.5, 0.5), 6, 0.5, 2.0, 2);
+    EXPECT_NEAR(fog_depth(t, Vec3(0, 0.5f, 0.5f), d, 10),
+                (1 - std::exp(-1.0) * std::min(1.0, 0.5 * n)), 1e-6);
+    EXPECT_EQ(fog_depth(t, o, d, INFINITY), INFINITY);
     // Ground fog (POV-Ray's fog_type 2): full below the offset, 1 / (1 + Y^2) above.
     Fog g;
     g.distance = 10, g.offset = 1, g.alt = 2, g.up = Vec3(0, 1, 0);
@@ -316,13 +335,14 @@ TEST(ProceduralShading, FogAndFadeFollowPovRay) {
     EXPECT_NEAR(fog_depth(g, Vec3(0, 1, 0), up, INFINITY), M_PI / 10, 1e-6);
     EXPECT_EQ(fog_depth(g, Vec3(0, 1, 0), d, INFINITY), INFINITY);
     g.transmit = 0;
-    fog_over(g, Vec3(0, 1, 0), up, INFINITY, keep, add);
-    EXPECT_NEAR(keep, std::exp(-M_PI / 10), 1e-6);
+    fs.layer[0] = g, fs.count = 1;
+    fog_over(fs, Vec3(0, 1, 0), up, INFINITY, keep, add);
+    EXPECT_NEAR(keep.z, std::exp(-M_PI / 10), 1e-6);
     Material m;
     m.fade_distance = 2, m.fade_power = 2, m.fade_color = Vec3(0.5f, 0, 0);
-    EXPECT_NEAR(interior_fade(m, 2).y, 0.5f, 1e-6); // 1 / (1 + 1)
+    EXPECT_NEAR(interior_fade(m, 2).y, 0.5f, 1e-6);  // 1 / (1 + 1)
     EXPECT_NEAR(interior_fade(m, 2).x, 0.75f, 1e-6); // towards the fade colour
-    m.fade_power = 1001; // exponential absorption
+    m.fade_power = 1001;                             // exponential absorption
     EXPECT_NEAR(interior_fade(m, 2).y, std::exp(-1.0f), 1e-6);
     EXPECT_NEAR(interior_fade(m, 2).x, std::exp(-0.5f), 1e-6);
     m.fade_distance = 0;

@@ -76,7 +76,8 @@ SHEAF_HD_INLINE Vec3 direct_light(const Material& m, const SurfaceHit& h, Vec3 t
     float highlight = 0.0f;
     if (highlights && m.specular > 0) {
         const Vec3 r = reflect(-to_light, n);
-        highlight += m.specular * hdm::powf(hdm::fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
+        highlight +=
+            m.specular * hdm::powf(hdm::fmaxf(dot(r, -h.incoming), 0.0f), m.phong_exponent);
     }
     if (highlights && m.blinn > 0) {
         const Vec3 half = normalize(to_light - h.incoming);
@@ -172,13 +173,27 @@ SHEAF_HD_INLINE Vec3 interior_fade(const Material& m, float d, bool shadow = fal
     return Vec3(a) + m.fade_color * (1.0f - a);
 }
 
+/// The length of a finite way of d from `origin` along unit `dir` as fog `f`'s turbulence
+/// makes it (Fog::turb): shorter by exp(-d / distance) times the turbulence at its middle.
+SHEAF_HD_INLINE double fog_turbulence(const Fog& f, Vec3 origin, Vec3 dir, float d) {
+    if (f.turb.x == 0 && f.turb.y == 0 && f.turb.z == 0) return double(d);
+    const Vec3 mid = origin + dir * (0.5f * d);
+    const DVec3 p(double(mid.x) * f.turb.x, double(mid.y) * f.turb.y, double(mid.z) * f.turb.z);
+    const double k = hdm::exp(-double(d) / f.distance);
+    const double t = pov_turbulence(p, f.octaves, f.omega, f.lambda, f.noise_generator);
+    const double s = t * f.turb_depth;
+    return double(d) * (1.0 - k * (s < 1.0 ? s : 1.0));
+}
+
 /// The fog's optical depth (length times density over distance) along the ray from `origin`
 /// along unit `dir` for length d (infinite for rays that leave the scene). Constant fog:
 /// d / distance. Ground fog as POV-Ray integrates it: the mean density between the end
 /// heights Y1, Y2 (in units of alt over the offset) is the integral of 1 (below 0) and
-/// 1 / (1 + Y^2) (above: atan) over their difference.
+/// 1 / (1 + Y^2) (above: atan) over their difference. A finite way's length is the one
+/// fog_turbulence gives.
 SHEAF_HD_INLINE double fog_depth(const Fog& f, Vec3 origin, Vec3 dir, float d) {
-    if (!(f.alt > 0)) return d < 3.0e38f ? double(d) / f.distance : INFINITY;
+    if (!(f.alt > 0))
+        return d < 3.0e38f ? fog_turbulence(f, origin, dir, d) / f.distance : INFINITY;
     const double y1 = (double(dot(origin, f.up)) - f.offset) / f.alt;
     const double dy = double(dot(dir, f.up)) / f.alt; // change of Y per unit of length
     // The integral of the density over Y from 0 (or below) up to y, for y >= 0.
@@ -200,7 +215,7 @@ SHEAF_HD_INLINE double fog_depth(const Fog& f, Vec3 origin, Vec3 dir, float d) {
         mean = (above(y1) - above(y2)) / (y1 - y2);
     else
         mean = 1 / (y1 * y1 + 1);
-    return double(d) * mean / f.distance;
+    return fog_turbulence(f, origin, dir, d) * mean / f.distance;
 }
 
 /// How far a ray that leaves the scene crosses the atmosphere's media and a rainbow's fog:
@@ -208,20 +223,29 @@ SHEAF_HD_INLINE double fog_depth(const Fog& f, Vec3 origin, Vec3 dir, float d) {
 /// 0.2, and a rainbow of distance 1e10 keeps exp(-2) of the background).
 constexpr float kAtmosphereFar = 2e10f;
 
-/// Fog along a ray segment (from `origin` along unit `dir`, length d, infinite for rays that
-/// leave the scene): the far colour keeps `keep` of itself and the fog adds `add`.
-/// As POV-Ray: the far colour keeps max(exp(-depth), transmit), the fog's colour fills the
-/// rest.
-SHEAF_HD_INLINE void fog_over(const Fog& f, Vec3 origin, Vec3 dir, float d, float& keep,
-                              Vec3& add) {
-    if (!(f.distance > 0)) {
-        keep = 1.0f, add = Vec3(0.0f);
-        return;
-    }
+/// The share a of what lies d behind that fog `f` lets through along a way (from `origin`
+/// along unit `dir`, length d, infinite for rays that leave the scene): max(exp(-depth),
+/// transmit), as POV-Ray.
+SHEAF_HD_INLINE float fog_pass(const Fog& f, Vec3 origin, Vec3 dir, float d) {
     const double depth = fog_depth(f, origin, dir, d);
     const float a = depth < 1e30 ? float(hdm::exp(-depth)) : 0.0f;
-    keep = hdm::fmaxf(a, f.transmit);
-    add = f.color * (1.0f - keep);
+    return hdm::fmaxf(a, f.transmit);
+}
+
+/// Fogs along a ray segment (from `origin` along unit `dir`, length d, infinite for rays that
+/// leave the scene): the far colour keeps `keep` of itself and the fogs add `add`. As
+/// POV-Ray: each fog keeps its fog_pass a, tinted by its filter, and adds its colour times
+/// 1 - a.
+SHEAF_HD_INLINE void fog_over(const Fogs& fs, Vec3 origin, Vec3 dir, float d, Vec3& keep,
+                              Vec3& add) {
+    keep = Vec3(1.0f), add = Vec3(0.0f);
+    for (uint32_t i = 0; i < fs.count; ++i) {
+        const Fog& f = fs.layer[i];
+        if (!(f.distance > 0)) continue;
+        const float a = fog_pass(f, origin, dir, d);
+        keep = keep * ((Vec3(1.0f - f.filter) + f.color * f.filter) * a);
+        add += f.color * (1.0f - a);
+    }
 }
 
 /// Snell refraction of unit d through unit n (facing d's origin side); false on total

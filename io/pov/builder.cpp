@@ -555,13 +555,21 @@ double build_scene(Parser& p, Scene& scene) {
         out.colors = uint32_t(b.materials.sky({r.colors}, Affine()));
         scene.rainbows.push_back(out);
     }
-    if (m.fog) {
-        scene.fog.distance = float(m.fog_distance);
-        scene.fog.color = rgb(m.fog_color);
-        scene.fog.transmit = float(std::clamp(m.fog_color[4], 0.0, 1.0));
-        scene.fog.alt = float(m.fog_alt);
-        scene.fog.offset = float(m.fog_offset);
-        scene.fog.up = normalize(b.flip.vector(m.fog_up));
+    for (const PovModel::Fog& pf : m.fogs) {
+        Fog& f = scene.fog.layer[scene.fog.count++];
+        f.distance = float(pf.distance);
+        f.color = rgb(pf.color);
+        f.filter = float(std::clamp(pf.color[3], 0.0, 1.0));
+        f.transmit = float(std::clamp(pf.color[4], 0.0, 1.0));
+        f.alt = float(pf.alt);
+        f.offset = float(pf.offset);
+        f.up = normalize(b.flip.vector(pf.up));
+        // The turbulence reads POV-Ray's point, whose z is Sheaf's mirrored.
+        f.turb = Vec3(float(pf.turb.x), float(pf.turb.y), -float(pf.turb.z));
+        f.octaves = pf.octaves;
+        f.omega = float(pf.omega), f.lambda = float(pf.lambda);
+        f.turb_depth = float(pf.turb_depth);
+        f.noise_generator = m.noise_generator > 0 ? m.noise_generator : 2;
     }
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));

@@ -436,7 +436,7 @@ void Parser::parse_atmospheric(const Token& kw) {
     if (kw.text == "fog") {
         expect_sym("{");
         int type = 1;
-        double offset = 0, alt = 1;
+        PovModel::Fog fog;
         Vec3 up(0, 1, 0);
         Affine transform;
         for (;;) {
@@ -450,35 +450,50 @@ void Parser::parse_atmospheric(const Token& kw) {
             if (accept_kw("fog_type")) {
                 type = int(parse_float());
             } else if (accept_kw("distance")) {
-                model.fog_distance = parse_float();
+                fog.distance = parse_float();
             } else if (is_color_start(t)) {
-                model.fog_color = parse_color();
+                fog.color = parse_color();
             } else if (accept_kw("fog_offset")) {
-                offset = parse_float();
+                fog.offset = parse_float();
             } else if (accept_kw("fog_alt")) {
                 const Token& at = peek();
-                alt = parse_float();
-                if (!(alt > 0)) error_at(at, "fog_alt must be greater than 0");
+                fog.alt = parse_float();
+                if (!(fog.alt > 0)) error_at(at, "fog_alt must be greater than 0");
             } else if (accept_kw("up")) {
                 const Token& at = peek();
                 up = parse_vector();
                 if (!(length(up) > 0)) error_at(at, "the fog's up vector must not be zero");
-            } else if (accept_kw("octaves") || accept_kw("omega") || accept_kw("lambda") ||
-                       accept_kw("turb_depth")) {
-                parse_float();
             } else if (accept_kw("turbulence")) {
-                parse_expr();
+                fog.turb = parse_vector();
+            } else if (accept_kw("octaves")) {
+                const Token& at = peek();
+                const double n = parse_float();
+                if (!(n >= 1 && n <= 10)) error_at(at, "a fog's octaves must lie in 1..10");
+                fog.octaves = int(n);
+            } else if (accept_kw("omega")) {
+                fog.omega = parse_float();
+            } else if (accept_kw("lambda")) {
+                fog.lambda = parse_float();
+            } else if (accept_kw("turb_depth")) {
+                fog.turb_depth = parse_float();
             } else {
                 error_expected(t, "a fog item (distance, color, fog_type ...)");
             }
         }
         if (type != 1 && type != 2)
             error_at(kw, "fog_type " + std::to_string(type) + " is not 1 (constant) or 2 (ground)");
-        model.fog_alt = type == 2 ? alt : 0;
-        model.fog_offset = offset;
-        model.fog_up = normalize(transform.vector(up));
-        if (!(length(model.fog_up) > 0)) error_at(kw, "the fog's up vector must not be zero");
-        model.fog = model.fog_distance > 0;
+        if (type != 2)
+            fog.alt = 0;
+        else if (!(fog.alt > 0))
+            fog.alt = 1;
+        fog.up = normalize(transform.vector(up));
+        if (!(length(fog.up) > 0)) error_at(kw, "the fog's up vector must not be zero");
+        if (!(fog.distance > 0)) return; // POV-Ray leaves out a fog of no distance
+        if (model.fogs.size() == Fogs::kMax)
+            unsupported(kw, "fog beyond the " + std::to_string(Fogs::kMax) +
+                                " Sheaf lays over each other (left out)");
+        else
+            model.fogs.push_back(fog);
         return;
     }
     if (kw.text == "rainbow") {

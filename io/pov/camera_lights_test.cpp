@@ -405,8 +405,9 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
     EXPECT_FLOAT_EQ(r.scene.background.z, 0.3f);
     EXPECT_EQ(r.scene.settings.at("trace.depth"), "2");
     EXPECT_FLOAT_EQ(r.scene.materials.back().ambient, 0.2f);
-    EXPECT_FLOAT_EQ(r.scene.fog.distance, 10);
-    EXPECT_FLOAT_EQ(r.scene.fog.color.y, 1);
+    ASSERT_EQ(r.scene.fog.count, 1u);
+    EXPECT_FLOAT_EQ(r.scene.fog.layer[0].distance, 10);
+    EXPECT_FLOAT_EQ(r.scene.fog.layer[0].color.y, 1);
     EXPECT_TRUE(r.warnings.empty());
     // A gamma the working space cannot take is an error where it is written.
     EXPECT_EQ(error_of("global_settings { assumed_gamma 20 }"),
@@ -415,10 +416,26 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
     const PovResult g = load_text(
         "fog { fog_type 2 distance 5 color rgb 1 fog_offset 0.5 fog_alt 2 up y rotate x * 90 }");
     EXPECT_TRUE(g.warnings.empty());
-    EXPECT_FLOAT_EQ(g.scene.fog.alt, 2);
-    EXPECT_FLOAT_EQ(g.scene.fog.offset, 0.5f);
-    EXPECT_NEAR(g.scene.fog.up.z, -1, 1e-6); // POV-Ray's y turned by 90 about x is its +z
-    EXPECT_FLOAT_EQ(load_text("fog { distance 5 color rgb 1 }").scene.fog.alt, 0); // constant
+    EXPECT_FLOAT_EQ(g.scene.fog.layer[0].alt, 2);
+    EXPECT_FLOAT_EQ(g.scene.fog.layer[0].offset, 0.5f);
+    EXPECT_NEAR(g.scene.fog.layer[0].up.z, -1, 1e-6); // POV-Ray's y turned by 90 about x: +z
+    EXPECT_FLOAT_EQ(load_text("fog { distance 5 color rgb 1 }").scene.fog.layer[0].alt,
+                    0); // constant
+    // Every fog counts (interior/foglyr2.pov lays two), each with its filter and turbulence.
+    const PovResult two =
+        load_text("fog { distance 5 color rgbf <1, 0, 0, 0.5> turbulence <0.1, 0.2, 0.3> octaves 3 "
+                  "omega 0.4 lambda 1.5 turb_depth 0.25 }\nfog { distance 0 }\n"
+                  "fog { fog_type 2 distance 7 color rgbt <0, 0, 1, 0.25> }");
+    EXPECT_TRUE(two.warnings.empty()) << two.warnings.front();
+    ASSERT_EQ(two.scene.fog.count, 2u); // a fog of no distance is left out, as in POV-Ray
+    const Fog& a = two.scene.fog.layer[0];
+    EXPECT_FLOAT_EQ(a.filter, 0.5f);
+    EXPECT_FLOAT_EQ(a.turb.y, 0.2f);
+    EXPECT_FLOAT_EQ(a.turb.z, -0.3f); // POV-Ray's point, mirrored
+    EXPECT_EQ(a.octaves, 3);
+    EXPECT_FLOAT_EQ(a.turb_depth, 0.25f);
+    EXPECT_FLOAT_EQ(two.scene.fog.layer[1].transmit, 0.25f);
+    EXPECT_FLOAT_EQ(two.scene.fog.layer[1].alt, 1);
     EXPECT_EQ(error_of("fog { fog_type 2 distance 5 fog_alt 0 }"),
               "scene.pov:1:37: error: fog_alt must be greater than 0");
     EXPECT_EQ(error_of("fog { fog_type 3 distance 5 }"),

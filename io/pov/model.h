@@ -317,12 +317,18 @@ struct PovModel {
     /// What every new normal starts from: #default's normal, pattern or not (its bump size).
     PovNormal normal_defaults;
     PovSky sky; // no pigments: no sky_sphere
-    /// Fog: constant (fog_type 1) or ground fog (fog_type 2: fog_alt > 0).
-    bool fog = false;
-    double fog_distance = 0;
-    Color5 fog_color{0, 0, 0, 0, 0};
-    double fog_offset = 0, fog_alt = 0;
-    Vec3 fog_up{0, 1, 0};
+    /// The fogs, in the order declared: constant (fog_type 1) or ground fog (fog_type 2: alt
+    /// > 0), with their turbulence (turb zero: none).
+    struct Fog {
+        double distance = 0;
+        Color5 color{0, 0, 0, 0, 0};
+        double offset = 0, alt = 0;
+        Vec3 up{0, 1, 0};
+        Vec3 turb{0, 0, 0};
+        int octaves = 6;
+        double omega = 0.5, lambda = 2, turb_depth = 0.5;
+    };
+    std::vector<Fog> fogs;
     /// The scene's own `media { … }` statements: the atmosphere (Scene::atmosphere).
     std::vector<PovMedia> atmosphere;
     /// rainbow { … }: as written (degrees, POV-Ray's coordinates); `colors` is a gradient x

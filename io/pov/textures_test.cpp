@@ -471,8 +471,8 @@ TEST(PovTextures, SkySphereFogAndFlags) {
     EXPECT_TRUE(r.warnings.empty());
     ASSERT_GE(r.scene.sky, 0);
     EXPECT_EQ(r.scene.pigments[size_t(r.scene.sky)].pattern.kind, PatternKind::Gradient);
-    EXPECT_FLOAT_EQ(r.scene.fog.distance, 30);
-    EXPECT_FLOAT_EQ(r.scene.fog.transmit, 0.25f);
+    EXPECT_FLOAT_EQ(r.scene.fog.layer[0].distance, 30);
+    EXPECT_FLOAT_EQ(r.scene.fog.layer[0].transmit, 0.25f);
     EXPECT_EQ(r.scene.shape_objects[0].flags & ~kSolid, kNoShadow | kNoReflection);
     EXPECT_EQ(r.scene.shape_objects[1].flags & ~kSolid, kNoImage);
 }

@@ -208,9 +208,10 @@ TEST(XmlPatterns, EveryElementLoadsIntoTheSceneArrays) {
     EXPECT_FLOAT_EQ(s.materials[4].color.x, 0.5f);
 
     EXPECT_EQ(s.sky, 4);
-    EXPECT_FLOAT_EQ(s.fog.distance, 30.0f);
-    EXPECT_FLOAT_EQ(s.fog.color.z, 0.8f);
-    EXPECT_FLOAT_EQ(s.fog.transmit, 0.1f);
+    ASSERT_EQ(s.fog.count, 1u);
+    EXPECT_FLOAT_EQ(s.fog.layer[0].distance, 30.0f);
+    EXPECT_FLOAT_EQ(s.fog.layer[0].color.z, 0.8f);
+    EXPECT_FLOAT_EQ(s.fog.layer[0].transmit, 0.1f);
 }
 
 // ---- Rendering ----

@@ -169,7 +169,8 @@ void SceneReader::read_fog(const pugi::xml_node& node) {
         ctx_.fail(node, node.attribute("distance"), "the fog's distance must be > 0");
     if (!(f.transmit >= 0 && f.transmit <= 1))
         ctx_.fail(node, node.attribute("transmit"), "the fog's transmit must lie in 0..1");
-    scene_.fog = f;
+    scene_.fog.layer[0] = f;
+    scene_.fog.count = 1;
 }
 
 void SceneReader::read_settings(const pugi::xml_node& node) {

@@ -545,7 +545,9 @@ inline Scene procedural_scene() {
     s.add_light(Light{Vec3(2, 5, 4), Vec3(1.0f)});
     s.camera.position = Vec3(0, 1.5f, 5);
     s.camera.look_at = Vec3(0, 0, 0);
-    s.fog.distance = 20, s.fog.color = Vec3(0.5f, 0.5f, 0.6f), s.fog.transmit = 0.2f;
+    s.fog.count = 1;
+    Fog& fog = s.fog.layer[0];
+    fog.distance = 20, fog.color = Vec3(0.5f, 0.5f, 0.6f), fog.transmit = 0.2f;
     s.sky = add_pigment(s, PatternKind::Gradient,
                         {pigment_entry(0, Vec3(1)), pigment_entry(1, Vec3(0.1f, 0.2f, 0.8f))});
     s.settings["trace.depth"] = "3";

@@ -306,7 +306,9 @@ struct PovModel {
     /// What the scene's global settings give every pattern (lower_pattern).
     PatternDefaults pattern_defaults() const { return {scene_noise_generator(), number_of_waves}; }
     std::array<double, 3> ambient_light{1, 1, 1};
-    std::array<double, 3> irid_wavelength{0.25, 0.18, 0.14};
+    // POV-Ray 3.7.0's default, measured from povray: its documentation's <0.25, 0.18, 0.14>
+    // is not what it renders (textures/pigments/irid.pov).
+    std::array<double, 3> irid_wavelength{0.70, 0.52, 0.48};
     int max_trace_level = -1;
     /// global_settings { radiosity { ... } }: on, its count (gather rays), recursion_limit
     /// and brightness (POV-Ray 3.7's defaults).

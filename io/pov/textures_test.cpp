@@ -446,6 +446,10 @@ TEST(PovTextures, IridescenceAndWhatInteriorsLeaveOut) {
     const Material& plain = r.scene.materials[r.scene.shape_objects[1].nodes[0].material];
     EXPECT_FLOAT_EQ(plain.irid, 0.25f);
     EXPECT_FLOAT_EQ(plain.irid_thickness, 0);
+    // Without irid_wavelength, POV-Ray 3.7's own <0.70, 0.52, 0.48> (as povray renders).
+    const PovResult d = load_text("sphere { 0, 1 finish { irid { 0.25 } } }");
+    EXPECT_FLOAT_EQ(shape_material(d).irid_wavelength.x, 0.70f);
+    EXPECT_FLOAT_EQ(shape_material(d).irid_wavelength.z, 0.48f);
     EXPECT_NO_THROW(r.scene.validate());
     EXPECT_FLOAT_EQ(m.caustics, 0);
     // Fake caustics are kept as POV-Ray keeps them (45 times the value written); dispersion

@@ -55,14 +55,19 @@ void add_blob_cylinder(BlobModel& b, Vec3 base, Vec3 end, float radius, float st
     add_element(b, placement * f, length / radius, strength);
 }
 
-void blob_bound(const BlobModel& b, float bound[4]) {
-    Vec3 lo(INFINITY), hi(-INFINITY);
+bool blob_box(const BlobModel& b, Vec3& lo, Vec3& hi) {
+    lo = Vec3(INFINITY), hi = Vec3(-INFINITY);
     for (const BlobElement& e : b.elements) {
         if (!(e.strength > 0)) continue;
         const Vec3 c(e.bound[0], e.bound[1], e.bound[2]);
         lo = vmin(lo, c - Vec3(e.bound[3])), hi = vmax(hi, c + Vec3(e.bound[3]));
     }
-    if (!(lo.x <= hi.x)) {
+    return lo.x <= hi.x;
+}
+
+void blob_bound(const BlobModel& b, float bound[4]) {
+    Vec3 lo, hi;
+    if (!blob_box(b, lo, hi)) {
         bound[0] = bound[1] = bound[2] = bound[3] = 0;
         return;
     }

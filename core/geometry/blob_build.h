@@ -30,4 +30,8 @@ void add_blob_cylinder(BlobModel& b, Vec3 base, Vec3 end, float radius, float st
 /// be inside); radius 0 when there is none.
 void blob_bound(const BlobModel& b, float bound[4]);
 
+/// The box POV-Ray gives a blob (min_extent, max_extent): around the bounding spheres of its
+/// components of positive strength; false when there is none.
+bool blob_box(const BlobModel& b, Vec3& lo, Vec3& hi);
+
 } // namespace sheaf

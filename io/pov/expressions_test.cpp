@@ -167,6 +167,17 @@ TEST(PovExpressions, MinAndMaxExtent) {
     expect(extent("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 2, -1> } }", "min_extent"),
            {0, 0, -1});
     expect(extent("plane { y, 0 }", "max_extent"), {2e10f, 2e10f, 2e10f});
+    // A blob: POV-Ray's box around its positive components' spheres (language/bounding.pov),
+    // not a sphere around them all (the spheres are 1e-5 of their radius larger).
+    const std::string blob = "blob { threshold 0.5 sphere { <-2, 0, 0>, 1, 1 } "
+                             "sphere { <2, 1, 0>, 1.5, 1 } sphere { <9, 9, 9>, 1, -1 } }";
+    const Vec3 hi = extent(blob, "max_extent"), lo = extent(blob, "min_extent");
+    EXPECT_NEAR(hi.x, 3.5f, 1e-4);
+    EXPECT_NEAR(hi.y, 2.5f, 1e-4);
+    EXPECT_NEAR(hi.z, 1.5f, 1e-4);
+    EXPECT_NEAR(lo.x, -3, 1e-4);
+    EXPECT_NEAR(lo.y, -1, 1e-4);
+    EXPECT_NEAR(lo.z, -1.5f, 1e-4);
     EXPECT_NE(error_of("#declare E = min_extent(3);"), "");
 }
 

@@ -85,13 +85,10 @@ Box shape_box(const PovObject& o) {
         const Vec3 r(float(julia_detail::bound_radius(*o.julia)));
         return transformed(o.local, -r, r);
     }
-    case ShapeKind::Blob: { // the sphere around its positive components
-        if (!o.blob) return Box();
-        float b[4];
-        blob_bound(*o.blob, b);
-        if (!(b[3] > 0)) return Box();
-        const Vec3 c(b[0], b[1], b[2]);
-        return transformed(o.local, c - Vec3(b[3]), c + Vec3(b[3]));
+    case ShapeKind::Blob: { // POV-Ray's: the box around its positive components' spheres
+        Vec3 lo, hi;
+        if (!o.blob || !blob_box(*o.blob, lo, hi)) return Box();
+        return transformed(o.local, lo, hi);
     }
     }
     return unbounded();

@@ -6,11 +6,14 @@ SSIM on luminance (Rec. 709 weights of the 8-bit values, 7x7 windows, the usual 
 and the mean absolute error of RGB in 0..1. Prints the distribution and the worst scenes.
 
 Usage: corpus_agreement.py RENDER WORKDIR [--examples DIR] [--jobs N] [--timeout S]
-                           [--share K/N] [--worst 20] [--csv FILE]
+                           [--share K/N] [--worst 20] [--csv FILE] [--check] [--record]
+                           [--doc docs/pov.md]
 --share K/N scores the K-th of N fixed slices of the corpus (every N-th scene from the K-th):
-a run that does not fit takes a share. A renderer that fails or passes --timeout leaves the
-scene out of the scores and is listed. Exits 77 when povray, oiiotool or the examples are
-missing, else 0 (a measure, not a check).
+a run that does not fit takes a share. POV-Ray failing or passing --timeout leaves the scene
+out of the scores (listed); so does Sheaf, but that fails --check.
+--check gives each scene a verdict by its class and tolerance (corpus_verdicts.py) and exits 1
+when one fails; --record writes the scores of this run to corpus_scores.csv.
+Exits 77 when povray, oiiotool or the examples are missing, else 0 (without --check).
 """
 import argparse
 import concurrent.futures
@@ -22,6 +25,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import corpus_check  # noqa: E402  (its copy of the corpus and its --check)
+import corpus_verdicts  # noqa: E402
 
 W, H = 160, 120
 
@@ -106,12 +110,13 @@ def score(render, root, scene, timeout):
         s = subprocess.run([render, os.path.basename(scene), "-W", str(W), "-H", str(H), "-q",
                             "-o", sheaf_png], cwd=folder, capture_output=True, timeout=timeout)
         t2 = time.monotonic()
-    except subprocess.TimeoutExpired:
-        return scene, None, f"over {timeout:g} s"
+    except subprocess.TimeoutExpired as e:
+        who = "render" if e.cmd[0] == render else "povray"
+        return scene, None, f"{who} over {timeout:g} s"
     if p.returncode != 0 or not os.path.exists(pov_png):
         return scene, None, f"povray failed ({p.returncode})"
     if s.returncode != 0:
-        return scene, None, f"render failed ({s.returncode})"
+        return scene, None, f"render failed ({s.returncode}): {s.stderr.decode()[-200:]}"
     pa, pb = pov_png + ".ppm", sheaf_png + ".ppm"
     to_ppm(pov_png, pa)
     to_ppm(sheaf_png, pb)
@@ -134,6 +139,10 @@ def main():
     ap.add_argument("--share", default="0/1")
     ap.add_argument("--worst", type=int, default=20)
     ap.add_argument("--csv")
+    ap.add_argument("--check", action="store_true")
+    ap.add_argument("--record", action="store_true")
+    ap.add_argument("--doc", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                  "..", "..", "docs", "pov.md"))
     a = ap.parse_args()
     render = os.path.abspath(a.render)
     for tool in ("povray", "oiiotool"):
@@ -151,6 +160,7 @@ def main():
     clean = [r[0] for r in checked if r[1] == "ok" and not r[2] and
              corpus_check.ini_for(os.path.join(root, os.path.dirname(r[0])),
                                   os.path.basename(r[0])).endswith(".pov")]
+    warnings = {r[0]: r[5] for r in checked}
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         results = list(pool.map(lambda s: score(render, root, s, a.timeout), clean))
     scored = [r for r in results if r[1] is not None]
@@ -179,7 +189,39 @@ def main():
         print("\nNot compared:")
         for r in left:
             print(f"  {r[0]}: {r[2]}")
-    return 0
+    if a.record:
+        recorded = corpus_verdicts.read_scores()
+        recorded.update({r[0]: (r[1], r[2]) for r in scored})
+        corpus_verdicts.write_scores([(s, v[0], v[1]) for s, v in recorded.items()])
+        print(f"\nRecorded {len(scored)} scores in {corpus_verdicts.SCORES_FILE}")
+    if not a.check:
+        return 0
+    return report_verdicts(scored, left, warnings, a.doc)
+
+
+def report_verdicts(scored, left, warnings, doc):
+    """Prints each scene's verdict that is not plainly ok; 1 when one failed."""
+    classes = corpus_verdicts.read_classes()
+    recorded = corpus_verdicts.read_scores()
+    departures = corpus_verdicts.read_departures(doc)
+    counts, failed = {}, 0
+    print("\nVerdicts (class, tolerance: corpus_verdicts.py; departures: docs/pov.md):")
+    for scene, ssim_v, err, _, _ in sorted(scored):
+        cls = classes.get(scene, "exact")
+        v, why = corpus_verdicts.verdict(scene, ssim_v, err, cls, recorded.get(scene),
+                                         departures, warnings.get(scene, []))
+        counts[v] = counts.get(v, 0) + 1
+        failed += v == "FAILED"
+        if v != "ok":
+            print(f"  {v:7s} {scene}: {why}")
+    for scene, _, why in left:
+        if why.startswith("render"):  # Sheaf failed or took too long: always a failure
+            failed += 1
+            print(f"  FAILED  {scene}: {why}")
+    print(", ".join(f"{c} {k}" for k, c in sorted(counts.items())))
+    if failed:
+        print(f"FAILED: {failed} scenes")
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":

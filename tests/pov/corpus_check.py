@@ -66,22 +66,26 @@ def copy_corpus(examples, workdir):
 
 
 def check(render, root, scene, timeout):
-    """(scene, 'ok'|'error'|'timeout', warnings, message, limits used)."""
+    """(scene, 'ok'|'error'|'timeout', unsupported-feature warnings, message, limits used,
+    every warning)."""
     folder = os.path.join(root, os.path.dirname(scene))
     try:
         p = subprocess.run([render, "--check", ini_for(folder, os.path.basename(scene))],
                            cwd=folder,
                            capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
-        return scene, "timeout", [], f"no answer in {timeout} s", {}
-    warnings = [l for l in p.stderr.splitlines() if ": warning: unsupported " in l]
+        return scene, "timeout", [], f"no answer in {timeout} s", {}, []
+    every = [l for l in p.stderr.splitlines() if ": warning: " in l]
+    warnings = [l for l in every if ": warning: unsupported " in l]
     used = limits_used(p.stdout)
     if p.returncode == 0 and "usable" in p.stdout:
-        return scene, "ok", warnings, "", used
+        return scene, "ok", warnings, "", used, every
     errors = [l for l in p.stderr.splitlines() if "error" in l]
     if p.returncode not in (1, 2):  # a crash, never acceptable
-        return scene, "crash", warnings, f"exit code {p.returncode}: {p.stderr[-300:]}", used
-    return scene, "error", warnings, errors[-1] if errors else p.stderr.strip()[-300:], used
+        return scene, "crash", warnings, f"exit code {p.returncode}: {p.stderr[-300:]}", used, \
+            every
+    return scene, "error", warnings, errors[-1] if errors else p.stderr.strip()[-300:], used, \
+        every
 
 
 def feature(warning):
@@ -113,7 +117,7 @@ def main():
     parsed = [r for r in results if r[1] == "ok"]
     clean = [r for r in parsed if not r[2]]
     blockers = collections.Counter()
-    for _, _, warnings, _, _ in parsed:
+    for _, _, warnings, _, _, _ in parsed:
         for f in {feature(w) for w in warnings}:
             blockers[f] += 1
     n = len(scenes)
@@ -123,7 +127,7 @@ def main():
     for f, count in blockers.most_common():
         print(f"  {count:4d}  {f}")
     print("\nScenes that do not parse:")
-    for scene, status, _, message, _ in results:
+    for scene, status, _, message, _, _ in results:
         if status != "ok":
             print(f"  {scene}: {status}: {message}")
     print("\nThe reader's limits: the most a scene uses of each, and the next four above 1%:")

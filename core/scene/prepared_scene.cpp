@@ -139,18 +139,18 @@ bool any_material(const Scene& s, uint32_t m, const Test& test, int depth = 0) {
     return false;
 }
 
-bool material_may_pass(const Scene& s, uint32_t m) {
-    return any_material(s, m, [&](const Material& mt) {
-        return mt.pigment >= 0 ? pigment_may_pass(s, mt.pigment) : mt.transmission > 0;
-    });
-}
-
 // Whether material m, or a material its texture maps lead to, holds media.
 bool has_media(const Scene& s, uint32_t m) {
     return any_material(s, m, [](const Material& mt) { return mt.media_count > 0; });
 }
 
 } // namespace
+
+bool material_may_pass(const Scene& s, uint32_t m) {
+    return any_material(s, m, [&](const Material& mt) {
+        return mt.pigment >= 0 ? pigment_may_pass(s, mt.pigment) : mt.transmission > 0;
+    });
+}
 
 void copy_texture_tables(const Scene& scene, PreparedScene& p) {
     p.materials = scene.materials;

@@ -179,4 +179,8 @@ PreparedScene prepare_scene(const Scene& scene);
 /// parse time). Not validated: prepare_scene validates the whole scene.
 void copy_texture_tables(const Scene& scene, PreparedScene& p);
 
+/// Whether material m of `scene` may let light through somewhere (filter or transmit), or a
+/// material its texture maps lead to.
+bool material_may_pass(const Scene& scene, uint32_t m);
+
 } // namespace sheaf

@@ -4,6 +4,7 @@
 #include "io/pov/materials.h"
 
 #include "core/base/error.h"
+#include "core/scene/prepared_scene.h"
 #include "core/scenes/shapes.h"
 #include "core/settings/settings.h"
 
@@ -319,6 +320,11 @@ struct Builder {
         }
         if (kids.empty()) return -1;
         if (o.op == CsgOp::Clip && kids.size() < 2) return int(kids[0]); // nothing clips it
+        if (o.op == CsgOp::Union && !in_union && kids.size() > 1 && !geometry_only &&
+            lets_light_in(so, kids))
+            p.approximated(o.where, "union inside an intersection or difference: drawn as a "
+                                    "merge, without its members' inner surfaces (POV-Ray shows "
+                                    "them through its clear material)");
         if (kids.size() == 1 && uni && !o.inverse) return int(kids[0]);
         CsgNode n;
         n.op = o.op;
@@ -353,6 +359,17 @@ struct Builder {
         if (bound_lo_.x > bound_hi_.x || bound_lo_.y > bound_hi_.y || bound_lo_.z > bound_hi_.z)
             w.hi = w.lo - Vec3(1.0f); // empty
         return w;
+    }
+
+    /// Whether a leaf under nodes `kids` of `so` has a material that may let light through.
+    bool lets_light_in(const ShapeObject& so, const std::vector<uint32_t>& kids) const {
+        for (uint32_t k : kids) {
+            const CsgNode& n = so.nodes[k];
+            if (n.op == CsgOp::Leaf ? material_may_pass(scene, n.material)
+                                    : lets_light_in(so, n.children))
+                return true;
+        }
+        return false;
     }
 
     void top_in(const PovObject& o, const PovTexture& parent, const PovInterior* parent_in,

@@ -161,6 +161,27 @@ TEST(PovObjects, UnionsSplitAndMergesStay) {
     EXPECT_EQ(r.scene.shape_objects[0].nodes[0].op, CsgOp::Merge);
 }
 
+TEST(PovObjects, AUnionInsideCsgSeenThroughGlassIsWarned) {
+    // Inside an intersection or difference a union is drawn as a merge: its members' inner
+    // surfaces are left out, which shows only where its material lets light through.
+    const std::string u = "difference { union { sphere { 0, 1 } sphere { x, 1 } } "
+                          "box { <-3, -3, -3>, <3, 0, 3> } pigment { ";
+    const PovResult clear = load_text(u + "rgbf <1, 1, 1, 0.9> } }");
+    ASSERT_EQ(clear.warnings.size(), 1u);
+    EXPECT_NE(clear.warnings[0].find("scene.pov:1:14: warning: approximated union inside an "
+                                     "intersection or difference: drawn as a merge"),
+              std::string::npos)
+        << clear.warnings[0];
+    EXPECT_TRUE(load_text(u + "rgb 1 } }").warnings.empty()); // opaque: nothing to see
+    // A union of separate objects is exact, clear or not.
+    EXPECT_TRUE(load_text("union { sphere { 0, 1 } sphere { x, 1 } pigment { rgbf 0.9 } }")
+                    .warnings.empty());
+    PovOptions strict;
+    strict.strict = true;
+    EXPECT_NE(test::error_of(u + "rgbf 0.9 } }", strict).find("error: approximated union"),
+              std::string::npos);
+}
+
 TEST(PovObjects, TexturesAndMaterials) {
     const PovResult r = load_text(
         "global_settings { assumed_gamma 1.0 }\n"

@@ -273,8 +273,11 @@ SHEAF_HD_INLINE BounceSplit bounce_split(const SceneView& scene, const SurfaceHi
             kr = fresnel_dielectric(cos_i, eta);
         }
         if (kr < 1.0f && refract(h.incoming, h.normal, eta, s.refract_dir)) {
-            float keep = 1.0f - kr;
-            if (m.conserve_energy) keep *= hdm::fmaxf(0.0f, 1.0f - max_component(mirror));
+            Vec3 keep(1.0f - kr);
+            // conserve_energy: what passes loses what the mirror takes, per channel (POV-Ray's
+            // filter colour times 1 - reflection, clipped).
+            if (m.conserve_energy)
+                for (int c = 0; c < 3; ++c) keep[c] *= hdm::fmaxf(0.0f, 1.0f - mirror[c]);
             s.refract_weight = h.throughput * pass * keep;
         } else {
             kr = 1.0f; // total internal reflection: what would pass is reflected

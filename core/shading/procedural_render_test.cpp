@@ -292,6 +292,29 @@ TEST(ProceduralRender, ShadowsThroughAnInverseSolidFade) {
 namespace sheaf {
 namespace {
 
+TEST(ProceduralShading, MetallicReflectionFollowsPovRaysFresnelTerm) {
+    // POV-Ray tints a metallic reflection towards the surface colour by 1 - F, F its
+    // empirical Fresnel term: 0 head-on (the full tint), 1 at a grazing angle (none).
+    Material m;
+    m.mirror = 0.8f, m.mirror_color = Vec3(1.0f), m.mirror_metallic = true;
+    SurfaceHit h;
+    h.normal = Vec3(0, 0, 1), h.albedo = Vec3(0, 1, 0.5f);
+    h.incoming = Vec3(0, 0, -1);
+    Vec3 w = mirror_weight(m, h);
+    EXPECT_NEAR(w.x, 0.0f, 1e-4f);
+    EXPECT_NEAR(w.y, 0.8f, 1e-4f);
+    EXPECT_NEAR(w.z, 0.4f, 1e-4f);
+    h.incoming = normalize(Vec3(1, 0, -0.001f)); // grazing
+    w = mirror_weight(m, h);
+    EXPECT_NEAR(w.x, 0.8f, 0.01f);
+    // At 60 degrees: x = 2/3, F = 0.014567225 / (2/3 - 1.12)^2 - 0.011612903.
+    h.incoming = Vec3(std::sin(1.0471976f), 0, -std::cos(1.0471976f));
+    const float f = 0.014567225f / ((2.0f / 3 - 1.12f) * (2.0f / 3 - 1.12f)) - 0.011612903f;
+    EXPECT_NEAR(mirror_weight(m, h).x, 0.8f * f, 1e-4f);
+    m.mirror_metallic = false;
+    EXPECT_NEAR(mirror_weight(m, h).x, 0.8f, 1e-6f);
+}
+
 TEST(ProceduralShading, FogAndFadeFollowPovRay) {
     Fogs fs;
     fs.count = 1;

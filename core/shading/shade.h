@@ -29,7 +29,9 @@ SHEAF_HD_INLINE float fresnel_dielectric(float cos_i, float eta) {
 }
 
 /// The mirror reflection of the surface at h (per channel): constant, or varying with the angle
-/// of view (POV-Ray's reflection { min max falloff } and fresnel), tinted when metallic.
+/// of view (POV-Ray's reflection { min max falloff } and fresnel), tinted when metallic as
+/// POV-Ray tints it: towards the surface colour by 1 - F, F its empirical Fresnel term of the
+/// angle of view (0 head-on, rising to 1 at grazing angles).
 SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
     float r = m.mirror;
     if (m.mirror_min >= 0.0f || m.mirror_fresnel) {
@@ -40,7 +42,13 @@ SHEAF_HD_INLINE Vec3 mirror_weight(const Material& m, const SurfaceHit& h) {
         r = lo + (hi - lo) * f;
     }
     Vec3 w = m.mirror_color * r;
-    if (m.mirror_metallic) w = w * h.albedo;
+    if (m.mirror_metallic) {
+        const float cos_i = hdm::fminf(1.0f, hdm::fmaxf(-1.0f, -dot(h.normal, h.incoming)));
+        const float x = fabsf(hdm::acosf(cos_i)) / (0.5f * kPi);
+        const float f = hdm::fminf(
+            1.0f, hdm::fmaxf(0.0f, 0.014567225f / ((x - 1.12f) * (x - 1.12f)) - 0.011612903f));
+        w = w * (Vec3(1.0f) + (h.albedo - Vec3(1.0f)) * (1.0f - f));
+    }
     return w;
 }
 

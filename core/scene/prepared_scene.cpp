@@ -318,9 +318,10 @@ PreparedScene prepare_scene(const Scene& scene) {
     p.atmosphere = scene.atmosphere;
     // Fog that fades a light's shadow rays fills only what is outside solid objects too
     // (fog_transmittance, core/shading/media.h).
-    bool fogged_lights = false;
-    for (const Light& l : scene.lights)
-        fogged_lights |= scene.fog.any() && l.media_attenuation && l.media_interaction;
+    const bool fogged_lights =
+        scene.fog.any() &&
+        std::any_of(scene.lights.begin(), scene.lights.end(),
+                    [](const Light& l) { return l.media_attenuation && l.media_interaction; });
     if (p.has_media() || fogged_lights)
         for (size_t so = 0; so < scene.shape_objects.size(); ++so) {
             if (!(scene.shape_objects[so].flags & kSolid)) continue;

@@ -466,10 +466,7 @@ void Parser::parse_atmospheric(const Token& kw) {
             } else if (accept_kw("turbulence")) {
                 fog.turb = parse_vector();
             } else if (accept_kw("octaves")) {
-                const Token& at = peek();
-                const double n = parse_float();
-                if (!(n >= 1 && n <= 10)) error_at(at, "a fog's octaves must lie in 1..10");
-                fog.octaves = int(n);
+                fog.octaves = parse_octaves();
             } else if (accept_kw("omega")) {
                 fog.omega = parse_float();
             } else if (accept_kw("lambda")) {

@@ -436,6 +436,10 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
     EXPECT_FLOAT_EQ(a.turb_depth, 0.25f);
     EXPECT_FLOAT_EQ(two.scene.fog.layer[1].transmit, 0.25f);
     EXPECT_FLOAT_EQ(two.scene.fog.layer[1].alt, 1);
+    // octaves clamp to 1..10, as POV-Ray's do (and the patterns' here).
+    EXPECT_EQ(load_text("fog { distance 5 turbulence 1 octaves 12 }").scene.fog.layer[0].octaves,
+              10);
+    EXPECT_EQ(load_text("fog { distance 5 turbulence 1 octaves 0 }").scene.fog.layer[0].octaves, 1);
     EXPECT_EQ(error_of("fog { fog_type 2 distance 5 fog_alt 0 }"),
               "scene.pov:1:37: error: fog_alt must be greater than 0");
     EXPECT_EQ(error_of("fog { fog_type 3 distance 5 }"),

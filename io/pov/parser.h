@@ -365,6 +365,9 @@ class Parser {
     /// (io/pov/density_file.cpp).
     std::shared_ptr<const PovDensity> parse_density_file(const Token& keyword);
     bool parse_pattern_modifier(PovPattern& pt, Affine& local);
+    /// A turbulence's `octaves` (patterns, warps, fog): clamped to 1..10 as POV-Ray does,
+    /// a value that is not a number taking 1.
+    int parse_octaves();
     /// An error at `t` when pattern `pt` is one only normals take (facets), met elsewhere.
     void only_in_normals(const Token& t, const PovPattern& pt) const;
     void parse_warp(PovPattern& pt, const Affine& local); // after `warp`

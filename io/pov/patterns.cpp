@@ -151,6 +151,11 @@ void Parser::only_in_normals(const Token& t, const PovPattern& pt) const {
                     "cannot take it (nor can POV-Ray's)");
 }
 
+int Parser::parse_octaves() {
+    const double n = parse_float();
+    return n > 10 ? 10 : n >= 1 ? int(n) : 1; // NaN: 1
+}
+
 bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
     Affine m;
     if (parse_transform_item(m)) {
@@ -171,7 +176,7 @@ bool Parser::parse_pattern_modifier(PovPattern& pt, Affine& local) {
         turbulence();
     } else if (k == "octaves") {
         advance();
-        pt.octaves = std::clamp(int(parse_float()), 1, 10);
+        pt.octaves = parse_octaves();
     } else if (k == "omega") {
         advance();
         pt.omega = parse_float();
@@ -277,7 +282,7 @@ void Parser::parse_warp(PovPattern& pt, const Affine& local) {
         out.f[0] = 0.5f, out.f[1] = 2.0f;
         for (;;) {
             if (accept_kw("octaves"))
-                out.octaves = int8_t(std::clamp(int(parse_float()), 1, 10));
+                out.octaves = int8_t(parse_octaves());
             else if (accept_kw("omega"))
                 out.f[0] = parse_float();
             else if (accept_kw("lambda"))

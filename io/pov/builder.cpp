@@ -447,6 +447,32 @@ struct Builder {
         if (c.mesh_rays > 1) scene.settings["aa.samples"] = aa_samples_for(c.mesh_rays);
     }
 
+    /// Where a perspective camera looks: its direction less the part of it that lies in the
+    /// plane of right and up, which becomes the camera's lens shift (POV-Ray casts dir + x right
+    /// + y up whatever their angles; a camera sheared by its transform, to keep verticals
+    /// vertical, leans its direction out of that plane). Right and up that are not perpendicular
+    /// cannot be drawn: up is then turned perpendicular, with a warning. Vectors transformed,
+    /// in POV-Ray's space.
+    Vec3 perspective_view(const PovCamera& c, Vec3 dir, Vec3 right, Vec3 up, Camera& out) {
+        if (c.projection != Projection::Perspective) return dir;
+        const float rr = dot(right, right), uu = dot(up, up);
+        const Vec3 n = cross(right, up);
+        const float nl = length(n);
+        if (!(rr > 0) || !(uu > 0) || !(nl > 0) || !std::isfinite(nl)) return dir;
+        if (std::fabs(dot(right, up)) > 1e-4f * std::sqrt(rr * uu))
+            p.approximated(c.where, "camera whose right and up are not perpendicular: drawn "
+                                    "with up turned perpendicular to right");
+        const Vec3 along = n * (dot(dir, n) / (nl * nl));
+        const Vec3 lean = dir - along;
+        const float sx = dot(lean, right) / rr, sy = dot(lean, up) / uu;
+        // Cameras whose direction is square to right and up (look_at gives them) stay as
+        // they are, rounding and all.
+        if (!(std::fabs(sx) > 1e-5f || std::fabs(sy) > 1e-5f) || !(length(along) > 0)) return dir;
+        out.shift_x = sx;
+        out.shift_y = sy;
+        return along;
+    }
+
     void camera() {
         const PovCamera& c = p.model.camera;
         Vec3 loc = c.location, dir = c.direction, right = c.right, up = c.up;
@@ -468,8 +494,9 @@ struct Builder {
         dir = c.transform.vector(dir);
         up = c.transform.vector(up);
         Camera& out = scene.camera;
+        const Vec3 view = perspective_view(c, dir, c.transform.vector(right), up, out);
         out.position = flip.point(loc);
-        out.look_at = flip.point(loc + dir);
+        out.look_at = flip.point(loc + view);
         out.up = length(up) > 0 ? normalize(flip.vector(up)) : Vec3(0, 1, 0);
         out.mirror = dot(cross(up, dir), c.transform.vector(right)) < 0;
         // Screen space: the camera's transforms do not move its normal. POV-Ray takes the
@@ -533,7 +560,7 @@ struct Builder {
             }
         } else {
             out.fov_y_degrees =
-                float(2 * std::atan(0.5 * length(up) / std::max(length(dir), 1e-6f)) * 180 / M_PI);
+                float(2 * std::atan(0.5 * length(up) / std::max(length(view), 1e-6f)) * 180 / M_PI);
         }
     }
 };

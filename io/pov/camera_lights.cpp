@@ -33,9 +33,11 @@ const Projection* camera_type(const std::string& k) {
 } // namespace
 
 void Parser::parse_camera(PovCamera& c) {
+    const Token brace = peek();
     expect_sym("{");
     Value declared;
     if (accept_declared(VType::Camera, declared, "a camera")) c = declared.as<PovCamera>();
+    c.where = brace;
     for (;;) {
         const Token& t = peek();
         if (accept_sym("}")) return;

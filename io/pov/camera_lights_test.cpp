@@ -59,6 +59,33 @@ TEST(PovCamera, DirectionWithoutAngleAndSky) {
     EXPECT_NEAR(r.scene.camera.look_at.z, -2, 1e-5);
 }
 
+TEST(PovCamera, ShearedCameraIsALensShift) {
+    // camera/shear.pov: look_at, then a shear that turns up vertical and leaves the direction
+    // leaning up. POV-Ray casts direction + x right + y up: the pixel at the centre looks
+    // along the leaning direction, the view's verticals stay vertical.
+    const PovResult r =
+        load_text("camera { location <0, 1, 25> right x * 4/3 angle 90 look_at <0, 10, 0> "
+                  "matrix <1, 0, 0, 0, 1, -0.36, 0, 0, 1, 0, 0, 0> }");
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0];
+    const Camera& c = r.scene.camera;
+    EXPECT_NEAR(c.shift_x, 0, 1e-5);
+    EXPECT_GT(c.shift_y, 0.1); // the centre ray rises above the image plane's normal
+    const CameraFrame f = make_camera_frame(c, 40, 30);
+    EXPECT_NEAR(f.up.y, 1, 1e-5);      // up stays vertical
+    EXPECT_NEAR(f.forward.y, 0, 1e-5); // the image plane is upright
+    // The middle of the image: POV-Ray's direction <0, 9, -25> sheared to <0, 9, -28.24>
+    // (z mirrored into Sheaf's world).
+    const Vec3 mid = normalize(f.pixel_ray(19, 14).dir + f.pixel_ray(20, 15).dir);
+    const Vec3 want = normalize(Vec3(0, 9, 28.24f));
+    EXPECT_NEAR(dot(mid, want), 1, 1e-4);
+    // Right and up that are not perpendicular cannot be drawn: a warning says so.
+    const PovResult skew =
+        load_text("camera { location <0, 0, -5> look_at 0 matrix <1, 0, 0, 0.5, 1, 0, "
+                  "0, 0, 1, 0, 0, 0> }");
+    ASSERT_EQ(skew.warnings.size(), 1u);
+    EXPECT_NE(skew.warnings[0].find("right and up are not perpendicular"), std::string::npos);
+}
+
 TEST(PovCamera, DefaultAndOrthographic) {
     EXPECT_NEAR(load_text("").scene.camera.fov_y_degrees, 2 * std::atan(0.5) * 180 / M_PI, 1e-3);
     const PovResult r = load_text("camera { orthographic location <0, 0, -10> look_at 0 "

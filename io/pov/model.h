@@ -259,6 +259,7 @@ struct PovCamera {
     double angle = 0;                       // degrees, 0: not given
     double v_angle = -1;                    // spherical: the vertical angle; < 0: not given
     Token type_at;                          // the camera type's keyword, for errors
+    Token where;                            // its opening brace, for warnings
     Affine transform;                       // applied after everything else
     /// Tilts each primary ray as a surface normal, in screen space (x and y from -1/2 to 1/2).
     std::shared_ptr<const PovNormal> normal;

@@ -94,6 +94,30 @@ const PovFinish& layer_finish(const PovTexture& t) {
     return t.below.front()->finish;
 }
 
+} // namespace
+
+bool layers_lit_alike(const PovTexture& t) {
+    auto lit = [](const PovFinish& f) {
+        PovFinish g = f;
+        g.phong = g.phong_size = g.specular = g.roughness = 0; // added layer by layer
+        return g;
+    };
+    const PovFinish first = lit(layer_finish(t));
+    double above = 1; // the share the layers above let through
+    auto differs = [&](const PovTexture& l) {
+        const double pass = std::clamp(mean_pass(l.pigment.get()), 0.0, 1.0);
+        const bool shows = above > 1e-3 && pass < 1 - 1e-3;
+        above *= pass;
+        return shows && !(lit(l.finish) == first);
+    };
+    if (differs(t)) return false;
+    for (auto it = t.below.rbegin(); it != t.below.rend(); ++it)
+        if (differs(**it)) return false;
+    return true;
+}
+
+namespace {
+
 // The highlights of a layered texture. POV-Ray adds every layer's phong and specular, weighed
 // not by that layer's own opacity (a clear varnish layer shines in full) but by what the
 // layers above it let through. Sheaf adds the strengths so weighed, with the size of the

@@ -161,6 +161,12 @@ struct PovTexture {
 /// textures at two values, between which POV-Ray blends the textures (Sheaf does not).
 bool texture_map_blends(const std::vector<std::pair<double, PovTextureRef>>& entries);
 
+/// Whether the layers of a layered texture that show (some light passes the layers above
+/// them, and some of theirs is not clear) are lit alike: the same ambient, emission, diffuse,
+/// brilliance, metallic, reflection and iridescence (highlights are added layer by layer).
+/// Sheaf lights a layered texture with one finish (io/pov/materials.cpp).
+bool layers_lit_alike(const PovTexture& t);
+
 /// A texture moved by a transform applied after it (the object's, or the texture's own).
 PovTextureRef transformed(const PovTextureRef& t, const Affine& m);
 /// `t` uv-mapped (an object's uv_mapping), placed by the transforms it has now (one that is

@@ -148,6 +148,8 @@ class Parser {
     /// (an error with `strict`). A scene with only these is still clean (`render --check`);
     /// inside a declaration it waits, as unsupported() does, until the value is used.
     void approximated(const Token& t, const std::string& what);
+    /// The warning for a layered texture lit with one finish (io/pov/textures.cpp).
+    void warn_layers_lit_alike(const Token& t);
     /// Reports the unsupported features a declared value carries (see PendingWarning).
     void raise_pending(const Value& v);
     /// While a #declare is read, unsupported features are collected here instead.

@@ -68,9 +68,15 @@ PovTextureRef Parser::parse_texture_block(const PovTexture& base) {
     return std::make_shared<const PovTexture>(parse_texture_body(base, "}"));
 }
 
+void Parser::warn_layers_lit_alike(const Token& t) {
+    approximated(t, "layered texture whose layers' finishes differ: lit with one finish, the "
+                    "top-most mostly opaque layer's");
+}
+
 PovTextureRef Parser::parse_texture_layers(const PovTexture& base) {
     PovTextureRef top = parse_texture_block(base);
     while (is_kw_tok(peek_cont(), "texture")) {
+        const Token layer = peek_cont();
         advance();
         PovTextureRef next = parse_texture_block(base);
         auto layered = std::make_shared<PovTexture>(*next);
@@ -79,8 +85,23 @@ PovTextureRef Parser::parse_texture_layers(const PovTexture& base) {
         lower->below.clear();
         layered->below.insert(layered->below.begin() + top->below.size(), lower);
         top = layered;
+        if (!layers_lit_alike(*top)) warn_layers_lit_alike(layer);
     }
     return top;
+}
+
+// POV-Ray applies a texture's transforms to its pigment and normal as they come, so a pigment
+// or normal block that modifies them after the texture's transforms (texture { T_Stone1
+// pigment { rotate 90*z } }, interior/ballbox1.pov) adds its own after the texture's. Sheaf
+// keeps the texture's transforms in PovTexture::local, applied after the pigment's: such a
+// block is parsed with them applied, then they are taken out again. Whether that is needed
+// (the texture moved, by an invertible transform).
+static bool in_texture_space(const Affine& local) {
+    const Affine none;
+    bool identity = true;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) identity = identity && local.m[r][c] == none.m[r][c];
+    return !identity && std::fabs(local.determinant()) > 1e-30f;
 }
 
 PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close) {
@@ -89,6 +110,10 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
     tx.local = Affine();
     Value declared;
     if (accept_declared(VType::Texture, declared, "a texture")) tx = declared.as<PovTexture>();
+    // A declared layered texture's top layer modified here: whether it still lights its
+    // layers alike (the declaration warned if it did not).
+    const bool layers_alike = tx.below.empty() || layers_lit_alike(tx);
+    Token modified_at;
     int list = 0;
     bool list_given = false;
     Token pattern_at;
@@ -151,11 +176,32 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
         }
         advance();
         if (k == "pigment") {
-            tx.pigment = parse_pigment(tx.pigment ? *tx.pigment : PovPigment{});
+            if (!tx.pigment) {
+                tx.pigment = parse_pigment(PovPigment{});
+            } else {
+                const bool in_space = !tx.pigment->uv && in_texture_space(tx.local);
+                PovPigment base = *tx.pigment;
+                if (in_space) base.local = tx.local * base.local;
+                auto pg = std::make_shared<PovPigment>(*parse_pigment(base));
+                if (in_space) pg->local = tx.local.inverse() * pg->local;
+                tx.pigment = std::move(pg);
+            }
+            if (modified_at.text.empty()) modified_at = t;
         } else if (k == "finish") {
             parse_finish(tx.finish);
+            if (modified_at.text.empty()) modified_at = t;
         } else if (k == "normal") {
-            tx.normal = parse_normal(tx.normal.get());
+            if (!tx.normal || !in_texture_space(tx.local)) {
+                tx.normal = parse_normal(tx.normal.get());
+            } else {
+                PovNormal base = *tx.normal;
+                base.local = tx.local * base.local;
+                if (auto parsed = parse_normal(&base)) {
+                    auto n = std::make_shared<PovNormal>(*parsed);
+                    n->local = tx.local.inverse() * n->local;
+                    tx.normal = std::move(n);
+                }
+            }
         } else if (k == "texture_map") {
             if (!tx.is_map) error_at(t, "texture_map needs a pattern before it");
             tx.map_entries = parse_texture_map();
@@ -183,6 +229,8 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
             error_expected(t, "a texture item (pigment, normal, finish, a pattern ...)");
         }
     }
+    if (!tx.is_map && !tx.below.empty() && layers_alike && !layers_lit_alike(tx))
+        warn_layers_lit_alike(modified_at);
     if (tx.is_map) {
         if (unsupported_pattern || tx.map_entries.empty()) {
             if (unsupported_pattern)

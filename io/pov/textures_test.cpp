@@ -301,6 +301,61 @@ TEST(PovTextures, TransformsMoveEveryLayerOfADeclaredTexture) {
     }
 }
 
+// A declared texture's transforms come before a pigment or normal block that modifies it:
+// POV-Ray applies them to the pigment as they come (interior/ballbox1.pov's floor, T_Stone1
+// with pigment { rotate 90*z }).
+TEST(PovTextures, ModifyingBlocksTransformAfterTheTexture) {
+    const PovResult r = load_text(
+        "#declare T = texture { pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } }\n"
+        "  normal { gradient x } scale <2, 1, 1> }\n"
+        "sphere { 0, 1 texture { T pigment { rotate 90 * z } normal { rotate 90 * z } } }\n"
+        "sphere { 0, 1 texture { T pigment { rotate 90 * z } } scale 3 }\n");
+    ASSERT_TRUE(r.warnings.empty()) << r.warnings.front();
+    // Scaled by 2 along x, then turned: the gradient runs along y, two units to a cycle
+    // (the other order would run it along y one unit to a cycle).
+    const Pattern& pt = r.scene.pigments[size_t(shape_material(r, 0).pigment)].pattern;
+    EXPECT_NEAR(pt.to_pattern.point(Vec3(0, 0.5f, 0)).x, 0.25f, 1e-5);
+    EXPECT_NEAR(pt.to_pattern.point(Vec3(0.5f, 0, 0)).x, 0, 1e-5);
+    const Material& m = shape_material(r, 0);
+    ASSERT_GE(m.normal, 0);
+    const Pattern& nt = r.scene.normal_patterns[size_t(m.normal)].pattern;
+    EXPECT_NEAR(nt.to_pattern.point(Vec3(0, 0.5f, 0)).x, 0.25f, 1e-5);
+    // The object's transforms still come after all of them.
+    const Pattern& big = r.scene.pigments[size_t(shape_material(r, 1).pigment)].pattern;
+    EXPECT_NEAR(big.to_pattern.point(Vec3(0, 1.5f, 0)).x, 0.25f, 1e-5);
+}
+
+// Sheaf lights a layered texture with one finish: layers that show with other finishes warn,
+// where the texture is written or where a block modifies a declared one.
+TEST(PovTextures, LayersLitWithOtherFinishesWarn) {
+    const std::string clear = "texture { pigment { rgbf <1, 1, 1, 0.5> } ";
+    auto warnings = [](const std::string& text) { return load_text(text).warnings; };
+    EXPECT_TRUE(warnings("sphere { 0, 1 texture { pigment { rgb 1 } } " + clear + "} }").empty());
+    const auto differ = warnings("sphere { 0, 1 texture { pigment { rgb 1 } }\n" + clear +
+                                 "finish { reflection 0.5 } } }");
+    ASSERT_EQ(differ.size(), 1u);
+    EXPECT_NE(differ[0].find("2:1: warning: approximated layered texture"), std::string::npos);
+    // Under an opaque layer nothing shows; a layer clear everywhere shows nothing.
+    EXPECT_TRUE(warnings("sphere { 0, 1 texture { pigment { rgb 1 } }\n texture { pigment "
+                         "{ rgb 0 } finish { reflection 0.5 } } }")
+                    .empty());
+    EXPECT_TRUE(warnings("sphere { 0, 1 texture { pigment { rgb 1 } finish { ambient 0 } }\n"
+                         "texture { pigment { rgbt 1 } } }")
+                    .empty());
+    // A declared layered texture lit alike, given another finish where it is used.
+    const auto modified = warnings("#declare T = texture { pigment { rgb 1 } } " + clear +
+                                   "}\nsphere { 0, 1 texture { T finish { diffuse 0.2 } } }");
+    ASSERT_EQ(modified.size(), 1u);
+    EXPECT_NE(modified[0].find("2:27: warning: approximated layered texture"), std::string::npos);
+    PovOptions strict;
+    strict.strict = true;
+    EXPECT_NE(error_of("sphere { 0, 1 texture { pigment { rgb 1 } }\n" + clear +
+                           "finish { reflection 0.5 } } }",
+                       strict)
+                  .find("error: approximated layered texture"),
+              std::string::npos);
+}
+
 // tiles { texture tile2 texture } is a checker of the two textures (each may be layered),
 // placed by the transforms after it.
 TEST(PovTextures, TilesAreACheckerOfTwoTextures) {
@@ -335,7 +390,12 @@ TEST(PovTextures, LayersAddTheirHighlights) {
         "  texture { pigment { rgbt <1, 1, 1, 0.5> } finish { specular 0.2 roughness 0.1 } } }\n"
         "sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 1 } }\n"
         "  texture { pigment { rgb 0.5 } } }\n");
-    ASSERT_TRUE(r.warnings.empty()) << r.warnings[0];
+    // The varnish's own diffuse (the default 0.6) is not the floor's 0.9: lit with one
+    // finish, warned; the others differ in highlights only, which are added layer by layer.
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("2:3: warning: approximated layered texture whose layers' "
+                                 "finishes differ"),
+              std::string::npos);
     const Material& varnish = shape_material(r, 0);
     EXPECT_FLOAT_EQ(varnish.diffuse, 0.9f); // the opaque bottom layer's
     EXPECT_FLOAT_EQ(varnish.specular, 1);   // the clear top layer's phong, in full

@@ -289,12 +289,22 @@ SHEAF_HD_NOINLINE int julia_spans(const JuliaFractal& j, const Ray& r, Span* out
 
 } // namespace shape_detail
 
-/// Spans of the local-space ray `r` inside `s`, sorted, at most kMaxShapeSpans. `tables` holds
-/// what poly and glyph shapes read (without it they have no spans).
-SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
+/// A ray in a shape's space with its origin also in double: a shape far from the world's
+/// origin in its own units (a planet of radius 50,000 centred 50,000 below the camera) would
+/// otherwise place its hits only to float precision of its size, off its surface by more than
+/// the rays leaving them are lifted (advanced/mediasky.pov's sea reflected itself).
+struct LocalRay {
+    Ray ray;
+    double ox = 0, oy = 0, oz = 0;
+};
+
+/// Spans of the local-space ray `lr` inside `s`, sorted, at most kMaxShapeSpans. `tables`
+/// holds what poly and glyph shapes read (without it they have no spans).
+SHEAF_HD_INLINE int shape_spans(const Shape& s, const LocalRay& lr, Span* out,
                                 const ShapeTables& tables = {}) {
     using namespace shape_detail;
-    const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
+    const Ray& r = lr.ray;
+    const double ox = lr.ox, oy = lr.oy, oz = lr.oz;
     const double dx = r.dir.x, dy = r.dir.y, dz = r.dir.z;
     auto at = [&](double t) {
         return Vec3(float(ox + dx * t), float(oy + dy * t), float(oz + dz * t));
@@ -418,6 +428,12 @@ SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
     return 0;
 }
 
+/// Spans of a ray already in the shape's space, its origin as it is.
+SHEAF_HD_INLINE int shape_spans(const Shape& s, const Ray& r, Span* out,
+                                const ShapeTables& tables = {}) {
+    return shape_spans(s, LocalRay{r, r.origin.x, r.origin.y, r.origin.z}, out, tables);
+}
+
 /// A shape placed in the world: the transforms a ray and a normal need.
 struct PlacedShape {
     Shape shape;
@@ -425,12 +441,17 @@ struct PlacedShape {
     Affine normal_to_world; // linear part: the inverse transpose of local -> world
 };
 
-SHEAF_HD_INLINE Ray to_local_ray(const PlacedShape& p, const Ray& r) {
-    Ray l;
-    l.origin = p.to_local.point(r.origin);
-    l.dir = p.to_local.vector(r.dir); // not normalised: t stays the world distance
-    l.tmin = r.tmin;
-    l.tmax = r.tmax;
+SHEAF_HD_INLINE LocalRay to_local_ray(const PlacedShape& p, const Ray& r) {
+    LocalRay l;
+    const float(&m)[3][4] = p.to_local.m;
+    const double x = r.origin.x, y = r.origin.y, z = r.origin.z;
+    l.ox = m[0][0] * x + m[0][1] * y + m[0][2] * z + m[0][3];
+    l.oy = m[1][0] * x + m[1][1] * y + m[1][2] * z + m[1][3];
+    l.oz = m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3];
+    l.ray.origin = Vec3(float(l.ox), float(l.oy), float(l.oz));
+    l.ray.dir = p.to_local.vector(r.dir); // not normalised: t stays the world distance
+    l.ray.tmin = r.tmin;
+    l.ray.tmax = r.tmax;
     return l;
 }
 

@@ -100,6 +100,7 @@ bool layers_lit_alike(const PovTexture& t) {
     auto lit = [](const PovFinish& f) {
         PovFinish g = f;
         g.phong = g.phong_size = g.specular = g.roughness = 0; // added layer by layer
+        if (!g.reflection_variable) g.reflection = g.reflection_min = {0, 0, 0}; // added
         return g;
     };
     const PovFinish first = lit(layer_finish(t));
@@ -117,6 +118,38 @@ bool layers_lit_alike(const PovTexture& t) {
 }
 
 namespace {
+
+// The reflection of a layered texture. POV-Ray adds the reflection of every layer it reaches
+// (it stops below a layer that lets nothing through), each in full: not weighed by its own
+// opacity nor by the layers above. Sheaf adds them (their minimum too, where variable), with
+// the falloff, Fresnel and metallic of the top-most layer that reflects; layers that differ in
+// those are warned (layers_lit_alike).
+PovFinish layer_reflection(const PovTexture& t, PovFinish f) {
+    const PovFinish* form = nullptr;
+    std::array<double, 3> sum{0, 0, 0}, sum_min{0, 0, 0};
+    double above = 1; // the share the layers above let through
+    auto add = [&](const PovTexture& l) {
+        const PovFinish& lf = l.finish;
+        if (max3(lf.reflection) > 0 || max3(lf.reflection_min) > 0) {
+            if (!form) form = &lf;
+            for (int c = 0; c < 3; ++c) {
+                sum[c] += lf.reflection[c];
+                sum_min[c] += lf.reflection_variable ? lf.reflection_min[c] : lf.reflection[c];
+            }
+        }
+        above *= std::clamp(mean_pass(l.pigment.get()), 0.0, 1.0);
+    };
+    add(t);
+    for (auto it = t.below.rbegin(); it != t.below.rend() && above > 1.0 / 255; ++it) add(**it);
+    if (!form) return f;
+    f.reflection = sum;
+    f.reflection_variable = form->reflection_variable;
+    f.reflection_min = form->reflection_variable ? sum_min : std::array<double, 3>{0, 0, 0};
+    f.fresnel = form->fresnel;
+    f.reflection_falloff = form->reflection_falloff;
+    f.reflection_metallic = form->reflection_metallic;
+    return f;
+}
 
 // The highlights of a layered texture. POV-Ray adds every layer's phong and specular, weighed
 // not by that layer's own opacity (a clear varnish layer shines in full) but by what the
@@ -420,7 +453,7 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
         return scene_.add_material(m);
     }
 
-    const PovFinish& f = layer_finish(t);
+    const PovFinish f = t.below.empty() ? t.finish : layer_reflection(t, layer_finish(t));
     Material m;
     m.fresnel_split = false; // POV-Ray: reflection comes from the finish only
     const auto& al = p_.model.ambient_light;

@@ -332,7 +332,7 @@ TEST(PovTextures, LayersLitWithOtherFinishesWarn) {
     auto warnings = [](const std::string& text) { return load_text(text).warnings; };
     EXPECT_TRUE(warnings("sphere { 0, 1 texture { pigment { rgb 1 } } " + clear + "} }").empty());
     const auto differ = warnings("sphere { 0, 1 texture { pigment { rgb 1 } }\n" + clear +
-                                 "finish { reflection 0.5 } } }");
+                                 "finish { ambient 0.4 } } }");
     ASSERT_EQ(differ.size(), 1u);
     EXPECT_NE(differ[0].find("2:1: warning: approximated layered texture"), std::string::npos);
     // Under an opaque layer nothing shows; a layer clear everywhere shows nothing.
@@ -350,7 +350,7 @@ TEST(PovTextures, LayersLitWithOtherFinishesWarn) {
     PovOptions strict;
     strict.strict = true;
     EXPECT_NE(error_of("sphere { 0, 1 texture { pigment { rgb 1 } }\n" + clear +
-                           "finish { reflection 0.5 } } }",
+                           "finish { ambient 0.4 } } }",
                        strict)
                   .find("error: approximated layered texture"),
               std::string::npos);
@@ -405,6 +405,24 @@ TEST(PovTextures, LayersAddTheirHighlights) {
     EXPECT_FLOAT_EQ(both.blinn_exponent, 10);        // 1 / the top one's roughness
     // Under an opaque layer, a layer's highlight does not show.
     EXPECT_FLOAT_EQ(shape_material(r, 2).specular, 0);
+}
+
+// POV-Ray adds the reflection of every layer it reaches, each in full (not weighed by the
+// layers' opacity), and stops below a layer that lets nothing through (advanced/pawns.pov's
+// Rosewood, given reflection 0.3 on its clear top layer).
+TEST(PovTextures, LayersAddTheirReflections) {
+    const PovResult r =
+        load_text("sphere { 0, 1 texture { pigment { rgb 1 } finish { reflection 0.2 } }\n"
+                  "  texture { pigment { rgbf <1, 1, 1, 0.8> } finish { reflection 0.3 } } }\n"
+                  "sphere { 0, 1 texture { pigment { rgb 1 } finish { reflection 0.2 } }\n"
+                  "  texture { pigment { rgb 0.5 } finish { reflection 0.3 } } }\n"
+                  "sphere { 0, 1 texture { pigment { rgb 1 } }\n"
+                  "  texture { pigment { rgbt 0.5 } finish { reflection { 0.1, 0.4 } } } }\n");
+    ASSERT_TRUE(r.warnings.size() == 1) << r.warnings.size(); // the third's variable one
+    EXPECT_FLOAT_EQ(shape_material(r, 0).mirror, 0.5f);
+    EXPECT_FLOAT_EQ(shape_material(r, 1).mirror, 0.3f); // nothing passes the top one
+    EXPECT_FLOAT_EQ(shape_material(r, 2).mirror, 0.4f);
+    EXPECT_FLOAT_EQ(shape_material(r, 2).mirror_min, 0.1f);
 }
 
 // POV-Ray 3.7's slope pattern: the old form and the block with ranges, altitude and

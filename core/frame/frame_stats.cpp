@@ -43,6 +43,7 @@ RayGenParams frame_ray_params(const PreparedScene& scene, const RenderSettings& 
     for (const Light& l : scene.lights) lights = std::max(lights, length(l.position));
     p.shadow_epsilon = kRelativeOffset * lights;
     p.far = 4.0f * scene_extent(scene);
+    p.min_weight = s.trace_bailout;
     p.ao_samples = s.ao_samples;
     p.ao_distance = s.ao_distance;
     p.radiosity_samples = s.radiosity_samples;

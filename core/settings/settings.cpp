@@ -97,6 +97,15 @@ const std::vector<SettingSpec>& setting_specs() {
          64,
          {},
          "reflection/refraction bounces after the primary hit"},
+        {"trace.bailout",
+         K::Float,
+         "0.001",
+         0,
+         1,
+         {},
+         "reflection, refraction and gather rays that would carry less than this share of a "
+         "pixel's light are not traced (POV-Ray's adc_bailout; POV scenes take theirs, 1/255 "
+         "by default)"},
         {"backend",
          K::Choice,
          "auto",
@@ -476,6 +485,7 @@ RenderSettings RenderSettings::resolve(const Settings& explicit_settings,
     r.threads = i("threads");
     r.ao_samples = i("ao.samples");
     r.ao_distance = f("ao.distance");
+    r.trace_bailout = f("trace.bailout");
     r.radiosity_samples = i("radiosity.samples");
     r.radiosity_depth = i("radiosity.depth");
     r.radiosity_brightness = f("radiosity.brightness");

@@ -104,6 +104,7 @@ struct RenderSettings {
     bool cull_distance = true;
     int cull_cluster = 64; // primitives per culling sphere within a split object; 0: objects
     int trace_depth = 5;
+    float trace_bailout = 0.001f; // rays carrying less are not traced (RayGenParams::min_weight)
     Backend backend = Backend::Auto;
     int width = 512, height = 512;
     /// The part of the frame rendered (region.*), in the frame's pixels; a size of 0 reaches

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <random>
@@ -617,6 +618,14 @@ double build_scene(Parser& p, Scene& scene) {
     }
     if (m.max_trace_level >= 0)
         scene.settings["trace.depth"] = std::to_string(std::clamp(m.max_trace_level - 1, 0, 64));
+    // POV-Ray stops a ray whose share of its pixel falls below adc_bailout (1/255 unless the
+    // scene says): deep glass (advanced/blocks/stackertransp.pov, max_trace_level 50) would
+    // otherwise trace far more rays than POV-Ray, and paint them.
+    {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.9g", m.adc_bailout);
+        scene.settings["trace.bailout"] = text;
+    }
     if (scene.camera.lens_radius > 0) {
         // Focal blur takes its samples as anti-aliasing does: blur_samples (16 when not given).
         scene.settings["aa.samples"] =

@@ -318,8 +318,12 @@ void Parser::parse_global_settings() {
                 warn(at, "number_of_waves " + format_number(n) + " is clamped to " +
                              std::to_string(model.number_of_waves) + " (1.." +
                              std::to_string(kPovMostWaves) + ")");
-        } else if (k == "adc_bailout" || k == "max_intersections" || k == "hf_gray_16" ||
-                   k == "mm_per_unit") {
+        } else if (k == "adc_bailout") {
+            const Token& at = peek();
+            const double b = parse_float();
+            if (!(b >= 0 && b <= 1)) error_at(at, "adc_bailout must lie between 0 and 1");
+            model.adc_bailout = b;
+        } else if (k == "max_intersections" || k == "hf_gray_16" || k == "mm_per_unit") {
             if (starts_expression(peek())) parse_expr();
         } else {
             error_expected(t, "a global setting (assumed_gamma, max_trace_level ...)");

@@ -431,6 +431,12 @@ TEST(PovSettings, BackgroundGlobalSettingsAtmosphere) {
                                   "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0.4 } }");
     EXPECT_FLOAT_EQ(r.scene.background.z, 0.3f);
     EXPECT_EQ(r.scene.settings.at("trace.depth"), "2");
+    // POV-Ray's adc_bailout: 1/255 unless the scene gives one.
+    EXPECT_NEAR(std::stod(r.scene.settings.at("trace.bailout")), 1.0 / 255, 1e-9);
+    EXPECT_EQ(load_text("global_settings { adc_bailout 0.01 }").scene.settings.at("trace.bailout"),
+              "0.01");
+    EXPECT_NE(error_of("global_settings { adc_bailout -1 }").find("adc_bailout must lie between"),
+              std::string::npos);
     EXPECT_FLOAT_EQ(r.scene.materials.back().ambient, 0.2f);
     ASSERT_EQ(r.scene.fog.count, 1u);
     EXPECT_FLOAT_EQ(r.scene.fog.layer[0].distance, 10);

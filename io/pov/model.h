@@ -317,6 +317,7 @@ struct PovModel {
     // is not what it renders (textures/pigments/irid.pov).
     std::array<double, 3> irid_wavelength{0.70, 0.52, 0.48};
     int max_trace_level = -1;
+    double adc_bailout = 1.0 / 255; // POV-Ray's default
     /// global_settings { radiosity { ... } }: on, its count (gather rays), recursion_limit
     /// and brightness (POV-Ray 3.7's defaults).
     bool radiosity = false;

@@ -281,6 +281,13 @@ SHEAF_HD_INLINE BounceSplit bounce_split(const SceneView& scene, const SurfaceHi
             s.refract_weight = h.throughput * pass * keep;
         } else {
             kr = 1.0f; // total internal reflection: what would pass is reflected
+            // POV-Ray then reflects all of it, unfiltered, and leaves out the finish's own
+            // reflection about the same normal (interior/caustic2.pov's ceiling, seen from
+            // inside).
+            if (!m.fresnel_split) {
+                s.reflect_weight = h.throughput;
+                return s;
+            }
         }
         reflect_w += pass * kr;
     }

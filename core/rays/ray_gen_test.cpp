@@ -70,3 +70,39 @@ TEST(RayGen, ABatchBeyond32BitIndicesIsRefusedBeforeItIsMade) {
 
 } // namespace
 } // namespace sheaf
+
+namespace sheaf {
+namespace {
+
+// POV-Ray's total internal reflection: the ray that cannot leave is reflected whole and
+// unfiltered, and the finish's own reflection is left out (interior/caustic2.pov's ceiling,
+// seen from inside its glass); elsewhere the glass passes its filtered colour and reflects
+// its finish's share.
+TEST(RayGen, TotalInternalReflectionReflectsEverythingAsPovRay) {
+    Material glass;
+    glass.fresnel_split = false; // POV-Ray's: reflection from the finish only
+    glass.ior = 1.1f;
+    glass.mirror = 0.7f;
+    SceneView view;
+    view.materials = &glass;
+    SurfaceHit h;
+    h.material = 0;
+    h.albedo = Vec3(0.7f, 0.7f, 1.0f);
+    h.filter = 0.9f;
+    h.throughput = Vec3(0.5f);
+    h.front = false; // leaving the glass (ior 1.1) into air
+    h.normal = h.geo_normal = Vec3(0, -1, 0);
+    // Steep: it leaves, filtered; the mirror takes 0.7.
+    h.incoming = normalize(Vec3(0.2f, 1, 0));
+    const BounceSplit steep = bounce_split(view, h);
+    EXPECT_NEAR(steep.refract_weight.z, 0.5f * 0.9f, 1e-6);
+    EXPECT_NEAR(steep.reflect_weight.x, 0.5f * 0.7f, 1e-6);
+    // Grazing (past asin(1 / 1.1), 65 degrees from the normal): all of it comes back.
+    h.incoming = normalize(Vec3(3, 1, 0));
+    const BounceSplit grazing = bounce_split(view, h);
+    EXPECT_EQ(max_component(grazing.refract_weight), 0.0f);
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(grazing.reflect_weight[c], 0.5f);
+}
+
+} // namespace
+} // namespace sheaf

@@ -40,7 +40,8 @@ SHEAF_HD_INLINE void clip_spans(const SpanList& base, const SpanList& clip, Span
 
 } // namespace analytic_detail
 
-SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const Ray& ray);
+SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const Ray& ray,
+                                   bool solid = false);
 
 /// The surfaces of `node` inside `clip` (POV-Ray's clipped_by): a union keeps every member's
 /// surface, its inner ones too (POV-Ray's union, unlike merge, has them), so a clipped union
@@ -56,8 +57,12 @@ SHEAF_HD inline void clipped_surfaces(const SceneView& scene, uint32_t node, con
     analytic_detail::clip_spans(csg_spans(scene, node, ray), clip, out);
 }
 
-/// The spans of the ray inside CSG node `node` (recursive over the node's children).
-SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const Ray& ray) {
+/// The spans of the ray inside CSG node `node` (recursive over the node's children). A clipped
+/// object (an open surface) has spans of zero length at its surfaces; `solid` gives instead
+/// the stretches inside it, as POV-Ray's inside test has them (inside the object and every
+/// clipping object), which its interior fades.
+SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const Ray& ray,
+                                   bool solid) {
     using namespace analytic_detail;
     const PreparedCsgNode& n = scene.csg[node];
     SpanList out;
@@ -65,7 +70,10 @@ SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const 
         SpanList clip = csg_spans(scene, scene.csg_children[n.first + 1], ray);
         for (uint32_t c = 2; c < n.count; ++c)
             clip = span_intersection(clip, csg_spans(scene, scene.csg_children[n.first + c], ray));
-        clipped_surfaces(scene, scene.csg_children[n.first], ray, clip, out);
+        if (solid)
+            out = span_intersection(csg_spans(scene, scene.csg_children[n.first], ray, true), clip);
+        else
+            clipped_surfaces(scene, scene.csg_children[n.first], ray, clip, out);
         return n.inverse ? span_complement(out) : out;
     }
     if (n.op == CsgOp::Leaf) {
@@ -76,9 +84,9 @@ SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const 
             out.push({CsgEnd{spans[i].t0, n.first, spans[i].n0, false},
                       CsgEnd{spans[i].t1, n.first, spans[i].n1, false}});
     } else {
-        out = csg_spans(scene, scene.csg_children[n.first], ray);
+        out = csg_spans(scene, scene.csg_children[n.first], ray, solid);
         for (uint32_t c = 1; c < n.count; ++c) {
-            const SpanList next = csg_spans(scene, scene.csg_children[n.first + c], ray);
+            const SpanList next = csg_spans(scene, scene.csg_children[n.first + c], ray, solid);
             switch (n.op) {
             case CsgOp::Union:
             case CsgOp::Merge:

@@ -284,6 +284,47 @@ TEST(ProceduralRender, ShadowsThroughAnInverseSolidFade) {
     EXPECT_TRUE(std::isfinite(under.x) && std::isfinite(under.y) && std::isfinite(under.z));
 }
 
+// A clipped object is an open surface, but its interior still fades the light that crosses
+// it, over the stretch inside it as POV-Ray's inside test has it (inside the object and its
+// clip): advanced/wineglass.pov's glass base darkens the floor under it. Here a transmitting
+// ball of radius 3 around the floor point, clipped to a column around it: the shadow ray
+// crosses its top surface 3 units above the floor, inside all the way down.
+TEST(ProceduralRender, ShadowsFadeInsideClippedObjects) {
+    auto floor_under_clipped = [](float fade_distance, float transmit) {
+        Scene s = lit_floor();
+        Material ball;
+        ball.fade_distance = fade_distance, ball.fade_power = 1;
+        Pigment pg;
+        pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = transmit;
+        s.pigments.push_back(pg);
+        ball.pigment = 0;
+        ball.fresnel_split = false;
+        const uint32_t mb = s.add_material(ball);
+        ShapeObject o;
+        o.name = "clipped ball";
+        CsgNode clip;
+        clip.op = CsgOp::Clip;
+        clip.children = {1, 2};
+        CsgNode sphere;
+        sphere.shape = Shape{ShapeKind::Sphere};
+        sphere.material = mb;
+        sphere.transform = Affine::translate(Vec3(0, -1, 0)) * Affine::scale(Vec3(3));
+        CsgNode column;
+        column.shape = Shape{ShapeKind::Box};
+        column.material = mb;
+        column.transform = Affine::scale(Vec3(0.5f, 5, 0.5f));
+        o.nodes = {clip, sphere, column};
+        o.root = 0;
+        s.add_shape_object(o);
+        return floor_under(s).x;
+    };
+    const float dark = floor_under_clipped(0, 0); // opaque: ambient only
+    const float clear = floor_under_clipped(0, 1) - dark;
+    ASSERT_GT(clear, 0.0f);
+    // 1 / (1 + 3 / 1) of the light after 3 units inside.
+    EXPECT_NEAR((floor_under_clipped(1, 1) - dark) / clear, 0.25f, 0.01f);
+}
+
 } // namespace
 } // namespace sheaf
 

@@ -45,6 +45,16 @@ SHEAF_HD_INLINE Vec3 surface_pass(const SceneView& scene, uint32_t material, Vec
     return pass;
 }
 
+// The interior fade over the stretch of `span` inside the ray's (tmin, tmax): its entering
+// surface's interior (a span of an `inverse` solid may start or end at no surface, marked
+// 0xFFFFFFFF).
+SHEAF_HD_INLINE Vec3 span_fade(const SceneView& scene, const CsgSpan& span, const Ray& ray) {
+    const uint32_t leaf = span.a.leaf != 0xFFFFFFFFu ? span.a.leaf : span.b.leaf;
+    const float inside = hdm::fminf(span.b.t, ray.tmax) - hdm::fmaxf(span.a.t, ray.tmin);
+    if (!(inside > 0) || leaf == 0xFFFFFFFFu) return Vec3(1.0f);
+    return interior_fade(scene.materials[scene.shape_material[leaf]], inside, true);
+}
+
 } // namespace shadow_detail
 
 /// Light a shadow ray keeps (per channel) crossing primitive `prim`, whose exact test found
@@ -75,10 +85,15 @@ SHEAF_HD_NOINLINE Vec3 shadow_pass(const SceneView& scene, uint32_t prim, const 
         }
         // The stretch inside the solid fades as its interior does (the entering surface's; a
         // span of an `inverse` solid may start or end at no surface, marked 0xFFFFFFFF).
-        const uint32_t leaf = span.a.leaf != 0xFFFFFFFFu ? span.a.leaf : span.b.leaf;
-        const float inside = hdm::fminf(span.b.t, ray.tmax) - hdm::fmaxf(span.a.t, ray.tmin);
-        if (inside > 0 && leaf != 0xFFFFFFFFu)
-            pass = pass * interior_fade(scene.materials[scene.shape_material[leaf]], inside, true);
+        pass = pass * shadow_detail::span_fade(scene, span, ray);
+    }
+    // A clipped object's surfaces are spans of zero length: its interior fades over the
+    // stretches inside it, as POV-Ray's inside test has them (advanced/wineglass.pov's base, a
+    // clipped cone of glass, darkens the floor under it).
+    if (scene.prim_flag(prim, kPrimOpen)) {
+        const SpanList solid = csg_spans(scene, scene.analytic_root[index], ray, true);
+        for (int i = 0; i < solid.n; ++i)
+            pass = pass * shadow_detail::span_fade(scene, solid.s[i], ray);
     }
     return pass;
 }

@@ -75,7 +75,11 @@ struct CameraFrame {
     /// camera normal, and a mesh camera's rays, need the scene: see camera_ray and primary_ray
     /// (core/shading/frame_kernels.h); here a mesh camera has none.
     SHEAF_HD bool camera_ray(int x, int y, Ray& r) const {
-        r.tmin = 0.0f;
+        // A surface through the eye itself is not seen (POV-Ray ignores hits nearer than
+        // 1e-4): a camera on a box's face looks into the box (interior/media/media1.pov).
+        // Rounding of the eye's coordinates, about 1e-7 of them, decides nothing then.
+        r.tmin = 1e-5f * hdm::fmaxf(1.0f, hdm::fmaxf(fabsf(origin.x),
+                                                     hdm::fmaxf(fabsf(origin.y), fabsf(origin.z))));
         r.tmax = FLT_MAX;
         r.origin = origin;
         if (!traced_projection(projection)) {

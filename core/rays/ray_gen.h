@@ -33,7 +33,10 @@ struct RayGenParams {
     float far = 1e4f; // beyond the scene: where parallel lights' shadow rays start
     int ao_samples = 0;
     float ao_distance = 1.0f;
-    float min_weight = 1e-3f;  // reflection/refraction/gather rays carrying less are not traced
+    float min_weight = 1e-3f; // reflection/refraction rays carrying less are not traced
+    // Gather rays carrying less are not traced. Fixed: a gathered path's weight is split
+    // among its rays, so the reflection bailout (POV-Ray's adc_bailout) would cut its bounces.
+    float gather_min_weight = 1e-3f;
     int radiosity_samples = 0; // gather rays per camera-path point (0: no radiosity)
     int radiosity_depth = 2;   // diffuse bounces of a gathered path
     float radiosity_brightness = 1.0f;
@@ -353,7 +356,8 @@ SHEAF_HD_INLINE uint32_t diffuse_ray_count(const SceneView& scene, const Surface
     const uint32_t depth = h.gather & 0xFFu;
     if (depth >= uint32_t(p.radiosity_depth)) return 0;
     const uint32_t n = depth == 0 ? uint32_t(p.radiosity_samples) : 1u;
-    if (!(max_component(raygen_detail::gather_weight(scene, h, 1, p)) > p.min_weight)) return 0;
+    if (!(max_component(raygen_detail::gather_weight(scene, h, 1, p)) > p.gather_min_weight))
+        return 0;
     return n;
 }
 

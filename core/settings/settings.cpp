@@ -103,7 +103,7 @@ const std::vector<SettingSpec>& setting_specs() {
          0,
          1,
          {},
-         "reflection, refraction and gather rays that would carry less than this share of a "
+         "reflection and refraction rays that would carry less than this share of a "
          "pixel's light are not traced (POV-Ray's adc_bailout; POV scenes take theirs, 1/255 "
          "by default)"},
         {"backend",

@@ -86,6 +86,20 @@ TEST(PovCamera, ShearedCameraIsALensShift) {
     EXPECT_NE(skew.warnings[0].find("right and up are not perpendicular"), std::string::npos);
 }
 
+// A camera on a face of a box looks into the box, as POV-Ray's does (it ignores hits nearer
+// than 1e-4): interior/media/media1.pov's camera stands on its room's front wall.
+TEST(PovCamera, ACameraOnAFaceLooksThroughIt) {
+    const PovResult r = load_text("camera { location <10, 6, -20> look_at <0, 5, 0> }\n"
+                                  "box { <-20, 0, -20>, <20, 20, 20> hollow }\n"
+                                  "sphere { <0, 5, 0>, 1 }\n");
+    const PreparedScene p = prepare_scene(r.scene);
+    const SceneView view(p);
+    const CameraFrame f = make_camera_frame(p.camera, 41, 31);
+    const uint64_t key = cast_analytic_pixel(view, f, 20, 15, kEmptyPixel);
+    ASSERT_NE(key, kEmptyPixel);
+    EXPECT_EQ(uint32_t(key), view.tri_count + 1); // the sphere, not the wall at the eye
+}
+
 TEST(PovCamera, DefaultAndOrthographic) {
     EXPECT_NEAR(load_text("").scene.camera.fov_y_degrees, 2 * std::atan(0.5) * 180 / M_PI, 1e-3);
     const PovResult r = load_text("camera { orthographic location <0, 0, -10> look_at 0 "

@@ -628,8 +628,13 @@ double build_scene(Parser& p, Scene& scene) {
     }
     if (scene.camera.lens_radius > 0) {
         // Focal blur takes its samples as anti-aliasing does: blur_samples (16 when not given).
-        scene.settings["aa.samples"] =
+        const std::string n =
             aa_samples_for(m.camera.blur_samples > 0 ? m.camera.blur_samples : 16);
+        scene.settings["aa.samples"] = n;
+        p.approximated(m.camera.aperture_at,
+                       "focal blur: every pixel takes " + n + " x " + n +
+                           " samples, where POV-Ray stops once its samples agree (confidence, "
+                           "variance): the blur's grain differs, and it takes longer");
     }
     if (m.radiosity) {
         scene.settings["radiosity.samples"] = std::to_string(m.radiosity_count);

@@ -29,7 +29,7 @@ sky_sphere { pigment { Bright_Blue_Sky } } // a pigment of textures.inc
 plane { y, 0 texture { T_Wood7 scale 2 rotate y * 90 } }
 
 // Three stone pedestals, their textures taken from an array.
-#declare Stones = array[3] { T_Stone8, T_Grnt9, T_Stone21 }
+#declare Stones = array[3] { T_Stone1, T_Grnt9, T_Stone21 }
 #declare Pedestal_X = array[3] { -3.1, 0, 3.1 }
 #for (I, 0, 2)
   box {

@@ -161,6 +161,7 @@ texture {
     color_map { [0.0 rgbt 1] [0.45 rgbt 1] [0.5 rgb <0.3, 0.15, 0.05>] [1.0 rgb <0.1, 0.05, 0.02>] }
     scale 0.09
   }
+  finish { Shiny } // lit as the base is (Sheaf lights a layered texture with one finish)
 })
 
 // ---- Front row ----

@@ -71,7 +71,8 @@ struct Material {
     float mirror_falloff = 1.0f;  //   (grazing) as (1 - cos)^falloff,
     bool mirror_fresnel = false;  //   or by Fresnel's law with `ior`
     bool mirror_metallic = false; // reflection tinted by the surface colour
-    bool conserve_energy = false; // diffuse and transmission keep what reflection leaves
+    bool conserve_energy = false; // diffuse and transmission keep what reflection leaves,
+    bool conserve_diffuse = true; //   the diffuse only where this is set (POV-Ray: transmission)
     bool fresnel_split = true;    // transmission splits into reflection and refraction by Fresnel
                                   // (POV-Ray: reflection only from the finish)
     Vec3 fade_color{0.0f, 0.0f, 0.0f};             // light inside fades to this colour:

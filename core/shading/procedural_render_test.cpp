@@ -356,6 +356,20 @@ TEST(ProceduralShading, MetallicReflectionFollowsPovRaysFresnelTerm) {
     EXPECT_NEAR(mirror_weight(m, h).x, 0.8f, 1e-6f);
 }
 
+// conserve_energy takes what the mirror reflects from the diffuse too (Sheaf's materials),
+// or, as POV-Ray's finishes do, from what passes through only (objects/mesh2.pov's opaque
+// floor, reflection 0.2 with conserve_energy, kept its brightness in povray).
+TEST(ProceduralShading, ConserveEnergyTakesTheMirrorsShareWhereAsked) {
+    Material m;
+    m.mirror = 0.25f, m.mirror_color = Vec3(1.0f), m.conserve_energy = true;
+    SurfaceHit h;
+    h.normal = Vec3(0, 0, 1), h.albedo = Vec3(1.0f), h.incoming = Vec3(0, 0, -1);
+    const Vec3 up(0, 0, 1);
+    EXPECT_NEAR(direct_light(m, h, up, Vec3(1.0f)).x, m.diffuse * 0.75f, 1e-6f);
+    m.conserve_diffuse = false; // POV-Ray's
+    EXPECT_NEAR(direct_light(m, h, up, Vec3(1.0f)).x, m.diffuse, 1e-6f);
+}
+
 TEST(ProceduralShading, FogAndFadeFollowPovRay) {
     Fogs fs;
     fs.count = 1;

@@ -79,7 +79,8 @@ SHEAF_HD_INLINE Vec3 direct_light(const Material& m, const SurfaceHit& h, Vec3 t
     const Vec3 n = h.normal;
     const float ndl = hdm::fmaxf(dot(n, to_light), 0.0f);
     float kd = m.diffuse * (m.brilliance == 1.0f ? ndl : hdm::powf(ndl, m.brilliance)) * opacity(h);
-    if (m.conserve_energy) kd *= hdm::fmaxf(0.0f, 1.0f - max_component(mirror_weight(m, h)));
+    if (m.conserve_energy && m.conserve_diffuse)
+        kd *= hdm::fmaxf(0.0f, 1.0f - max_component(mirror_weight(m, h)));
     Vec3 c = h.albedo * kd;
     float highlight = 0.0f;
     if (highlights && m.specular > 0) {

@@ -51,7 +51,8 @@ std::string key_of(const Material& m) {
                         &m.irid_wavelength.y,
                         &m.irid_wavelength.z};
     for (const float* v : f) k << *v << ',';
-    k << m.mirror_fresnel << m.mirror_metallic << m.conserve_energy << m.fresnel_split;
+    k << m.mirror_fresnel << m.mirror_metallic << m.conserve_energy << m.conserve_diffuse
+      << m.fresnel_split;
     return k.str();
 }
 
@@ -487,6 +488,9 @@ uint32_t MaterialBuilder::material_in(const PovTexture& t, const PovInterior* in
     }
     m.mirror_metallic = f.reflection_metallic;
     m.conserve_energy = f.conserve_energy;
+    // POV-Ray's conserve_energy takes what the mirror reflects from what passes through only
+    // (its filter colour); the diffuse stays (objects/mesh2.pov's floor).
+    m.conserve_diffuse = false;
     if (f.irid > 0) {
         m.irid = float(f.irid);
         m.irid_thickness = float(f.irid_thickness);

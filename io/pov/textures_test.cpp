@@ -502,6 +502,7 @@ TEST(PovTextures, FinishAndInterior) {
     EXPECT_TRUE(m.mirror_metallic);
     EXPECT_FLOAT_EQ(m.mirror_falloff, 3);
     EXPECT_TRUE(m.conserve_energy);
+    EXPECT_FALSE(m.conserve_diffuse); // POV-Ray's: from what passes through only
     EXPECT_FALSE(m.fresnel_split);
     EXPECT_FLOAT_EQ(m.ior, 1.33f);
     EXPECT_FLOAT_EQ(m.fade_distance, 2);

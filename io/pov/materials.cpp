@@ -95,6 +95,19 @@ const PovFinish& layer_finish(const PovTexture& t) {
     return t.below.front()->finish;
 }
 
+// Calls visit(layer, above) for a layered texture's layers from the top down, `above` the share
+// of light the layers above it let through (their colour maps' transparency averaged), while
+// that share is more than `reached`.
+template <class Visit> void for_layers(const PovTexture& t, double reached, Visit visit) {
+    double above = 1;
+    auto one = [&](const PovTexture& l) {
+        visit(l, above);
+        above *= std::clamp(mean_pass(l.pigment.get()), 0.0, 1.0);
+    };
+    one(t);
+    for (auto it = t.below.rbegin(); it != t.below.rend() && above > reached; ++it) one(**it);
+}
+
 } // namespace
 
 bool layers_lit_alike(const PovTexture& t) {
@@ -105,17 +118,12 @@ bool layers_lit_alike(const PovTexture& t) {
         return g;
     };
     const PovFinish first = lit(layer_finish(t));
-    double above = 1; // the share the layers above let through
-    auto differs = [&](const PovTexture& l) {
-        const double pass = std::clamp(mean_pass(l.pigment.get()), 0.0, 1.0);
-        const bool shows = above > 1e-3 && pass < 1 - 1e-3;
-        above *= pass;
-        return shows && !(lit(l.finish) == first);
-    };
-    if (differs(t)) return false;
-    for (auto it = t.below.rbegin(); it != t.below.rend(); ++it)
-        if (differs(**it)) return false;
-    return true;
+    bool alike = true;
+    for_layers(t, 1e-3, [&](const PovTexture& l, double) { // layers that some light reaches
+        const bool shows = mean_pass(l.pigment.get()) < 1 - 1e-3;
+        alike = alike && !(shows && !(lit(l.finish) == first));
+    });
+    return alike;
 }
 
 namespace {
@@ -128,20 +136,15 @@ namespace {
 PovFinish layer_reflection(const PovTexture& t, PovFinish f) {
     const PovFinish* form = nullptr;
     std::array<double, 3> sum{0, 0, 0}, sum_min{0, 0, 0};
-    double above = 1; // the share the layers above let through
-    auto add = [&](const PovTexture& l) {
+    for_layers(t, 1.0 / 255, [&](const PovTexture& l, double) {
         const PovFinish& lf = l.finish;
-        if (max3(lf.reflection) > 0 || max3(lf.reflection_min) > 0) {
-            if (!form) form = &lf;
-            for (int c = 0; c < 3; ++c) {
-                sum[c] += lf.reflection[c];
-                sum_min[c] += lf.reflection_variable ? lf.reflection_min[c] : lf.reflection[c];
-            }
+        if (!(max3(lf.reflection) > 0 || max3(lf.reflection_min) > 0)) return;
+        if (!form) form = &lf;
+        for (int c = 0; c < 3; ++c) {
+            sum[c] += lf.reflection[c];
+            sum_min[c] += lf.reflection_variable ? lf.reflection_min[c] : lf.reflection[c];
         }
-        above *= std::clamp(mean_pass(l.pigment.get()), 0.0, 1.0);
-    };
-    add(t);
-    for (auto it = t.below.rbegin(); it != t.below.rend() && above > 1.0 / 255; ++it) add(**it);
+    });
     if (!form) return f;
     f.reflection = sum;
     f.reflection_variable = form->reflection_variable;
@@ -163,8 +166,7 @@ struct Highlights {
 Highlights layer_highlights(const PovTexture& t) {
     Highlights h;
     bool phong_sized = false, specular_sized = false;
-    double above = 1; // the share the layers above let through
-    auto add = [&](const PovTexture& l) {
+    for_layers(t, 0, [&](const PovTexture& l, double above) {
         const PovFinish& f = l.finish;
         if (f.phong > 0) {
             h.phong += f.phong * above;
@@ -174,10 +176,7 @@ Highlights layer_highlights(const PovTexture& t) {
             h.specular += f.specular * above;
             if (!specular_sized) h.roughness = f.roughness, specular_sized = true;
         }
-        above *= std::clamp(mean_pass(l.pigment.get()), 0.0, 1.0);
-    };
-    add(t);
-    for (auto it = t.below.rbegin(); it != t.below.rend() && above > 0; ++it) add(**it);
+    });
     return h;
 }
 

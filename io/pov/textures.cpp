@@ -94,14 +94,26 @@ PovTextureRef Parser::parse_texture_layers(const PovTexture& base) {
 // or normal block that modifies them after the texture's transforms (texture { T_Stone1
 // pigment { rotate 90*z } }, interior/ballbox1.pov) adds its own after the texture's. Sheaf
 // keeps the texture's transforms in PovTexture::local, applied after the pigment's: such a
-// block is parsed with them applied, then they are taken out again. Whether that is needed
-// (the texture moved, by an invertible transform).
-static bool in_texture_space(const Affine& local) {
+// block is parsed with them applied, then they are taken out again (only where the texture
+// moved, by an invertible transform: elsewhere nothing changes, rounding included).
+static bool moved(const Affine& local) {
     const Affine none;
     bool identity = true;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) identity = identity && local.m[r][c] == none.m[r][c];
     return !identity && std::fabs(local.determinant()) > 1e-30f;
+}
+
+// `part` (a pigment or a normal, with its `local`) modified by parse(base) in the space of a
+// texture moved by `local`.
+template <class Part, class Parse>
+static std::shared_ptr<const Part> modify_in_texture_space(const Affine& local, const Part& part,
+                                                           Parse parse) {
+    Part base = part;
+    base.local = local * base.local;
+    auto out = std::make_shared<Part>(*parse(base));
+    out->local = local.inverse() * out->local;
+    return out;
 }
 
 PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close) {
@@ -176,32 +188,21 @@ PovTexture Parser::parse_texture_body(const PovTexture& base, const char* close)
         }
         advance();
         if (k == "pigment") {
-            if (!tx.pigment) {
-                tx.pigment = parse_pigment(PovPigment{});
-            } else {
-                const bool in_space = !tx.pigment->uv && in_texture_space(tx.local);
-                PovPigment base = *tx.pigment;
-                if (in_space) base.local = tx.local * base.local;
-                auto pg = std::make_shared<PovPigment>(*parse_pigment(base));
-                if (in_space) pg->local = tx.local.inverse() * pg->local;
-                tx.pigment = std::move(pg);
-            }
+            if (tx.pigment && !tx.pigment->uv && moved(tx.local))
+                tx.pigment = modify_in_texture_space(
+                    tx.local, *tx.pigment, [&](const PovPigment& b) { return parse_pigment(b); });
+            else
+                tx.pigment = parse_pigment(tx.pigment ? *tx.pigment : PovPigment{});
             if (modified_at.text.empty()) modified_at = t;
         } else if (k == "finish") {
             parse_finish(tx.finish);
             if (modified_at.text.empty()) modified_at = t;
         } else if (k == "normal") {
-            if (!tx.normal || !in_texture_space(tx.local)) {
+            if (tx.normal && moved(tx.local))
+                tx.normal = modify_in_texture_space( // parse_normal keeps a given base
+                    tx.local, *tx.normal, [&](const PovNormal& b) { return parse_normal(&b); });
+            else
                 tx.normal = parse_normal(tx.normal.get());
-            } else {
-                PovNormal base = *tx.normal;
-                base.local = tx.local * base.local;
-                if (auto parsed = parse_normal(&base)) {
-                    auto n = std::make_shared<PovNormal>(*parsed);
-                    n->local = tx.local.inverse() * n->local;
-                    tx.normal = std::move(n);
-                }
-            }
         } else if (k == "texture_map") {
             if (!tx.is_map) error_at(t, "texture_map needs a pattern before it");
             tx.map_entries = parse_texture_map();

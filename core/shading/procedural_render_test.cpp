@@ -174,6 +174,17 @@ Scene lit_floor() {
     return s;
 }
 
+// Material m with a white pigment that transmits `transmit`, lit as POV-Ray's finishes are
+// (reflection from the finish only), added to s.
+uint32_t white_glass(Scene& s, Material m, float transmit) {
+    Pigment pg;
+    pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = transmit;
+    s.pigments.push_back(pg);
+    m.pigment = int32_t(s.pigments.size() - 1);
+    m.fresnel_split = false;
+    return s.add_material(m);
+}
+
 // The floor right under the light (the look_at point) at 41 x 31, under crsh and brute, which
 // must give the same picture.
 Vec3 floor_under(const Scene& s) {
@@ -223,11 +234,6 @@ TEST(ProceduralRender, FakeCausticsBrightenLightThroughGlass) {
     auto floor_under_glass = [](bool slab, float caustics, bool bumpy, float transmit) {
         Scene s = lit_floor();
         Material glass;
-        Pigment pg;
-        pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = transmit;
-        s.pigments.push_back(pg);
-        glass.pigment = 0;
-        glass.fresnel_split = false;
         glass.caustics = caustics;
         if (bumpy) {
             Pattern bumps;
@@ -236,7 +242,7 @@ TEST(ProceduralRender, FakeCausticsBrightenLightThroughGlass) {
             s.normal_patterns.push_back({bumps, 1.0f});
             glass.normal = 0;
         }
-        const uint32_t mg = s.add_material(glass);
+        const uint32_t mg = white_glass(s, glass, transmit);
         if (slab) // off centre, so that the shadow ray misses the faces' diagonals
             s.add_mesh_object("slab", make_box(Vec3(-1, 0.9f, -0.7f), Vec3(1.3f, 1.1f, 1)), mg);
         else
@@ -265,12 +271,7 @@ TEST(ProceduralRender, ShadowsThroughAnInverseSolidFade) {
     Scene s = lit_floor();
     Material ball;
     ball.fade_distance = 4, ball.fade_power = 2, ball.fade_color = Vec3(0.5f);
-    Pigment pg;
-    pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = 1; // fully transmitting
-    s.pigments.push_back(pg);
-    ball.pigment = 0;
-    ball.fresnel_split = false;
-    const uint32_t mb = s.add_material(ball);
+    const uint32_t mb = white_glass(s, ball, 1); // fully transmitting
     ShapeObject o;
     o.name = "inverse ball";
     CsgNode leaf;
@@ -294,12 +295,7 @@ TEST(ProceduralRender, ShadowsFadeInsideClippedObjects) {
         Scene s = lit_floor();
         Material ball;
         ball.fade_distance = fade_distance, ball.fade_power = 1;
-        Pigment pg;
-        pg.color[0] = pg.color[1] = pg.color[2] = 1, pg.color[4] = transmit;
-        s.pigments.push_back(pg);
-        ball.pigment = 0;
-        ball.fresnel_split = false;
-        const uint32_t mb = s.add_material(ball);
+        const uint32_t mb = white_glass(s, ball, transmit);
         ShapeObject o;
         o.name = "clipped ball";
         CsgNode clip;

@@ -27,6 +27,16 @@ constexpr int kMaxCsgSpans = 16;
 struct SpanList {
     int n = 0;
     CsgSpan s[kMaxCsgSpans];
+    SHEAF_HD SpanList() {}
+    // Copies the n spans held, not the whole array: CSG trees copy lists at every node.
+    SHEAF_HD SpanList(const SpanList& o) : n(o.n) {
+        for (int i = 0; i < n; ++i) s[i] = o.s[i];
+    }
+    SHEAF_HD SpanList& operator=(const SpanList& o) {
+        n = o.n;
+        for (int i = 0; i < n; ++i) s[i] = o.s[i];
+        return *this;
+    }
     SHEAF_HD void push(const CsgSpan& span) {
         if (n < kMaxCsgSpans) s[n++] = span;
     }

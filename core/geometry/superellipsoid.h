@@ -32,17 +32,39 @@ SHEAF_HD_INLINE double value(const Exponents& k, double x, double y, double z) {
     return hdm::pow(s, k.b) + hdm::pow(fabs(z), k.c) - 1;
 }
 
-/// The crossing of f in [lo, hi], where f(lo) and f(hi) differ in sign.
-template <class F> SHEAF_HD_INLINE double bisect(const F& f, double lo, double hi) {
-    const bool lo_inside = f(lo) < 0;
+/// (f + 1)^(n/2) - 1, of f's sign: f + 1 grows as the distance from the centre to the power
+/// 2/n, so this gauge grows as the distance itself, near linearly along a ray, where f (powers
+/// up to 2/e and 2/n, 40 for a rounded box) is flat inside and steep at the surface.
+SHEAF_HD_INLINE double gauge(const Exponents& k, double half_n, double x, double y, double z) {
+    return hdm::pow(value(k, x, y, z) + 1, half_n) - 1;
+}
+
+/// The crossing of g in [lo, hi], where g(lo) and g(hi) differ in sign: regula falsi with the
+/// Illinois rule (the end that stays has its value halved), every fourth step a bisection,
+/// down to the same width as bisection alone; near-linear g takes a few steps.
+template <class F> SHEAF_HD_INLINE double bisect(const F& g, double lo, double hi) {
+    double glo = g(lo), ghi = g(hi);
+    const bool lo_inside = glo < 0;
+    int moved = 0; // the end moved last: -1 lo, 1 hi
     for (int it = 0; it < 80; ++it) {
         if (hi - lo <= 1e-9 * (1 + fabs(lo) + fabs(hi))) break; // far below a float's step
-        const double mid = 0.5 * (lo + hi);
+        double mid = 0.5 * (lo + hi);
+        if ((it & 3) != 3 && fabs(glo) < 1e300 && fabs(ghi) < 1e300 && glo != ghi) {
+            const double s = lo + (hi - lo) * (glo / (glo - ghi));
+            if (s > lo && s < hi) mid = s;
+        }
         if (mid <= lo || mid >= hi) break;
-        if ((f(mid) < 0) == lo_inside)
-            lo = mid;
-        else
-            hi = mid;
+        const double gm = g(mid);
+        if (fabs(gm) < 1e-13) return mid; // within 1e-13 of the radius: on the surface
+        if ((gm < 0) == lo_inside) {
+            lo = mid, glo = gm;
+            if (moved < 0) ghi *= 0.5;
+            moved = -1;
+        } else {
+            hi = mid, ghi = gm;
+            if (moved > 0) glo *= 0.5;
+            moved = 1;
+        }
     }
     return 0.5 * (lo + hi);
 }
@@ -107,12 +129,16 @@ SHEAF_HD_INLINE int superellipsoid_pieces(float e, float n, const Ray& r, double
     if (!(lo < hi)) return 0;
     const Exponents k = exponents(e, n);
     auto f = [&](double t) { return value(k, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t); };
+    const double half_n = 0.5 * double(n);
+    auto g = [&](double t) {
+        return gauge(k, half_n, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t);
+    };
     if (e <= 2 && n <= 2) { // convex: one minimum
         double fm;
         const double tm = golden_min(f, lo, hi, fm);
         if (!(fm < 0)) return 0;
-        t0[0] = f(lo) < 0 ? lo : bisect(f, lo, tm);
-        t1[0] = f(hi) < 0 ? hi : bisect(f, tm, hi);
+        t0[0] = f(lo) < 0 ? lo : bisect(g, lo, tm);
+        t1[0] = f(hi) < 0 ? hi : bisect(g, tm, hi);
         return 1;
     }
     // Not convex: f has cusps where the ray crosses a coordinate plane (|x|^p with p < 1), so
@@ -150,13 +176,13 @@ SHEAF_HD_INLINE int superellipsoid_pieces(float e, float n, const Ray& r, double
         for (int i = 1; i <= steps; ++i) {
             const double tb = i == steps ? b : a + (b - a) * i / steps, fb = f(tb);
             if ((fa < 0) != (fb < 0)) {
-                cross(bisect(f, ta, tb), fb < 0);
+                cross(bisect(g, ta, tb), fb < 0);
             } else if (fa >= 0 && fp >= 0 && fa < fp && fa < fb) {
                 double fm;
                 const double tm = golden_min(f, tp, tb, fm);
                 if (fm < 0) {
-                    cross(bisect(f, tp, tm), true);
-                    cross(bisect(f, tm, tb), false);
+                    cross(bisect(g, tp, tm), true);
+                    cross(bisect(g, tm, tb), false);
                 }
             }
             tp = ta, fp = fa, ta = tb, fa = fb;

@@ -12,6 +12,7 @@
 #include "core/base/device.h"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace sheaf::hdm {
@@ -19,8 +20,12 @@ namespace sheaf::hdm {
 /// Minimum and maximum of floats by comparison, the same bits on the host and the device:
 /// std::fminf/fmaxf may return either zero for +0 and -0 (glibc and the GPU's min and max
 /// instructions need not agree). A NaN argument gives the other one, as fminf/fmaxf do.
-SHEAF_HD_INLINE float fminf(float a, float b) { return (b < a || a != a) ? b : a; }
-SHEAF_HD_INLINE float fmaxf(float a, float b) { return (a < b || a != a) ? b : a; }
+SHEAF_HD_INLINE float fminf(float a, float b) {
+    return (b < a || a != a) ? b : a;
+}
+SHEAF_HD_INLINE float fmaxf(float a, float b) {
+    return (a < b || a != a) ? b : a;
+}
 
 /// floor(v) as an int, defined everywhere: a float to int conversion out of range is undefined
 /// in C++ (x86 gives INT_MIN, the GPU saturates, and NaN gives 0 there), so NaN and values
@@ -53,6 +58,37 @@ SHEAF_HD_INLINE double inf_value() {
 }
 SHEAF_HD_INLINE bool negative_sign(double x) {
     return x < 0 || (x == 0 && 1.0 / x < 0);
+}
+
+/// ldexp(p, k) for p in [0.5, 2): on the host, where the result is a normal number, p times
+/// 2^k made from its bits (exact, so ldexp's result), without the library call.
+SHEAF_HD_INLINE double ldexp_unit(double p, int k) {
+#ifndef __CUDA_ARCH__
+    if (k >= -1021 && k <= 1022) {
+        const unsigned long long bits = static_cast<unsigned long long>(k + 1023) << 52;
+        double scale;
+        std::memcpy(&scale, &bits, sizeof scale);
+        return p * scale;
+    }
+#endif
+    return ::ldexp(p, k);
+}
+
+/// frexp(x, &e) for positive finite x: on the host, for a normal x, from its bits.
+SHEAF_HD_INLINE double frexp_positive(double x, int* e) {
+#ifndef __CUDA_ARCH__
+    unsigned long long bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    const int field = int(bits >> 52) & 0x7FF;
+    if (field != 0) {
+        *e = field - 1022;
+        bits = (bits & 0x800FFFFFFFFFFFFFull) | (1022ull << 52);
+        double m;
+        std::memcpy(&m, &bits, sizeof m);
+        return m;
+    }
+#endif
+    return ::frexp(x, e);
 }
 
 /// sin r and cos r for |r| <= pi/4 (Taylor series to r^17 and r^18: error below 1e-16).
@@ -212,7 +248,7 @@ SHEAF_HD_INLINE double exp(double x) {
                                                                r * (2.08767569878681e-09 +
                                                                     r * (1.6059043836821613e-10 +
                                                                          r * 1.1470745597729725e-11)))))))))))));
-    return ::ldexp(p, int(k));
+    return detail::ldexp_unit(p, int(k));
 }
 
 SHEAF_HD_INLINE double log(double x) {
@@ -220,7 +256,7 @@ SHEAF_HD_INLINE double log(double x) {
     if (x == 0) return -detail::inf_value();
     if (x == detail::inf_value()) return x;
     int e;
-    double m = ::frexp(x, &e); // [0.5, 1)
+    double m = detail::frexp_positive(x, &e); // [0.5, 1)
     if (m < 0.7071067811865476) m *= 2.0, e -= 1;
     const double s = (m - 1.0) / (m + 1.0); // |s| <= 0.1716
     const double z = s * s;
@@ -247,7 +283,7 @@ SHEAF_HD_INLINE double log2(double x) {
 SHEAF_HD_INLINE double exp2(double x) {
     if (!(::fabs(x) < 2000.0)) return x != x ? x : x > 0 ? detail::inf_value() : 0.0;
     const double k = ::floor(x + 0.5); // x = k + f exactly, |f| <= 1/2
-    return ::ldexp(exp((x - k) * detail::kLn2), int(k));
+    return detail::ldexp_unit(exp((x - k) * detail::kLn2), int(k));
 }
 
 /// x^y with the C library's special cases for y = 0, x = 1, zero, negative and infinite x

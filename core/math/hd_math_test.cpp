@@ -87,6 +87,33 @@ TEST(HdMath, InverseTrigonometry) {
         }
 }
 
+// The host's ldexp and frexp from bits give the library's own results, subnormals included.
+TEST(HdMath, LdexpAndFrexpFromBitsAreTheLibrarys) {
+    std::mt19937 g(17);
+    std::uniform_real_distribution<double> unit(0.5, 2.0);
+    std::uniform_int_distribution<int> power(-1100, 1100);
+    for (int i = 0; i < 200000; ++i) {
+        const double p = unit(g);
+        const int k = power(g);
+        const double got = hdm::detail::ldexp_unit(p, k), want = std::ldexp(p, k);
+        ASSERT_TRUE(got == want || (std::isnan(got) && std::isnan(want))) << p << " " << k;
+    }
+    std::uniform_real_distribution<double> exponent(-1070, 1020);
+    for (int i = 0; i < 200000; ++i) {
+        const double x = std::exp2(exponent(g)) * unit(g);
+        int e1 = 0, e2 = 0;
+        const double m1 = hdm::detail::frexp_positive(x, &e1), m2 = std::frexp(x, &e2);
+        ASSERT_EQ(m1, m2) << x;
+        ASSERT_EQ(e1, e2) << x;
+    }
+    for (double x : {4.9e-324, 2.2250738585072014e-308, 2.2250738585072009e-308, 1.0, 0.5,
+                     1.7976931348623157e308}) {
+        int e1 = 0, e2 = 0;
+        EXPECT_EQ(hdm::detail::frexp_positive(x, &e1), std::frexp(x, &e2)) << x;
+        EXPECT_EQ(e1, e2) << x;
+    }
+}
+
 TEST(HdMath, ExpLogPow) {
     std::mt19937 g(13);
     std::uniform_real_distribution<float> e(-80.0f, 80.0f), base(0.0f, 4.0f), power(-40.0f, 40.0f);

@@ -130,82 +130,99 @@ WorldBox cube(const Sphere& s) {
 
 } // namespace
 
-WorldBox csg_box(const PreparedScene& scene, uint32_t node) {
+namespace {
+
+struct NodeBounds {
+    Sphere sphere; // csg_bound
+    WorldBox box;  // csg_box
+};
+
+/// The bounds of `node`, each node of its subtree computed once; `nodes` (scene.csg's own
+/// array, when given) receives every one's box.
+NodeBounds node_bounds(const PreparedScene& scene, uint32_t node, PreparedCsgNode* nodes) {
     const PreparedCsgNode& n = scene.csg[node];
-    const WorldBox around = cube(csg_bound(scene, node));
-    if (n.inverse) return WorldBox();
+    NodeBounds out;
     if (n.op == CsgOp::Leaf) {
         const PlacedShape& ps = scene.shapes[n.first];
         const Affine to_world = ps.to_local.inverse();
+        const Sphere l = local_bound(scene, ps.shape);
+        out.sphere = l;
+        if (std::isfinite(l.radius)) {
+            const Vec3 c = to_world.point(l.center);
+            out.sphere = {c, pad_radius(l.radius * to_world.max_scale(), c)};
+        }
         if (ps.shape.kind == ShapeKind::Plane) {
             // The half-space z <= 0: bounded on one side where its normal lies along an axis
             // (POV-Ray's plane { y, 5 }), which an intersection of such planes makes a box.
             const Vec3 nz = to_world.vector(Vec3(0, 0, 1)), p0 = to_world.point(Vec3(0.0f));
-            WorldBox b;
             for (int k = 0; k < 3; ++k) {
                 const float along = nz[k], len = length(nz);
                 if (!(std::fabs(along) >= len * (1 - 1e-6f))) continue;
                 const float pad = 1e-5f * (std::fabs(p0[k]) + 1);
                 if (along > 0)
-                    b.hi[k] = p0[k] + pad; // inside below the plane along +axis k
+                    out.box.hi[k] = p0[k] + pad; // inside below the plane along +axis k
                 else
-                    b.lo[k] = p0[k] - pad;
+                    out.box.lo[k] = p0[k] - pad;
             }
-            return b;
+        } else if (Vec3 lo, hi; local_box(scene, ps.shape, lo, hi)) {
+            WorldBox b;
+            b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);
+            for (int c = 0; c < 8; ++c) {
+                const Vec3 p = to_world.point(
+                    Vec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
+                b.lo = vmin(b.lo, p), b.hi = vmax(b.hi, p);
+            }
+            // Padded as pad_radius pads a sphere: the box of rounded corners holds the solid.
+            const Vec3 pad = (vmax(vabs(b.lo), vabs(b.hi)) + (b.hi - b.lo)) * 1e-5f;
+            b.lo = b.lo - pad, b.hi = b.hi + pad;
+            out.box = meet(b, cube(out.sphere));
         }
-        Vec3 lo, hi;
-        if (!local_box(scene, ps.shape, lo, hi)) return WorldBox();
-        WorldBox b;
-        b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);
-        for (int c = 0; c < 8; ++c) {
-            const Vec3 p =
-                to_world.point(Vec3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z));
-            b.lo = vmin(b.lo, p), b.hi = vmax(b.hi, p);
+    } else {
+        std::vector<NodeBounds> kids;
+        for (uint32_t c = 0; c < n.count; ++c)
+            kids.push_back(node_bounds(scene, scene.csg_children[n.first + c], nodes));
+        if (n.op == CsgOp::Difference) { // inside the first child
+            out = kids[0];
+        } else if (n.op == CsgOp::Intersection || n.op == CsgOp::Clip) {
+            out.sphere = kids[0].sphere; // inside every child: the smallest sphere bounds it
+            for (const NodeBounds& k : kids)
+                if (k.sphere.radius < out.sphere.radius) out.sphere = k.sphere;
+            WorldBox b = cube(out.sphere);
+            for (const NodeBounds& k : kids) b = meet(b, k.box);
+            out.box = padded(b);
+        } else {
+            bool bounded = true;
+            std::vector<Sphere> spheres;
+            for (const NodeBounds& k : kids) {
+                bounded = bounded && std::isfinite(k.sphere.radius);
+                spheres.push_back(k.sphere);
+            }
+            out.sphere = bounded ? sphere_union(spheres.data(), int(spheres.size()))
+                                 : Sphere{Vec3(0.0f), INFINITY};
+            WorldBox b;
+            b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);
+            for (const NodeBounds& k : kids)
+                b.lo = vmin(b.lo, k.box.lo), b.hi = vmax(b.hi, k.box.hi);
+            out.box = meet(b, cube(out.sphere));
         }
-        // Padded as pad_radius pads a sphere: the box of rounded corners holds the solid.
-        const Vec3 pad = (vmax(vabs(b.lo), vabs(b.hi)) + (b.hi - b.lo)) * 1e-5f;
-        b.lo = b.lo - pad, b.hi = b.hi + pad;
-        return meet(b, around);
     }
-    std::vector<WorldBox> kids;
-    for (uint32_t c = 0; c < n.count; ++c)
-        kids.push_back(csg_box(scene, scene.csg_children[n.first + c]));
-    if (n.op == CsgOp::Difference) return meet(kids[0], around); // inside the first child
-    if (n.op == CsgOp::Intersection || n.op == CsgOp::Clip) {
-        WorldBox b = around; // inside every child
-        for (const WorldBox& k : kids) b = meet(b, k);
-        return padded(b);
-    }
-    WorldBox b;
-    b.lo = Vec3(INFINITY), b.hi = Vec3(-INFINITY);
-    for (const WorldBox& k : kids) b.lo = vmin(b.lo, k.lo), b.hi = vmax(b.hi, k.hi);
-    return meet(b, around);
+    if (n.inverse) out = NodeBounds{{Vec3(0.0f), INFINITY}, WorldBox()};
+    if (nodes) nodes[node].box = out.box;
+    return out;
+}
+
+} // namespace
+
+WorldBox csg_box(const PreparedScene& scene, uint32_t node) {
+    return node_bounds(scene, node, nullptr).box;
 }
 
 Sphere csg_bound(const PreparedScene& scene, uint32_t node) {
-    const PreparedCsgNode& n = scene.csg[node];
-    if (n.inverse) return {Vec3(0.0f), INFINITY};
-    if (n.op == CsgOp::Leaf) {
-        const PlacedShape& ps = scene.shapes[n.first];
-        const Sphere l = local_bound(scene, ps.shape);
-        if (!std::isfinite(l.radius)) return l;
-        const Affine to_world = ps.to_local.inverse();
-        const Vec3 c = to_world.point(l.center);
-        return {c, pad_radius(l.radius * to_world.max_scale(), c)};
-    }
-    std::vector<Sphere> kids;
-    for (uint32_t c = 0; c < n.count; ++c)
-        kids.push_back(csg_bound(scene, scene.csg_children[n.first + c]));
-    if (n.op == CsgOp::Difference) return kids[0]; // inside the first child
-    if (n.op == CsgOp::Intersection || n.op == CsgOp::Clip) {
-        Sphere best = kids[0]; // inside every child: the smallest one bounds it
-        for (const Sphere& k : kids)
-            if (k.radius < best.radius) best = k;
-        return best;
-    }
-    for (const Sphere& k : kids)
-        if (!std::isfinite(k.radius)) return {Vec3(0.0f), INFINITY};
-    return sphere_union(kids.data(), int(kids.size()));
+    return node_bounds(scene, node, nullptr).sphere;
+}
+
+Sphere set_csg_boxes(PreparedScene& scene, uint32_t root) {
+    return node_bounds(scene, root, scene.csg.data()).sphere;
 }
 
 } // namespace sheaf

@@ -66,6 +66,8 @@ SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const 
     using namespace analytic_detail;
     const PreparedCsgNode& n = scene.csg[node];
     SpanList out;
+    // A line that misses the node's box has no spans in it (an inverse node's box is infinite).
+    if (!line_meets_box(n.box, ray.origin, ray.dir)) return out;
     if (n.op == CsgOp::Clip) {
         SpanList clip = csg_spans(scene, scene.csg_children[n.first + 1], ray);
         for (uint32_t c = 2; c < n.count; ++c)
@@ -85,7 +87,9 @@ SHEAF_HD inline SpanList csg_spans(const SceneView& scene, uint32_t node, const 
                       CsgEnd{spans[i].t1, n.first, spans[i].n1, false}});
     } else {
         out = csg_spans(scene, scene.csg_children[n.first], ray, solid);
-        for (uint32_t c = 1; c < n.count; ++c) {
+        // Once nothing is left of an intersection or a difference, the rest cannot add to it.
+        const bool narrows = n.op == CsgOp::Intersection || n.op == CsgOp::Difference;
+        for (uint32_t c = 1; c < n.count && !(narrows && out.n == 0); ++c) {
             const SpanList next = csg_spans(scene, scene.csg_children[n.first + c], ray, solid);
             switch (n.op) {
             case CsgOp::Union:
@@ -134,6 +138,10 @@ Sphere csg_bound(const PreparedScene& scene, uint32_t node);
 /// csg_bound (a shape's own box through its transform, CSG combined as csg_bound does);
 /// infinite where that is. Host only (scene preparation: the BVH's boxes).
 WorldBox csg_box(const PreparedScene& scene, uint32_t node);
+
+/// Sets the box of every node of root's tree (PreparedCsgNode::box, csg_box's), each node
+/// computed once; returns root's csg_bound. Host only (scene preparation).
+Sphere set_csg_boxes(PreparedScene& scene, uint32_t root);
 
 /// Placed shape of a leaf: world <-> local transforms from the leaf's world transform.
 PlacedShape place_shape(const Shape& shape, const Affine& local_to_world);

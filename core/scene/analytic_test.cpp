@@ -18,6 +18,16 @@ Affine place(Vec3 t, float s) {
     return Affine::translate(t) * Affine::scale(Vec3(s));
 }
 
+// A ray from a random point within `from` of the origin towards one within `to` of it.
+Ray random_ray(std::mt19937& g, float from, float to) {
+    std::uniform_real_distribution<float> u(-1, 1);
+    Ray r;
+    r.origin = Vec3(u(g), u(g), u(g)) * from;
+    r.dir = normalize(Vec3(u(g), u(g), u(g)) * to - r.origin);
+    r.tmin = 0, r.tmax = 1e30f;
+    return r;
+}
+
 // A sphere minus a box, intersected with a slab, plus a torus: one object.
 ShapeObject csg_object(uint32_t m0, uint32_t m1) {
     ShapeObject o;
@@ -78,13 +88,9 @@ PreparedScene csg_scene() {
 TEST(Analytic, CsgSpansMatchMembership) {
     const PreparedScene scene = csg_scene();
     std::mt19937 g(3);
-    std::uniform_real_distribution<float> u(-1, 1);
     int hits = 0;
     for (int k = 0; k < 300; ++k) {
-        Ray r;
-        r.origin = Vec3(u(g), u(g), u(g)) * 4.0f;
-        r.dir = normalize(Vec3(u(g), u(g), u(g)) * 0.8f - r.origin);
-        r.tmin = 0, r.tmax = 1e30f;
+        const Ray r = random_ray(g, 4.0f, 0.8f);
         const SpanList spans = csg_spans(scene, scene.analytic_root[0], r);
         hits += spans.n > 0;
         for (float t = 0; t < 8; t += 0.005f) {
@@ -107,20 +113,76 @@ TEST(Analytic, CsgSpansMatchMembership) {
     EXPECT_GT(hits, 50);
 }
 
+// The nodes' boxes only skip what has no spans: with every box made infinite (nothing
+// skipped), random rays give the very same spans, on a tree of many small members.
+TEST(Analytic, NodeBoxesSkipOnlyWhatTheLineMisses) {
+    Scene s;
+    const uint32_t m = s.add_material(Material{});
+    ShapeObject o;
+    o.name = "many";
+    o.nodes.resize(1);
+    o.nodes[0].op = CsgOp::Union;
+    std::mt19937 g(5);
+    std::uniform_real_distribution<float> u(-1, 1);
+    for (int i = 0; i < 12; ++i) { // a union of differences of a box and a sphere, or spheres
+        const uint32_t at = uint32_t(o.nodes.size());
+        o.nodes[0].children.push_back(at);
+        const Vec3 c(u(g) * 2, u(g) * 2, u(g) * 2);
+        if (i % 2 == 0) {
+            o.nodes.resize(at + 3);
+            o.nodes[at].op = i % 4 == 0 ? CsgOp::Difference : CsgOp::Intersection;
+            o.nodes[at].children = {at + 1, at + 2};
+            o.nodes[at + 1].shape = {ShapeKind::Box}, o.nodes[at + 1].material = m;
+            o.nodes[at + 1].transform = place(c, 0.3f);
+            o.nodes[at + 2].shape = {ShapeKind::Sphere}, o.nodes[at + 2].material = m;
+            o.nodes[at + 2].transform = place(c + Vec3(0.2f, 0, 0), 0.35f);
+            o.nodes[at + 2].inverse = i % 3 == 0;
+        } else {
+            o.nodes.resize(at + 1);
+            o.nodes[at].shape = {ShapeKind::Sphere}, o.nodes[at].material = m;
+            o.nodes[at].transform = place(c, 0.25f);
+        }
+    }
+    s.add_shape_object(o);
+    s.add_shape_object(csg_object(m, m));
+    const PreparedScene boxed = prepare_scene(s);
+    PreparedScene open = boxed;
+    int skipped = 0;
+    for (PreparedCsgNode& n : open.csg) {
+        skipped += std::isfinite(n.box.lo.x);
+        n.box = WorldBox();
+    }
+    EXPECT_GT(skipped, 20); // the members have finite boxes
+    int hits = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const Ray r = random_ray(g, 5.0f, 2.0f);
+        for (uint32_t a = 0; a < boxed.analytic_root.size(); ++a)
+            for (bool solid : {false, true}) {
+                const SpanList want = csg_spans(open, open.analytic_root[a], r, solid);
+                const SpanList got = csg_spans(boxed, boxed.analytic_root[a], r, solid);
+                ASSERT_EQ(got.n, want.n) << "ray " << k << " object " << a;
+                for (int i = 0; i < got.n; ++i) {
+                    ASSERT_EQ(got.s[i].a.t, want.s[i].a.t) << "ray " << k;
+                    ASSERT_EQ(got.s[i].b.t, want.s[i].b.t) << "ray " << k;
+                    ASSERT_EQ(got.s[i].a.leaf, want.s[i].a.leaf) << "ray " << k;
+                    ASSERT_EQ(got.s[i].b.leaf, want.s[i].b.leaf) << "ray " << k;
+                }
+                hits += got.n > 0;
+            }
+    }
+    EXPECT_GT(hits, 500);
+}
+
 // Every hit of random rays lies in the object's sphere and in its box (csg_box).
 void expect_bounds_hold(const PreparedScene& scene, const std::string& what) {
     std::mt19937 g(4);
-    std::uniform_real_distribution<float> u(-1, 1);
     ASSERT_EQ(scene.analytic_box.size(), scene.analytic_root.size());
     for (uint32_t a = 0; a < scene.analytic_root.size(); ++a) {
         const Sphere& s = scene.prim_sphere[scene.tris.size() + a];
         const WorldBox& b = scene.analytic_box[a];
         int hits = 0;
         for (int k = 0; k < 4000; ++k) {
-            Ray r;
-            r.origin = Vec3(u(g), u(g), u(g)) * 5.0f;
-            r.dir = normalize(Vec3(u(g), u(g), u(g)) * 2.0f - r.origin);
-            r.tmin = 0, r.tmax = 1e30f;
+            const Ray r = random_ray(g, 5.0f, 2.0f);
             AnalyticHit h;
             if (!analytic_first_hit(scene, a, r, h)) continue;
             ++hits;

@@ -291,8 +291,8 @@ PreparedScene prepare_scene(const Scene& scene) {
         const uint32_t root = base + obj.root;
         if (holds_media) p.media_containers.push_back(uint32_t(p.analytic_root.size()));
         p.analytic_root.push_back(root);
-        Sphere bound = csg_bound(p, root);
-        WorldBox box = csg_box(p, root);
+        Sphere bound = set_csg_boxes(p, root);
+        WorldBox box = p.csg[root].box;
         // bounded_by: its box where it meets the object's own (parts apart: a point), and the
         // sphere around it where that is smaller.
         const WorldBox& given = obj.bound;

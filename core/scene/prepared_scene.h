@@ -28,11 +28,14 @@ struct TriangleNormals {
 };
 
 /// A CSG node in flat arrays: a leaf names its placed shape in `first`; an operation owns
-/// csg_children[first, first + count).
+/// csg_children[first, first + count). `box` holds the node's solid (csg_box; infinite where
+/// unbounded): a ray whose line misses it has no spans in the node, so csg_spans skips it, as
+/// POV-Ray tests a CSG member's bounding box before the member.
 struct PreparedCsgNode {
     CsgOp op = CsgOp::Leaf;
     bool inverse = false;
     uint32_t first = 0, count = 0;
+    WorldBox box;
 };
 
 /// A prim_flags bit beside the ObjectFlag ones: a material of the primitive may let light

@@ -35,15 +35,17 @@ SHEAF_HD_INLINE double value(const Exponents& k, double x, double y, double z) {
 /// (f + 1)^(n/2) - 1, of f's sign: f + 1 grows as the distance from the centre to the power
 /// 2/n, so this gauge grows as the distance itself, near linearly along a ray, where f (powers
 /// up to 2/e and 2/n, 40 for a rounded box) is flat inside and steep at the surface.
-SHEAF_HD_INLINE double gauge(const Exponents& k, double half_n, double x, double y, double z) {
-    return hdm::pow(value(k, x, y, z) + 1, half_n) - 1;
+SHEAF_HD_INLINE double gauge(double f, double half_n) {
+    return hdm::pow(f + 1, half_n) - 1;
 }
 
-/// The crossing of g in [lo, hi], where g(lo) and g(hi) differ in sign: regula falsi with the
-/// Illinois rule (the end that stays has its value halved), every fourth step a bisection,
-/// down to the same width as bisection alone; near-linear g takes a few steps.
-template <class F> SHEAF_HD_INLINE double bisect(const F& g, double lo, double hi) {
-    double glo = g(lo), ghi = g(hi);
+/// The crossing of g in [lo, hi], where g(lo) = glo and g(hi) = ghi differ in sign: regula
+/// falsi with the Illinois rule (the end that stays has its value halved), every fourth step a
+/// bisection, down to the same width as bisection alone; near-linear g takes a few steps.
+template <class F>
+SHEAF_HD_INLINE double bisect(const F& g, double lo, double hi, double glo, double ghi) {
+    if (glo == 0) return lo; // on the surface (a rounded box's face lies on its box's)
+    if (ghi == 0) return hi;
     const bool lo_inside = glo < 0;
     int moved = 0; // the end moved last: -1 lo, 1 hi
     for (int it = 0; it < 80; ++it) {
@@ -130,15 +132,18 @@ SHEAF_HD_INLINE int superellipsoid_pieces(float e, float n, const Ray& r, double
     const Exponents k = exponents(e, n);
     auto f = [&](double t) { return value(k, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t); };
     const double half_n = 0.5 * double(n);
-    auto g = [&](double t) {
-        return gauge(k, half_n, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t);
+    auto g = [&](double t) { return gauge(f(t), half_n); };
+    // The crossing between t0 and t1, where f is f0 and f1.
+    auto crossing = [&](double t0, double t1, double f0, double f1) {
+        return bisect(g, t0, t1, gauge(f0, half_n), gauge(f1, half_n));
     };
     if (e <= 2 && n <= 2) { // convex: one minimum
         double fm;
         const double tm = golden_min(f, lo, hi, fm);
         if (!(fm < 0)) return 0;
-        t0[0] = f(lo) < 0 ? lo : bisect(g, lo, tm);
-        t1[0] = f(hi) < 0 ? hi : bisect(g, tm, hi);
+        const double flo = f(lo), fhi = f(hi);
+        t0[0] = flo < 0 ? lo : crossing(lo, tm, flo, fm);
+        t1[0] = fhi < 0 ? hi : crossing(tm, hi, fm, fhi);
         return 1;
     }
     // Not convex: f has cusps where the ray crosses a coordinate plane (|x|^p with p < 1), so
@@ -176,13 +181,13 @@ SHEAF_HD_INLINE int superellipsoid_pieces(float e, float n, const Ray& r, double
         for (int i = 1; i <= steps; ++i) {
             const double tb = i == steps ? b : a + (b - a) * i / steps, fb = f(tb);
             if ((fa < 0) != (fb < 0)) {
-                cross(bisect(g, ta, tb), fb < 0);
+                cross(crossing(ta, tb, fa, fb), fb < 0);
             } else if (fa >= 0 && fp >= 0 && fa < fp && fa < fb) {
                 double fm;
                 const double tm = golden_min(f, tp, tb, fm);
                 if (fm < 0) {
-                    cross(bisect(g, tp, tm), true);
-                    cross(bisect(g, tm, tb), false);
+                    cross(crossing(tp, tm, fp, fm), true);
+                    cross(crossing(tm, tb, fm, fb), false);
                 }
             }
             tp = ta, fp = fa, ta = tb, fa = fb;

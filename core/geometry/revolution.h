@@ -147,6 +147,14 @@ SHEAF_HD_NOINLINE int revolution_pieces(const RevolutionRef& g, const Revolution
         widen_to_segment(sg, sq, wmax2, hlo, hhi);
         // Wholly nearer the axis than the ray ever comes: F > 0 all along, no crossing.
         if (wmax2 < r0sq * (1 - 1e-9)) continue;
+        // Within the segment's radius only along a stretch of the ray whose heights miss the
+        // segment's: no crossing (most segments of a tall profile, for a ray across it).
+        if (!level && A > 1e-4 * len2) {
+            const double u_near = -B / (2 * A), half = sqrt(fmax(0.0, wmax2 - r0sq) / A);
+            const double zc = pz + dz * u_near, reach = fabs(dz) * half;
+            const double room = 1e-7 * (1 + fabs(zc) + reach + fabs(hlo) + fabs(hhi));
+            if (zc + reach < hlo - room || zc - reach > hhi + room) continue;
+        }
         double wc[4], hc[4];
         power_basis(sg.w, sg.wdeg, wc);
         power_basis(sg.h, sg.hdeg, hc);

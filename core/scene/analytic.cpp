@@ -1,5 +1,7 @@
 #include "core/scene/analytic.h"
 
+#include "core/geometry/quadric_bounds.h"
+
 #include <cmath>
 
 namespace sheaf {
@@ -189,6 +191,16 @@ NodeBounds node_bounds(const PreparedScene& scene, uint32_t node, PreparedCsgNod
                 if (k.sphere.radius < out.sphere.radius) out.sphere = k.sphere;
             WorldBox b = cube(out.sphere);
             for (const NodeBounds& k : kids) b = meet(b, k.box);
+            // A quadric member (unbounded, as shapes.inc's) bounded by what the others leave.
+            for (uint32_t c = 0; c < n.count; ++c) {
+                const PreparedCsgNode& kid = scene.csg[scene.csg_children[n.first + c]];
+                if (kid.op != CsgOp::Leaf || kid.inverse) continue;
+                const PlacedShape& ps = scene.shapes[kid.first];
+                WorldQuadric w;
+                if (ps.shape.kind == ShapeKind::Poly &&
+                    world_quadric(scene.polys[ps.shape.index], ps.to_local, w))
+                    narrow_by_quadric(w, b);
+            }
             out.box = padded(b);
         } else {
             bool bounded = true;

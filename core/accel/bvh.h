@@ -55,8 +55,8 @@ struct Bvh {
     int depth = 0; // levels of nodes, the root's counted
 
     BvhView view() const {
-        return {nodes.data(), prims.data(), unbounded.data(), uint32_t(nodes.size()),
-                uint32_t(prims.size()), uint32_t(unbounded.size())};
+        return {nodes.data(),           prims.data(),           unbounded.data(),
+                uint32_t(nodes.size()), uint32_t(prims.size()), uint32_t(unbounded.size())};
     }
     /// Bytes of hierarchy (nodes and leaf lists) beside the scene's own arrays.
     size_t bytes() const {
@@ -71,6 +71,10 @@ struct Bvh {
 /// ranges with analytic shapes, and every range when `chunk` is 0: leaves of at most 8, where
 /// the heuristic finds them cheaper than a split.
 Bvh build_bvh(const PreparedScene& scene, uint32_t chunk = 0);
+
+/// A BVH over the primitives `prims` of `scene` only (ids into the scene's primitives, which
+/// its leaves and `unbounded` list), as build_bvh builds it.
+Bvh build_bvh_over(const PreparedScene& scene, const std::vector<uint32_t>& prims);
 
 /// The scene's BVH, built on first use and kept with the scene (PreparedScene's cache) for
 /// every later frame, comparison and sweep.

@@ -88,27 +88,33 @@ bool finite_box(const Box& b) {
 class Builder {
   public:
     /// `chunk` > 0: every range of at most `chunk` triangles a leaf, every larger one split.
-    Builder(const PreparedScene& scene, Bvh& out, uint32_t chunk)
-        : scene_(scene), out_(out), chunk_(chunk) {}
+    /// `subset`: the primitives to hold (all of them when null).
+    Builder(const PreparedScene& scene, Bvh& out, uint32_t chunk,
+            const std::vector<uint32_t>* subset = nullptr)
+        : scene_(scene), out_(out), chunk_(chunk), subset_(subset) {}
 
     void run() {
         const uint32_t n = uint32_t(scene_.prim_count());
+        const uint32_t count = subset_ ? uint32_t(subset_->size()) : n;
+        const auto prim = [&](uint32_t k) { return subset_ ? (*subset_)[k] : k; };
         boxes_.resize(n);
         centers_.resize(n);
-        std::vector<uint8_t> bounded(n);
-        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 4096),
+        std::vector<uint8_t> bounded(count);
+        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 4096),
                           [&](const tbb::blocked_range<uint32_t>& r) {
-                              for (uint32_t p = r.begin(); p != r.end(); ++p) {
+                              for (uint32_t k = r.begin(); k != r.end(); ++k) {
+                                  const uint32_t p = prim(k);
                                   Box b = prim_box(p);
-                                  bounded[p] = finite_box(b) ? 1 : 0;
-                                  if (!bounded[p]) continue;
+                                  bounded[k] = finite_box(b) ? 1 : 0;
+                                  if (!bounded[k]) continue;
                                   b = padded(b);
                                   boxes_[p] = b;
                                   centers_[p] = (b.lo + b.hi) * 0.5f;
                               }
                           });
         std::vector<uint32_t>& order = out_.prims;
-        for (uint32_t p = 0; p < n; ++p) (bounded[p] ? order : out_.unbounded).push_back(p);
+        for (uint32_t k = 0; k < count; ++k)
+            (bounded[k] ? order : out_.unbounded).push_back(prim(k));
         if (order.empty()) return;
         Range all{0, uint32_t(order.size()), {}, {}};
         const Bin b = bin_whole(all);
@@ -394,6 +400,7 @@ class Builder {
     const PreparedScene& scene_;
     Bvh& out_;
     uint32_t chunk_;
+    const std::vector<uint32_t>* subset_ = nullptr;
     std::vector<Box> boxes_;
     std::vector<Vec3> centers_;
     std::unique_ptr<BvhNode[]> pool_;
@@ -416,6 +423,12 @@ std::shared_ptr<BvhCache> new_bvh_cache() {
 Bvh build_bvh(const PreparedScene& scene, uint32_t chunk) {
     Bvh bvh;
     Builder(scene, bvh, chunk).run();
+    return bvh;
+}
+
+Bvh build_bvh_over(const PreparedScene& scene, const std::vector<uint32_t>& prims) {
+    Bvh bvh;
+    Builder(scene, bvh, 0, &prims).run();
     return bvh;
 }
 

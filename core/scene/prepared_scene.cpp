@@ -339,6 +339,13 @@ PreparedScene prepare_scene(const Scene& scene) {
                 }
             }
         }
+    // Many solid objects in media (a fog over a whole landscape): a BVH over them, so that a
+    // ray through the media meets only those on its way (leave_solids).
+    if (p.media_solids.size() >= kMediaSolidTree) {
+        std::vector<uint32_t> prims;
+        for (uint32_t so : p.media_solids) prims.push_back(uint32_t(p.tris.size()) + so);
+        p.media_solid_bvh = build_bvh_over(p, prims);
+    }
     p.prim_flags.resize(p.prim_count());
     std::vector<char> passes(scene.materials.size());
     for (size_t m = 0; m < passes.size(); ++m) passes[m] = material_may_pass(scene, uint32_t(m));

@@ -2,6 +2,7 @@
 // spheres the ray hierarchy tests against. Built once by prepare_scene(); read by every stage.
 #pragma once
 
+#include "core/accel/bvh.h"
 #include "core/geometry/sphere.h"
 #include "core/geometry/world_box.h"
 #include "core/scene/camera_faces.h"
@@ -26,6 +27,9 @@ struct TriangleUvs {
 struct TriangleNormals {
     Vec3 na, nb, nc; // unit vertex normals; all zero when the mesh has none
 };
+
+/// Media solids from which leave_solids walks a BVH over them (PreparedScene::media_solid_bvh).
+constexpr size_t kMediaSolidTree = 16;
 
 /// A CSG node in flat arrays: a leaf names its placed shape in `first`; an operation owns
 /// csg_children[first, first + count). `box` holds the node's solid (csg_box; infinite where
@@ -111,6 +115,8 @@ struct PreparedScene {
     // them with an atmosphere or a fog that fades lights (fog_transmittance), else those
     // whose bounds meet a container's.
     std::vector<uint32_t> media_containers, media_solids;
+    // From kMediaSolidTree media solids on, a BVH over them (their primitive ids).
+    Bvh media_solid_bvh;
     int32_t atmosphere = -1;            // Scene::atmosphere
     std::vector<FnProgram> fn_programs; // user functions (Scene::fn_programs ...)
     std::vector<FnInstr> fn_code;

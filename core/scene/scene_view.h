@@ -54,6 +54,7 @@ struct SceneView : ShapeTables {
     uint32_t media_container_count = 0;
     const uint32_t* media_solids = nullptr; // PreparedScene::media_solids
     uint32_t media_solid_count = 0;
+    BvhView media_solid_bvh; // PreparedScene::media_solid_bvh (empty: none)
     int32_t atmosphere = -1; // PreparedScene::atmosphere
     int32_t sky = -1;
     bool sky_untinted = false;
@@ -112,11 +113,11 @@ struct SceneView : ShapeTables {
           density_voxels(p.density_voxels.data()), media_containers(p.media_containers.data()),
           media_container_count(uint32_t(p.media_containers.size())),
           media_solids(p.media_solids.data()), media_solid_count(uint32_t(p.media_solids.size())),
-          atmosphere(p.atmosphere), sky(p.sky), sky_untinted(p.sky_untinted), fog(p.fog),
-          rainbows(p.rainbows.data()), rainbow_count(uint32_t(p.rainbows.size())),
-          lights(p.lights.data()), light_count(uint32_t(p.lights.size())),
-          camera_faces(p.camera_faces.data()), camera_face_count(uint32_t(p.camera_faces.size())),
-          camera_meshes(p.camera_meshes.data()),
+          media_solid_bvh(p.media_solid_bvh.view()), atmosphere(p.atmosphere), sky(p.sky),
+          sky_untinted(p.sky_untinted), fog(p.fog), rainbows(p.rainbows.data()),
+          rainbow_count(uint32_t(p.rainbows.size())), lights(p.lights.data()),
+          light_count(uint32_t(p.lights.size())), camera_faces(p.camera_faces.data()),
+          camera_face_count(uint32_t(p.camera_faces.size())), camera_meshes(p.camera_meshes.data()),
           camera_mesh_count(uint32_t(p.camera_meshes.size())),
           camera_uv_cells(p.camera_uv_cells.empty() ? nullptr : p.camera_uv_cells.data()),
           camera_uv_faces(p.camera_uv_faces.data()), background(p.background),

@@ -5,6 +5,7 @@
 // bits and a frame has no noise.
 #pragma once
 
+#include "core/accel/bvh_walk.h"
 #include "core/math/hd_math.h"
 #include "core/scene/analytic.h"
 #include "core/scene/scene_view.h"
@@ -148,16 +149,35 @@ SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Ve
 }
 
 /// Takes the parts inside solid objects (kSolid, all but analytic object `self`) out of
-/// `spans`, the ray's parts in some media: POV-Ray's media fill only hollow objects.
+/// `spans`, the ray's parts in some media: POV-Ray's media fill only hollow objects. Many
+/// solids are found through their BVH (PreparedScene::media_solid_bvh), the ones on the ray's
+/// way only; the parts behind its origin do not matter.
 SHEAF_HD_INLINE void leave_solids(const SceneView& scene, const Ray& ray, uint32_t self,
                                   SpanList& spans) {
-    for (uint32_t s = 0; s < scene.media_solid_count && spans.n > 0; ++s) {
-        const uint32_t b = scene.media_solids[s];
+    auto leave = [&](uint32_t b) {
         if (b == self ||
             !ray_meets_sphere(scene.prim_sphere[scene.tri_count + b], ray.origin, ray.dir))
-            continue;
+            return;
         spans = span_difference(spans, csg_spans(scene, scene.analytic_root[b], ray));
+    };
+    const BvhView& tree = scene.media_solid_bvh;
+    if (tree.node_count == 0 && tree.unbounded_count == 0) {
+        for (uint32_t s = 0; s < scene.media_solid_count && spans.n > 0; ++s)
+            leave(scene.media_solids[s]);
+        return;
     }
+    for (uint32_t u = 0; u < tree.unbounded_count && spans.n > 0; ++u)
+        leave(tree.unbounded[u] - scene.tri_count);
+    if (tree.node_count == 0 || spans.n == 0) return;
+    const Vec3 inv = bvh_inverse(ray.dir);
+    const float far = FLT_MAX;
+    BvhCounts counts;
+    bvh_walk<true>(tree, ray, inv, bvh_planes(inv), 0, far, counts,
+                   [&](uint32_t first, uint32_t count) {
+                       for (uint32_t k = first; k < first + count && spans.n > 0; ++k)
+                           leave(tree.prims[k] - scene.tri_count);
+                       return spans.n > 0;
+                   });
 }
 
 /// Calls f(m, t0, t1) for every part [t0, t1] of the ray from `origin` along unit `dir` up to
@@ -184,20 +204,26 @@ SHEAF_HD_INLINE void for_media_parts(const SceneView& scene, Vec3 origin, Vec3 d
             if (!ray_meets_sphere(scene.prim_sphere[scene.tri_count + a], origin, dir)) continue;
             spans = csg_spans(scene, scene.analytic_root[a], ray);
         }
-        leave_solids(scene, ray, a, spans); // solid objects inside are left out
         for (int i = 0; i < spans.n; ++i) {
-            const float t0 = spans.s[i].a.t > 0 ? spans.s[i].a.t : 0.0f;
-            const float t1 = spans.s[i].b.t < end ? spans.s[i].b.t : end;
-            if (!(t1 > t0) || !(t1 - t0 <= 1e30f)) continue; // empty, or unbounded
-            // The media of the shape the span enters by (a union's members have their own).
+            // The media of the shape the container's span enters by (a union's members have
+            // their own), then the solid objects inside left out of it: a piece that starts
+            // where the ray leaves a solid still holds the container's media.
             const uint32_t leaf =
                 spans.s[i].a.leaf != 0xFFFFFFFFu ? spans.s[i].a.leaf : spans.s[i].b.leaf;
             if (!air && leaf == 0xFFFFFFFFu) continue;
-            const Material& m =
-                scene.materials[air ? uint32_t(scene.atmosphere)
-                                    : resolve_material(scene, scene.shape_material[leaf],
-                                                       origin + dir * (0.5f * (t0 + t1)))];
-            if (m.media_count > 0) f(m, t0, t1);
+            SpanList pieces;
+            pieces.push(spans.s[i]);
+            leave_solids(scene, ray, a, pieces);
+            for (int j = 0; j < pieces.n; ++j) {
+                const float t0 = pieces.s[j].a.t > 0 ? pieces.s[j].a.t : 0.0f;
+                const float t1 = pieces.s[j].b.t < end ? pieces.s[j].b.t : end;
+                if (!(t1 > t0) || !(t1 - t0 <= 1e30f)) continue; // empty, or unbounded
+                const Material& m =
+                    scene.materials[air ? uint32_t(scene.atmosphere)
+                                        : resolve_material(scene, scene.shape_material[leaf],
+                                                           origin + dir * (0.5f * (t0 + t1)))];
+                if (m.media_count > 0) f(m, t0, t1);
+            }
         }
     }
 }

@@ -115,6 +115,35 @@ TEST(Media, SolidObjectsInsideAreLeftOut) {
     EXPECT_NEAR(pixel(render(prepare_scene(s), {}, 33, 33), 16, 16)[0], 0.2f, 1e-4f);
 }
 
+// Many solids (a BVH over them, kMediaSolidTree) and one lying wholly behind the camera, whose
+// bounding sphere holds the camera: the medium in front keeps its whole chord, as the pieces
+// of a container keep its media wherever a solid cuts them.
+TEST(Media, SolidsBehindTheRayAndManySolidsLeaveTheChordAlone) {
+    Medium glow;
+    glow.emission = Vec3(0.2f);
+    Scene s = sphere_of({glow});
+    s.camera.position = Vec3(0, 0, 0), s.camera.look_at = Vec3(0, 0, -1);
+    Material grey;
+    grey.color = Vec3(0.5f);
+    const uint32_t m = s.add_material(grey);
+    // A slab just behind the camera (z from 0.1 to 0.2), its sphere around the camera.
+    const uint32_t slab =
+        s.add_shape("slab", Shape{ShapeKind::Box}, m,
+                    Affine::translate(Vec3(0, 0, 0.15f)) * Affine::scale(Vec3(0.5f, 0.5f, 0.05f)));
+    s.shape_objects[slab].flags = kSolid;
+    for (int i = 0; i < 20; ++i) { // small solid balls around the rim, off the middle ray
+        const float a = 2 * kPi * float(i) / 20;
+        const uint32_t b =
+            s.add_shape("ball", Shape{ShapeKind::Sphere}, m,
+                        Affine::translate(Vec3(0.7f * std::cos(a), 0.7f * std::sin(a), -0.3f)) *
+                            Affine::scale(Vec3(0.05f)));
+        s.shape_objects[b].flags = kSolid;
+    }
+    const PreparedScene scene = prepare_scene(s);
+    EXPECT_GT(scene.media_solid_bvh.nodes.size(), 0u);
+    EXPECT_NEAR(pixel(render(scene, {}, 33, 33), 16, 16)[0], 0.2f, 1e-4f);
+}
+
 TEST(Media, EveryAccelAndTheWavefrontAgree) {
     for (bool inside : {false, true}) {
         const PreparedScene scene = prepare_scene(test::media_scene(inside));

@@ -11,17 +11,20 @@
 // casts shadows also runs the media light kernel (core/shading/media_light.h: a media walk
 // whose steps walk the media again towards each light): its frame is 7,192 bytes on sm_90
 // with the atmosphere and rainbows (6,944 before), so its chain is 17,312 bytes, and such
-// scenes (PreparedScene::media_scatter_light) get 2 KiB more. The G-buffer kernel's frame is
-// 5,000 bytes with them (the atmosphere's part of the media walk shares the containers' loop
-// and span list: a second list took it to 6,608).
-// A function pattern whose program reads a scene pigment (core/shading/surface_texture.h's
-// FnSceneContext) evaluates that pigment, which may hold another such pattern: each nested
-// level is the program's frame (728 bytes), the context's (160), the pigment's and an entry's
-// (112 + 16) and pattern_value's (96), 1,112 bytes, so a level gets 2 KiB
-// (fn_pigment_nesting counts the levels).
-// The device reserves the stack for every resident thread (about 270,000 on an H100), so it
-// is capped; a scene nested more deeply renders on the CPU (backend=auto) or is an error
-// (backend=cuda).
+// scenes (PreparedScene::media_scatter_light) got 2 KiB more (3 KiB since; below). The G-buffer
+// kernel's frame is 5,000 bytes with them (the atmosphere's part of the media walk shares the
+// containers' loop and span list: a second list took it to 6,608). A function pattern whose program
+// reads a scene pigment (core/shading/surface_texture.h's FnSceneContext) evaluates that pigment,
+// which may hold another such pattern: each nested level is the program's frame (728 bytes), the
+// context's (160), the pigment's and an entry's (112 + 16) and pattern_value's (96), 1,112 bytes,
+// so a level gets 2 KiB (fn_pigment_nesting counts the levels). The media's walk over their solid
+// objects (leave_solids, core/shading/media.h: a BVH walk's stack of kBvhStack entries, 652 bytes,
+// and the container spans' owners, 128) adds about 850 bytes to each media walk of a chain,
+// estimated from the arrays (not yet measured with ptxas): the G-buffer kernel's chain to about
+// 15,750 bytes, within the base, and the media light kernel's, which walks twice, to about 19,000,
+// so such scenes get 3 KiB more. The device reserves the stack for every resident thread (about
+// 270,000 on an H100), so it is capped; a scene nested more deeply renders on the CPU
+// (backend=auto) or is an error (backend=cuda).
 #pragma once
 
 #include "core/scene/prepared_scene.h"
@@ -37,7 +40,7 @@ namespace sheaf {
 constexpr size_t kDeviceStackBase = size_t(16) << 10;
 constexpr size_t kDeviceStackPerCsgLevel = size_t(10) << 10;
 constexpr size_t kDeviceStackCap = size_t(96) << 10;
-constexpr size_t kDeviceStackMediaLight = size_t(2) << 10;
+constexpr size_t kDeviceStackMediaLight = size_t(3) << 10;
 constexpr size_t kDeviceStackPerFnLevel = size_t(2) << 10;
 
 /// The deepest nesting of CSG operations below any analytic root (a lone shape: 0). Each

@@ -204,26 +204,32 @@ SHEAF_HD_INLINE void for_media_parts(const SceneView& scene, Vec3 origin, Vec3 d
             if (!ray_meets_sphere(scene.prim_sphere[scene.tri_count + a], origin, dir)) continue;
             spans = csg_spans(scene, scene.analytic_root[a], ray);
         }
-        for (int i = 0; i < spans.n; ++i) {
-            // The media of the shape the container's span enters by (a union's members have
-            // their own), then the solid objects inside left out of it: a piece that starts
-            // where the ray leaves a solid still holds the container's media.
-            const uint32_t leaf =
+        // The media of the shape each of the container's spans enters by (a union's members
+        // have their own), kept for the pieces the solid objects inside leave of it: a piece
+        // that starts where the ray leaves a solid still holds the container's media.
+        uint32_t owner_leaf[kMaxCsgSpans];
+        float owner_end[kMaxCsgSpans];
+        const int owners = spans.n;
+        for (int i = 0; i < owners; ++i) {
+            owner_leaf[i] =
                 spans.s[i].a.leaf != 0xFFFFFFFFu ? spans.s[i].a.leaf : spans.s[i].b.leaf;
+            owner_end[i] = spans.s[i].b.t;
+        }
+        leave_solids(scene, ray, a, spans);
+        int o = 0;
+        for (int i = 0; i < spans.n; ++i) {
+            const float t0 = spans.s[i].a.t > 0 ? spans.s[i].a.t : 0.0f;
+            const float t1 = spans.s[i].b.t < end ? spans.s[i].b.t : end;
+            if (!(t1 > t0) || !(t1 - t0 <= 1e30f)) continue; // empty, or unbounded
+            const float mid = 0.5f * (t0 + t1);
+            while (o + 1 < owners && mid > owner_end[o]) ++o; // pieces come in ray order
+            const uint32_t leaf = owner_leaf[o];
             if (!air && leaf == 0xFFFFFFFFu) continue;
-            SpanList pieces;
-            pieces.push(spans.s[i]);
-            leave_solids(scene, ray, a, pieces);
-            for (int j = 0; j < pieces.n; ++j) {
-                const float t0 = pieces.s[j].a.t > 0 ? pieces.s[j].a.t : 0.0f;
-                const float t1 = pieces.s[j].b.t < end ? pieces.s[j].b.t : end;
-                if (!(t1 > t0) || !(t1 - t0 <= 1e30f)) continue; // empty, or unbounded
-                const Material& m =
-                    scene.materials[air ? uint32_t(scene.atmosphere)
-                                        : resolve_material(scene, scene.shape_material[leaf],
-                                                           origin + dir * (0.5f * (t0 + t1)))];
-                if (m.media_count > 0) f(m, t0, t1);
-            }
+            const Material& m =
+                scene.materials[air ? uint32_t(scene.atmosphere)
+                                    : resolve_material(scene, scene.shape_material[leaf],
+                                                       origin + dir * mid)];
+            if (m.media_count > 0) f(m, t0, t1);
         }
     }
 }

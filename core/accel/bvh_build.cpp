@@ -94,27 +94,30 @@ class Builder {
         : scene_(scene), out_(out), chunk_(chunk), subset_(subset) {}
 
     void run() {
-        const uint32_t n = uint32_t(scene_.prim_count());
-        const uint32_t count = subset_ ? uint32_t(subset_->size()) : n;
-        const auto prim = [&](uint32_t k) { return subset_ ? (*subset_)[k] : k; };
-        boxes_.resize(n);
-        centers_.resize(n);
+        // While building, a primitive is its key k: its place in the subset (boxes_ and
+        // centers_ hold the subset's only), or its id without one; id(k) names it.
+        const uint32_t count = subset_ ? uint32_t(subset_->size()) : uint32_t(scene_.prim_count());
+        boxes_.resize(count);
+        centers_.resize(count);
         std::vector<uint8_t> bounded(count);
         tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 4096),
                           [&](const tbb::blocked_range<uint32_t>& r) {
                               for (uint32_t k = r.begin(); k != r.end(); ++k) {
-                                  const uint32_t p = prim(k);
-                                  Box b = prim_box(p);
+                                  Box b = prim_box(id(k));
                                   bounded[k] = finite_box(b) ? 1 : 0;
                                   if (!bounded[k]) continue;
                                   b = padded(b);
-                                  boxes_[p] = b;
-                                  centers_[p] = (b.lo + b.hi) * 0.5f;
+                                  boxes_[k] = b;
+                                  centers_[k] = (b.lo + b.hi) * 0.5f;
                               }
                           });
         std::vector<uint32_t>& order = out_.prims;
-        for (uint32_t k = 0; k < count; ++k)
-            (bounded[k] ? order : out_.unbounded).push_back(prim(k));
+        for (uint32_t k = 0; k < count; ++k) {
+            if (bounded[k])
+                order.push_back(k);
+            else
+                out_.unbounded.push_back(id(k));
+        }
         if (order.empty()) return;
         Range all{0, uint32_t(order.size()), {}, {}};
         const Bin b = bin_whole(all);
@@ -130,9 +133,13 @@ class Builder {
         else
             build(root, split, 1);
         renumber(root);
+        if (subset_)
+            for (uint32_t& k : order) k = id(k);
     }
 
   private:
+    uint32_t id(uint32_t k) const { return subset_ ? (*subset_)[k] : k; }
+
     Box prim_box(uint32_t p) const {
         Box b;
         if (p < scene_.tris.size()) {
@@ -226,7 +233,7 @@ class Builder {
     bool chunk_leaf(const Range& r) const {
         if (r.size() > chunk_) return false;
         for (uint32_t i = r.begin; i < r.end; ++i)
-            if (!scene_.is_triangle(out_.prims[i])) return false;
+            if (!scene_.is_triangle(id(out_.prims[i]))) return false;
         return true;
     }
 

@@ -174,7 +174,6 @@ template <class Exec> class DeviceScene {
         f(p.density_grids, v.density_grids);
         f(p.density_voxels, v.density_voxels);
         f(p.media_containers, v.media_containers);
-        f(p.media_solids, v.media_solids);
         f(p.media_solid_bvh.nodes, v.media_solid_bvh.nodes);
         f(p.media_solid_bvh.prims, v.media_solid_bvh.prims);
         f(p.media_solid_bvh.unbounded, v.media_solid_bvh.unbounded);

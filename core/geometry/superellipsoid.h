@@ -2,10 +2,10 @@
 //   f(p) = (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) - 1 < 0,
 // inside the box [-1, 1]^3 (e: the exponent around z, n: the one along z). For e, n <= 2 f is
 // convex, so along a ray it falls to one minimum and rises again: a golden-section search
-// finds that minimum and bisection the two crossings on its sides, with no step to choose
-// and no thin crossing to miss. Above 2 the solid is star-shaped but not convex: the ray's
+// finds that minimum and a bracketed search (root_between) the two crossings on its sides,
+// with no step to choose and no thin crossing to miss. Above 2 the solid is star-shaped but not convex: the ray's
 // piece inside the box is then sampled (always at its cusps, where it crosses a coordinate
-// plane) for changes of sign, each refined by bisection, and for dips between samples.
+// plane) for changes of sign, each refined by root_between, and for dips between samples.
 // Powers are hdm::pow: the same bits on the CPU and the GPU.
 #pragma once
 
@@ -43,7 +43,7 @@ SHEAF_HD_INLINE double gauge(double f, double half_n) {
 /// falsi with the Illinois rule (the end that stays has its value halved), every fourth step a
 /// bisection, down to the same width as bisection alone; near-linear g takes a few steps.
 template <class F>
-SHEAF_HD_INLINE double bisect(const F& g, double lo, double hi, double glo, double ghi) {
+SHEAF_HD_INLINE double root_between(const F& g, double lo, double hi, double glo, double ghi) {
     if (glo == 0) return lo; // on the surface (a rounded box's face lies on its box's)
     if (ghi == 0) return hi;
     const bool lo_inside = glo < 0;
@@ -73,7 +73,7 @@ SHEAF_HD_INLINE double bisect(const F& g, double lo, double hi, double glo, doub
 
 /// The minimum of a unimodal f on [lo, hi] by golden-section search: its place, and its
 /// value in `fm`. Stops at the first point below zero: the callers want a point inside, from
-/// which bisection finds the crossings on both sides.
+/// which root_between finds the crossings on both sides.
 template <class F> SHEAF_HD_INLINE double golden_min(const F& f, double lo, double hi, double& fm) {
     const double g = 0.3819660112501051;
     double a = lo, b = hi, x1 = a + g * (b - a), x2 = b - g * (b - a);
@@ -135,7 +135,7 @@ SHEAF_HD_INLINE int superellipsoid_pieces(float e, float n, const Ray& r, double
     auto g = [&](double t) { return gauge(f(t), half_n); };
     // The crossing between t0 and t1, where f is f0 and f1.
     auto crossing = [&](double t0, double t1, double f0, double f1) {
-        return bisect(g, t0, t1, gauge(f0, half_n), gauge(f1, half_n));
+        return root_between(g, t0, t1, gauge(f0, half_n), gauge(f1, half_n));
     };
     if (e <= 2 && n <= 2) { // convex: one minimum
         double fm;

@@ -128,7 +128,7 @@ std::string check_fn_program(const FnProgram& p, const FnInstr* code, size_t cod
 struct FnView {
     const FnProgram* programs = nullptr;
     const FnInstr* code = nullptr;
-    const Pattern* patterns = nullptr; // the patterns Pattern instructions read
+    const Pattern* patterns = nullptr;             // the patterns Pattern instructions read
     const FnPigment* pigments = nullptr;           // the pigments Pigment instructions read
     const PigmentEntry* pigment_entries = nullptr; // their entries (colours only)
     const Warp* warps = nullptr;                   // the scene's warps, which patterns name

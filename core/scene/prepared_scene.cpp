@@ -339,9 +339,9 @@ PreparedScene prepare_scene(const Scene& scene) {
                 }
             }
         }
-    // Many solid objects in media (a fog over a whole landscape): a BVH over them, so that a
-    // ray through the media meets only those on its way (leave_solids).
-    if (p.media_solids.size() >= kMediaSolidTree) {
+    // A BVH over the solid objects in media, so that a ray through the media meets only
+    // those on its way (leave_solids; a fog over a whole landscape has thousands).
+    if (!p.media_solids.empty()) {
         std::vector<uint32_t> prims;
         for (uint32_t so : p.media_solids) prims.push_back(uint32_t(p.tris.size()) + so);
         p.media_solid_bvh = build_bvh_over(p, prims);

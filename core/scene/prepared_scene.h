@@ -28,9 +28,6 @@ struct TriangleNormals {
     Vec3 na, nb, nc; // unit vertex normals; all zero when the mesh has none
 };
 
-/// Media solids from which leave_solids walks a BVH over them (PreparedScene::media_solid_bvh).
-constexpr size_t kMediaSolidTree = 16;
-
 /// A CSG node in flat arrays: a leaf names its placed shape in `first`; an operation owns
 /// csg_children[first, first + count). `box` holds the node's solid (csg_box; infinite where
 /// unbounded): a ray whose line misses it has no spans in the node, so csg_spans skips it, as
@@ -115,7 +112,7 @@ struct PreparedScene {
     // them with an atmosphere or a fog that fades lights (fog_transmittance), else those
     // whose bounds meet a container's.
     std::vector<uint32_t> media_containers, media_solids;
-    // From kMediaSolidTree media solids on, a BVH over them (their primitive ids).
+    // A BVH over the media solids (their primitive ids), which the media walk.
     Bvh media_solid_bvh;
     int32_t atmosphere = -1;            // Scene::atmosphere
     std::vector<FnProgram> fn_programs; // user functions (Scene::fn_programs ...)

@@ -52,8 +52,6 @@ struct SceneView : ShapeTables {
     const float* density_voxels = nullptr;
     const uint32_t* media_containers = nullptr; // PreparedScene::media_containers
     uint32_t media_container_count = 0;
-    const uint32_t* media_solids = nullptr; // PreparedScene::media_solids
-    uint32_t media_solid_count = 0;
     BvhView media_solid_bvh; // PreparedScene::media_solid_bvh (empty: none)
     int32_t atmosphere = -1; // PreparedScene::atmosphere
     int32_t sky = -1;
@@ -112,7 +110,6 @@ struct SceneView : ShapeTables {
           medium_densities(p.medium_densities.data()), density_grids(p.density_grids.data()),
           density_voxels(p.density_voxels.data()), media_containers(p.media_containers.data()),
           media_container_count(uint32_t(p.media_containers.size())),
-          media_solids(p.media_solids.data()), media_solid_count(uint32_t(p.media_solids.size())),
           media_solid_bvh(p.media_solid_bvh.view()), atmosphere(p.atmosphere), sky(p.sky),
           sky_untinted(p.sky_untinted), fog(p.fog), rainbows(p.rainbows.data()),
           rainbow_count(uint32_t(p.rainbows.size())), lights(p.lights.data()),

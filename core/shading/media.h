@@ -149,7 +149,7 @@ SHEAF_HD_INLINE void through_media(const SceneView& scene, const Material& m, Ve
 }
 
 /// Takes the parts inside solid objects (kSolid, all but analytic object `self`) out of
-/// `spans`, the ray's parts in some media: POV-Ray's media fill only hollow objects. Many
+/// `spans`, the ray's parts in some media: POV-Ray's media fill only hollow objects. The
 /// solids are found through their BVH (PreparedScene::media_solid_bvh), the ones on the ray's
 /// way only; the parts behind its origin do not matter.
 SHEAF_HD_INLINE void leave_solids(const SceneView& scene, const Ray& ray, uint32_t self,
@@ -161,11 +161,6 @@ SHEAF_HD_INLINE void leave_solids(const SceneView& scene, const Ray& ray, uint32
         spans = span_difference(spans, csg_spans(scene, scene.analytic_root[b], ray));
     };
     const BvhView& tree = scene.media_solid_bvh;
-    if (tree.node_count == 0 && tree.unbounded_count == 0) {
-        for (uint32_t s = 0; s < scene.media_solid_count && spans.n > 0; ++s)
-            leave(scene.media_solids[s]);
-        return;
-    }
     for (uint32_t u = 0; u < tree.unbounded_count && spans.n > 0; ++u)
         leave(tree.unbounded[u] - scene.tri_count);
     if (tree.node_count == 0 || spans.n == 0) return;

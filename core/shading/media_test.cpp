@@ -115,7 +115,7 @@ TEST(Media, SolidObjectsInsideAreLeftOut) {
     EXPECT_NEAR(pixel(render(prepare_scene(s), {}, 33, 33), 16, 16)[0], 0.2f, 1e-4f);
 }
 
-// Many solids (a BVH over them, kMediaSolidTree) and one lying wholly behind the camera, whose
+// Many solids (their BVH) and one lying wholly behind the camera, whose
 // bounding sphere holds the camera: the medium in front keeps its whole chord, as the pieces
 // of a container keep its media wherever a solid cuts them.
 TEST(Media, SolidsBehindTheRayAndManySolidsLeaveTheChordAlone) {

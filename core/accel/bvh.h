@@ -1,4 +1,4 @@
-// The object-space hierarchy of accel=bvh: a bounding volume hierarchy of four-wide nodes over
+// The object-space hierarchy of accel=bvh: a bounding volume hierarchy of eight-wide nodes over
 // every bounded primitive of a prepared scene (triangles, analytic shapes, CSG roots), built
 // top-down with the surface-area heuristic over binned centroids, and the primitives without
 // finite bounds (planes, unclipped polys) kept aside for every ray to test. Built once per
@@ -17,27 +17,33 @@ namespace sheaf {
 
 struct PreparedScene;
 
-constexpr int kBvhWidth = 4;
+constexpr int kBvhWidth = 8;
+/// Bits of a child's slot in a reference to it (node << kBvhSlotBits | slot).
+constexpr int kBvhSlotBits = 3;
+constexpr uint32_t kBvhSlotMask = (1u << kBvhSlotBits) - 1;
+static_assert(1 << kBvhSlotBits == kBvhWidth, "a slot names one of a node's children");
 constexpr uint32_t kBvhNoChild = 0xFFFFFFFFu;
 /// Levels of nodes below the root at which the builder stops weighing surface areas and
-/// splits at the median, so that a traversal's stack is bounded (kBvhStack).
-constexpr int kBvhSahDepth = 24;
-/// Entries of a traversal's stack: at most three siblings wait per level, and below
-/// kBvhSahDepth the median split at least halves a node's primitives per level (2^32 of
-/// them: 29 levels to leaves of 8).
-constexpr int kBvhStack = 3 * (kBvhSahDepth + 30) + 1;
+/// splits at the median, so that a traversal's stack is bounded (kBvhStack). Twelve levels of
+/// eight-wide nodes are 36 of a binary tree's.
+constexpr int kBvhSahDepth = 12;
+/// Entries of a traversal's stack: at most seven siblings wait per level, and below
+/// kBvhSahDepth a node's children are its range cut at the median into eight (the child with
+/// the most primitives cut first), so each level divides the primitives by eight (2^32 of them:
+/// 10 levels to leaves of 8).
+constexpr int kBvhStack = (kBvhWidth - 1) * (kBvhSahDepth + 10) + 1;
 
-/// Four children's bounds as a structure of arrays (lo[axis][child]), so that the four slab
-/// tests are one vector operation. Child i is the node child[i] when count[i] is 0, the leaf of
-/// primitives prims[child[i], child[i] + count[i]) otherwise, and no child at all when child[i]
-/// is kBvhNoChild (its bounds then empty). 128 bytes: two cache lines.
+/// Eight children's bounds as a structure of arrays (lo[axis][child]), so that the eight slab
+/// tests are one vector operation (two on SSE). Child i is the node child[i] when count[i] is
+/// 0, the leaf of primitives prims[child[i], child[i] + count[i]) otherwise, and no child at
+/// all when child[i] is kBvhNoChild (its bounds then empty). 256 bytes: four cache lines.
 struct BvhNode {
     float lo[3][kBvhWidth];
     float hi[3][kBvhWidth];
     uint32_t child[kBvhWidth];
     uint32_t count[kBvhWidth];
 };
-static_assert(sizeof(BvhNode) == 128, "a BVH node is two cache lines");
+static_assert(sizeof(BvhNode) == 256, "a BVH node is four cache lines");
 
 /// The hierarchy as the per-ray traversal reads it (host or device pointers). The root is node
 /// 0 when there are nodes.

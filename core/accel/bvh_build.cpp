@@ -1,6 +1,7 @@
 // Building the BVH (core/accel/bvh.h): primitive bounds, then top-down binned SAH. Each node
-// takes its range's best split, then splits the child of largest surface area again until it
-// has four children or none can be split; a child that the heuristic keeps whole becomes a
+// takes its range's best split, then splits the child of largest surface area again (below
+// kBvhSahDepth, the one with the most primitives) until it has eight children or none can be
+// split; a child that the heuristic keeps whole becomes a
 // leaf. Large ranges bin in parallel and large children build in parallel; nodes are taken
 // from one pool with an atomic counter and renumbered depth-first at the end, so the tree and
 // its layout are the same on every run.
@@ -321,16 +322,20 @@ class Builder {
         return s;
     }
 
-    // Node `at` over the split range `split`: up to four children, each a leaf or a node.
+    // Node `at` over the split range `split`: up to eight children, each a leaf or a node.
+    // The child split next is the widest (by surface area), or below kBvhSahDepth the one
+    // with the most primitives, so that there every level divides them by eight (kBvhStack).
     void build(uint32_t at, const Split& split, int depth) {
         std::vector<Range> kids{split.left, split.right};
         std::vector<Split> fate{split_range(split.left, depth), split_range(split.right, depth)};
+        const bool by_count = depth >= kBvhSahDepth;
+        const auto weight = [&](size_t i) {
+            return by_count ? float(kids[i].size()) : kids[i].box.half_area();
+        };
         while (kids.size() < size_t(kBvhWidth)) {
             int pick = -1;
             for (size_t i = 0; i < kids.size(); ++i)
-                if (!fate[i].leaf &&
-                    (pick < 0 || kids[i].box.half_area() > kids[size_t(pick)].box.half_area()))
-                    pick = int(i);
+                if (!fate[i].leaf && (pick < 0 || weight(i) > weight(size_t(pick)))) pick = int(i);
             if (pick < 0) break;
             const Split s = fate[size_t(pick)];
             kids[size_t(pick)] = s.left, fate[size_t(pick)] = split_range(s.left, depth);
@@ -400,8 +405,9 @@ class Builder {
         }
         out_.depth = max_depth_.load();
         pool_.reset();
-        // The traversal's stack holds three waiting siblings a level (kBvhStack).
-        if (3 * out_.depth + 1 > kBvhStack) throw std::length_error("BVH deeper than its stack");
+        // The traversal's stack holds seven waiting siblings a level (kBvhStack).
+        if ((kBvhWidth - 1) * out_.depth + 1 > kBvhStack)
+            throw std::length_error("BVH deeper than its stack");
     }
 
     const PreparedScene& scene_;

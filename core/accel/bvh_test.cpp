@@ -37,7 +37,7 @@ void expect_valid(const PreparedScene& scene, const Bvh& bvh, const std::string&
         EXPECT_TRUE(bvh.prims.empty()) << what;
         return;
     }
-    EXPECT_LE(3 * bvh.depth + 1, kBvhStack) << what;
+    EXPECT_LE((kBvhWidth - 1) * bvh.depth + 1, kBvhStack) << what;
     struct Item {
         uint32_t node;
         Box3 box;

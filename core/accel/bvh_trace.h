@@ -93,19 +93,12 @@ template <bool Any> struct BvhHitTest {
     }
 };
 
-/// Ray i of a batch (r) through the part of the BVH under `start` (an entry; the root is 0),
-/// against `scene`, after the primitives without bounds when `unbounded`: records its hits as
-/// brute_trace_ray does (BvhHitTest). `shared`: other traversals record hits of the same ray
-/// (the ray hierarchy's entries, core/rsh/bvh_top.h), so a closest hit is an atomic minimum;
-/// each traversal prunes by its own best hit only, so its counts do not depend on the
-/// others'. (A flag, not a template parameter, and not inlined on the device: each copy is
-/// another copy of the exact tests in the CUDA module, which ptxas takes minutes over; the bvh
-/// launch and the ray hierarchy's over the BVH call the same two.) `skip`: primitive flags
-/// that are no candidates for this ray type.
-template <bool Any>
-SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& scene, const Ray& r,
-                                           uint32_t i, uint32_t start, bool unbounded, bool shared,
-                                           bool shadow, uint8_t skip, const HitSinks& out) {
+/// The body of bvh_trace_from, inlined into it and, on x86-64 hosts, into
+/// bvh_trace_from_avx2 (Avx2: the eight-wide slab tests).
+template <bool Any, bool Avx2>
+SHEAF_HD_HOT BvhCounts bvh_trace_body(const BvhView& bvh, const SceneView& scene, const Ray& r,
+                                      uint32_t i, uint32_t start, bool unbounded, bool shared,
+                                      bool shadow, uint8_t skip, const HitSinks& out) {
     BvhCounts c;
     BvhHitTest<Any> test(scene, r, i, shadow, skip, out, c);
     bool done = false;
@@ -115,15 +108,51 @@ SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& 
         test(start & ~kBvhPrim);
     } else if (bvh.node_count > 0 && !done) {
         const Vec3 inv = bvh_inverse(r.dir);
-        bvh_walk<Any>(bvh, r, inv, bvh_planes(inv), start, test.far, c,
-                      [&](uint32_t first, uint32_t count) {
-                          for (uint32_t k = first; k < first + count; ++k)
-                              if (!test(bvh.prims[k])) return false;
-                          return true;
-                      });
+        bvh_walk<Any, Avx2>(bvh, r, inv, bvh_planes(inv), start, test.far, c,
+                            [&](uint32_t first, uint32_t count) {
+                                for (uint32_t k = first; k < first + count; ++k)
+                                    if (!test(bvh.prims[k])) return false;
+                                return true;
+                            });
     }
     test.finish(shared);
     return c;
+}
+
+#if SHEAF_BVH_AVX2
+/// Whether this host's traversals take the AVX2 slab tests: the processor has AVX2, and
+/// neither SHEAF_SIMD=sse in the environment nor bvh_set_avx2(false) turned them off.
+bool bvh_avx2();
+/// Turns the AVX2 slab tests off (or back on, where the processor has them): the tests
+/// compare both paths.
+void bvh_set_avx2(bool on);
+/// bvh_trace_from compiled for AVX2 (core/accel/bvh_trace_avx2.cpp).
+BvhCounts bvh_trace_from_avx2(bool any, const BvhView& bvh, const SceneView& scene, const Ray& r,
+                              uint32_t i, uint32_t start, bool unbounded, bool shared, bool shadow,
+                              uint8_t skip, const HitSinks& out);
+#endif
+
+/// Ray i of a batch (r) through the part of the BVH under `start` (an entry; the root is 0),
+/// against `scene`, after the primitives without bounds when `unbounded`: records its hits as
+/// brute_trace_ray does (BvhHitTest). `shared`: other traversals record hits of the same ray
+/// (the ray hierarchy's entries, core/rsh/bvh_top.h), so a closest hit is an atomic minimum;
+/// each traversal prunes by its own best hit only, so its counts do not depend on the
+/// others'. (A flag, not a template parameter, and not inlined on the device: each copy is
+/// another copy of the exact tests in the CUDA module, which ptxas takes minutes over; the bvh
+/// launch and the ray hierarchy's over the BVH call the same two.) `skip`: primitive flags
+/// that are no candidates for this ray type. On an x86-64 host with AVX2 the walk is
+/// bvh_trace_from_avx2's, the same hits and counts.
+template <bool Any>
+SHEAF_HD_NOINLINE BvhCounts bvh_trace_from(const BvhView& bvh, const SceneView& scene, const Ray& r,
+                                           uint32_t i, uint32_t start, bool unbounded, bool shared,
+                                           bool shadow, uint8_t skip, const HitSinks& out) {
+#if SHEAF_BVH_AVX2
+    if (bvh_avx2())
+        return bvh_trace_from_avx2(Any, bvh, scene, r, i, start, unbounded, shared, shadow, skip,
+                                   out);
+#endif
+    return bvh_trace_body<Any, false>(bvh, scene, r, i, start, unbounded, shared, shadow, skip,
+                                      out);
 }
 
 /// Ray i of a batch (r) through the whole BVH against `scene`: writes closest[i] for

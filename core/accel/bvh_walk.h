@@ -12,6 +12,14 @@
 #if !defined(__CUDA_ARCH__) && defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+// The host's eight-wide slab test on x86-64 processors with AVX2, chosen at run time
+// (core/accel/bvh_trace.h, bvh_avx2).
+#if !defined(__CUDA_ARCH__) && !defined(__CUDACC__) && defined(__x86_64__) && defined(__GNUC__)
+#define SHEAF_BVH_AVX2 1
+#include <immintrin.h>
+#else
+#define SHEAF_BVH_AVX2 0
+#endif
 
 namespace sheaf {
 
@@ -38,35 +46,40 @@ SHEAF_HD_INLINE BvhPlanes bvh_planes(const Vec3& inv) {
     return p;
 }
 
-/// The slab test of a ray against the four children of a node, conservative under rounding
+/// The slab test of a ray against the eight children of a node, conservative under rounding
 /// (the far distance grown by a few units in the last place, the boxes padded when built):
 /// bit i of the result set when child i is present and meets the ray within [t0, t1], its
 /// entry distance in near[i]; the children present added to `tested`. For a positive inverse
 /// direction, (lo - o) * inv <= (hi - o) * inv in floating point as in reals (rounding is
 /// monotonic), so taking the planes in the ray's order gives what the minimum and maximum of
-/// the two would.
-SHEAF_HD_INLINE uint32_t bvh_children_hit(const BvhNode& n, const BvhPlanes& pl, const Vec3& o,
-                                          const Vec3& inv, float t0, float t1,
-                                          float near[kBvhWidth], uint64_t& tested) {
+/// the two would. On SSE the eight are two vectors of four; bvh_children_hit_avx2 is one.
+SHEAF_HD_HOT uint32_t bvh_children_hit(const BvhNode& n, const BvhPlanes& pl, const Vec3& o,
+                                       const Vec3& inv, float t0, float t1, float near[kBvhWidth],
+                                       uint64_t& tested) {
     const float* b = &n.lo[0][0];
 #if !defined(__CUDA_ARCH__) && defined(__SSE2__)
-    const auto dist = [&](int off, int axis) {
-        return _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(b + off), _mm_set1_ps(o[axis])),
-                          _mm_set1_ps(inv[axis]));
-    };
-    const __m128 tn = _mm_max_ps(
-        _mm_max_ps(_mm_max_ps(dist(pl.near[0], 0), dist(pl.near[1], 1)), dist(pl.near[2], 2)),
-        _mm_set1_ps(t0));
-    __m128 tf = _mm_min_ps(_mm_min_ps(dist(pl.far[0], 0), dist(pl.far[1], 1)), dist(pl.far[2], 2));
-    const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), tf);
-    tf = _mm_add_ps(tf, _mm_mul_ps(magnitude, _mm_set1_ps(4e-7f)));
-    tf = _mm_min_ps(tf, _mm_set1_ps(t1));
-    _mm_storeu_ps(near, tn);
-    const __m128i none = _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(n.child)),
-                                         _mm_set1_epi32(-1));
-    const uint32_t present = uint32_t(~_mm_movemask_ps(_mm_castsi128_ps(none))) & 0xFu;
-    tested += (0x4332322132212110ull >> (4 * present)) & 0xFu; // bits set in 4 (no popcnt)
-    return uint32_t(_mm_movemask_ps(_mm_cmple_ps(tn, tf))) & present;
+    uint32_t mask = 0;
+    for (int h = 0; h < kBvhWidth; h += 4) {
+        const auto dist = [&](int off, int axis) {
+            return _mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(b + off + h), _mm_set1_ps(o[axis])),
+                              _mm_set1_ps(inv[axis]));
+        };
+        const __m128 tn = _mm_max_ps(
+            _mm_max_ps(_mm_max_ps(dist(pl.near[0], 0), dist(pl.near[1], 1)), dist(pl.near[2], 2)),
+            _mm_set1_ps(t0));
+        __m128 tf =
+            _mm_min_ps(_mm_min_ps(dist(pl.far[0], 0), dist(pl.far[1], 1)), dist(pl.far[2], 2));
+        const __m128 magnitude = _mm_andnot_ps(_mm_set1_ps(-0.0f), tf);
+        tf = _mm_add_ps(tf, _mm_mul_ps(magnitude, _mm_set1_ps(4e-7f)));
+        tf = _mm_min_ps(tf, _mm_set1_ps(t1));
+        _mm_storeu_ps(near + h, tn);
+        const __m128i none = _mm_cmpeq_epi32(
+            _mm_loadu_si128(reinterpret_cast<const __m128i*>(n.child + h)), _mm_set1_epi32(-1));
+        const uint32_t present = uint32_t(~_mm_movemask_ps(_mm_castsi128_ps(none))) & 0xFu;
+        tested += (0x4332322132212110ull >> (4 * present)) & 0xFu; // bits set in 4 (no popcnt)
+        mask |= (uint32_t(_mm_movemask_ps(_mm_cmple_ps(tn, tf))) & present) << h;
+    }
+    return mask;
 #else
     uint32_t mask = 0;
     for (int i = 0; i < kBvhWidth; ++i) {
@@ -87,6 +100,37 @@ SHEAF_HD_INLINE uint32_t bvh_children_hit(const BvhNode& n, const BvhPlanes& pl,
     return mask;
 #endif
 }
+
+#if SHEAF_BVH_AVX2
+/// bvh_children_hit as one eight-wide AVX2 operation, bit for bit the same (the same
+/// operations on each lane; no fused multiply-add). Only inlined into code compiled for AVX2
+/// (core/accel/bvh_trace_avx2.cpp), which runs where the processor has it (bvh_avx2).
+__attribute__((target("avx2,popcnt"))) inline uint32_t
+bvh_children_hit_avx2(const BvhNode& n, const BvhPlanes& pl, const Vec3& o, const Vec3& inv,
+                      float t0, float t1, float near[kBvhWidth], uint64_t& tested) {
+    const float* b = &n.lo[0][0];
+#define SHEAF_BVH_DIST(off, axis)                                                                  \
+    _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(b + (off)), _mm256_set1_ps(o[axis])),              \
+                  _mm256_set1_ps(inv[axis]))
+    const __m256 tn = _mm256_max_ps(
+        _mm256_max_ps(_mm256_max_ps(SHEAF_BVH_DIST(pl.near[0], 0), SHEAF_BVH_DIST(pl.near[1], 1)),
+                      SHEAF_BVH_DIST(pl.near[2], 2)),
+        _mm256_set1_ps(t0));
+    __m256 tf =
+        _mm256_min_ps(_mm256_min_ps(SHEAF_BVH_DIST(pl.far[0], 0), SHEAF_BVH_DIST(pl.far[1], 1)),
+                      SHEAF_BVH_DIST(pl.far[2], 2));
+#undef SHEAF_BVH_DIST
+    const __m256 magnitude = _mm256_andnot_ps(_mm256_set1_ps(-0.0f), tf);
+    tf = _mm256_add_ps(tf, _mm256_mul_ps(magnitude, _mm256_set1_ps(4e-7f)));
+    tf = _mm256_min_ps(tf, _mm256_set1_ps(t1));
+    _mm256_storeu_ps(near, tn);
+    const __m256i none = _mm256_cmpeq_epi32(
+        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(n.child)), _mm256_set1_epi32(-1));
+    const uint32_t present = uint32_t(~_mm256_movemask_ps(_mm256_castsi256_ps(none))) & 0xFFu;
+    tested += uint64_t(__builtin_popcount(present));
+    return uint32_t(_mm256_movemask_ps(_mm256_cmp_ps(tn, tf, _CMP_LE_OQ))) & present;
+}
+#endif
 
 /// The reciprocal of a direction, with zero components replaced by a tiny one of their sign:
 /// every slab distance is then a number or an infinity, never 0 * inf.
@@ -116,7 +160,7 @@ SHEAF_HD_INLINE float bvh_next_up(float x) {
     return x;
 }
 
-/// Entries of a traversal: an inner node (its index), a leaf (kBvhLeaf | node * 4 + slot:
+/// Entries of a traversal: an inner node (its index), a leaf (kBvhLeaf | node * 8 + slot:
 /// child `slot` of `node`), or one primitive (kBvhPrim | primitive). Inner node indices are
 /// below kBvhPrim, leaf nodes below 2^28.
 constexpr uint32_t kBvhLeaf = 0x80000000u;
@@ -124,17 +168,18 @@ constexpr uint32_t kBvhPrim = 0x40000000u;
 
 /// The entry for child `slot` of node `node`: the child node, or the leaf.
 SHEAF_HD_INLINE uint32_t bvh_child_entry(const BvhNode& n, uint32_t node, int slot) {
-    return n.count[slot] > 0 ? kBvhLeaf | (node << 2 | uint32_t(slot)) : n.child[slot];
+    return n.count[slot] > 0 ? kBvhLeaf | (node << kBvhSlotBits | uint32_t(slot)) : n.child[slot];
 }
 
 /// The part of the BVH under entry `e` that a ray meets, nearest child first: each leaf met
 /// handed to leaf(first, count) (entries [first, first + count) of bvh.prims), which returns
 /// false to end the walk. A closest-hit ray (Any false) skips what lies beyond `far`, read
-/// anew at each step; box tests are counted in c.nodes.
-template <bool Any, class Leaf>
-SHEAF_HD_INLINE void bvh_walk(const BvhView& bvh, const Ray& r, const Vec3& inv,
-                              const BvhPlanes& planes, uint32_t e, const float& far, BvhCounts& c,
-                              Leaf&& leaf) {
+/// anew at each step; box tests are counted in c.nodes. Avx2: the slab tests are
+/// bvh_children_hit_avx2's (only in code compiled for AVX2).
+template <bool Any, bool Avx2 = false, class Leaf>
+SHEAF_HD_HOT void bvh_walk(const BvhView& bvh, const Ray& r, const Vec3& inv,
+                           const BvhPlanes& planes, uint32_t e, const float& far, BvhCounts& c,
+                           Leaf&& leaf) {
     // With each waiting entry its entry distance, so that a closest-hit ray drops what its
     // best hit has passed. The entry in hand (e) is not on the stack: of a node's children
     // met, the nearest is taken next and the others pushed, farthest first (any-hit rays: in
@@ -144,14 +189,20 @@ SHEAF_HD_INLINE void bvh_walk(const BvhView& bvh, const Ray& r, const Vec3& inv,
     int sp = 0;
     for (;;) {
         if (e & kBvhLeaf) {
-            const BvhNode& n = bvh.nodes[(e & ~kBvhLeaf) >> 2];
-            const uint32_t slot = e & 3u;
+            const BvhNode& n = bvh.nodes[(e & ~kBvhLeaf) >> kBvhSlotBits];
+            const uint32_t slot = e & kBvhSlotMask;
             if (!leaf(n.child[slot], n.count[slot])) return;
         } else {
             const BvhNode& n = bvh.nodes[e];
             float near[kBvhWidth];
-            uint32_t mask =
-                bvh_children_hit(n, planes, r.origin, inv, r.tmin, far, near, c.nodes.tests);
+            uint32_t mask;
+#if SHEAF_BVH_AVX2
+            if constexpr (Avx2)
+                mask = bvh_children_hit_avx2(n, planes, r.origin, inv, r.tmin, far, near,
+                                             c.nodes.tests);
+            else
+#endif
+                mask = bvh_children_hit(n, planes, r.origin, inv, r.tmin, far, near, c.nodes.tests);
             if (mask) {
                 int order[kBvhWidth], hits = 0;
                 for (; mask; mask &= mask - 1) {

@@ -3,6 +3,8 @@
 // true intersections.
 #include "core/frame/host_tracer.h"
 
+#include "core/accel/bvh_trace.h"
+
 #include "core/geometry/ray_triangle.h"
 
 #include <gtest/gtest.h>
@@ -196,6 +198,39 @@ TEST(Trace, PerRayStructuresFindWhatBruteForceFinds) {
             for (const auto& [k, v] : st.entries())
                 if (k.rfind("time_ms.", 0) != 0) EXPECT_EQ(wst.get(k), v) << what << " " << k;
         }
+}
+
+// accel=bvh's two host paths, the eight slab tests of a node as two SSE vectors or one AVX2
+// vector (chosen at run time where the processor has AVX2): the same hits, per-ray tests and
+// counts, for every ray type and the ray hierarchy over the BVH.
+TEST(Trace, Avx2WalkFindsWhatTheSseWalkFinds) {
+#if SHEAF_BVH_AVX2
+    if (!bvh_avx2()) GTEST_SKIP() << "no AVX2 on this processor (or SHEAF_SIMD=sse)";
+    const PreparedScene scene = random_scene(6);
+    MemoryTracker mem;
+    for (Accel accel : {Accel::Bvh, Accel::CrshBvh, Accel::Strips})
+        for (RayType type : {RayType::Reflection, RayType::Shadow, RayType::Ao}) {
+            const RayBatch batch = random_batch(type, mem, 21, 4000);
+            RenderSettings s;
+            s.accel = accel;
+            TraceResult avx, sse;
+            Stats ast, sst;
+            trace_batch(scene, batch, s, ast, mem, avx);
+            bvh_set_avx2(false);
+            trace_batch(scene, batch, s, sst, mem, sse);
+            bvh_set_avx2(true);
+            const std::string what = std::string(to_string(accel)) + " " + ray_type_name(type);
+            EXPECT_EQ(avx.closest, sse.closest) << what;
+            EXPECT_EQ(avx.occluded, sse.occluded) << what;
+            EXPECT_EQ(avx.pass_log, sse.pass_log) << what;
+            EXPECT_EQ(avx.tests, sse.tests) << what;
+            for (const auto& [k, v] : ast.entries())
+                if (k.rfind("time_ms.", 0) != 0) EXPECT_EQ(sst.get(k), v) << what << " " << k;
+        }
+    EXPECT_TRUE(bvh_avx2());
+#else
+    GTEST_SKIP() << "the AVX2 path is built for x86-64 hosts only";
+#endif
 }
 
 TEST(Trace, SmallBatchesChangeNeitherResultsNorCounts) {

@@ -20,7 +20,7 @@ namespace sheaf {
 
 /// The most BVH nodes and primitives the ray hierarchy over the BVH can name in its references
 /// (bvh_slot_ref, kBvhPrim) and a ray's traversal in its entries (kBvhLeaf).
-constexpr uint32_t kBvhTopMaxNodes = 1u << 28;
+constexpr uint32_t kBvhTopMaxNodes = 1u << 27;
 constexpr uint32_t kBvhTopMaxPrims = 1u << 30;
 
 /// The sphere through the corners of child i's box (a present child), padded for rounding:
@@ -33,22 +33,23 @@ SHEAF_HD_INLINE Sphere bvh_child_sphere(const BvhNode& n, int i) {
     return {lo + half, length(half) * (1.0f + 1e-5f) + 1e-30f};
 }
 
-/// What a pair of the ray hierarchy over the BVH names: a child slot of a BVH node (node * 4
+/// What a pair of the ray hierarchy over the BVH names: a child slot of a BVH node (node * 8
 /// + slot), or a primitive without bounds (kBvhPrim | primitive).
 SHEAF_HD_INLINE uint32_t bvh_slot_ref(uint32_t node, int slot) {
-    return node << 2 | uint32_t(slot);
+    return node << kBvhSlotBits | uint32_t(slot);
 }
 
 /// The bounds of a reference: its slot's box sphere, or the primitive's sphere.
 SHEAF_HD_INLINE Sphere bvh_ref_sphere(const BvhView& bvh, const SceneView& scene, uint32_t ref) {
     if (ref & kBvhPrim) return scene.prim_sphere[ref & ~kBvhPrim];
-    return bvh_child_sphere(bvh.nodes[ref >> 2], int(ref & 3u));
+    return bvh_child_sphere(bvh.nodes[ref >> kBvhSlotBits], int(ref & kBvhSlotMask));
 }
 
 /// Where a ray's traversal of a reference starts (an entry of bvh_trace_from).
 SHEAF_HD_INLINE uint32_t bvh_ref_entry(const BvhView& bvh, uint32_t ref) {
     if (ref & kBvhPrim) return ref;
-    return bvh_child_entry(bvh.nodes[ref >> 2], ref >> 2, int(ref & 3u));
+    return bvh_child_entry(bvh.nodes[ref >> kBvhSlotBits], ref >> kBvhSlotBits,
+                           int(ref & kBvhSlotMask));
 }
 
 /// How much wider than a ray node a BVH child may be for the node's descent to stop there:
@@ -78,7 +79,7 @@ SHEAF_HD_INLINE void bvh_top_node(const BvhView& bvh, const SceneView& scene, co
         if (!(skip && scene.prim_flag(p, skip))) emit(kBvhPrim | p);
     }
     if (bvh.node_count == 0) return;
-    // Each node visited pushes at most four children and takes one: three wait per level.
+    // Each node visited pushes at most eight children and takes one: seven wait per level.
     uint32_t stack[kBvhStack];
     int top = 0;
     stack[top++] = 0;

@@ -28,7 +28,7 @@ const std::vector<SettingSpec>& setting_specs() {
          "rays in generation order (rah, Roger et al.) or over rays hashed and sorted by hash.mode "
          "and sort.mode "
          "(crsh, paper 000), each ray through a bounding volume hierarchy of the primitives "
-         "(bvh, SAH-built, four-wide), or the ray hierarchy of crsh or rah with its top nodes "
+         "(bvh, SAH-built, eight-wide), or the ray hierarchy of crsh or rah with its top nodes "
          "through that BVH instead of the object spheres (crsh-bvh, rah-bvh), or each ray "
          "through triangle strips under an SAH BVH (strips, paper 004)"},
         {"hierarchy.depth",

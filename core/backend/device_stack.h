@@ -18,7 +18,7 @@
 // which may hold another such pattern: each nested level is the program's frame (728 bytes), the
 // context's (160), the pigment's and an entry's (112 + 16) and pattern_value's (96), 1,112 bytes,
 // so a level gets 2 KiB (fn_pigment_nesting counts the levels). The media's walk over their solid
-// objects (leave_solids, core/shading/media.h: a BVH walk's stack of kBvhStack entries, 652 bytes,
+// objects (leave_solids, core/shading/media.h: a BVH walk's stack of kBvhStack entries, 620 bytes,
 // and the container spans' owners, 128) adds about 850 bytes to each media walk of a chain,
 // estimated from the arrays (not yet measured with ptxas): the G-buffer kernel's chain to about
 // 15,750 bytes, within the base, and the media light kernel's, which walks twice, to about 19,000,

@@ -329,6 +329,7 @@ PhotonMap shoot_photons(const PreparedScene& scene, const CullUnits& units, cons
     // every surface never holds more than a few pieces per level at once (each ray with its
     // state and landing about 200 bytes: 50 MiB a piece).
     constexpr uint64_t kChunk = uint64_t(1) << 18;
+    constexpr size_t kLandSlice = size_t(1) << 14;
     uint64_t shot = 0, traced = 0;
     size_t counted = 0; // photons the memory tracker counts
     std::function<void(RayBatch&, std::vector<PathState>&)> trace_piece =
@@ -342,22 +343,31 @@ PhotonMap shoot_photons(const PreparedScene& scene, const CullUnits& units, cons
             trace_batch(scene, units, batch, s, st, memory, r);
             RayBatch next(RayType::Photon, memory);
             std::vector<PathState> next_state;
+            // The landings a slice of kLandSlice rays at a time (a landing is 136 bytes: a
+            // whole piece's at once would be 34 MiB), taken in ray order: the same map every
+            // run.
             {
-                std::vector<Landing> landing(batch.size());
-                parallel_for("photons.land", batch.size(), [&](size_t i) {
-                    if (r.closest[i] == kNoHit) return;
-                    landing[i] = land(scene, view, emitters, batch.rays[i], r.closest[i],
-                                      batch.weight[i], state[i], max_level, params);
-                });
-                for (size_t i = 0; i < batch.size(); ++i) { // in ray order: the same map every run
-                    const Landing& g = landing[i];
-                    if (g.keep) map.photons.push_back(g.photon);
-                    for (uint32_t c = 0; c < g.children; ++c) {
-                        next.rays.push_back(g.ray[c]);
-                        next.pixel.push_back(0);
-                        next.weight.push_back(g.weight[c]);
-                        next_state.push_back({state[i].emitter, state[i].level + 1,
-                                              state[i].depth + hit_t(r.closest[i])});
+                std::vector<Landing> landing(std::min<size_t>(batch.size(), kLandSlice));
+                for (size_t first = 0; first < batch.size(); first += kLandSlice) {
+                    const size_t n = std::min<size_t>(kLandSlice, batch.size() - first);
+                    parallel_for("photons.land", n, [&](size_t j) {
+                        const size_t i = first + j;
+                        landing[j] = Landing{};
+                        if (r.closest[i] == kNoHit) return;
+                        landing[j] = land(scene, view, emitters, batch.rays[i], r.closest[i],
+                                          batch.weight[i], state[i], max_level, params);
+                    });
+                    for (size_t j = 0; j < n; ++j) {
+                        const size_t i = first + j;
+                        const Landing& g = landing[j];
+                        if (g.keep) map.photons.push_back(g.photon);
+                        for (uint32_t c = 0; c < g.children; ++c) {
+                            next.rays.push_back(g.ray[c]);
+                            next.pixel.push_back(0);
+                            next.weight.push_back(g.weight[c]);
+                            next_state.push_back({state[i].emitter, state[i].level + 1,
+                                                  state[i].depth + hit_t(r.closest[i])});
+                        }
                     }
                 }
             }

@@ -215,5 +215,39 @@ TEST(Affine, NormalsStayPerpendicular) {
     EXPECT_GT(n.y, n.x);
 }
 
+// max_scale bounds how far the transform stretches any vector, and is no looser than its
+// padding: on random products (Jacobi's path) and on rotations with a uniform scale
+// (Gershgorin's bound, exact there but for rounding).
+TEST(Affine, MaxScaleBoundsTheStretchTightly) {
+    std::mt19937 g(604);
+    std::uniform_real_distribution<float> u(0, 1);
+    for (int k = 0; k < 4000; ++k) {
+        const bool uniform = k % 2 == 1;
+        Affine a = random_affine(g);
+        if (uniform)
+            a = Affine::scale(Vec3(0.01f + 50 * u(g))) *
+                Affine::rotate(random_unit(g), u(g) * 7 - 3.5f) *
+                Affine::rotate(random_unit(g), u(g) * 7 - 3.5f);
+        const float bound = a.max_scale();
+        double most = 0; // the stretch of many directions, in double
+        for (int d = 0; d < 200; ++d) {
+            const Vec3 v = random_unit(g);
+            double o[3];
+            for (int i = 0; i < 3; ++i)
+                o[i] = double(a.m[i][0]) * v.x + double(a.m[i][1]) * v.y + double(a.m[i][2]) * v.z;
+            const double len = std::sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) /
+                               std::sqrt(double(v.x) * v.x + double(v.y) * v.y + double(v.z) * v.z);
+            ASSERT_LE(len, double(bound)) << k;
+            most = std::max(most, len);
+        }
+        // Sampled directions fall short of the largest stretch; for a uniform scale every
+        // direction is the largest.
+        if (uniform)
+            EXPECT_LE(double(bound), most * (1 + 4e-6)) << k;
+        else
+            EXPECT_LE(double(bound), most * 1.1) << k;
+    }
+}
+
 } // namespace
 } // namespace sheaf

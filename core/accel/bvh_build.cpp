@@ -90,9 +90,10 @@ class Builder {
   public:
     /// `chunk` > 0: every range of at most `chunk` triangles a leaf, every larger one split.
     /// `subset`: the primitives to hold (all of them when null).
+    /// `in_order`: each range split at its middle in the primitives' order, no heuristic.
     Builder(const PreparedScene& scene, Bvh& out, uint32_t chunk,
-            const std::vector<uint32_t>* subset = nullptr)
-        : scene_(scene), out_(out), chunk_(chunk), subset_(subset) {}
+            const std::vector<uint32_t>* subset = nullptr, bool in_order = false)
+        : scene_(scene), out_(out), chunk_(chunk), subset_(subset), in_order_(in_order) {}
 
     void run() {
         // While building, a primitive is its key k: its place in the subset (boxes_ and
@@ -261,6 +262,14 @@ class Builder {
     Split split_range(const Range& r, int depth) {
         Split s;
         if (r.size() <= 1 || chunk_leaf(r)) return s;
+        if (in_order_) {
+            if (r.size() <= kMaxLeaf) return s;
+            const uint32_t mid = r.begin + r.size() / 2;
+            s.leaf = false;
+            s.left = measured(r.begin, mid);
+            s.right = measured(mid, r.end);
+            return s;
+        }
         if (depth >= kBvhSahDepth) {
             if (r.size() <= kMaxLeaf) return s;
             return median(r);
@@ -414,6 +423,7 @@ class Builder {
     Bvh& out_;
     uint32_t chunk_;
     const std::vector<uint32_t>* subset_ = nullptr;
+    bool in_order_ = false;
     std::vector<Box> boxes_;
     std::vector<Vec3> centers_;
     std::unique_ptr<BvhNode[]> pool_;
@@ -442,6 +452,12 @@ Bvh build_bvh(const PreparedScene& scene, uint32_t chunk) {
 Bvh build_bvh_over(const PreparedScene& scene, const std::vector<uint32_t>& prims) {
     Bvh bvh;
     Builder(scene, bvh, 0, &prims).run();
+    return bvh;
+}
+
+Bvh build_bvh_in_order(const PreparedScene& scene) {
+    Bvh bvh;
+    Builder(scene, bvh, 0, nullptr, true).run();
     return bvh;
 }
 

@@ -92,7 +92,10 @@ void expect_valid(const PreparedScene& scene, const Bvh& bvh, const std::string&
 using test::accel_scenes;
 
 TEST(Bvh, IsValidOnEveryTestScene) {
-    for (const auto& [name, scene] : accel_scenes()) expect_valid(scene, build_bvh(scene), name);
+    for (const auto& [name, scene] : accel_scenes()) {
+        expect_valid(scene, build_bvh(scene), name);
+        expect_valid(scene, build_bvh_in_order(scene), name + ", in order");
+    }
 }
 
 TEST(Bvh, IsValidOnManyRandomTriangles) {
@@ -118,6 +121,12 @@ TEST(Bvh, IsValidOnManyRandomTriangles) {
     ASSERT_EQ(a.nodes.size(), b.nodes.size());
     EXPECT_EQ(0, std::memcmp(a.nodes.data(), b.nodes.data(), a.nodes.size() * sizeof(BvhNode)));
     EXPECT_EQ(a.prims, b.prims);
+    // Split in the primitives' order: valid, and the same on every run.
+    const Bvh c = build_bvh_in_order(scene), d = build_bvh_in_order(scene);
+    expect_valid(scene, c, "cloud, in order");
+    ASSERT_EQ(c.nodes.size(), d.nodes.size());
+    EXPECT_EQ(0, std::memcmp(c.nodes.data(), d.nodes.data(), c.nodes.size() * sizeof(BvhNode)));
+    EXPECT_EQ(c.prims, d.prims);
 }
 
 TEST(Bvh, IsBuiltOncePerScene) {

@@ -16,7 +16,7 @@ std::shared_ptr<const ObjectProbe> make_probe(Parser& p, const PovObject& o, con
     build_object_geometry(p, o, q->scene);
     try {
         q->prepared = prepare_scene(q->scene);
-        q->bvh = build_bvh(q->prepared);
+        q->bvh = build_bvh_in_order(q->prepared);
     } catch (const SceneError& e) {
         p.error_at(at, at.text + "() cannot trace this object: " + e.what());
     }

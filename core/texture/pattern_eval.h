@@ -477,6 +477,34 @@ SHEAF_HD_NOINLINE float slope_raw(const Pattern& pt, Vec3 q, Vec3 world, Vec3 n)
     return float(v < 0 ? 1.0 + f : f);
 }
 
+/// The hexagon pattern's entry (0, 1 or 2) at (x, z), laid out as POV-Ray lays it: hexagons
+/// of unit side, flat sides along x, the one around the origin entry 0; the plane mirrored
+/// about x = 0, and z below 0 moved up by the layout's repeat (6 blocks of sqrt(3)/2) rather
+/// than mirrored. The layout repeats every 6 x 6 blocks half a side wide and sqrt(3)/2 high;
+/// a block of column 0, 2, 3 or 5 lies in one hexagon, one of column 1 or 4 is cut by a
+/// hexagon's slanted side. In double precision, as POV-Ray computes it.
+SHEAF_HD_INLINE int hexagon_cell(double x, double z) {
+    const double height = 0.866025404; // a block's height: sqrt(3)/2
+    x = fabs(x);
+    if (z < 0) z = 6.0 * height - fabs(z);
+    double xs = x / 0.5, zs = z / height;
+    xs -= floor(xs / 6.0) * 6.0;
+    zs -= floor(zs / 6.0) * 6.0;
+    const int col = int(floor(xs)) % 6, row = int(floor(zs)) % 6;
+    // Blocks within one hexagon: the entry by row, for columns 0 and 5, and 2 and 3.
+    if (col == 0 || col == 5) return (row + 1) % 6 / 2; // rows 0..5: 0 1 1 2 2 0
+    if (col == 2 || col == 3) return (row + 4) % 6 / 2; // rows 0..5: 2 2 0 0 1 1
+    // A block cut by a slanted side: which side of its diagonal (the blocks of odd column plus
+    // row slope the other way), then the entry by row.
+    double xl = xs - col;
+    const double zl = zs - row;
+    if ((col + row) % 2 == 1) xl = 1.0 - xl;
+    if (xl == 0.0) xl = 1e-4;
+    const int step = row % 3; // rows 0 and 3, 1 and 4, 2 and 5 alike
+    const int below[3] = {0, 2, 1}, above[3] = {2, 1, 0};
+    return zl / xl < 1.0 ? below[step] : above[step];
+}
+
 /// A list pattern's entry (0 .. entries-1) at pattern-space point p.
 SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
     using namespace pattern_detail;
@@ -494,6 +522,7 @@ SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
     case PatternKind::Square:
         return imod(floor_int(p.x + e.x), 2) + 2 * imod(floor_int(p.z + e.z), 2);
     case PatternKind::Hexagon:
+        return hexagon_cell(double(p.x), double(p.z));
     case PatternKind::Triangular: {
         // Axial coordinates of hexagons of unit side in the x-z plane, flat sides along x.
         const float q = (2.0f / 3.0f) * p.x;
@@ -508,8 +537,6 @@ SHEAF_HD_NOINLINE int pattern_index_at(const Pattern& pt, Vec3 p) {
             ry = -rx - rz;
         else
             rz = -rx - ry;
-        const int hex = imod(int(rx) - int(rz), 3);
-        if (pt.kind == PatternKind::Hexagon) return hex;
         // Six triangles per hexagon: the sector of the point around its hexagon's centre.
         const float hx = 1.5f * rx, hz = sqrtf(3.0f) * (rz + 0.5f * rx);
         const float a = hdm::atan2f(p.z - hz, p.x - hx) / (2.0f * kPi) + 0.5f;

@@ -93,6 +93,30 @@ TEST(Patterns, HexagonNeighboursDiffer) {
     for (const Vec3& q : n) EXPECT_NE(pattern_index_at(p, c), pattern_index_at(p, q));
 }
 
+// POV-Ray's layout: the hexagon around the origin is entry 0, the one above it (+z) 1 and the
+// one below 2; the plane is mirrored about x = 0, so the neighbours at -x take the entries of
+// those at +x.
+TEST(Patterns, HexagonEntriesAreLaidOutAsPovRayLaysThem) {
+    const Pattern p = make(PatternKind::Hexagon);
+    const float h = std::sqrt(3.0f);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 0, 0.1f)), 0);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 0, h)), 1);
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.1f, 0, -h)), 2);
+    for (float side : {1.0f, -1.0f}) {
+        EXPECT_EQ(pattern_index_at(p, Vec3(1.5f * side, 0, h / 2 + 0.1f)), 2) << side;
+        EXPECT_EQ(pattern_index_at(p, Vec3(1.5f * side, 0, -h / 2 - 0.1f)), 1) << side;
+    }
+    // The slanted sides: (0.9, 0.1) lies in the origin's hexagon, (1.1, 0.1) beyond its side.
+    EXPECT_EQ(pattern_index_at(p, Vec3(0.9f, 0, 0.1f)), 0);
+    EXPECT_NE(pattern_index_at(p, Vec3(1.1f, 0, 0.1f)), 0);
+    // The layout repeats every 3 along x and 3 sqrt(3) along z.
+    for (float x : {0.2f, 0.9f, 1.7f, 2.6f})
+        for (float z : {0.3f, 1.1f, 2.0f})
+            EXPECT_EQ(pattern_index_at(p, Vec3(x, 0, z)),
+                      pattern_index_at(p, Vec3(x + 3.0f, 0, z + 3.0f * h)))
+                << x << " " << z;
+}
+
 TEST(Patterns, BrickHasMortarBetweenBricks) {
     // POV-Ray's layout: each cell starts with its mortar, 0.5 below the cell's edge (its
     // brick pattern offsets the point by the mortar): courses 0..3 of 8 x 3 x 4.5 bricks lie

@@ -133,7 +133,10 @@ Value Parser::parse_color_keyword(const Token& t) {
     const bool srgb = k.rfind("srgb", 0) == 0;
     const std::string kind = srgb ? k.substr(1) : k; // rgb, rgbf, rgbt, rgbft
     const Token& at = peek();
-    const Value v = parse_unary();
+    // The whole expression after the keyword is its vector, as in POV-Ray: `rgb 0.6 + 0.5 * x`
+    // is grey (0.6 + 0.5x), where a colour `rgb 0.6` plus a float would add the float to its
+    // filter and transmit too (incdemo/screen.pov's buildings came out half clear).
+    const Value v = parse_additive();
     if (!v.numeric()) error_expected(at, std::string("a colour vector, not ") + type_name(v.type));
     Color5 c{0, 0, 0, 0, 0};
     const int want = kind == "rgb" ? 3 : kind == "rgbft" ? 5 : 4;

@@ -84,6 +84,16 @@ TEST(PovExpressions, Colors) {
     c = declared("#declare C = rgb 1 * 0.5;", "C");
     EXPECT_DOUBLE_EQ(c.v[2], 0.5);
     EXPECT_DOUBLE_EQ(num("(rgb <0.2, 0.4, 0.6>).green"), 0.4);
+    // The whole expression after rgb is its vector (POV-Ray's Parse_Express): grey, no filter
+    // or transmit from the float added.
+    c = declared("#declare C = rgb 0.6 + 0.5 * 0.5;", "C");
+    EXPECT_DOUBLE_EQ(c.v[0], 0.85);
+    EXPECT_DOUBLE_EQ(c.v[2], 0.85);
+    EXPECT_DOUBLE_EQ(c.v[3], 0);
+    EXPECT_DOUBLE_EQ(c.v[4], 0);
+    c = declared("#declare C = rgbt <0.2, 0.2, 0.2, 0.1> + 0.1;", "C");
+    EXPECT_DOUBLE_EQ(c.v[0], 0.3);
+    EXPECT_DOUBLE_EQ(c.v[4], 0.2);
 }
 
 TEST(PovExpressions, ColorsInc) {

@@ -3,7 +3,7 @@
 // this function carries the target; what it does not inline (the analytic shapes' exact
 // tests) stays the portable build's, so the library runs on any x86-64 processor and takes
 // this path where cpuid reports AVX2. No fused multiply-add: the hits are bit for bit the
-// portable path's (Bvh.Avx2WalkFindsWhatTheSseWalkFinds).
+// portable path's (Trace.Avx2WalkFindsWhatTheSseWalkFinds).
 #include "core/accel/bvh_trace.h"
 
 #include <atomic>

@@ -352,10 +352,10 @@ PhotonMap shoot_photons(const PreparedScene& scene, const CullUnits& units, cons
                     const size_t n = std::min<size_t>(kLandSlice, batch.size() - first);
                     parallel_for("photons.land", n, [&](size_t j) {
                         const size_t i = first + j;
-                        landing[j] = Landing{};
-                        if (r.closest[i] == kNoHit) return;
-                        landing[j] = land(scene, view, emitters, batch.rays[i], r.closest[i],
-                                          batch.weight[i], state[i], max_level, params);
+                        landing[j] = r.closest[i] == kNoHit
+                                         ? Landing{}
+                                         : land(scene, view, emitters, batch.rays[i], r.closest[i],
+                                                batch.weight[i], state[i], max_level, params);
                     });
                     for (size_t j = 0; j < n; ++j) {
                         const size_t i = first + j;

@@ -4,7 +4,6 @@
 #include "core/frame/host_tracer.h"
 
 #include "core/accel/bvh_trace.h"
-
 #include "core/geometry/ray_triangle.h"
 
 #include <gtest/gtest.h>
